@@ -1,0 +1,139 @@
+//! Preliminary feedback u = K_pr x + v (sections 3–4): the paper's gain, and an LQ gain designed
+//! the way the paper did.
+//!
+//! # The LQ design
+//! In the limit δ → 0 the predictive controller acts as a linear feedback K_lim that keeps a
+//! 6-dimensional subspace V* (the consistent states of the stabilized DAE) invariant with all six
+//! eigenvalues at −α, and never looks at the motor coordinates x2 = (θ, θ̇): on the quotient
+//! ℝ⁸/V* it leaves the 2×2 matrix A4 untouched (see [`crate::analysis::limit_pair`]). The
+//! preliminary feedback is designed on that part alone, u = K2 x2, with x2 = Ψ x the motor
+//! coordinates measured from V*, and mapped back to the full state, K_pr = K2 Ψ.
+//!
+//! K2 is the LQ gain for ẋ2 = A4 x2 + B2 u (B2 = Ψ B) with a tiny state weight
+//! Q = 1e-6 · I2 and R = diag(1, 6): a minimum-energy design that reflects the unstable pair
+//! into the left half-plane (2.639 ± 29.58j → −2.639 ± 29.58j) with the least torque, weighting
+//! T2 six times more than T1 (ERRATA.md). At q2 = 0, α = 2 it reproduces the printed K_pr.
+
+use nalgebra::{Complex, DMatrix, Matrix2, SMatrix};
+use serde::{Deserialize, Serialize};
+
+use crate::analysis::{limit_pair, linearize_at_rest};
+use crate::params::{PlantParameters, PreliminaryFeedbackChoice, SimulationConfig};
+use crate::Error;
+
+/// A feedback gain from X = (q1, q2, θ, q̇1, q̇2, θ̇, w1, w2) to U = (T1, T2).
+pub type FeedbackGain = SMatrix<f64, 2, 8>;
+
+/// The paper's K_pr (section 4), acting on the absolute state.
+pub fn paper_gain() -> FeedbackGain {
+    FeedbackGain::from_row_slice(&[
+        102.3, -0.07, -103.0, 15.97, -0.10, -17.0, 0.0, 0.0, //
+        16.17, -0.01, -16.3, 2.55, -0.02, -2.71, 0.0, 0.0,
+    ])
+}
+
+/// Weights of the LQ design on the 2-state part A4.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LqWeights {
+    /// Q = state_weight · I2 on x2 = (θ, θ̇) measured from V*.
+    pub state_weight: f64,
+    /// R = diag(input_weights) on (T1, T2).
+    pub input_weights: [f64; 2],
+}
+
+impl Default for LqWeights {
+    /// Q = 1e-6 I2 (minimum energy), R = diag(1, 6).
+    fn default() -> Self {
+        Self { state_weight: 1e-6, input_weights: [1.0, 6.0] }
+    }
+}
+
+/// The outcome of the LQ design.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LqDesign {
+    /// K_pr = K2 Ψ on the full state.
+    pub gain: FeedbackGain,
+    /// K2, the gain on the motor coordinates x2 = Ψ x.
+    pub k2: Matrix2<f64>,
+    /// A4 and its eigenvalues without preliminary feedback.
+    pub open_pair: [Complex<f64>; 2],
+    /// Eigenvalues of A4 + B2 K2.
+    pub closed_pair: [Complex<f64>; 2],
+}
+
+/// Designs the LQ preliminary feedback at rest at (q1, q2) for the stabilizing constants α.
+pub fn design_lq(plant: &PlantParameters, alpha: [f64; 2], q_rest: [f64; 2], weights: &LqWeights) -> Result<LqDesign, Error> {
+    let model = linearize_at_rest(plant, alpha, q_rest);
+    let open = limit_pair(&model, &FeedbackGain::zeros())?;
+    let a = DMatrix::from_iterator(2, 2, open.a4.iter().copied());
+    let b = DMatrix::from_iterator(2, 2, open.b2.iter().copied());
+    let q = DMatrix::identity(2, 2) * weights.state_weight;
+    let r = DMatrix::from_diagonal(&nalgebra::DVector::from_row_slice(&weights.input_weights));
+    let p = solve_care(&a, &b, &q, &r)?;
+    // u = K2 x2 with K2 = −R⁻¹ B2ᵀ P.
+    let r_inv = DMatrix::from_diagonal(&nalgebra::DVector::from_iterator(2, weights.input_weights.iter().map(|w| 1.0 / w)));
+    let k2d = -(r_inv * b.transpose() * &p);
+    let k2 = Matrix2::from_iterator(k2d.iter().copied());
+    let gain = k2 * open.coordinates;
+    let closed = (open.a4 + open.b2 * k2).complex_eigenvalues();
+    Ok(LqDesign { gain, k2, open_pair: open.eigenvalues, closed_pair: [closed[0], closed[1]] })
+}
+
+/// The gain selected by a configuration (zero when the preliminary feedback is off).
+pub fn resolve_gain(config: &SimulationConfig) -> Result<FeedbackGain, Error> {
+    match config.preliminary_feedback {
+        PreliminaryFeedbackChoice::Off => Ok(FeedbackGain::zeros()),
+        PreliminaryFeedbackChoice::Paper => Ok(paper_gain()),
+        PreliminaryFeedbackChoice::Lq => {
+            let q_rest = [config.reference.end[0], config.lq_design_q2];
+            Ok(design_lq(&config.plant, config.controller.alpha, q_rest, &LqWeights::default())?.gain)
+        }
+    }
+}
+
+/// Solves the continuous algebraic Riccati equation AᵀP + PA − PBR⁻¹BᵀP + Q = 0 for the
+/// stabilizing P, by the matrix sign function of the Hamiltonian
+/// H = [[A, −BR⁻¹Bᵀ], [−Q, −Aᵀ]]: the stable invariant subspace is ker(sign H + I).
+pub fn solve_care(a: &DMatrix<f64>, b: &DMatrix<f64>, q: &DMatrix<f64>, r: &DMatrix<f64>) -> Result<DMatrix<f64>, Error> {
+    let n = a.nrows();
+    let r_inv = r.clone().try_inverse().ok_or(Error::Analysis("Riccati: R is singular"))?;
+    let g = b * r_inv * b.transpose();
+    let mut h = DMatrix::zeros(2 * n, 2 * n);
+    h.view_mut((0, 0), (n, n)).copy_from(a);
+    h.view_mut((0, n), (n, n)).copy_from(&(-&g));
+    h.view_mut((n, 0), (n, n)).copy_from(&(-q));
+    h.view_mut((n, n), (n, n)).copy_from(&(-a.transpose()));
+
+    // Newton iteration for the sign function with determinant scaling.
+    let mut z = h;
+    let mut converged = false;
+    for _ in 0..100 {
+        let inv = z.clone().try_inverse().ok_or(Error::Analysis("Riccati: Hamiltonian has eigenvalues on the imaginary axis"))?;
+        let det = z.determinant().abs();
+        let c = if det.is_finite() && det > 0.0 { det.powf(1.0 / (2.0 * n as f64)) } else { 1.0 };
+        let next = (&z / c + inv * c) * 0.5;
+        let change = (&next - &z).norm() / next.norm().max(1.0);
+        z = next;
+        if change < 1e-13 {
+            converged = true;
+            break;
+        }
+    }
+    if !converged {
+        return Err(Error::Analysis("Riccati: sign iteration did not converge"));
+    }
+    // [W12; W22 + I] P = −[W11 + I; W21]
+    let id = DMatrix::<f64>::identity(n, n);
+    let mut lhs = DMatrix::zeros(2 * n, n);
+    lhs.view_mut((0, 0), (n, n)).copy_from(&z.view((0, n), (n, n)));
+    lhs.view_mut((n, 0), (n, n)).copy_from(&(z.view((n, n), (n, n)) + &id));
+    let mut rhs = DMatrix::zeros(2 * n, n);
+    rhs.view_mut((0, 0), (n, n)).copy_from(&(-(z.view((0, 0), (n, n)) + &id)));
+    rhs.view_mut((n, 0), (n, n)).copy_from(&(-z.view((n, 0), (n, n))));
+    let p = lhs.svd(true, true).solve(&rhs, 1e-14).map_err(|_| Error::Analysis("Riccati: least-squares solve failed"))?;
+    let p = (&p + p.transpose()) * 0.5;
+    if !p.iter().all(|v| v.is_finite()) {
+        return Err(Error::Analysis("Riccati: no finite solution"));
+    }
+    Ok(p)
+}
