@@ -10,9 +10,10 @@
 //! coordinates measured from V*, and mapped back to the full state, K_pr = K2 Ψ.
 //!
 //! K2 is the LQ gain for ẋ2 = A4 x2 + B2 u (B2 = Ψ B) with a tiny state weight
-//! Q = 1e-6 · I2 and R = diag(1, 6): a minimum-energy design that reflects the unstable pair
+//! Q = 1e-6 · I2 and R = diag(1, 6.7): a minimum-energy design that reflects the unstable pair
 //! into the left half-plane (2.639 ± 29.58j → −2.639 ± 29.58j) with the least torque, weighting
-//! T2 six times more than T1 (ERRATA.md). At q2 = 0, α = 2 it reproduces the printed K_pr.
+//! T2 about 6.7 times more than T1 (ERRATA.md says "about 6"; 6.7 reproduces both printed rows of
+//! K_pr at q2 = 0, α = 2 to within 2.5 %, while 6 leaves the T2 row 11 % high).
 
 use nalgebra::{Complex, DMatrix, Matrix2, SMatrix};
 use serde::{Deserialize, Serialize};
@@ -42,9 +43,9 @@ pub struct LqWeights {
 }
 
 impl Default for LqWeights {
-    /// Q = 1e-6 I2 (minimum energy), R = diag(1, 6).
+    /// Q = 1e-6 I2 (minimum energy), R = diag(1, 6.7).
     fn default() -> Self {
-        Self { state_weight: 1e-6, input_weights: [1.0, 6.0] }
+        Self { state_weight: 1e-6, input_weights: [1.0, 6.7] }
     }
 }
 
