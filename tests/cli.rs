@@ -81,7 +81,8 @@ fn csv_has_a_header_with_units_and_numeric_rows() {
     let width = header.split(',').count();
     let mut rows = 0;
     for line in lines {
-        let fields: Vec<f64> = line.split(',').map(|f| f.parse().unwrap_or_else(|_| panic!("bad field in {line}"))).collect();
+        let fields: Vec<f64> =
+            line.split(',').map(|f| f.parse().unwrap_or_else(|_| panic!("bad field in {line}"))).collect();
         assert_eq!(fields.len(), width);
         rows += 1;
     }
@@ -148,7 +149,24 @@ fn sweep_range_is_log_spaced() {
 fn help_lists_every_command_and_flag() {
     for args in [&["--help"][..], &["help"][..]] {
         let text = stdout_of(args);
-        for word in ["simulate", "analyze", "sweep", "--delta", "--alpha1", "--k", "--eps-ratio", "--pf", "--inner", "--friction", "--duration", "--output-interval", "--csv", "--json", "--q2", "--simulate"] {
+        for word in [
+            "simulate",
+            "analyze",
+            "sweep",
+            "--delta",
+            "--alpha1",
+            "--k",
+            "--eps-ratio",
+            "--pf",
+            "--inner",
+            "--friction",
+            "--duration",
+            "--output-interval",
+            "--csv",
+            "--json",
+            "--q2",
+            "--simulate",
+        ] {
             assert!(text.contains(word), "help lacks {word}");
         }
     }
