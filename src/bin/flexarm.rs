@@ -17,6 +17,7 @@ use flexarm::closed_loop::DivergenceReason;
 use flexarm::{
     Error, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, RunReport, SimulationConfig, Verdict,
 };
+use serde::Serialize;
 use serde_json::{json, Value};
 
 const USAGE: &str = "\
@@ -110,7 +111,11 @@ impl Args {
         let names: Vec<&str> = options.iter().map(|o| o.0).collect();
         let what = format!("one of {}", names.join(" | "));
         let v = self.value(flag, &what)?;
-        options.iter().find(|o| o.0 == v).map(|o| o.1).ok_or_else(|| usage_error(format!("{flag} must be {what}, got '{v}'")))
+        options
+            .iter()
+            .find(|o| o.0 == v)
+            .map(|o| o.1)
+            .ok_or_else(|| usage_error(format!("{flag} must be {what}, got '{v}'")))
     }
 }
 
@@ -142,7 +147,8 @@ fn controller_flag(config: &mut SimulationConfig, flag: &str, args: &mut Args) -
             config.preliminary_feedback = args.choice(flag, &[("off", P::Off), ("paper", P::Paper), ("lq", P::Lq)])?;
         }
         "--inner" => {
-            config.inner_loop = args.choice(flag, &[("continuous", InnerLoop::Continuous), ("sampled", InnerLoop::Sampled)])?;
+            config.inner_loop =
+                args.choice(flag, &[("continuous", InnerLoop::Continuous), ("sampled", InnerLoop::Sampled)])?;
         }
         _ => return Ok(false),
     }
@@ -154,39 +160,33 @@ fn friction_flag(args: &mut Args) -> Res<FrictionCompensation> {
     args.choice("--friction", &[("continuous", F::Continuous), ("held", F::Held), ("off", F::Off)])
 }
 
-fn pf_name(c: &SimulationConfig) -> &'static str {
-    match c.preliminary_feedback {
-        PreliminaryFeedbackChoice::Off => "off",
-        PreliminaryFeedbackChoice::Paper => "paper",
-        PreliminaryFeedbackChoice::Lq => "lq",
-    }
+/// The lowercase name a settings enum has in JSON (and on the command line).
+fn name(value: impl Serialize) -> String {
+    serde_json::to_value(value).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default()
 }
 
-fn inner_name(c: &SimulationConfig) -> &'static str {
-    match c.inner_loop {
-        InnerLoop::Continuous => "continuous",
-        InnerLoop::Sampled => "sampled",
-    }
-}
-
-fn friction_name(c: &SimulationConfig) -> &'static str {
-    match c.friction_compensation {
-        FrictionCompensation::Continuous => "continuous",
-        FrictionCompensation::Held => "held",
-        FrictionCompensation::Off => "off",
-    }
-}
-
-fn reason_name(r: DivergenceReason) -> (&'static str, &'static str) {
-    match r {
-        DivergenceReason::ErrorBound => ("error_bound", "a tracking error exceeded the divergence bound"),
-        DivergenceReason::NonFinite => ("non_finite", "the state became NaN or infinite"),
-        DivergenceReason::NewtonFailure => ("newton_failure", "Newton's iteration in the predictor did not converge"),
+/// The verdict in words, e.g. "unstable (errors grow at 2.273 1/s)".
+fn verdict_text(verdict: Verdict, bound: f64) -> String {
+    match verdict {
+        Verdict::Stable => "stable".into(),
+        Verdict::Unstable { growth_rate } => format!("unstable (errors grow at {growth_rate:.3} 1/s)"),
+        Verdict::Diverged { at, reason } => format!(
+            "diverged at t = {at:.3} s ({})",
+            match reason {
+                DivergenceReason::ErrorBound => format!("a tracking error exceeded {bound:.4} rad"),
+                DivergenceReason::NonFinite => "the state became NaN or infinite".into(),
+                DivergenceReason::NewtonFailure => "Newton's iteration in the predictor failed".into(),
+            }
+        ),
     }
 }
 
 fn linear_verdict(rho: f64) -> &'static str {
-    if rho < 1.0 { "stable" } else { "unstable" }
+    if rho < 1.0 {
+        "stable"
+    } else {
+        "unstable"
+    }
 }
 
 /// The configuration lines shared by the text outputs.
@@ -195,8 +195,16 @@ fn describe_config(c: &SimulationConfig) -> String {
     format!(
         "  δ = {} s, α1 = {} 1/s, α2 = {} 1/s, k = {}, m = {} (ε = {:.3e} s, τ = kε = {:.3e} s)\n  \
          preliminary feedback {}, inner loop {}, friction compensation {}\n",
-        k.sampling_period, k.alpha[0], k.alpha[1], k.horizon_steps, k.eps_ratio, k.integration_step(), k.horizon(),
-        pf_name(c), inner_name(c), friction_name(c)
+        k.sampling_period,
+        k.alpha[0],
+        k.alpha[1],
+        k.horizon_steps,
+        k.eps_ratio,
+        k.integration_step(),
+        k.horizon(),
+        name(c.preliminary_feedback),
+        name(c.inner_loop),
+        name(c.friction_compensation)
     )
 }
 
@@ -239,7 +247,7 @@ fn simulate(mut args: Args) -> Res<String> {
 fn simulation_json(c: &SimulationConfig, duration: f64, r: &RunReport, rho: Option<f64>) -> Value {
     let m = &r.metrics;
     let (at, reason) = match m.verdict {
-        Verdict::Diverged { at, reason } => (Some(at), Some(reason_name(reason).0)),
+        Verdict::Diverged { at, reason } => (Some(at), Some(name(reason))),
         _ => (None, None),
     };
     json!({
@@ -248,9 +256,9 @@ fn simulation_json(c: &SimulationConfig, duration: f64, r: &RunReport, rho: Opti
         "alpha2": c.controller.alpha[1],
         "k": c.controller.horizon_steps,
         "eps_ratio": c.controller.eps_ratio,
-        "preliminary_feedback": pf_name(c),
-        "inner_loop": inner_name(c),
-        "friction_compensation": friction_name(c),
+        "preliminary_feedback": name(c.preliminary_feedback),
+        "inner_loop": name(c.inner_loop),
+        "friction_compensation": name(c.friction_compensation),
         "duration": duration,
         "simulated_time": m.time,
         "verdict": m.verdict.label(),
@@ -267,14 +275,7 @@ fn simulation_json(c: &SimulationConfig, duration: f64, r: &RunReport, rho: Opti
 
 fn simulation_text(c: &SimulationConfig, duration: f64, r: &RunReport, rho: Option<f64>) -> String {
     let m = &r.metrics;
-    let verdict = match m.verdict {
-        Verdict::Stable => "stable".to_string(),
-        Verdict::Unstable { growth_rate } => format!("unstable (errors grow at {growth_rate:.3} 1/s)"),
-        Verdict::Diverged { at, reason: DivergenceReason::ErrorBound } => {
-            format!("diverged at t = {at:.3} s (a tracking error exceeded the bound {:.4} rad)", c.divergence_bound)
-        }
-        Verdict::Diverged { at, reason } => format!("diverged at t = {at:.3} s ({})", reason_name(reason).1),
-    };
+    let verdict = verdict_text(m.verdict, c.divergence_bound);
     let pair = |v: [f64; 2], unit: &str| format!("{:.3e}, {:.3e} {unit}", v[0], v[1]);
     let growth = m.growth_rate.map_or("n/a (run too short)".into(), |g| format!("{g:.4} 1/s"));
     let rho = rho.map_or("n/a (analysis failed)".into(), |r| {
@@ -315,8 +316,8 @@ fn analyze(mut args: Args) -> Res<String> {
         v["alpha"] = json!(config.controller.alpha);
         v["k"] = json!(config.controller.horizon_steps);
         v["eps_ratio"] = json!(config.controller.eps_ratio);
-        v["preliminary_feedback"] = json!(pf_name(&config));
-        v["inner_loop"] = json!(inner_name(&config));
+        v["preliminary_feedback"] = json!(name(config.preliminary_feedback));
+        v["inner_loop"] = json!(name(config.inner_loop));
         return Ok(v.to_string() + "\n");
     }
     Ok(analysis_text(&config, &report))
@@ -325,14 +326,21 @@ fn analyze(mut args: Args) -> Res<String> {
 fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
     let mut s = format!(
         "flexarm analyze: sampled loop linearized at rest at q1 = {:.4} rad, q2 = {:.4} rad\nconfiguration\n{}",
-        r.rest[0], r.rest[1], describe_config(c)
+        r.rest[0],
+        r.rest[1],
+        describe_config(c)
     );
     s += &format!(
         "spectral radius ρ = {:.6} → {} (ρ < 1 ⇒ linearly stable)\ngrowth rate ln ρ/δ = {:.4} 1/s\n",
-        r.spectral_radius, linear_verdict(r.spectral_radius), r.growth_rate
+        r.spectral_radius,
+        linear_verdict(r.spectral_radius),
+        r.growth_rate
     );
     s += "eigenvalues of the one-period map (s = ln λ/δ, ζ = −Re s/|s|):\n";
-    s += &format!("  {:>2}  {:>10} {:>11} {:>11}  {:>11} {:>11}  {:>8} {:>11}\n", "#", "|λ|", "Re λ", "Im λ", "Re s [1/s]", "Im s [1/s]", "ζ", "|s| [rad/s]");
+    s += &format!(
+        "  {:>2}  {:>10} {:>11} {:>11}  {:>11} {:>11}  {:>8} {:>11}\n",
+        "#", "|λ|", "Re λ", "Im λ", "Re s [1/s]", "Im s [1/s]", "ζ", "|s| [rad/s]"
+    );
     for (i, p) in r.poles.iter().enumerate() {
         let [re, im] = p.discrete;
         s += &format!("  {:>2}  {:>10.6} {:>11.6} {:>11.6}", i + 1, re.hypot(im), re, im);
@@ -347,7 +355,11 @@ fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
     }
     let pair = |p: [[f64; 2]; 2]| format!("{:.4} ± {:.4}j 1/s", p[0][0], p[0][1].abs());
     s += &format!("δ → 0 pair A4 without preliminary feedback: {}\n", pair(r.limit_pair_open));
-    s += &format!("δ → 0 pair A4 with preliminary feedback ({}): {}\n", pf_name(c), pair(r.limit_pair));
+    s += &format!(
+        "δ → 0 pair A4 with preliminary feedback ({}): {}\n",
+        name(c.preliminary_feedback),
+        pair(r.limit_pair)
+    );
     s
 }
 
@@ -355,11 +367,21 @@ fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
 
 /// `0.005,0.01,0.02` or `START:STOP:N` (log-spaced if both ends are > 0, else linear).
 fn parse_list(flag: &str, text: &str) -> Res<Vec<f64>> {
-    let bad = |why: &str| usage_error(format!("{flag} expects a comma list like 0.005,0.01 or START:STOP:N ({why}), got '{text}'"));
+    let bad = |why: &str| {
+        usage_error(format!("{flag} expects a comma list like 0.005,0.01 or START:STOP:N ({why}), got '{text}'"))
+    };
     if let Some((range, n)) = text.rsplit_once(':') {
         let (lo, hi) = range.split_once(':').ok_or_else(|| bad("a range has three parts"))?;
-        let (lo, hi) = (parse_number(lo).ok_or_else(|| bad("START is not a number"))?, parse_number(hi).ok_or_else(|| bad("STOP is not a number"))?);
-        let n: usize = n.trim().parse().ok().filter(|&n| (1..=10_000).contains(&n)).ok_or_else(|| bad("N must be a whole number from 1 to 10000"))?;
+        let (lo, hi) = (
+            parse_number(lo).ok_or_else(|| bad("START is not a number"))?,
+            parse_number(hi).ok_or_else(|| bad("STOP is not a number"))?,
+        );
+        let n: usize = n
+            .trim()
+            .parse()
+            .ok()
+            .filter(|&n| (1..=10_000).contains(&n))
+            .ok_or_else(|| bad("N must be a whole number from 1 to 10000"))?;
         if lo > 0.0 && hi > 0.0 {
             return Ok(analysis::log_space(lo, hi, n));
         }
@@ -376,7 +398,9 @@ fn sweep(mut args: Args) -> Res<String> {
         match flag.as_str() {
             "--delta" => deltas = Some(parse_list(&flag, &args.value(&flag, "a list of sampling periods in s")?)?),
             "--alpha" => alphas = Some(parse_list(&flag, &args.value(&flag, "a list of α values in 1/s")?)?),
-            "--alpha1" | "--alpha2" => return Err(usage_error(format!("{flag} is not available in 'sweep': use --alpha LIST (α1 = α2)"))),
+            "--alpha1" | "--alpha2" => {
+                return Err(usage_error(format!("{flag} is not available in 'sweep': use --alpha LIST (α1 = α2)")))
+            }
             "--friction" => config.friction_compensation = friction_flag(&mut args)?,
             "--duration" => duration = args.number(&flag, "a duration in s (≥ 0)")?,
             "--simulate" => run = true,
@@ -399,7 +423,8 @@ fn sweep(mut args: Args) -> Res<String> {
             c.controller.sampling_period = delta;
             c.controller.alpha = [alpha, alpha];
             let rho = analysis::spectral_radius(&c, None).map_err(lib_error)?;
-            let mut row = json!({ "delta": delta, "alpha": alpha, "spectral_radius": rho, "verdict": linear_verdict(rho) });
+            let mut row =
+                json!({ "delta": delta, "alpha": alpha, "spectral_radius": rho, "verdict": linear_verdict(rho) });
             text += &format!("{delta:>10.5} {alpha:>8.3} {rho:>12.6} {:>9}", linear_verdict(rho));
             if run {
                 let r = flexarm::simulate(&c, duration).map_err(lib_error)?;
