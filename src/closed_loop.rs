@@ -306,6 +306,9 @@ pub struct ClosedLoop {
     pending: Option<(SimulationConfig, Derived)>,
 
     time: f64,
+    /// Time of the last change of δ; sampling instants are origin + n δ (no accumulated rounding).
+    period_origin: f64,
+    periods_since_origin: u64,
     period_start: f64,
     step_in_period: usize,
     steps_taken: u64,
@@ -342,6 +345,8 @@ impl ClosedLoop {
             derived,
             pending: None,
             time: 0.0,
+            period_origin: 0.0,
+            periods_since_origin: 0,
             period_start: 0.0,
             step_in_period: 0,
             steps_taken: 0,
@@ -465,6 +470,10 @@ impl ClosedLoop {
     /// The work of a sampling instant: new configuration, new v, new prediction.
     fn sample(&mut self) {
         if let Some((config, derived)) = self.pending.take() {
+            if config.controller.sampling_period != self.config.controller.sampling_period {
+                self.period_origin = self.time;
+                self.periods_since_origin = 0;
+            }
             self.config = config;
             self.derived = derived;
         }
@@ -528,7 +537,8 @@ impl ClosedLoop {
         self.steps_taken += 1;
         if self.step_in_period == d.steps_per_period {
             self.step_in_period = 0;
-            self.period_start += self.config.controller.sampling_period;
+            self.periods_since_origin += 1;
+            self.period_start = self.period_origin + self.periods_since_origin as f64 * self.config.controller.sampling_period;
             self.time = self.period_start;
         } else {
             self.time = self.period_start + self.step_in_period as f64 * h;
@@ -544,7 +554,7 @@ impl ClosedLoop {
         } else {
             self.stats.record(self.time, &e, &self.applied_torque, d.reference.is_moving(self.time));
         }
-        if self.steps_taken % d.output_every as u64 == 0 || self.divergence.is_some() {
+        if self.steps_taken.is_multiple_of(d.output_every as u64) || self.divergence.is_some() {
             self.record_trace();
         }
     }

@@ -124,7 +124,7 @@ impl Predictor {
         let mut iterations = 0;
         for j in 0..self.steps {
             let r = reference.sample(t0 + (j + 1) as f64 * self.eps);
-            let (z_next, n) = self.solve_step(&x, &r, &z).map_err(|_| PredictionError::NewtonFailure { step: j + 1 })?;
+            let (z_next, n) = self.solve_step(&x, &r, &z).ok_or(PredictionError::NewtonFailure { step: j + 1 })?;
             iterations += n;
             z = z_next;
             x = self.advance_state(&x, &r, &z);
@@ -133,26 +133,27 @@ impl Predictor {
     }
 
     /// Solves one backward-Euler step for z = (q̇⁺, U⁺) by Newton from `guess`; returns z and the
-    /// number of iterations.
-    pub fn solve_step(&self, x: &StateVector, r: &ReferenceSample, guess: &StepUnknowns) -> Result<(StepUnknowns, usize), ()> {
+    /// number of iterations, or `None` if Newton fails (a vanishing pivot, a non-finite iterate,
+    /// or no convergence in [`NEWTON_MAX_ITERATIONS`]).
+    pub fn solve_step(&self, x: &StateVector, r: &ReferenceSample, guess: &StepUnknowns) -> Option<(StepUnknowns, usize)> {
         let mut z = *guess;
         let mut previous = f64::INFINITY;
         for iteration in 1..=NEWTON_MAX_ITERATIONS {
             let (residual, jacobian) = self.residual_and_jacobian(x, r, &z);
-            let dz = solve_structured(&jacobian, &residual).ok_or(())?;
+            let dz = solve_structured(&jacobian, &residual)?;
             z -= dz;
             if !z.iter().all(|v| v.is_finite()) {
-                return Err(());
+                return None;
             }
             let update = dz.iter().zip(z.iter()).map(|(d, v)| d.abs() / (1.0 + v.abs())).fold(0.0, f64::max);
             // Converged, or stalled at the rounding floor (no more quadratic decrease).
             let stalled = iteration > 1 && update <= NEWTON_STALL_TOLERANCE && update > 0.25 * previous;
             if update <= NEWTON_TOLERANCE || stalled {
-                return Ok((z, iteration));
+                return Some((z, iteration));
             }
             previous = update;
         }
-        Err(())
+        None
     }
 
     /// X⁺ from X and the step's solution z: q⁺ = q + ε q̇⁺, w⁺ = w + ε α³ (q⁺ − q_d).
