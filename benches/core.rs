@@ -58,9 +58,22 @@ fn main() {
     println!("flexarm core benchmarks (median of batches; min in parentheses)");
     println!("| what | median | min |");
     println!("|---|---|---|");
-    println!("| controller sample (k = 12 steps, {iterations} Newton iterations) | {:.2} µs | {:.2} µs |", sample_med * 1e6, sample_min * 1e6);
-    println!("| 10-s closed-loop run, δ = 0.01 s, PF paper | {:.2} ms ({:.0}× real time) | {:.2} ms |", run_med * 1e3, 10.0 / run_med, run_min * 1e3);
-    println!("| one spectral radius ρ (10×10 loop, k-step pencil sweep, expm, eig) | {:.1} µs | {:.1} µs |", rho_med * 1e6, rho_min * 1e6);
+    println!(
+        "| controller sample (k = 12 steps, {iterations} Newton iterations) | {:.2} µs | {:.2} µs |",
+        sample_med * 1e6,
+        sample_min * 1e6
+    );
+    println!(
+        "| 10-s closed-loop run, δ = 0.01 s, PF paper | {:.2} ms ({:.0}× real time) | {:.2} ms |",
+        run_med * 1e3,
+        10.0 / run_med,
+        run_min * 1e3
+    );
+    println!(
+        "| one spectral radius ρ (10×10 loop, k-step pencil sweep, expm, eig) | {:.1} µs | {:.1} µs |",
+        rho_med * 1e6,
+        rho_min * 1e6
+    );
 
     if python {
         let root = concat!(env!("CARGO_MANIFEST_DIR"));

@@ -110,7 +110,11 @@ fn matrix_power(m: &Mat10, mut k: usize) -> Mat10 {
 }
 
 /// The linearized predictor at finite δ: V_k = K_pred x_0 (k steps of ε = δ/m), a 2×8 gain.
-pub fn predictor_gain(model: &LinearModel, gain: &FeedbackGain, controller: &ControllerParameters) -> Result<SMatrix<f64, 2, 8>, Error> {
+pub fn predictor_gain(
+    model: &LinearModel,
+    gain: &FeedbackGain,
+    controller: &ControllerParameters,
+) -> Result<SMatrix<f64, 2, 8>, Error> {
     let (e, f) = pencil(model, gain);
     let step = backward_euler_map(&e, &f, controller.integration_step())?;
     let sweep = matrix_power(&step, controller.horizon_steps);
@@ -185,7 +189,12 @@ pub fn limit_pair(model: &LinearModel, gain: &FeedbackGain) -> Result<LimitPair,
 /// The sampled closed loop linearized at rest, as a map of ζ = (x(t_ρ), v on [t_ρ, t_ρ+1)):
 /// x_{ρ+1} = Φ x_ρ + Γ v_ρ (+ Γ K x_ρ for a sampled inner loop), v_{ρ+1} = K_pred x_ρ
 /// (the prediction from x(t_ρ) is applied one period later, Fig. 2.1).
-pub fn sampled_loop_matrix(model: &LinearModel, gain: &FeedbackGain, controller: &ControllerParameters, inner_loop: InnerLoop) -> Result<Mat10, Error> {
+pub fn sampled_loop_matrix(
+    model: &LinearModel,
+    gain: &FeedbackGain,
+    controller: &ControllerParameters,
+    inner_loop: InnerLoop,
+) -> Result<Mat10, Error> {
     let delta = controller.sampling_period;
     let k_pred = predictor_gain(model, gain, controller)?;
     let a_plant = match inner_loop {
@@ -312,7 +321,11 @@ impl StabilityMap {
 }
 
 /// Computes ρ on the grid `alphas × sampling_periods`, all other settings from `config`.
-pub fn stability_map(config: &SimulationConfig, sampling_periods: &[f64], alphas: &[f64]) -> Result<StabilityMap, Error> {
+pub fn stability_map(
+    config: &SimulationConfig,
+    sampling_periods: &[f64],
+    alphas: &[f64],
+) -> Result<StabilityMap, Error> {
     let mut rho = Vec::with_capacity(sampling_periods.len() * alphas.len());
     for &alpha in alphas {
         let mut c = *config;

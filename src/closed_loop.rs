@@ -115,8 +115,20 @@ pub struct Traces {
 impl Traces {
     /// Column names with units, in CSV order.
     pub const HEADER: [&'static str; 14] = [
-        "t [s]", "q1 [rad]", "q2 [rad]", "theta [rad]", "qd1 [rad]", "qd2 [rad]", "e1 [rad]", "e2 [rad]",
-        "T1 [N m]", "T2 [N m]", "v1 [N m]", "v2 [N m]", "xf1_hat [N m]", "xf2_hat [N m]",
+        "t [s]",
+        "q1 [rad]",
+        "q2 [rad]",
+        "theta [rad]",
+        "qd1 [rad]",
+        "qd2 [rad]",
+        "e1 [rad]",
+        "e2 [rad]",
+        "T1 [N m]",
+        "T2 [N m]",
+        "v1 [N m]",
+        "v2 [N m]",
+        "xf1_hat [N m]",
+        "xf2_hat [N m]",
     ];
 
     /// Number of samples.
@@ -130,15 +142,38 @@ impl Traces {
 
     fn columns(&self) -> [&Vec<f64>; 14] {
         [
-            &self.t, &self.q1, &self.q2, &self.theta, &self.qd1, &self.qd2, &self.e1, &self.e2, &self.torque1,
-            &self.torque2, &self.v1, &self.v2, &self.xf1_hat, &self.xf2_hat,
+            &self.t,
+            &self.q1,
+            &self.q2,
+            &self.theta,
+            &self.qd1,
+            &self.qd2,
+            &self.e1,
+            &self.e2,
+            &self.torque1,
+            &self.torque2,
+            &self.v1,
+            &self.v2,
+            &self.xf1_hat,
+            &self.xf2_hat,
         ]
     }
 
     fn columns_mut(&mut self) -> [&mut Vec<f64>; 14] {
         [
-            &mut self.t, &mut self.q1, &mut self.q2, &mut self.theta, &mut self.qd1, &mut self.qd2, &mut self.e1,
-            &mut self.e2, &mut self.torque1, &mut self.torque2, &mut self.v1, &mut self.v2, &mut self.xf1_hat,
+            &mut self.t,
+            &mut self.q1,
+            &mut self.q2,
+            &mut self.theta,
+            &mut self.qd1,
+            &mut self.qd2,
+            &mut self.e1,
+            &mut self.e2,
+            &mut self.torque1,
+            &mut self.torque2,
+            &mut self.v1,
+            &mut self.v2,
+            &mut self.xf1_hat,
             &mut self.xf2_hat,
         ]
     }
@@ -260,7 +295,8 @@ impl ErrorStats {
         let n = pts.len() as f64;
         let (st, sy) = pts.iter().fold((0.0, 0.0), |(a, b), (t, y)| (a + t, b + y));
         let (mt, my) = (st / n, sy / n);
-        let (num, den) = pts.iter().fold((0.0, 0.0), |(a, b), (t, y)| (a + (t - mt) * (y - my), b + (t - mt) * (t - mt)));
+        let (num, den) =
+            pts.iter().fold((0.0, 0.0), |(a, b), (t, y)| (a + (t - mt) * (y - my), b + (t - mt) * (t - mt)));
         (den > 0.0).then(|| num / den)
     }
 }
@@ -399,7 +435,11 @@ impl ClosedLoop {
             return Err(Error::InvalidDuration(duration));
         }
         if !torque.iter().all(|v| v.is_finite()) {
-            return Err(Error::Config(crate::ConfigError::new("disturbance torque", torque[0] + torque[1], "must be finite")));
+            return Err(Error::Config(crate::ConfigError::new(
+                "disturbance torque",
+                torque[0] + torque[1],
+                "must be finite",
+            )));
         }
         self.disturbance = Some((Vector2::from(torque), self.time + duration));
         Ok(())
@@ -445,7 +485,14 @@ impl ClosedLoop {
     fn controller_state(&self) -> StateVector {
         let s = &self.plant_state;
         StateVector::from_column_slice(&[
-            s.q[0], s.q[1], s.q[2], s.qdot[0], s.qdot[1], s.qdot[2], self.integrators[0], self.integrators[1],
+            s.q[0],
+            s.q[1],
+            s.q[2],
+            s.qdot[0],
+            s.qdot[1],
+            s.qdot[2],
+            self.integrators[0],
+            self.integrators[1],
         ])
     }
 
@@ -538,7 +585,8 @@ impl ClosedLoop {
         if self.step_in_period == d.steps_per_period {
             self.step_in_period = 0;
             self.periods_since_origin += 1;
-            self.period_start = self.period_origin + self.periods_since_origin as f64 * self.config.controller.sampling_period;
+            self.period_start =
+                self.period_origin + self.periods_since_origin as f64 * self.config.controller.sampling_period;
             self.time = self.period_start;
         } else {
             self.time = self.period_start + self.step_in_period as f64 * h;
@@ -562,8 +610,20 @@ impl ClosedLoop {
     fn record_trace(&mut self) {
         let s = self.snapshot();
         self.traces.push([
-            s.time, s.q[0], s.q[1], s.q[2], s.qd[0], s.qd[1], s.error[0], s.error[1], s.torque[0], s.torque[1], s.v[0],
-            s.v[1], s.xf_hat[0], s.xf_hat[1],
+            s.time,
+            s.q[0],
+            s.q[1],
+            s.q[2],
+            s.qd[0],
+            s.qd[1],
+            s.error[0],
+            s.error[1],
+            s.torque[0],
+            s.torque[1],
+            s.v[0],
+            s.v[1],
+            s.xf_hat[0],
+            s.xf_hat[1],
         ]);
     }
 
@@ -608,7 +668,9 @@ impl ClosedLoop {
         let verdict = match self.divergence {
             Some((at, reason)) => Verdict::Diverged { at, reason },
             None => match growth_rate {
-                Some(g) if g > UNSTABLE_GROWTH_RATE && last_window > ERROR_NOISE_FLOOR => Verdict::Unstable { growth_rate: g },
+                Some(g) if g > UNSTABLE_GROWTH_RATE && last_window > ERROR_NOISE_FLOOR => {
+                    Verdict::Unstable { growth_rate: g }
+                }
                 _ => Verdict::Stable,
             },
         };

@@ -63,7 +63,12 @@ pub struct LqDesign {
 }
 
 /// Designs the LQ preliminary feedback at rest at (q1, q2) for the stabilizing constants α.
-pub fn design_lq(plant: &PlantParameters, alpha: [f64; 2], q_rest: [f64; 2], weights: &LqWeights) -> Result<LqDesign, Error> {
+pub fn design_lq(
+    plant: &PlantParameters,
+    alpha: [f64; 2],
+    q_rest: [f64; 2],
+    weights: &LqWeights,
+) -> Result<LqDesign, Error> {
     let model = linearize_at_rest(plant, alpha, q_rest);
     let open = limit_pair(&model, &FeedbackGain::zeros())?;
     let a = DMatrix::from_iterator(2, 2, open.a4.iter().copied());
@@ -72,7 +77,8 @@ pub fn design_lq(plant: &PlantParameters, alpha: [f64; 2], q_rest: [f64; 2], wei
     let r = DMatrix::from_diagonal(&nalgebra::DVector::from_row_slice(&weights.input_weights));
     let p = solve_care(&a, &b, &q, &r)?;
     // u = K2 x2 with K2 = −R⁻¹ B2ᵀ P.
-    let r_inv = DMatrix::from_diagonal(&nalgebra::DVector::from_iterator(2, weights.input_weights.iter().map(|w| 1.0 / w)));
+    let r_inv =
+        DMatrix::from_diagonal(&nalgebra::DVector::from_iterator(2, weights.input_weights.iter().map(|w| 1.0 / w)));
     let k2d = -(r_inv * b.transpose() * &p);
     let k2 = Matrix2::from_iterator(k2d.iter().copied());
     let gain = k2 * open.coordinates;
@@ -95,7 +101,12 @@ pub fn resolve_gain(config: &SimulationConfig) -> Result<FeedbackGain, Error> {
 /// Solves the continuous algebraic Riccati equation AᵀP + PA − PBR⁻¹BᵀP + Q = 0 for the
 /// stabilizing P, by the matrix sign function of the Hamiltonian
 /// H = [[A, −BR⁻¹Bᵀ], [−Q, −Aᵀ]]: the stable invariant subspace is ker(sign H + I).
-pub fn solve_care(a: &DMatrix<f64>, b: &DMatrix<f64>, q: &DMatrix<f64>, r: &DMatrix<f64>) -> Result<DMatrix<f64>, Error> {
+pub fn solve_care(
+    a: &DMatrix<f64>,
+    b: &DMatrix<f64>,
+    q: &DMatrix<f64>,
+    r: &DMatrix<f64>,
+) -> Result<DMatrix<f64>, Error> {
     let n = a.nrows();
     let r_inv = r.clone().try_inverse().ok_or(Error::Analysis("Riccati: R is singular"))?;
     let g = b * r_inv * b.transpose();
@@ -109,7 +120,10 @@ pub fn solve_care(a: &DMatrix<f64>, b: &DMatrix<f64>, q: &DMatrix<f64>, r: &DMat
     let mut z = h;
     let mut converged = false;
     for _ in 0..100 {
-        let inv = z.clone().try_inverse().ok_or(Error::Analysis("Riccati: Hamiltonian has eigenvalues on the imaginary axis"))?;
+        let inv = z
+            .clone()
+            .try_inverse()
+            .ok_or(Error::Analysis("Riccati: Hamiltonian has eigenvalues on the imaginary axis"))?;
         let det = z.determinant().abs();
         let c = if det.is_finite() && det > 0.0 { det.powf(1.0 / (2.0 * n as f64)) } else { 1.0 };
         let next = (&z / c + inv * c) * 0.5;
@@ -131,7 +145,8 @@ pub fn solve_care(a: &DMatrix<f64>, b: &DMatrix<f64>, q: &DMatrix<f64>, r: &DMat
     let mut rhs = DMatrix::zeros(2 * n, n);
     rhs.view_mut((0, 0), (n, n)).copy_from(&(-(z.view((0, 0), (n, n)) + &id)));
     rhs.view_mut((n, 0), (n, n)).copy_from(&(-z.view((n, 0), (n, n))));
-    let p = lhs.svd(true, true).solve(&rhs, 1e-14).map_err(|_| Error::Analysis("Riccati: least-squares solve failed"))?;
+    let p =
+        lhs.svd(true, true).solve(&rhs, 1e-14).map_err(|_| Error::Analysis("Riccati: least-squares solve failed"))?;
     let p = (&p + p.transpose()) * 0.5;
     if !p.iter().all(|v| v.is_finite()) {
         return Err(Error::Analysis("Riccati: no finite solution"));

@@ -24,7 +24,13 @@ pub fn dahl_update(xf: f64, velocity: f64, dt: f64, coulomb: f64, length: f64) -
 
 /// Advances both friction states (xf1 on θ̇, xf2 on q̇2) over `dt` at the given velocities.
 #[inline]
-pub fn advance_friction(p: &PlantParameters, xf: &mut Vector2<f64>, motor_velocity: f64, joint2_velocity: f64, dt: f64) {
+pub fn advance_friction(
+    p: &PlantParameters,
+    xf: &mut Vector2<f64>,
+    motor_velocity: f64,
+    joint2_velocity: f64,
+    dt: f64,
+) {
     xf[0] = dahl_update(xf[0], motor_velocity, dt, p.fc1, p.eps1);
     xf[1] = dahl_update(xf[1], joint2_velocity, dt, p.fc2, p.eps2);
 }

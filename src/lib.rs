@@ -55,7 +55,9 @@ impl core::fmt::Display for Error {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             Error::Config(e) => e.fmt(f),
-            Error::InvalidDuration(d) => write!(f, "invalid duration = {d}: must be a finite number ≥ 0 s (at most 1e6 s)"),
+            Error::InvalidDuration(d) => {
+                write!(f, "invalid duration = {d}: must be a finite number ≥ 0 s (at most 1e6 s)")
+            }
             Error::Analysis(m) => write!(f, "analysis failed: {m}"),
         }
     }

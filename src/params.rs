@@ -190,8 +190,12 @@ impl ControllerParameters {
             return Err(ConfigError::new(
                 "eps_ratio (m = δ/ε)",
                 self.eps_ratio,
-                &format!("the horizon must satisfy δ ≤ kε ≤ 2δ, i.e. k/2 ≤ m ≤ k; with k = {} that is {} ≤ m ≤ {}",
-                    self.horizon_steps, k / 2.0, k),
+                &format!(
+                    "the horizon must satisfy δ ≤ kε ≤ 2δ, i.e. k/2 ≤ m ≤ k; with k = {} that is {} ≤ m ≤ {}",
+                    self.horizon_steps,
+                    k / 2.0,
+                    k
+                ),
             ));
         }
         Ok(())

@@ -78,7 +78,13 @@ impl Plant {
     /// r2 = −Bv2 q̇2 − xf2 − A3 q̇1² s2 + T2,
     /// r3 = −Bv1 θ̇ − xf1 + T1 + K1 (q1 − θ).
     #[inline]
-    pub fn forces(&self, q: &Vector3<f64>, qdot: &Vector3<f64>, friction: &Vector2<f64>, torque: &Vector2<f64>) -> Vector3<f64> {
+    pub fn forces(
+        &self,
+        q: &Vector3<f64>,
+        qdot: &Vector3<f64>,
+        friction: &Vector2<f64>,
+        torque: &Vector2<f64>,
+    ) -> Vector3<f64> {
         let p = &self.params;
         let s2 = q[1].sin();
         let stretch = q[2] - q[0];
@@ -96,14 +102,26 @@ impl Plant {
         let (s2, c2) = q[1].sin_cos();
         let (v1, v2) = (qdot[0], qdot[1]);
         let dq = Matrix3::new(
-            -p.k1, p.a3 * v2 * (2.0 * v1 + v2) * c2, p.k1,
-            0.0, -p.a3 * v1 * v1 * c2, 0.0,
-            p.k1, 0.0, -p.k1,
+            -p.k1,
+            p.a3 * v2 * (2.0 * v1 + v2) * c2,
+            p.k1,
+            0.0,
+            -p.a3 * v1 * v1 * c2,
+            0.0,
+            p.k1,
+            0.0,
+            -p.k1,
         );
         let dv = Matrix3::new(
-            2.0 * p.a3 * v2 * s2, 2.0 * p.a3 * (v1 + v2) * s2, 0.0,
-            -2.0 * p.a3 * v1 * s2, -p.bv2, 0.0,
-            0.0, 0.0, -p.bv1,
+            2.0 * p.a3 * v2 * s2,
+            2.0 * p.a3 * (v1 + v2) * s2,
+            0.0,
+            -2.0 * p.a3 * v1 * s2,
+            -p.bv2,
+            0.0,
+            0.0,
+            0.0,
+            -p.bv1,
         );
         (dq, dv)
     }
@@ -116,7 +134,13 @@ impl Plant {
 
     /// q̈ = M(q2)⁻¹ r; M is block diagonal, so a 2×2 solve and a division.
     #[inline]
-    pub fn acceleration(&self, q: &Vector3<f64>, qdot: &Vector3<f64>, friction: &Vector2<f64>, torque: &Vector2<f64>) -> Vector3<f64> {
+    pub fn acceleration(
+        &self,
+        q: &Vector3<f64>,
+        qdot: &Vector3<f64>,
+        friction: &Vector2<f64>,
+        torque: &Vector2<f64>,
+    ) -> Vector3<f64> {
         let r = self.forces(q, qdot, friction, torque);
         self.solve_mass(q[1], &r)
     }
@@ -139,7 +163,12 @@ impl Plant {
 
     /// One plant step of length `h` (see the module docs) with the input torques given as a
     /// function of the mechanical state (q, q̇) and the friction state (frozen during the RK4 part).
-    pub fn step(&self, state: &mut PlantState, h: f64, torque: impl Fn(&Vector3<f64>, &Vector3<f64>, &Vector2<f64>) -> Vector2<f64>) {
+    pub fn step(
+        &self,
+        state: &mut PlantState,
+        h: f64,
+        torque: impl Fn(&Vector3<f64>, &Vector3<f64>, &Vector2<f64>) -> Vector2<f64>,
+    ) {
         self.friction_half_step(state, 0.5 * h);
         let friction = state.friction;
         let x = mechanical_vector(state);
@@ -180,7 +209,11 @@ pub(crate) fn split_mechanical(x: &SVector<f64, 6>) -> (Vector3<f64>, Vector3<f6
 /// One classical fourth-order Runge–Kutta step of ẋ = f(s, x), where s is the time since the
 /// start of the step.
 #[inline]
-pub(crate) fn rk4<const N: usize>(x: &SVector<f64, N>, h: f64, f: impl Fn(f64, &SVector<f64, N>) -> SVector<f64, N>) -> SVector<f64, N> {
+pub(crate) fn rk4<const N: usize>(
+    x: &SVector<f64, N>,
+    h: f64,
+    f: impl Fn(f64, &SVector<f64, N>) -> SVector<f64, N>,
+) -> SVector<f64, N> {
     let k1 = f(0.0, x);
     let k2 = f(0.5 * h, &(x + k1 * (0.5 * h)));
     let k3 = f(0.5 * h, &(x + k2 * (0.5 * h)));

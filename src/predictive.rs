@@ -115,7 +115,13 @@ impl Predictor {
 
     /// Integrates eq. (2.4) from X_0 = `x0` at `t0` over k steps and returns U_k and X_k.
     /// `torque_guess` seeds Newton in the first step (the previous U_k is a good choice).
-    pub fn predict(&self, reference: &Reference, t0: f64, x0: &StateVector, torque_guess: &Vector2<f64>) -> Result<Prediction, PredictionError> {
+    pub fn predict(
+        &self,
+        reference: &Reference,
+        t0: f64,
+        x0: &StateVector,
+        torque_guess: &Vector2<f64>,
+    ) -> Result<Prediction, PredictionError> {
         if !x0.iter().all(|v| v.is_finite()) {
             return Err(PredictionError::NonFinite);
         }
@@ -135,7 +141,12 @@ impl Predictor {
     /// Solves one backward-Euler step for z = (q̇⁺, U⁺) by Newton from `guess`; returns z and the
     /// number of iterations, or `None` if Newton fails (a vanishing pivot, a non-finite iterate,
     /// or no convergence in [`NEWTON_MAX_ITERATIONS`]).
-    pub fn solve_step(&self, x: &StateVector, r: &ReferenceSample, guess: &StepUnknowns) -> Option<(StepUnknowns, usize)> {
+    pub fn solve_step(
+        &self,
+        x: &StateVector,
+        r: &ReferenceSample,
+        guess: &StepUnknowns,
+    ) -> Option<(StepUnknowns, usize)> {
         let mut z = *guess;
         let mut previous = f64::INFINITY;
         for iteration in 1..=NEWTON_MAX_ITERATIONS {
@@ -176,7 +187,12 @@ impl Predictor {
     }
 
     /// The residual and its analytic Jacobian ∂R/∂z.
-    pub fn residual_and_jacobian(&self, x: &StateVector, r: &ReferenceSample, z: &StepUnknowns) -> (StepUnknowns, StepJacobian) {
+    pub fn residual_and_jacobian(
+        &self,
+        x: &StateVector,
+        r: &ReferenceSample,
+        z: &StepUnknowns,
+    ) -> (StepUnknowns, StepJacobian) {
         let e = self.eps;
         let q = Vector3::new(x[0], x[1], x[2]);
         let v = Vector3::new(x[3], x[4], x[5]);

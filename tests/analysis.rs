@@ -104,7 +104,10 @@ fn lq_design_reproduces_the_papers_gain() {
     // The same pair through the full-state gain and the limit analysis.
     let model = linearize_at_rest(&PlantParameters::default(), [2.0, 2.0], [0.5 * PI, 0.0]);
     let pair = limit_pair(&model, &design.gain).unwrap();
-    assert!((pair.eigenvalues[0] - design.closed_pair[0]).norm() < 1e-6 || (pair.eigenvalues[0] - design.closed_pair[1]).norm() < 1e-6);
+    assert!(
+        (pair.eigenvalues[0] - design.closed_pair[0]).norm() < 1e-6
+            || (pair.eigenvalues[0] - design.closed_pair[1]).norm() < 1e-6
+    );
 }
 
 #[test]

@@ -65,7 +65,9 @@ fn unstable_run_grows_like_the_flexible_pair_and_diverges_after_about_four_secon
     assert!((growth - predicted).abs() < 0.15 * predicted, "simulated {growth} vs ln ρ/δ = {predicted}");
     sim.advance(RUN).unwrap();
     match sim.metrics().verdict {
-        Verdict::Diverged { at, reason: DivergenceReason::ErrorBound } => assert!((3.0..=6.0).contains(&at), "diverged at {at}"),
+        Verdict::Diverged { at, reason: DivergenceReason::ErrorBound } => {
+            assert!((3.0..=6.0).contains(&at), "diverged at {at}")
+        }
         v => panic!("expected divergence, got {v:?}"),
     }
     assert!(sim.is_finished());
@@ -95,7 +97,13 @@ fn errors_shrink_with_delta_and_are_small_at_forty_milliseconds() {
     let fine = simulate(&config(0.01, PreliminaryFeedbackChoice::Paper), RUN).unwrap().metrics;
     assert!(coarse.max_error_slew[0] < 1e-2 && coarse.max_error_slew[1] < 2e-2, "{:?}", coarse.max_error_slew);
     for i in 0..2 {
-        assert!(fine.max_error_slew[i] * 5.0 <= coarse.max_error_slew[i], "link {}: {:?} vs {:?}", i + 1, fine.max_error_slew, coarse.max_error_slew);
+        assert!(
+            fine.max_error_slew[i] * 5.0 <= coarse.max_error_slew[i],
+            "link {}: {:?} vs {:?}",
+            i + 1,
+            fine.max_error_slew,
+            coarse.max_error_slew
+        );
     }
     // After the slew the errors die out.
     assert!(fine.max_error_after[0] < fine.max_error_slew[0] && fine.max_error_after[1] < fine.max_error_slew[1]);
@@ -138,7 +146,13 @@ fn continuous_friction_compensation_equals_the_friction_free_plant() {
     let off = simulate(&off, 4.0).unwrap().metrics;
     let on = compensated.metrics;
     for i in 0..2 {
-        assert!(off.max_error_slew[i] >= 10.0 * on.max_error_slew[i], "link {}: {:?} vs {:?}", i + 1, off.max_error_slew, on.max_error_slew);
+        assert!(
+            off.max_error_slew[i] >= 10.0 * on.max_error_slew[i],
+            "link {}: {:?} vs {:?}",
+            i + 1,
+            off.max_error_slew,
+            on.max_error_slew
+        );
     }
 }
 

@@ -5,11 +5,7 @@ use flexarm::*;
 use nalgebra::{Vector2, Vector3};
 
 fn swinging_state() -> PlantState {
-    PlantState {
-        q: Vector3::new(0.3, 1.0, 0.35),
-        qdot: Vector3::new(1.0, -2.0, 0.5),
-        friction: Vector2::zeros(),
-    }
+    PlantState { q: Vector3::new(0.3, 1.0, 0.35), qdot: Vector3::new(1.0, -2.0, 0.5), friction: Vector2::zeros() }
 }
 
 /// ERRATA.md: with torques, damping and friction zero, E = ½ q̇ᵀ M q̇ + ½ K1 (θ − q1)² stays
@@ -40,12 +36,19 @@ fn energy_test_detects_the_ocr_mass_matrix() {
     let ocr_mass = |q2: f64| {
         let c2 = q2.cos();
         nalgebra::Matrix3::new(
-            p.a1 + 2.0 * p.a3 * c2, p.a2 + 2.0 * p.a3 * c2, 0.0,
-            p.a2 + 2.0 * p.a3 * c2, p.a2, 0.0,
-            0.0, 0.0, p.ir1,
+            p.a1 + 2.0 * p.a3 * c2,
+            p.a2 + 2.0 * p.a3 * c2,
+            0.0,
+            p.a2 + 2.0 * p.a3 * c2,
+            p.a2,
+            0.0,
+            0.0,
+            0.0,
+            p.ir1,
         )
     };
-    let energy = |q: &Vector3<f64>, v: &Vector3<f64>| 0.5 * v.dot(&(ocr_mass(q[1]) * v)) + 0.5 * p.k1 * (q[2] - q[0]).powi(2);
+    let energy =
+        |q: &Vector3<f64>, v: &Vector3<f64>| 0.5 * v.dot(&(ocr_mass(q[1]) * v)) + 0.5 * p.k1 * (q[2] - q[0]).powi(2);
     let s = swinging_state();
     let (mut q, mut v) = (s.q, s.qdot);
     let e0 = energy(&q, &v);

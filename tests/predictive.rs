@@ -32,7 +32,12 @@ fn analytic_jacobian_matches_finite_differences() {
             let fd = (predictor.residual(&x, &r, &zp) - predictor.residual(&x, &r, &zm)) / (2.0 * h);
             for i in 0..5 {
                 let scale = 1.0 + jac[(i, j)].abs();
-                assert!((fd[i] - jac[(i, j)]).abs() < 1e-6 * scale, "δ = {delta}: ∂R{i}/∂z{j}: analytic {} vs FD {}", jac[(i, j)], fd[i]);
+                assert!(
+                    (fd[i] - jac[(i, j)]).abs() < 1e-6 * scale,
+                    "δ = {delta}: ∂R{i}/∂z{j}: analytic {} vs FD {}",
+                    jac[(i, j)],
+                    fd[i]
+                );
             }
         }
     }
