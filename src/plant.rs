@@ -101,27 +101,17 @@ impl Plant {
         let p = &self.params;
         let (s2, c2) = q[1].sin_cos();
         let (v1, v2) = (qdot[0], qdot[1]);
+        #[rustfmt::skip]
         let dq = Matrix3::new(
-            -p.k1,
-            p.a3 * v2 * (2.0 * v1 + v2) * c2,
-            p.k1,
-            0.0,
-            -p.a3 * v1 * v1 * c2,
-            0.0,
-            p.k1,
-            0.0,
-            -p.k1,
+            -p.k1, p.a3 * v2 * (2.0 * v1 + v2) * c2, p.k1,
+            0.0,   -p.a3 * v1 * v1 * c2,             0.0,
+            p.k1,  0.0,                              -p.k1,
         );
+        #[rustfmt::skip]
         let dv = Matrix3::new(
-            2.0 * p.a3 * v2 * s2,
-            2.0 * p.a3 * (v1 + v2) * s2,
-            0.0,
-            -2.0 * p.a3 * v1 * s2,
-            -p.bv2,
-            0.0,
-            0.0,
-            0.0,
-            -p.bv1,
+            2.0 * p.a3 * v2 * s2,  2.0 * p.a3 * (v1 + v2) * s2, 0.0,
+            -2.0 * p.a3 * v1 * s2, -p.bv2,                      0.0,
+            0.0,                   0.0,                         -p.bv1,
         );
         (dq, dv)
     }
