@@ -263,6 +263,9 @@ struct ErrorStats {
     windows: Vec<(f64, f64)>,
     window_start: f64,
     window_max: f64,
+    /// The growth rate is fitted only after this time (the last change of configuration), so a
+    /// live change shows its own growth, not a mix with the previous setting.
+    fit_from: f64,
 }
 
 impl ErrorStats {
@@ -286,7 +289,7 @@ impl ErrorStats {
     /// Least-squares slope of ln(window max) over windows that end after `from`.
     fn growth_rate(&self, from: f64) -> Option<f64> {
         let end = self.windows.last()?.0;
-        let start = from.max(end - GROWTH_FIT_SPAN);
+        let start = from.max(self.fit_from).max(end - GROWTH_FIT_SPAN);
         let pts: Vec<(f64, f64)> =
             self.windows.iter().filter(|(t, m)| *t > start + 1e-9 && *m > 0.0).map(|(t, m)| (*t, m.ln())).collect();
         if pts.len() < 3 {
@@ -523,6 +526,7 @@ impl ClosedLoop {
             }
             self.config = config;
             self.derived = derived;
+            self.stats.fit_from = self.time;
         }
         let x = self.controller_state();
         self.v_applied = self.v_next.take().unwrap_or_else(Vector2::zeros);

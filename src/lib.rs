@@ -22,8 +22,12 @@
 //! | [`feedback`] | preliminary feedback: the paper's K_pr, the LQ design, a Riccati solver |
 //! | [`closed_loop`] | the sampled-data loop of Fig. 2.1, traces, metrics, verdict |
 //! | [`analysis`] | linearization, ρ, eigenvalues, the δ → 0 pair A4, stability maps |
+//! | [`presets`] | the paper's figures as named configurations |
+//! | [`view`] | what the page draws, as plain geometry (no GPU types): arm, traces, axes |
+//! | `web` | wasm32 only: the JS handle and the wgpu renderer |
 //!
 //! The core has no web types and no global state; it builds for native targets and wasm32.
+//! Everything web-specific lives in `web`, compiled only for `wasm32`.
 
 pub mod analysis;
 pub mod closed_loop;
@@ -32,7 +36,12 @@ pub mod friction;
 pub mod params;
 pub mod plant;
 pub mod predictive;
+pub mod presets;
 pub mod reference;
+pub mod view;
+
+#[cfg(target_arch = "wasm32")]
+pub mod web;
 
 pub use closed_loop::{simulate, ClosedLoop, Metrics, RunReport, Verdict};
 pub use params::{

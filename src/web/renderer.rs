@@ -1,0 +1,1 @@
+//! The wgpu renderer (placeholder until the renderer lands).
