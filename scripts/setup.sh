@@ -1,10 +1,70 @@
-# Sourced by scripts/test.sh and scripts/serve.sh: shared helpers and the native toolchain check.
-# Everything comes from the package registries (crates.io, npm, PyPI, Debian); nothing else is fetched.
+# Sourced by scripts/test.sh and scripts/serve.sh: installs whatever is missing, from the package
+# registries only (crates.io, npm, Debian). No tool may fetch its own binaries or browser.
 
 step() { printf '\n==> %s\n' "$*"; }
 
 export PATH="$HOME/.cargo/bin:$PATH"
-if ! command -v cargo >/dev/null 2>&1; then
-    echo "error: cargo is not installed; this machine kind ships Rust via rustup (see README)" >&2
-    exit 1
-fi
+
+as_root() {
+    if [ "$(id -u)" = 0 ]; then "$@"
+    elif command -v sudo >/dev/null 2>&1; then sudo "$@"
+    else echo "error: '$*' needs root (no sudo available)" >&2; exit 1
+    fi
+}
+
+ensure_rust() {
+    if ! command -v cargo >/dev/null 2>&1; then
+        echo "error: cargo is not installed; install Rust with rustup first" >&2
+        exit 1
+    fi
+}
+
+# The wasm-bindgen CLI must have exactly the version of the wasm-bindgen crate in Cargo.lock
+# (0.2.130); otherwise wasm-pack would try to download one from GitHub.
+wasm_bindgen_version() {
+    awk '/^name = "wasm-bindgen"$/{getline; print $3; exit}' Cargo.lock | tr -d '"'
+}
+
+ensure_wasm_toolchain() {
+    ensure_rust
+    if ! rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown; then
+        step "installing the wasm32-unknown-unknown target (rustup)"
+        rustup target add wasm32-unknown-unknown
+    fi
+    if ! command -v wasm-pack >/dev/null 2>&1; then
+        step "installing wasm-pack from crates.io (about 2 minutes)"
+        cargo install wasm-pack --locked
+    fi
+    local want
+    want=$(wasm_bindgen_version)
+    if [ -z "$want" ]; then
+        echo "error: Cargo.lock names no wasm-bindgen version" >&2
+        exit 1
+    fi
+    if ! wasm-bindgen --version 2>/dev/null | grep -qx "wasm-bindgen $want"; then
+        step "installing wasm-bindgen-cli $want from crates.io (about 3 minutes)"
+        # Not --locked: a locked transitive version is missing from the registry index.
+        cargo install wasm-bindgen-cli --version "$want" --force
+    fi
+}
+
+ensure_browser() {
+    if ! command -v chromium >/dev/null 2>&1 || ! command -v chromedriver >/dev/null 2>&1; then
+        step "installing Debian's chromium and chromium-driver"
+        as_root apt-get update -qq
+        as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium chromium-driver >/dev/null
+    fi
+}
+
+ensure_node() {
+    if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+        step "installing Node.js and npm (Debian)"
+        as_root apt-get update -qq
+        as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq nodejs npm >/dev/null
+    fi
+}
+
+build_wasm() {
+    step "building the wasm module (release) into www/pkg"
+    wasm-pack build --target web --release --out-dir www/pkg --no-typescript --no-pack
+}

@@ -1,9 +1,23 @@
 #!/usr/bin/env bash
-# Installs whatever is missing on a fresh machine and runs every test of flexarm.
+# Installs whatever is missing on a fresh machine and runs every test of flexarm:
+# native (cargo test), wasm in headless Chromium (wasm-pack test), and the page end to end
+# (Playwright driving Debian's Chromium).
 # Usage: bash scripts/test.sh
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 . scripts/setup.sh
 
+ensure_rust
 step "native tests (cargo test)"
 cargo test --locked
+
+ensure_wasm_toolchain
+ensure_browser
+step "wasm tests in headless Chromium (wasm-pack test)"
+wasm-pack test --headless --chromedriver "$(command -v chromedriver)" wasm-tests
+
+build_wasm
+ensure_node
+step "end-to-end tests of the page (Playwright + Chromium)"
+(cd tests/e2e && npm ci --no-audit --no-fund --loglevel=error)
+node --test tests/e2e/
