@@ -266,10 +266,25 @@ struct ErrorStats {
     /// The growth rate is fitted only after this time (the last change of configuration), so a
     /// live change shows its own growth, not a mix with the previous setting.
     fit_from: f64,
+    /// For a repeating maneuver: its period and the error maximum of each cycle (cycle index, max).
+    cycle_period: Option<f64>,
+    cycle_max: Vec<(u64, f64)>,
 }
 
 impl ErrorStats {
-    fn record(&mut self, t: f64, e: &Vector2<f64>, torque: &Vector2<f64>, moving: bool) {
+    fn record(&mut self, t: f64, e: &Vector2<f64>, torque: &Vector2<f64>, moving: bool, cycle_period: Option<f64>) {
+        if cycle_period != self.cycle_period {
+            self.cycle_period = cycle_period;
+            self.cycle_max.clear();
+        }
+        if let Some(period) = cycle_period {
+            let index = (t / period).floor() as u64;
+            let m = e[0].abs().max(e[1].abs());
+            match self.cycle_max.last_mut() {
+                Some((i, max)) if *i == index => *max = max.max(m),
+                _ => self.cycle_max.push((index, m)),
+            }
+        }
         for i in 0..2 {
             let a = e[i].abs();
             let slot = if moving { &mut self.max_slew[i] } else { &mut self.max_after[i] };
@@ -286,8 +301,19 @@ impl ErrorStats {
         }
     }
 
-    /// Least-squares slope of ln(window max) over windows that end after `from`.
+    /// The growth rate of the error envelope, 1/s. For a single slew: the least-squares slope of
+    /// ln(window max) over the windows after `from` (the end of the slew). For a repeating
+    /// maneuver the errors rise with every slew even when the loop is stable, so the envelope is
+    /// compared cycle to cycle instead: ln(max of the last full cycle / max of the one before) / period.
     fn growth_rate(&self, from: f64) -> Option<f64> {
+        if let Some(period) = self.cycle_period {
+            let current = self.cycle_max.last()?.0;
+            let mut complete =
+                self.cycle_max.iter().filter(|(i, _)| *i < current && *i as f64 * period >= self.fit_from - 1e-9).rev();
+            let (_, last) = complete.next()?;
+            let (_, previous) = complete.next()?;
+            return (*last > 0.0 && *previous > 0.0).then(|| (last / previous).ln() / period);
+        }
         let end = self.windows.last()?.0;
         let start = from.max(self.fit_from).max(end - GROWTH_FIT_SPAN);
         let pts: Vec<(f64, f64)> =
@@ -604,7 +630,8 @@ impl ClosedLoop {
         } else if e.amax() > self.config.divergence_bound {
             self.divergence = Some((self.time, DivergenceReason::ErrorBound));
         } else {
-            self.stats.record(self.time, &e, &self.applied_torque, d.reference.is_moving(self.time));
+            let cycle = self.config.reference.repeat_hold.map(|hold| 2.0 * (self.config.reference.slew_time + hold));
+            self.stats.record(self.time, &e, &self.applied_torque, d.reference.is_moving(self.time), cycle);
         }
         if self.steps_taken.is_multiple_of(d.output_every as u64) || self.divergence.is_some() {
             self.record_trace();

@@ -155,3 +155,29 @@ fn repeating_maneuver_keeps_moving() {
     let back_home = q1.iter().skip(q1.len() / 3).any(|v| v.abs() < 1e-2);
     assert!(back_home, "the arm returns to the start");
 }
+
+/// With a repeating maneuver the errors rise at every slew; a stable loop must still read stable
+/// at every moment (the envelope is compared cycle to cycle), and an unstable one unstable.
+#[test]
+fn repeating_maneuver_verdict_does_not_flicker() {
+    let mut c = SimulationConfig::default();
+    c.reference.repeat_hold = Some(1.5);
+    let mut sim = ClosedLoop::new(c).unwrap();
+    while sim.time() < 30.0 {
+        sim.advance(0.1).unwrap();
+        assert_eq!(sim.metrics().verdict, Verdict::Stable, "t = {}: {:?}", sim.time(), sim.metrics());
+    }
+    assert!(sim.metrics().growth_rate.unwrap().abs() < 0.05);
+    // Without preliminary feedback at δ = 0.04 s (stable, ρ < 1) as well; at α = 0.5, δ = 0.01 s
+    // (slowly unstable, ρ > 1) the growth shows cycle to cycle.
+    c.preliminary_feedback = PreliminaryFeedbackChoice::Off;
+    c.controller.sampling_period = 0.04;
+    let mut sim = ClosedLoop::new(c).unwrap();
+    sim.advance(30.0).unwrap();
+    assert_eq!(sim.metrics().verdict, Verdict::Stable, "{:?}", sim.metrics());
+    c.controller.sampling_period = 0.01;
+    c.controller.alpha = [0.5, 0.5];
+    let mut sim = ClosedLoop::new(c).unwrap();
+    sim.advance(40.0).unwrap();
+    assert!(matches!(sim.metrics().verdict, Verdict::Unstable { .. } | Verdict::Diverged { .. }), "{:?}", sim.metrics());
+}
