@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 /// Units: inertias kg m², viscous damping N m s/rad, Coulomb levels N m, Dahl lengths rad,
 /// stiffness N m/rad.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct PlantParameters {
     /// A1, kg m².
     pub a1: f64,
@@ -90,7 +90,7 @@ impl PlantParameters {
 
 /// The prescribed slew of section 5: both links move from `start` to `end` in `slew_time`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct SlewParameters {
     /// q_d0 for links 1 and 2, rad.
     pub start: [f64; 2],
@@ -129,7 +129,7 @@ impl SlewParameters {
 
 /// Settings of the Jankowski–Van Brussel predictive controller, eqs. (2.3)–(2.4) and (4.2)–(4.3).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct ControllerParameters {
     /// δ, the sampling period, s.
     pub sampling_period: f64,
@@ -241,7 +241,7 @@ pub enum InnerLoop {
 
 /// Everything a closed-loop run needs.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct SimulationConfig {
     pub plant: PlantParameters,
     pub reference: SlewParameters,

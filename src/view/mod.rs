@@ -1,3 +1,69 @@
 //! What the page draws, as plain geometry with no GPU or web types (so it is testable natively):
 //! panels laid out in CSS pixels, tessellated into coloured triangles that the wgpu renderer in
 //! `web` uploads as they are.
+//!
+//! | module | contents |
+//! |---|---|
+//! | [`painter`] | [`Vertex`], [`Painter`]: thick lines, polylines, circles, rectangles → triangle list |
+//! | [`layout`] | [`Layout`]: where the arm and the plots go for a canvas size ([`PanelKind`]) |
+//! | [`axes`] | 1-2-5 ticks and the error/torque autoscale with hysteresis |
+//! | [`arm`] | the arm, motor, magnified spring twist and reference arm |
+//! | [`traces`] | scrolling time plots with min/max decimation |
+//! | [`scene`] | [`Scene`]: one frame from a [`ClosedLoop`](crate::ClosedLoop), plus panel info for labels |
+//!
+//! Simulation values arrive as f64 and stay f64 until a vertex is written (f32, physical pixels).
+
+pub mod arm;
+pub mod axes;
+pub mod layout;
+pub mod painter;
+pub mod scene;
+pub mod traces;
+
+pub use layout::{Layout, LayoutOptions, Panel, PanelKind, Rect};
+pub use painter::{Color, Painter, Vertex};
+pub use scene::{OptionsUpdate, PanelInfo, Scene, ViewOptions};
+
+/// The colours of the picture: a calm light background, readable on a projector.
+pub mod palette {
+    use super::Color;
+
+    /// Canvas background (behind the panels).
+    pub const BACKGROUND: Color = Color::hex(0xf3f1ec);
+    /// Panel fill.
+    pub const PANEL: Color = Color::hex(0xffffff);
+    /// Panel frame.
+    pub const FRAME: Color = Color::hex(0xb9b6ae);
+    /// Grid lines.
+    pub const GRID: Color = Color::hex(0xe4e1da);
+    /// Zero line and the arm's 0-rad direction.
+    pub const AXIS: Color = Color::hex(0x9c988f);
+    /// Shading of the time intervals where the reference moves.
+    pub const MOTION: Color = Color::hex(0xfbf0d2);
+
+    /// Link 1: dark blue.
+    pub const LINK1: Color = Color::hex(0x1d3f8c);
+    /// Link 2: teal.
+    pub const LINK2: Color = Color::hex(0x13958f);
+    /// The elbow joint.
+    pub const JOINT: Color = Color::hex(0x2b2b33);
+    /// The reference arm: translucent grey.
+    pub const GHOST: Color = Color::hex(0x6f6f6f).with_alpha(0.33);
+
+    /// Motor disc, its edge and its angle marker: orange.
+    pub const MOTOR: Color = Color::hex(0xf7c98f);
+    pub const MOTOR_EDGE: Color = Color::hex(0xd9731a);
+    pub const MOTOR_MARKER: Color = Color::hex(0xa34700);
+    /// The spring, relaxed and fully stretched (the colour blends with the drawn twist).
+    pub const SPRING_RELAXED: Color = Color::hex(0xe98a1e);
+    pub const SPRING_STRETCHED: Color = Color::hex(0xc42a1c);
+    /// The circle the spring coils along.
+    pub const SPRING_TRACK: Color = Color::hex(0xe98a1e).with_alpha(0.25);
+
+    /// e1: blue; e2: red-orange.
+    pub const ERROR1: Color = Color::hex(0x1f5fc4);
+    pub const ERROR2: Color = Color::hex(0xe0521b);
+    /// Torques, with the colours of their links' errors.
+    pub const TORQUE1: Color = ERROR1;
+    pub const TORQUE2: Color = ERROR2;
+}

@@ -1,0 +1,227 @@
+//! Time plots: a scrolling window [t − W, t], grid, zero line, shading while the reference
+//! moves, and curves decimated to at most two vertices per pixel column.
+
+use core::ops::Range;
+
+use super::axes::Ticks;
+use super::layout::Rect;
+use super::painter::{Color, Painter, Point};
+use super::palette;
+use crate::reference::Reference;
+
+/// Default width W of the time window, s.
+pub const DEFAULT_TIME_WINDOW: f64 = 10.0;
+
+/// The time interval a plot shows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TimeWindow {
+    pub start: f64,
+    pub end: f64,
+}
+
+impl TimeWindow {
+    /// [t − W, t], or [0, W] while t < W, so the first seconds fill the plot from the left.
+    pub fn ending_at(t: f64, width: f64) -> TimeWindow {
+        let t = if t.is_finite() { t } else { 0.0 };
+        if t < width {
+            TimeWindow { start: 0.0, end: width }
+        } else {
+            TimeWindow { start: t - width, end: t }
+        }
+    }
+
+    pub fn width(&self) -> f64 {
+        self.end - self.start
+    }
+
+    /// The indices of the sorted times `t` that fall inside the window (binary search).
+    pub fn indices(&self, t: &[f64]) -> Range<usize> {
+        let first = t.partition_point(|&s| s < self.start);
+        let last = t.partition_point(|&s| s <= self.end);
+        first..last.max(first)
+    }
+}
+
+/// An upper bound on the vertices one plot `width_px` physical pixels wide writes with
+/// `series` curves and at most `ticks` grid lines: ≤ 2 points per column per curve (6 vertices
+/// per segment), shading runs, grid, zero line, background and frame.
+pub fn vertex_budget(width_px: f64, series: usize, ticks: usize) -> usize {
+    let columns = if width_px.is_finite() { width_px.ceil().max(1.0) as usize } else { 1 };
+    let curves = series * (2 * columns + 1) * 6;
+    let shading = (columns / 2 + 1) * 6;
+    let lines = (ticks + 1) * 6;
+    curves + shading + lines + 6 + 24
+}
+
+/// The largest finite |v| of the slice (0 if there is none).
+pub fn max_abs(values: &[f64]) -> f64 {
+    values.iter().filter(|v| v.is_finite()).fold(0.0, |m, v| m.max(v.abs()))
+}
+
+/// A plot's data area in physical pixels and the data ranges mapped onto it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlotFrame {
+    pub rect: Rect,
+    pub window: TimeWindow,
+    /// Values from y_lo (bottom edge) to y_hi (top edge).
+    pub y_lo: f64,
+    pub y_hi: f64,
+}
+
+impl PlotFrame {
+    /// Horizontal pixel of time `t`.
+    pub fn x(&self, t: f64) -> f64 {
+        self.rect.x + self.rect.w * (t - self.window.start) / self.window.width()
+    }
+
+    /// Vertical pixel of value `v`, clamped to the data area.
+    pub fn y(&self, v: f64) -> f64 {
+        let f = (v - self.y_lo) / (self.y_hi - self.y_lo);
+        (self.rect.bottom() - self.rect.h * f).clamp(self.rect.y, self.rect.bottom())
+    }
+
+    /// Time at horizontal pixel `x`.
+    fn time_at(&self, x: f64) -> f64 {
+        self.window.start + self.window.width() * (x - self.rect.x) / self.rect.w
+    }
+}
+
+/// The plot background, the shading where the reference moves, grid lines at the ticks and the
+/// zero line. `x_ticks`, `y_ticks` give the tick positions; `dpr` sets the line widths.
+pub fn draw_background(
+    painter: &mut Painter,
+    frame: &PlotFrame,
+    x_ticks: Ticks,
+    y_ticks: Ticks,
+    reference: Option<&Reference>,
+    dpr: f64,
+) {
+    painter.rect(frame.rect, palette::PANEL);
+    if let Some(reference) = reference {
+        shade_motion(painter, frame, reference);
+    }
+    let r = frame.rect;
+    let grid = dpr.max(1.0);
+    for t in x_ticks {
+        let x = frame.x(t);
+        painter.line([x, r.y], [x, r.bottom()], grid, palette::GRID);
+    }
+    for v in y_ticks {
+        let y = frame.y(v);
+        painter.line([r.x, y], [r.right(), y], grid, palette::GRID);
+    }
+    if frame.y_lo < 0.0 && frame.y_hi > 0.0 {
+        let y = frame.y(0.0);
+        painter.line([r.x, y], [r.right(), y], 1.5 * grid, palette::AXIS);
+    }
+}
+
+/// Shades the pixel columns where the reference is moving (cheap: one test per column).
+fn shade_motion(painter: &mut Painter, frame: &PlotFrame, reference: &Reference) {
+    let r = frame.rect;
+    let columns = r.w.ceil().max(0.0) as usize;
+    let mut run_start: Option<f64> = None;
+    for c in 0..=columns {
+        let x = r.x + c as f64;
+        let moving = c < columns && reference.is_moving(frame.time_at(x + 0.5));
+        match (moving, run_start) {
+            (true, None) => run_start = Some(x),
+            (false, Some(x0)) => {
+                let x1 = x.min(r.right());
+                painter.rect(Rect::new(x0, r.y, x1 - x0, r.h), palette::MOTION);
+                run_start = None;
+            }
+            _ => {}
+        }
+    }
+}
+
+/// The frame line around a plot, drawn last so curves at the edge stay tidy.
+pub fn draw_frame(painter: &mut Painter, frame: &PlotFrame, dpr: f64) {
+    painter.rect_outline(frame.rect, dpr.max(1.0), palette::FRAME);
+}
+
+/// Draws `values` against `times` (equal lengths, times sorted) over the frame's window.
+///
+/// With more samples than two per pixel column, each column is reduced to its minimum and
+/// maximum in the order they occur, so spikes survive and a 10 000-sample window costs no
+/// more than the plot is wide. Non-finite samples leave a gap.
+pub fn draw_series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], values: &[f64], width: f64, color: Color) {
+    let n = times.len().min(values.len());
+    let range = frame.window.indices(&times[..n]);
+    let columns = frame.rect.w.ceil().max(1.0) as usize;
+    let mut stroke = painter.stroke(width, color, false);
+    if range.len() <= 2 * columns {
+        for i in range {
+            stroke.to(point(frame, times[i], values[i]));
+        }
+        return;
+    }
+    let mut column: Option<ColumnExtremes> = None;
+    for i in range {
+        let (t, v) = (times[i], values[i]);
+        if !v.is_finite() {
+            if let Some(c) = column.take() {
+                c.emit(frame, &mut |p| stroke.to(p));
+            }
+            stroke.lift();
+            continue;
+        }
+        let x = (frame.x(t) - frame.rect.x).floor().clamp(0.0, (columns - 1) as f64) as usize;
+        match &mut column {
+            Some(c) if c.index == x => c.add(v),
+            _ => {
+                if let Some(c) = column.take() {
+                    c.emit(frame, &mut |p| stroke.to(p));
+                }
+                column = Some(ColumnExtremes::new(x, v));
+            }
+        }
+    }
+    if let Some(c) = column {
+        c.emit(frame, &mut |p| stroke.to(p));
+    }
+}
+
+fn point(frame: &PlotFrame, t: f64, v: f64) -> Point {
+    if v.is_finite() {
+        [frame.x(t), frame.y(v)]
+    } else {
+        [f64::NAN, f64::NAN]
+    }
+}
+
+/// The extremes of the samples that fall into one pixel column.
+struct ColumnExtremes {
+    index: usize,
+    min: f64,
+    max: f64,
+    /// True if the minimum came before the maximum.
+    min_first: bool,
+}
+
+impl ColumnExtremes {
+    fn new(index: usize, v: f64) -> Self {
+        Self { index, min: v, max: v, min_first: true }
+    }
+
+    fn add(&mut self, v: f64) {
+        if v < self.min {
+            self.min = v;
+            self.min_first = false;
+        } else if v > self.max {
+            self.max = v;
+            self.min_first = true;
+        }
+    }
+
+    /// One or two points at the column centre, in the order the extremes occurred.
+    fn emit(&self, frame: &PlotFrame, to: &mut impl FnMut(Point)) {
+        let x = frame.rect.x + self.index as f64 + 0.5;
+        let (a, b) = if self.min_first { (self.min, self.max) } else { (self.max, self.min) };
+        to([x, frame.y(a)]);
+        if b != a {
+            to([x, frame.y(b)]);
+        }
+    }
+}

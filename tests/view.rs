@@ -1,0 +1,576 @@
+//! The drawing model without a GPU: ticks, autoscale, layout, painter, traces, arm, scene.
+
+use flexarm::closed_loop::{Snapshot, Traces};
+use flexarm::view::arm::{drawn_twist, spring_end_angle, ArmFrame, ArmPose, MAX_DRAWN_TWIST, WORLD_HALF_EXTENT};
+use flexarm::view::axes::{nice_ceil, Autoscale, AutoscaleSettings, Ticks};
+use flexarm::view::layout::Arrangement;
+use flexarm::view::traces::{draw_series, max_abs, PlotFrame, TimeWindow};
+use flexarm::view::*;
+use flexarm::{ClosedLoop, PreliminaryFeedbackChoice, SimulationConfig};
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1e-300)
+}
+
+// ---------------------------------------------------------------- ticks
+
+#[test]
+fn nice_ceil_climbs_the_1_2_5_ladder() {
+    let cases = [
+        (0.7, 1.0),
+        (1.0, 1.0),
+        (1.01, 2.0),
+        (2.0, 2.0),
+        (3.0, 5.0),
+        (5.0, 5.0),
+        (7.3, 10.0),
+        (10.0, 10.0),
+        (1e-4, 1e-4),
+        (1.1e-4, 2e-4),
+        (3.4, 5.0),
+        (0.0012, 0.002),
+        (4.9e-7, 5e-7),
+        (123.0, 200.0),
+    ];
+    for (v, want) in cases {
+        assert!(close(nice_ceil(v), want), "nice_ceil({v}) = {}, want {want}", nice_ceil(v));
+    }
+}
+
+#[test]
+fn nice_ceil_is_never_below_its_argument_over_many_decades() {
+    let mut v = 1.3e-9;
+    while v < 1e9 {
+        let n = nice_ceil(v);
+        assert!(n >= v * (1.0 - 1e-12) && n <= 2.5 * v * (1.0 + 1e-12), "nice_ceil({v}) = {n}");
+        let decade = 10f64.powf(n.log10().floor());
+        let m = (n / decade * 1e6).round() / 1e6;
+        assert!([1.0, 2.0, 5.0, 10.0].contains(&m), "nice_ceil({v}) = {n} has mantissa {m}");
+        v *= 1.37;
+    }
+}
+
+#[test]
+fn ticks_of_a_time_window() {
+    let t: Vec<f64> = Ticks::new(0.0, 10.0, 5).collect();
+    assert_eq!(t, vec![0.0, 2.0, 4.0, 6.0, 8.0, 10.0]);
+    let t: Vec<f64> = Ticks::new(13.37, 23.37, 5).collect();
+    assert_eq!(t, vec![14.0, 16.0, 18.0, 20.0, 22.0]);
+}
+
+#[test]
+fn ticks_of_a_symmetric_error_range_include_zero_and_the_ends() {
+    let t: Vec<f64> = Ticks::new(-2e-4, 2e-4, 4).collect();
+    assert_eq!(t.len(), 5);
+    assert_eq!(t[2], 0.0);
+    assert!(close(t[0], -2e-4) && close(t[4], 2e-4), "{t:?}");
+}
+
+#[test]
+fn tick_count_and_range_are_respected() {
+    for i in 0..200 {
+        let sign = if i % 2 == 0 { -1.0 } else { 1.0 };
+        let lo = sign * 3.7e-5 * 1.1f64.powi(i % 40);
+        let hi = lo + 1e-6 * (1.0 + i as f64 * 7.3);
+        for max in 2..10 {
+            let ticks = Ticks::new(lo, hi, max);
+            let step = ticks.step;
+            let v: Vec<f64> = ticks.collect();
+            assert!(v.len() <= max + 1, "{lo}..{hi}, max {max}: {v:?}");
+            // A step of at most 2.5 × range / max fits inside the range once max ≥ 3.
+            assert!(max < 3 || !v.is_empty(), "{lo}..{hi}, max {max}: no ticks");
+            for w in v.windows(2) {
+                assert!((w[1] - w[0] - step).abs() < 1e-9 * step, "{lo}..{hi}, max {max}: {v:?}, step {step}");
+            }
+            for x in &v {
+                assert!(*x >= lo - 1e-9 * step && *x <= hi + 1e-9 * step, "{x} outside {lo}..{hi}");
+            }
+        }
+    }
+}
+
+#[test]
+fn empty_or_invalid_ranges_have_no_ticks() {
+    assert_eq!(Ticks::new(1.0, 1.0, 5).count(), 0);
+    assert_eq!(Ticks::new(2.0, 1.0, 5).count(), 0);
+    assert_eq!(Ticks::new(f64::NAN, 1.0, 5).count(), 0);
+    assert_eq!(Ticks::new(0.0, f64::INFINITY, 5).count(), 0);
+}
+
+// ---------------------------------------------------------------- autoscale
+
+#[test]
+fn stable_run_errors_of_1e_4_give_a_scale_of_about_1e_4() {
+    let mut s = Autoscale::new(AutoscaleSettings::ERROR);
+    let y = s.update(0.9e-4, 0.0);
+    assert!((1e-4..=2e-4).contains(&y), "Y = {y}");
+    let y = s.update(1.2e-4, 0.1);
+    assert!(close(y, 2e-4), "Y = {y}");
+}
+
+#[test]
+fn growing_errors_grow_the_scale_at_once() {
+    let mut s = Autoscale::new(AutoscaleSettings::ERROR);
+    let mut e = 1e-4;
+    let mut t = 0.0;
+    while e < 3.2 {
+        let y = s.update(e, t);
+        assert!(y >= 1.1 * e * (1.0 - 1e-12), "Y = {y} below 1.1 × {e}");
+        assert!(y <= 2.5 * 1.1 * e, "Y = {y} far above {e}");
+        e *= 1.5;
+        t += 0.1;
+    }
+    // A divergence to π fits on a ±5 rad scale.
+    assert!(close(s.update(core::f64::consts::PI, t), 5.0));
+}
+
+#[test]
+fn the_scale_shrinks_only_after_the_data_stayed_small_for_a_while() {
+    let settings = AutoscaleSettings::ERROR;
+    let mut s = Autoscale::new(settings);
+    assert!(close(s.update(0.8, 0.0), 1.0));
+    // Half of Y: no shrinking however long it lasts.
+    for i in 1..50 {
+        assert!(close(s.update(0.5, i as f64 * 0.1), 1.0));
+    }
+    // Below a third: held for `shrink_after`, then shrinks to the data.
+    let t0 = 10.0;
+    let mut t = t0;
+    while t < t0 + settings.shrink_after - 0.05 {
+        assert!(close(s.update(0.01, t), 1.0), "shrank early at {t}");
+        t += 0.05;
+    }
+    let y = s.update(0.01, t0 + settings.shrink_after + 0.01);
+    assert!(close(y, 0.02), "Y = {y}");
+    // A brief small dip does not shrink it.
+    let mut s = Autoscale::new(settings);
+    s.update(0.8, 0.0);
+    s.update(0.01, 1.0);
+    s.update(0.9, 1.5);
+    assert!(close(s.update(0.01, 2.2), 1.0));
+}
+
+#[test]
+fn reset_floor_and_non_finite_data() {
+    let mut s = Autoscale::new(AutoscaleSettings::ERROR);
+    assert!(close(s.update(0.0, 0.0), 1e-6), "floor 1e-6 rad");
+    assert!(close(s.update(1e-9, 0.1), 1e-6));
+    s.update(2.0, 0.2);
+    assert!(close(s.update(f64::NAN, 0.3), 5.0), "NaN leaves the scale alone");
+    assert!(close(s.update(f64::INFINITY, 0.4), 5.0));
+    s.reset();
+    assert!(close(s.limit(), 1e-6));
+}
+
+// ---------------------------------------------------------------- layout
+
+const SIZES: [(f64, f64); 8] = [
+    (1280.0, 800.0),
+    (1200.0, 560.0),
+    (800.0, 600.0),
+    (640.0, 480.0),
+    (600.0, 900.0),
+    (390.0, 844.0),
+    (2560.0, 1440.0),
+    (320.0, 320.0),
+];
+
+fn all_layouts() -> impl Iterator<Item = (f64, f64, f64, bool, Layout)> {
+    SIZES.into_iter().flat_map(|(w, h)| {
+        [1.0, 1.25, 2.0, 3.0].into_iter().flat_map(move |dpr| {
+            [false, true].into_iter().map(move |torque| {
+                let layout = Layout::compute(w, h, dpr, &LayoutOptions { show_torque: torque });
+                (w, h, dpr, torque, layout)
+            })
+        })
+    })
+}
+
+#[test]
+fn panels_lie_inside_the_canvas_and_do_not_overlap() {
+    for (w, h, dpr, torque, layout) in all_layouts() {
+        let canvas = Rect::new(0.0, 0.0, w, h);
+        let kinds: Vec<PanelKind> = layout.panels.iter().map(|p| p.kind).collect();
+        let mut want = vec![PanelKind::Arm, PanelKind::Error1, PanelKind::Error2];
+        if torque {
+            want.push(PanelKind::Torque);
+        }
+        assert_eq!(kinds, want);
+        for (i, a) in layout.panels.iter().enumerate() {
+            assert!(canvas.contains_rect(&a.rect), "{w}×{h}@{dpr}: {:?} outside", a);
+            let min_size = if w >= 600.0 && h >= 400.0 { 60.0 } else { 1.0 };
+            assert!(a.rect.w >= min_size && a.rect.h >= min_size, "{w}×{h}: {:?} too small", a);
+            for b in &layout.panels[i + 1..] {
+                assert!(!a.rect.overlaps(&b.rect), "{w}×{h}: {:?} overlaps {:?}", a, b);
+            }
+        }
+    }
+}
+
+#[test]
+fn wide_canvases_put_the_arm_left_narrow_ones_on_top() {
+    let wide = Layout::compute(1280.0, 720.0, 1.0, &LayoutOptions::default());
+    assert_eq!(wide.arrangement, Arrangement::SideBySide);
+    let arm = wide.panel(PanelKind::Arm).unwrap().rect;
+    let e1 = wide.panel(PanelKind::Error1).unwrap().rect;
+    let e2 = wide.panel(PanelKind::Error2).unwrap().rect;
+    assert!(arm.right() < e1.x, "arm left of the plots");
+    assert!((arm.w / 1280.0 - 0.4).abs() < 0.05, "arm ≈ 40 % wide: {}", arm.w);
+    assert!(e1.bottom() < e2.y, "e1 above e2");
+    assert!((e1.w - e2.w).abs() < 1e-9 && (e1.h - e2.h).abs() < 1e-9);
+
+    for (w, h) in [(390.0, 844.0), (600.0, 900.0), (500.0, 400.0)] {
+        let narrow = Layout::compute(w, h, 2.0, &LayoutOptions::default());
+        assert_eq!(narrow.arrangement, Arrangement::Stacked, "{w}×{h}");
+        let arm = narrow.panel(PanelKind::Arm).unwrap().rect;
+        let e1 = narrow.panel(PanelKind::Error1).unwrap().rect;
+        assert!(arm.bottom() < e1.y, "{w}×{h}: arm above the plots");
+    }
+}
+
+#[test]
+fn device_pixel_ratio_scales_physical_pixels_only() {
+    let l1 = Layout::compute(1000.0, 600.0, 1.0, &LayoutOptions::default());
+    let l2 = Layout::compute(1000.0, 600.0, 2.0, &LayoutOptions::default());
+    assert_eq!(l1.panels, l2.panels, "CSS rectangles do not depend on the ratio");
+    assert_eq!(l1.physical_size(), (1000, 600));
+    assert_eq!(l2.physical_size(), (2000, 1200));
+    assert_eq!(Layout::compute(333.0, 201.0, 1.5, &LayoutOptions::default()).physical_size(), (500, 302));
+    let r = l2.panels[1].rect;
+    let p = l2.to_physical(r);
+    assert_eq!((p.x, p.y, p.w, p.h), (2.0 * r.x, 2.0 * r.y, 2.0 * r.w, 2.0 * r.h));
+}
+
+#[test]
+fn degenerate_sizes_still_give_a_usable_layout() {
+    for (w, h, dpr) in [(0.0, 0.0, 1.0), (f64::NAN, 100.0, 2.0), (100.0, 100.0, 0.0), (-5.0, 50.0, f64::INFINITY)] {
+        let l = Layout::compute(w, h, dpr, &LayoutOptions::default());
+        let (pw, ph) = l.physical_size();
+        assert!(pw >= 1 && ph >= 1);
+        assert!(l.device_pixel_ratio.is_finite() && l.device_pixel_ratio > 0.0);
+        for p in &l.panels {
+            assert!(p.rect.w >= 0.0 && p.rect.h >= 0.0 && p.rect.x.is_finite() && p.rect.y.is_finite());
+        }
+    }
+}
+
+// ---------------------------------------------------------------- painter
+
+#[test]
+fn vertex_layout_matches_the_gpu_buffer() {
+    assert_eq!(Vertex::SIZE, 24);
+    assert_eq!(Vertex::COLOR_OFFSET, 8);
+    let mut p = Painter::new();
+    p.line([0.0, 0.0], [10.0, 0.0], 2.0, Color::hex(0x102030));
+    assert_eq!(p.len(), 6);
+    assert_eq!(p.vertex_bytes().len(), 6 * 24);
+    let first = f32::from_le_bytes(p.vertex_bytes()[8..12].try_into().unwrap());
+    assert!((first - 0x10 as f32 / 255.0).abs() < 1e-7, "red component at byte 8");
+    for v in p.vertices() {
+        assert!(v.position[1].abs() == 1.0, "a 2 px line along x spans y = ±1");
+    }
+}
+
+#[test]
+fn shapes_are_whole_triangles_and_finite() {
+    let mut p = Painter::new();
+    let c = Color::hex(0x336699).with_alpha(0.5);
+    p.rect(Rect::new(1.0, 2.0, 30.0, 40.0), c);
+    p.rect_outline(Rect::new(1.0, 2.0, 30.0, 40.0), 2.0, c);
+    p.circle([50.0, 50.0], 20.0, c);
+    p.circle([50.0, 50.0], 0.0, c); // nothing
+    p.ring([50.0, 50.0], 20.0, 3.0, c);
+    p.arc([50.0, 50.0], 20.0, 0.0, 1.0, 3.0, c);
+    p.polyline([[0.0, 0.0], [10.0, 5.0], [10.0, 5.0], [20.0, 0.0], [f64::NAN, 0.0], [30.0, 0.0], [40.0, 1.0]], 3.0, c);
+    assert_eq!(p.len() % 3, 0);
+    assert!(p.vertices().iter().all(|v| v.position.iter().all(|x| x.is_finite())));
+    assert!(p.vertices().iter().all(|v| v.color == c.0));
+}
+
+#[test]
+fn a_non_finite_point_lifts_the_pen() {
+    let mut p = Painter::new();
+    let c = Color::hex(0);
+    p.polyline([[0.0, 0.0], [10.0, 0.0], [f64::NAN, 0.0], [20.0, 0.0], [30.0, 0.0]], 2.0, c);
+    // Two separate straight segments, no join, no bridge across the gap.
+    assert_eq!(p.len(), 12);
+    assert!(p.vertices().iter().all(|v| !(v.position[0] > 10.0 && v.position[0] < 20.0)));
+}
+
+#[test]
+fn clear_keeps_the_memory() {
+    let mut p = Painter::new();
+    for i in 0..1000 {
+        p.circle([i as f64, 0.0], 10.0, Color::hex(0));
+    }
+    let cap = p.capacity();
+    p.clear();
+    assert!(p.is_empty());
+    assert_eq!(p.capacity(), cap);
+}
+
+// ---------------------------------------------------------------- traces
+
+#[test]
+fn the_time_window_scrolls_after_w_seconds() {
+    assert_eq!(TimeWindow::ending_at(3.0, 10.0), TimeWindow { start: 0.0, end: 10.0 });
+    assert_eq!(TimeWindow::ending_at(10.0, 10.0), TimeWindow { start: 0.0, end: 10.0 });
+    assert_eq!(TimeWindow::ending_at(12.5, 10.0), TimeWindow { start: 2.5, end: 12.5 });
+    let t: Vec<f64> = (0..1000).map(|i| i as f64 * 0.01).collect();
+    let w = TimeWindow { start: 2.0, end: 5.0 };
+    let r = w.indices(&t);
+    assert!(t[r.start] >= 2.0 && t[r.start - 1] < 2.0);
+    assert!(t[r.end - 1] <= 5.0 && t[r.end] > 5.0);
+    assert_eq!(TimeWindow { start: 20.0, end: 30.0 }.indices(&t), 1000..1000);
+    assert_eq!(max_abs(&[1.0, -3.0, f64::NAN, 2.0]), 3.0);
+}
+
+#[test]
+fn ten_thousand_samples_cost_two_points_per_pixel_column_and_keep_spikes() {
+    let n = 10_000;
+    let t: Vec<f64> = (0..n).map(|i| i as f64 * 0.001).collect();
+    let mut v: Vec<f64> = t.iter().map(|t| (40.0 * t).sin() * 1e-4).collect();
+    v[5_123] = 9e-4; // a one-sample spike
+    let frame = PlotFrame {
+        rect: Rect::new(100.0, 50.0, 400.0, 200.0),
+        window: TimeWindow { start: 0.0, end: 10.0 },
+        y_lo: -1e-3,
+        y_hi: 1e-3,
+    };
+    let mut p = Painter::new();
+    draw_series(&mut p, &frame, &t, &v, 2.0, Color::hex(0));
+    let segments = p.len() / 6;
+    assert!(segments < 2 * 400, "{segments} segments for a 400-px-wide plot");
+    let top = p.vertices().iter().map(|v| v.position[1]).fold(f32::INFINITY, f32::min);
+    let spike_y = frame.y(9e-4) as f32;
+    assert!(top <= spike_y + 0.01 && top >= spike_y - 1.01, "spike kept: top {top}, spike at {spike_y}");
+    assert!(p.vertices().iter().all(|v| v.position[0] >= 99.0 && v.position[0] <= 501.0));
+}
+
+#[test]
+fn sparse_samples_are_drawn_as_they_are() {
+    let t = [0.0, 1.0, 2.0, 3.0];
+    let v = [0.0, 1.0, -1.0, 0.5];
+    let frame = PlotFrame {
+        rect: Rect::new(0.0, 0.0, 300.0, 100.0),
+        window: TimeWindow { start: 0.0, end: 10.0 },
+        y_lo: -2.0,
+        y_hi: 2.0,
+    };
+    let mut p = Painter::new();
+    draw_series(&mut p, &frame, &t, &v, 2.0, Color::hex(0));
+    assert_eq!(p.len(), 3 * 6, "three segments");
+}
+
+// ---------------------------------------------------------------- arm
+
+#[test]
+fn spring_twist_is_magnified_and_clamped() {
+    let pose = ArmPose { q1: 0.5, q2: 0.0, theta: 0.51 };
+    assert!((spring_end_angle(&pose, 20.0) - 0.7).abs() < 1e-12);
+    assert!((drawn_twist(&pose, 1.0) - 0.01).abs() < 1e-12);
+    let wild = ArmPose { q1: 0.0, q2: 0.0, theta: 3.0 };
+    assert_eq!(drawn_twist(&wild, 20.0), MAX_DRAWN_TWIST);
+    assert_eq!(drawn_twist(&ArmPose { theta: -3.0, ..wild }, 20.0), -MAX_DRAWN_TWIST);
+    assert_eq!(drawn_twist(&ArmPose { theta: f64::NAN, ..wild }, 20.0), 0.0);
+}
+
+#[test]
+fn arm_geometry_and_fit() {
+    let pose = ArmPose { q1: core::f64::consts::FRAC_PI_2, q2: -core::f64::consts::FRAC_PI_2, theta: 0.0 };
+    let e = pose.elbow();
+    let tip = pose.tip();
+    assert!(e[0].abs() < 1e-12 && (e[1] - 1.0).abs() < 1e-12);
+    assert!((tip[0] - 0.75).abs() < 1e-12 && (tip[1] - 1.0).abs() < 1e-12);
+    let panel = Rect::new(10.0, 20.0, 400.0, 300.0);
+    let f = ArmFrame::fit(panel, 1.0);
+    assert_eq!(f.base, [210.0, 170.0]);
+    assert!((f.scale * WORLD_HALF_EXTENT - 150.0).abs() < 1e-9);
+    let p = f.point(tip);
+    assert!(p[0] > f.base[0] && p[1] < f.base[1], "y up in the world is up on screen");
+    let (xr, yr) = f.world_range(panel);
+    assert!((yr[1] - WORLD_HALF_EXTENT).abs() < 1e-9 && (yr[0] + WORLD_HALF_EXTENT).abs() < 1e-9);
+    assert!(xr[1] > WORLD_HALF_EXTENT);
+}
+
+// ---------------------------------------------------------------- options
+
+#[test]
+fn options_update_validates_every_field() {
+    let mut o = ViewOptions::default();
+    assert_eq!((o.show_torque, o.time_window, o.spring_magnification), (false, 10.0, 20.0));
+    o.apply(&OptionsUpdate { show_torque: Some(true), ..Default::default() }).unwrap();
+    assert!(o.show_torque);
+    assert_eq!(o.time_window, 10.0, "missing fields unchanged");
+    let before = o;
+    assert!(o
+        .apply(&OptionsUpdate { time_window: Some(5.0), spring_magnification: Some(-1.0), ..Default::default() })
+        .is_err());
+    assert_eq!(o, before, "a rejected update changes nothing");
+    assert!(o.apply(&OptionsUpdate { time_window: Some(f64::NAN), ..Default::default() }).is_err());
+    o.apply(&OptionsUpdate { time_window: Some(30.0), spring_magnification: Some(1.0), ..Default::default() }).unwrap();
+    assert_eq!((o.time_window, o.spring_magnification), (30.0, 1.0));
+    assert!(OptionsUpdate::check_field("time_window").is_ok());
+    let e = OptionsUpdate::check_field("showTorque").unwrap_err();
+    assert!(e.contains("showTorque") && e.contains("show_torque"), "{e}");
+}
+
+// ---------------------------------------------------------------- scene
+
+fn run(feedback: PreliminaryFeedbackChoice, seconds: f64) -> ClosedLoop {
+    let mut config = SimulationConfig::default();
+    config.controller.sampling_period = 0.01;
+    config.preliminary_feedback = feedback;
+    let mut sim = ClosedLoop::new(config).unwrap();
+    sim.advance(seconds).unwrap();
+    sim
+}
+
+fn info<'a>(panels: &'a [PanelInfo], id: &str) -> &'a PanelInfo {
+    panels.iter().find(|p| p.id == id).unwrap()
+}
+
+#[test]
+fn scene_autoscale_reads_both_a_stable_and_a_diverging_run() {
+    let stable = run(PreliminaryFeedbackChoice::Paper, 3.0);
+    let mut scene = Scene::new(ViewOptions::default(), 1200.0, 600.0, 1.0);
+    scene.draw(&stable);
+    let panels = scene.panel_info();
+    let e1 = info(&panels, "e1");
+    let max_e1 = max_abs(&stable.traces().e1);
+    assert!(max_e1 < 1e-3, "the stable run's e1 is small: {max_e1}");
+    assert!(e1.y_range[1] >= max_e1 && e1.y_range[1] <= 5.0 * max_e1, "{:?} for max {max_e1}", e1.y_range);
+    assert_eq!(e1.y_range[0], -e1.y_range[1]);
+    assert_eq!(e1.x_range, [0.0, 10.0]);
+    assert_eq!((e1.x_label, e1.y_label), ("t [s]", "e1 [rad]"));
+    assert!(e1.y_ticks.contains(&0.0));
+
+    let unstable = run(PreliminaryFeedbackChoice::Off, 3.8);
+    let mut scene = Scene::new(ViewOptions::default(), 1200.0, 600.0, 1.0);
+    scene.draw(&unstable);
+    let panels = scene.panel_info();
+    for id in ["e1", "e2"] {
+        let p = info(&panels, id);
+        let column = if id == "e1" { &unstable.traces().e1 } else { &unstable.traces().e2 };
+        let m = max_abs(column);
+        assert!(m > 0.05, "the unstable run's {id} grows: {m}");
+        assert!(p.y_range[1] >= m && p.y_range[1] <= 2.5 * 1.1 * m, "{id}: {:?} for max {m}", p.y_range);
+    }
+}
+
+#[test]
+fn scene_scrolls_resets_and_reports_panels() {
+    let mut sim = run(PreliminaryFeedbackChoice::Paper, 12.5);
+    let mut scene = Scene::new(ViewOptions::default(), 1000.0, 700.0, 2.0);
+    scene.set_options(&OptionsUpdate { show_torque: Some(true), ..Default::default() }).unwrap();
+    scene.draw(&sim);
+    let panels = scene.panel_info();
+    let ids: Vec<&str> = panels.iter().map(|p| p.id).collect();
+    assert_eq!(ids, ["arm", "e1", "e2", "torque"]);
+    let e2 = info(&panels, "e2");
+    assert!((e2.x_range[0] - 2.5).abs() < 1e-9 && (e2.x_range[1] - 12.5).abs() < 1e-9, "{:?}", e2.x_range);
+    assert!(e2.x_ticks.iter().all(|t| *t >= 2.5 && *t <= 12.5));
+    assert_eq!(info(&panels, "torque").y_label, "T1, T2 [N m]");
+    let arm = info(&panels, "arm");
+    assert!(arm.x_ticks.is_empty() && arm.y_ticks.is_empty());
+    let layout = scene.layout();
+    assert_eq!(arm.width, layout.panels[0].rect.w, "panel info is in CSS pixels");
+
+    // A reset (time going back) drops the scales back to the floor before growing again.
+    let big = info(&panels, "e1").y_range[1];
+    sim.reset().unwrap();
+    scene.draw(&sim);
+    let e1 = info(&scene.panel_info(), "e1").y_range[1];
+    assert!(e1 <= big && e1 == 1e-6, "after reset: {e1}");
+}
+
+#[test]
+fn scene_vertices_stay_on_the_canvas() {
+    let sim = run(PreliminaryFeedbackChoice::Off, 4.0);
+    let mut scene = Scene::new(ViewOptions::default(), 900.0, 500.0, 1.5);
+    scene.draw(&sim);
+    let (w, h) = scene.physical_size();
+    assert!(!scene.vertices().is_empty());
+    assert_eq!(scene.vertices().len() % 3, 0);
+    for v in scene.vertices() {
+        let [x, y] = v.position;
+        assert!(x >= -0.5 && x <= w as f32 + 0.5 && y >= -0.5 && y <= h as f32 + 0.5, "vertex {x},{y} off canvas");
+        assert!(v.color.iter().all(|c| (0.0..=1.0).contains(c)));
+    }
+}
+
+#[test]
+fn the_arm_stays_within_its_vertex_budget() {
+    use flexarm::view::arm::{draw_arm_panel, VERTEX_BUDGET};
+    let mut p = Painter::new();
+    for (q1, q2, twist) in [(0.0, 0.0, 0.0), (1.0, 2.0, 0.3), (-2.0, 3.0, -5.0), (0.5, -0.5, 1e-4)] {
+        for size in [100.0, 800.0, 4000.0] {
+            p.clear();
+            let pose = ArmPose { q1, q2, theta: q1 + twist };
+            draw_arm_panel(&mut p, Rect::new(0.0, 0.0, size, size), 2.0, &pose, &pose, 20.0);
+            assert!(p.len() <= VERTEX_BUDGET, "{} vertices", p.len());
+        }
+    }
+}
+
+#[test]
+fn no_reallocation_after_warm_up() {
+    let mut sim = run(PreliminaryFeedbackChoice::Paper, 0.0);
+    let mut scene = Scene::new(ViewOptions { show_torque: true, ..Default::default() }, 1280.0, 720.0, 2.0);
+    // Warm up over the first second (the slew: the busiest curves).
+    for _ in 0..60 {
+        sim.advance(1.0 / 60.0).unwrap();
+        scene.draw(&sim);
+    }
+    let capacity = scene.painter().capacity();
+    let mut most = 0;
+    for _ in 0..900 {
+        sim.advance(1.0 / 60.0).unwrap();
+        scene.draw(&sim);
+        most = most.max(scene.vertices().len());
+        assert_eq!(scene.painter().capacity(), capacity, "the painter reallocated");
+    }
+    assert!(most > 1000, "frames have content: {most} vertices");
+}
+
+#[test]
+fn the_reserved_capacity_covers_an_oscillating_run_from_the_first_frame() {
+    let mut sim = run(PreliminaryFeedbackChoice::Off, 0.0);
+    let mut scene = Scene::new(ViewOptions { show_torque: true, ..Default::default() }, 1100.0, 650.0, 1.5);
+    let capacity = scene.painter().capacity();
+    while !sim.is_finished() && sim.time() < 6.0 {
+        sim.advance(1.0 / 30.0).unwrap();
+        scene.draw(&sim);
+        assert_eq!(scene.painter().capacity(), capacity, "reallocated at t = {}", sim.time());
+    }
+}
+
+#[test]
+fn a_diverged_state_with_non_finite_samples_draws_without_panicking() {
+    let mut traces = Traces::default();
+    for i in 0..2000 {
+        let t = i as f64 * 0.002;
+        let bad = i > 1500;
+        traces.t.push(t);
+        traces.e1.push(if bad { f64::NAN } else { (t * 30.0).sin() * t });
+        traces.e2.push(if bad { f64::INFINITY } else { 1e-5 });
+        traces.torque1.push(0.0);
+        traces.torque2.push(if i % 2 == 0 { f64::NEG_INFINITY } else { 1.0 });
+    }
+    let snapshot = Snapshot {
+        time: 4.0,
+        q: [f64::NAN, 1.0, 2.0],
+        qdot: [0.0; 3],
+        qd: [1.0, 0.0],
+        error: [f64::NAN, 0.0],
+        torque: [0.0; 2],
+        v: [0.0; 2],
+        xf_hat: [0.0; 2],
+        w: [0.0; 2],
+    };
+    let mut scene = Scene::new(ViewOptions { show_torque: true, ..Default::default() }, 800.0, 600.0, 1.0);
+    scene.draw_state(&snapshot, &traces, None);
+    assert!(scene.vertices().iter().all(|v| v.position.iter().all(|x| x.is_finite())));
+    let panels = scene.panel_info();
+    assert!(panels.iter().all(|p| p.y_range.iter().all(|y| y.is_finite())));
+}
