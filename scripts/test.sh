@@ -14,7 +14,7 @@ cargo test --locked
 ensure_wasm_toolchain
 ensure_browser
 step "wasm tests in headless Chromium (wasm-pack test)"
-wasm-pack test --headless --chromedriver "$(command -v chromedriver)" wasm-tests
+wasm-pack test --headless --chrome --chromedriver "$(command -v chromedriver)" wasm-tests
 
 build_wasm
 ensure_node
