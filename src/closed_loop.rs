@@ -550,9 +550,11 @@ impl ClosedLoop {
                 self.period_origin = self.time;
                 self.periods_since_origin = 0;
             }
+            if config != self.config {
+                self.stats.fit_from = self.time;
+            }
             self.config = config;
             self.derived = derived;
-            self.stats.fit_from = self.time;
         }
         let x = self.controller_state();
         self.v_applied = self.v_next.take().unwrap_or_else(Vector2::zeros);

@@ -961,6 +961,7 @@ function applyRendererOptions() {
 }
 
 async function createRenderer() {
+  performance.mark('flexarm:renderer-start');
   const Renderer = state.wasm.Renderer;
   if (typeof Renderer !== 'function' || typeof Renderer.create !== 'function') {
     setText(el.backend, 'renderer unavailable');
@@ -974,6 +975,7 @@ async function createRenderer() {
   }
   try {
     const r = await Renderer.create(el.canvas);
+    performance.mark('flexarm:renderer-ready');
     if (state.dead) return;
     state.renderer = r;
     const backend = guard('Renderer backend', () => r.backend(), '?');
@@ -1045,11 +1047,34 @@ function publishStats() {
 }
 window.flexarmStats = stats;
 
+/** Script time of each frame callback (ms), a ring of the last FRAME_SAMPLES frames, and the time
+ * from navigation start to the first drawn frame. `window.flexarmPerf()` summarises them. */
+const FRAME_SAMPLES = 1200;
+const frameTimes = new Float64Array(FRAME_SAMPLES);
+let frameCount = 0;
+let firstFrameMs = null;
+window.flexarmPerf = () => {
+  const n = Math.min(frameCount, FRAME_SAMPLES);
+  const sorted = Array.from(frameTimes.subarray(0, n)).sort((a, b) => a - b);
+  const pick = (q) => (n ? sorted[Math.min(n - 1, Math.floor(q * n))] : null);
+  return { frames: frameCount, first_frame_ms: firstFrameMs, script_ms_median: pick(0.5), script_ms_p99: pick(0.99),
+    sim_rate: stats.sim_rate, fps: stats.fps, backend: state.renderer ? state.renderer.backend() : null,
+    marks: Object.fromEntries(performance.getEntriesByType('mark').map((m) => [m.name, Math.round(m.startTime)])) };
+};
+
 function frame(ts) {
   if (state.dead) return;
   requestAnimationFrame(frame);
   const sim = state.sim;
   if (!sim) return;
+  const start = performance.now();
+  frameBody(sim, ts);
+  const end = performance.now();
+  frameTimes[frameCount % FRAME_SAMPLES] = end - start;
+  frameCount += 1;
+}
+
+function frameBody(sim, ts) {
 
   const last = state.lastTs;
   state.lastTs = ts;
@@ -1081,6 +1106,10 @@ function frame(ts) {
       renderFrame();
       acc.renderMs += performance.now() - t0;
       acc.renders += 1;
+      if (firstFrameMs === null) {
+        firstFrameMs = performance.now();
+        performance.mark('flexarm:first-frame');
+      }
     }
   }
 
@@ -1228,6 +1257,7 @@ async function main() {
   try {
     mod = await import('./pkg/flexarm.js');
     await mod.default();
+    performance.mark('flexarm:wasm-ready');
   } catch (e) {
     setText(el.loadingText, 'Could not load the simulation.');
     el.loading.querySelector('.spinner')?.remove();
