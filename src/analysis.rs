@@ -328,20 +328,32 @@ pub fn stability_map(
 ) -> Result<StabilityMap, Error> {
     let mut rho = Vec::with_capacity(sampling_periods.len() * alphas.len());
     for &alpha in alphas {
-        let mut c = *config;
-        c.controller.alpha = [alpha, alpha];
-        c.validate()?;
-        let gain = resolve_gain(&c)?;
-        let model = linearize_at_rest(&c.plant, c.controller.alpha, [c.reference.end[0], c.reference.end[1]]);
-        for &delta in sampling_periods {
-            let mut ctrl = c.controller;
-            ctrl.sampling_period = delta;
-            ctrl.validate()?;
-            let m = sampled_loop_matrix(&model, &gain, &ctrl, c.inner_loop)?;
-            rho.push(loop_eigenvalues(&m).first().map(|l| l.norm()).unwrap_or(0.0));
-        }
+        stability_map_row(config, alpha, sampling_periods, &mut rho)?;
     }
     Ok(StabilityMap { sampling_periods: sampling_periods.to_vec(), alphas: alphas.to_vec(), spectral_radius: rho })
+}
+
+/// One row of a stability map: ρ for α1 = α2 = `alpha` at each of `sampling_periods`, appended
+/// to `out`. Maps are computed row by row so that a page can spread the work over frames.
+pub fn stability_map_row(
+    config: &SimulationConfig,
+    alpha: f64,
+    sampling_periods: &[f64],
+    out: &mut Vec<f64>,
+) -> Result<(), Error> {
+    let mut c = *config;
+    c.controller.alpha = [alpha, alpha];
+    c.validate()?;
+    let gain = resolve_gain(&c)?;
+    let model = linearize_at_rest(&c.plant, c.controller.alpha, [c.reference.end[0], c.reference.end[1]]);
+    for &delta in sampling_periods {
+        let mut ctrl = c.controller;
+        ctrl.sampling_period = delta;
+        ctrl.validate()?;
+        let m = sampled_loop_matrix(&model, &gain, &ctrl, c.inner_loop)?;
+        out.push(loop_eigenvalues(&m).first().map(|l| l.norm()).unwrap_or(0.0));
+    }
+    Ok(())
 }
 
 /// Geometric spacing from `lo` to `hi` with `n` points (for logarithmic axes).

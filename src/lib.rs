@@ -23,6 +23,7 @@
 //! | [`closed_loop`] | the sampled-data loop of Fig. 2.1, traces, metrics, verdict |
 //! | [`analysis`] | linearization, ρ, eigenvalues, the δ → 0 pair A4, stability maps |
 //! | [`presets`] | the paper's figures as named configurations |
+//! | [`svg`] | SVG figures for the CLI: stability maps and error traces |
 //! | [`view`] | what the page draws, as plain geometry (no GPU types): arm, traces, axes |
 //! | `web` | wasm32 only: the JS handle and the wgpu renderer |
 //!
@@ -38,6 +39,7 @@ pub mod plant;
 pub mod predictive;
 pub mod presets;
 pub mod reference;
+pub mod svg;
 pub mod view;
 
 #[cfg(target_arch = "wasm32")]

@@ -276,3 +276,114 @@ pub fn spectral_radius(config: JsValue) -> Result<f64, JsError> {
     let config = config_from_js(config)?;
     crate::analysis::spectral_radius(&config, None).map_err(|e| JsError::new(&e.to_string()))
 }
+
+/// ρ over a (δ, α) grid with logarithmic axes, computed a few rows at a time so the page stays
+/// responsive (call `step` from successive frames or idle callbacks until `isDone`).
+#[wasm_bindgen]
+pub struct StabilityMapJob {
+    config: SimulationConfig,
+    sampling_periods: Vec<f64>,
+    alphas: Vec<f64>,
+    /// Row-major by α: ρ at `alpha_index * sampling_periods.len() + delta_index`.
+    rho: Vec<f64>,
+}
+
+impl StabilityMapJob {
+    /// (δ values, α values, ρ so far) for the renderer.
+    pub fn grid(&self) -> (&[f64], &[f64], &[f64]) {
+        (&self.sampling_periods, &self.alphas, &self.rho)
+    }
+
+    fn rows_done(&self) -> usize {
+        self.rho.len() / self.sampling_periods.len().max(1)
+    }
+}
+
+#[wasm_bindgen]
+impl StabilityMapJob {
+    /// A map of `config` (its preliminary feedback, inner loop, k, m, plant) over `n_delta`
+    /// sampling periods from `delta_min` to `delta_max` (s) and `n_alpha` values of α1 = α2 from
+    /// `alpha_min` to `alpha_max` (1/s), both spaced logarithmically.
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        config: JsValue,
+        delta_min: f64,
+        delta_max: f64,
+        n_delta: usize,
+        alpha_min: f64,
+        alpha_max: f64,
+        n_alpha: usize,
+    ) -> Result<StabilityMapJob, JsError> {
+        let config = config_from_js(config)?;
+        let positive_range = |lo: f64, hi: f64| lo.is_finite() && hi.is_finite() && lo > 0.0 && hi > lo;
+        if !positive_range(delta_min, delta_max) || !positive_range(alpha_min, alpha_max) {
+            return Err(JsError::new(&format!(
+                "stability map ranges must satisfy 0 < min < max: δ {delta_min}–{delta_max} s, α {alpha_min}–{alpha_max} 1/s"
+            )));
+        }
+        if !(2..=1000).contains(&n_delta) || !(2..=1000).contains(&n_alpha) {
+            return Err(JsError::new(&format!(
+                "stability map size must be 2–1000 points per axis, got {n_delta} × {n_alpha}"
+            )));
+        }
+        // Check the corners now, so a bad grid fails here rather than halfway through.
+        for (d, a) in [(delta_min, alpha_min), (delta_max, alpha_max)] {
+            let mut c = config;
+            c.controller.sampling_period = d;
+            c.controller.alpha = [a, a];
+            c.validate().map_err(|e| JsError::new(&e.to_string()))?;
+        }
+        Ok(StabilityMapJob {
+            config,
+            sampling_periods: crate::analysis::log_space(delta_min, delta_max, n_delta),
+            alphas: crate::analysis::log_space(alpha_min, alpha_max, n_alpha),
+            rho: Vec::with_capacity(n_delta * n_alpha),
+        })
+    }
+
+    /// Computes rows until about `budget_ms` of wall time has passed (at least one row);
+    /// returns the fraction done.
+    pub fn step(&mut self, budget_ms: f64) -> Result<f64, JsError> {
+        let clock = web_sys::window().and_then(|w| w.performance());
+        let now = || clock.as_ref().map(|p| p.now()).unwrap_or(0.0);
+        let start = now();
+        while !self.is_done() {
+            let alpha = self.alphas[self.rows_done()];
+            crate::analysis::stability_map_row(&self.config, alpha, &self.sampling_periods, &mut self.rho)
+                .map_err(|e| JsError::new(&e.to_string()))?;
+            if now() - start >= budget_ms {
+                break;
+            }
+        }
+        Ok(self.progress())
+    }
+
+    /// True when every row is computed.
+    #[wasm_bindgen(js_name = isDone)]
+    pub fn is_done(&self) -> bool {
+        self.rows_done() >= self.alphas.len()
+    }
+
+    /// Fraction of rows computed, 0–1.
+    pub fn progress(&self) -> f64 {
+        self.rows_done() as f64 / self.alphas.len() as f64
+    }
+
+    /// ρ row-major by α (index `alpha_index * n_delta + delta_index`), NaN where not computed yet.
+    pub fn values(&self) -> js_sys::Float64Array {
+        let mut all = self.rho.clone();
+        all.resize(self.sampling_periods.len() * self.alphas.len(), f64::NAN);
+        js_sys::Float64Array::from(all.as_slice())
+    }
+
+    /// The δ values of the columns, s.
+    #[wasm_bindgen(js_name = samplingPeriods)]
+    pub fn sampling_periods(&self) -> js_sys::Float64Array {
+        js_sys::Float64Array::from(self.sampling_periods.as_slice())
+    }
+
+    /// The α values of the rows, 1/s.
+    pub fn alphas(&self) -> js_sys::Float64Array {
+        js_sys::Float64Array::from(self.alphas.as_slice())
+    }
+}
