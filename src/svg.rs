@@ -1,0 +1,1 @@
+//! Publication-ready SVG figures (stability maps, error traces) as plain strings.
