@@ -200,3 +200,148 @@ fn bad_input_fails_cleanly_with_status_2() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("off") && stderr.contains("paper") && stderr.contains("lq"), "{stderr}");
 }
+
+// --------------------------------------------------------------------------------------- map, svg
+
+/// A temporary file name for this test process.
+fn temp_file(name: &str) -> std::path::PathBuf {
+    std::env::temp_dir().join(format!("flexarm-cli-test-{}-{name}", std::process::id()))
+}
+
+/// Runs a command that must fail with status 2 and one `error:` line mentioning `mentions`.
+fn assert_usage_error(args: &[&str], mentions: &[&str]) {
+    let out = flexarm(args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "flexarm {args:?}: {stderr}");
+    assert!(stderr.starts_with("error:"), "flexarm {args:?}: {stderr}");
+    assert_eq!(stderr.trim_end().lines().count(), 1, "one line: {stderr}");
+    assert!(mentions.iter().all(|m| stderr.contains(m)), "flexarm {args:?} should mention {mentions:?}: {stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(out.stdout.is_empty(), "nothing on stdout for {args:?}");
+}
+
+#[test]
+fn map_json_has_one_grid_per_preliminary_feedback() {
+    let v = json_of(&["map", "--n-delta", "12", "--n-alpha", "4", "--json"]);
+    let object = v.as_object().expect("one JSON object");
+    assert_eq!(object.keys().collect::<Vec<_>>(), ["off", "paper"], "--pf both is the default");
+    for (pf, m) in object {
+        assert_eq!(m["preliminary_feedback"], pf.as_str());
+        let deltas = m["sampling_periods"].as_array().unwrap();
+        let alphas = m["alphas"].as_array().unwrap();
+        let rho = m["spectral_radius"].as_array().unwrap();
+        assert_eq!((deltas.len(), alphas.len(), rho.len()), (12, 4, 48), "{pf}");
+        assert!(rho.iter().all(|r| r.as_f64().is_some_and(|r| r.is_finite() && r > 0.0)), "{pf}: {rho:?}");
+        // The default grid: δ 2 ms – 0.25 s and α 0.1 – 5 1/s, logarithmic.
+        let d: Vec<f64> = deltas.iter().map(|x| x.as_f64().unwrap()).collect();
+        assert!((d[0] - 0.002).abs() < 1e-15 && (d[11] - 0.25).abs() < 1e-12, "{d:?}");
+        assert!(((d[1] / d[0]) - (d[11] / d[10])).abs() < 1e-9, "log-spaced: {d:?}");
+        assert!((alphas[0].as_f64().unwrap() - 0.1).abs() < 1e-15 && (alphas[3].as_f64().unwrap() - 5.0).abs() < 1e-12);
+        let fraction = num(m, "stable_fraction");
+        let stable = rho.iter().filter(|r| r.as_f64().unwrap() < 1.0).count();
+        assert!((fraction - stable as f64 / 48.0).abs() < 1e-12, "{pf}: {fraction}");
+        assert!(m["stable_delta_intervals"].is_array());
+    }
+    // The paper's feedback stabilizes more of the grid.
+    assert!(num(&v["paper"], "stable_fraction") > num(&v["off"], "stable_fraction"), "{v}");
+    let single = json_of(&["map", "--n-delta", "3", "--n-alpha", "2", "--pf", "lq", "--json"]);
+    assert_eq!(single.as_object().unwrap().keys().collect::<Vec<_>>(), ["lq"]);
+}
+
+#[test]
+fn map_summary_names_the_stable_window_at_alpha_2() {
+    let text = stdout_of(&["map", "--n-delta", "60", "--n-alpha", "10"]);
+    assert!(text.contains("PF off") && text.contains("PF paper") && text.contains("% of the cells stable"), "{text}");
+    // "PF off, α = 2.09 1/s: stable for δ in [0.0349, 0.1], ... s": the window opens near 35 ms.
+    let line = text.lines().find(|l| l.starts_with("PF off, α = ")).unwrap_or_else(|| panic!("{text}"));
+    let first = line.split("stable for δ in [").nth(1).unwrap_or_else(|| panic!("{line}"));
+    let (lo, rest) = first.split_once(", ").unwrap();
+    let hi = rest.split(']').next().unwrap();
+    let (lo, hi): (f64, f64) = (lo.parse().unwrap(), hi.parse().unwrap());
+    assert!((0.025..0.05).contains(&lo) && (0.08..0.13).contains(&hi), "{line}");
+    let paper = text.lines().find(|l| l.starts_with("PF paper, α = ")).unwrap();
+    assert!(paper.contains("stable for δ in [0.002, "), "with K_pr stable from the smallest δ: {paper}");
+}
+
+#[test]
+fn map_csv_is_long_format_with_units() {
+    let path = temp_file("map.csv");
+    let path_str = path.to_str().unwrap();
+    let text = stdout_of(&["map", "--n-delta", "12", "--n-alpha", "4", "--pf", "both", "--csv", path_str]);
+    assert!(text.contains(path_str), "{text}");
+    let csv = std::fs::read_to_string(&path).expect("CSV written");
+    std::fs::remove_file(&path).ok();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some("preliminary_feedback,delta [s],alpha [1/s],rho,stable"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2 * 48);
+    for (k, row) in rows.iter().enumerate() {
+        assert_eq!(row.len(), 5, "{row:?}");
+        assert_eq!(row[0], if k < 48 { "off" } else { "paper" });
+        let [delta, alpha, rho]: [f64; 3] = [1, 2, 3].map(|i| row[i].parse().unwrap_or_else(|_| panic!("{row:?}")));
+        assert!((0.002 - 1e-12..=0.25 + 1e-12).contains(&delta) && (0.1 - 1e-12..=5.0 + 1e-12).contains(&alpha));
+        assert_eq!(row[4], if rho < 1.0 { "true" } else { "false" }, "{row:?}");
+    }
+}
+
+#[test]
+fn map_and_simulate_write_svg_figures() {
+    let path = temp_file("map.svg");
+    let path_str = path.to_str().unwrap();
+    let text = stdout_of(&["map", "--n-delta", "12", "--n-alpha", "4", "--svg", path_str, "--mark", "0.01:2"]);
+    assert!(text.contains(path_str), "{text}");
+    let svg = std::fs::read_to_string(&path).expect("SVG written");
+    std::fs::remove_file(&path).ok();
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    for needle in ["δ [s]", "α [1/s]", "ρ (spectral radius)", "without preliminary feedback", "K_pr", "<circle"] {
+        assert!(svg.contains(needle), "the map figure lacks {needle}");
+    }
+    assert!(!svg.contains("NaN") && !svg.contains("inf"));
+
+    let path = temp_file("traces.svg");
+    let path_str = path.to_str().unwrap();
+    let text = stdout_of(&["simulate", "--pf", "off", "--duration", "2", "--svg", path_str]);
+    assert!(text.contains(path_str), "{text}");
+    let svg = std::fs::read_to_string(&path).expect("SVG written");
+    std::fs::remove_file(&path).ok();
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    for needle in ["t [s]", "e1 [", "e2 [", "δ = 0.01 s", "PF off"] {
+        assert!(svg.contains(needle), "the traces figure lacks {needle}");
+    }
+    // With --json stdout stays one JSON object.
+    let path = temp_file("traces-json.svg");
+    json_of(&["simulate", "--duration", "0.5", "--json", "--svg", path.to_str().unwrap()]);
+    assert!(std::fs::read_to_string(&path).unwrap().starts_with("<svg"));
+    std::fs::remove_file(&path).ok();
+
+    let out = flexarm(&["map", "--n-delta", "2", "--n-alpha", "2", "--svg", "/nonexistent-dir/flexarm/x.svg"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with("error:"));
+}
+
+#[test]
+fn map_bad_input_fails_cleanly_with_status_2() {
+    assert_usage_error(&["map", "--delta-range", "0.1:0.01"], &["--delta-range", "0.1:0.01"]);
+    assert_usage_error(&["map", "--delta-range", "0:0.1"], &["--delta-range"]);
+    assert_usage_error(&["map", "--delta-range", "0.01"], &["--delta-range"]);
+    assert_usage_error(&["map", "--delta-range", "0.01:20"], &["--delta-range", "10 s"]);
+    assert_usage_error(&["map", "--alpha-range", "1:x"], &["--alpha-range"]);
+    assert_usage_error(&["map", "--n-delta", "1"], &["--n-delta"]);
+    assert_usage_error(&["map", "--n-alpha", "abc"], &["--n-alpha", "abc"]);
+    assert_usage_error(&["map", "--n-alpha"], &["--n-alpha"]);
+    assert_usage_error(&["map", "--pf", "maybe"], &["--pf", "both"]);
+    assert_usage_error(&["map", "--delta", "0.01"], &["--delta-range"]);
+    assert_usage_error(&["map", "--alpha", "2"], &["--alpha-range"]);
+    assert_usage_error(&["map", "--mark", "0.01"], &["--mark"]);
+    assert_usage_error(&["map", "--k", "2"], &["--k"]);
+    assert_usage_error(&["map", "--duration", "2"], &["--duration", "map"]);
+}
+
+#[test]
+fn help_describes_map_and_svg() {
+    let text = stdout_of(&["--help"]);
+    for word in ["map", "--delta-range", "--alpha-range", "--n-delta", "--n-alpha", "both", "--svg", "--mark"] {
+        assert!(text.contains(word), "help lacks {word}");
+    }
+    assert_eq!(stdout_of(&["map", "--help"]), text);
+}
