@@ -1,9 +1,12 @@
 //! The drawing model without a GPU: ticks, autoscale, layout, painter, traces, arm, scene.
 
+use flexarm::analysis::{log_space, stability_map};
 use flexarm::closed_loop::{Snapshot, Traces};
 use flexarm::view::arm::{drawn_twist, spring_end_angle, ArmFrame, ArmPose, MAX_DRAWN_TWIST, WORLD_HALF_EXTENT};
-use flexarm::view::axes::{nice_ceil, Autoscale, AutoscaleSettings, Ticks};
+use flexarm::view::axes::{log_ticks, nice_ceil, Autoscale, AutoscaleSettings, Ticks};
 use flexarm::view::layout::Arrangement;
+use flexarm::view::map::{chain_segments, marching_squares, rho_color, StabilityGrid};
+use flexarm::view::poles::{draw_a4, draw_flexible_halo, draw_poles, PoleFrame, PoleStyle, RUN_VERTEX_BUDGET};
 use flexarm::view::traces::{draw_series, max_abs, PlotFrame, TimeWindow};
 use flexarm::view::*;
 use flexarm::{ClosedLoop, PreliminaryFeedbackChoice, SimulationConfig};
@@ -175,40 +178,154 @@ const SIZES: [(f64, f64); 8] = [
     (320.0, 320.0),
 ];
 
-fn all_layouts() -> impl Iterator<Item = (f64, f64, f64, bool, Layout)> {
+/// Every combination of the panel options.
+fn all_options() -> impl Iterator<Item = LayoutOptions> {
+    (0..16u8).map(|bits| LayoutOptions {
+        show_torque: bits & 1 != 0,
+        show_poles: bits & 2 != 0,
+        show_map: bits & 4 != 0,
+        pair: bits & 8 != 0,
+    })
+}
+
+fn all_layouts() -> impl Iterator<Item = (f64, f64, f64, LayoutOptions, Layout)> {
     SIZES.into_iter().flat_map(|(w, h)| {
         [1.0, 1.25, 2.0, 3.0].into_iter().flat_map(move |dpr| {
-            [false, true].into_iter().map(move |torque| {
-                let layout = Layout::compute(w, h, dpr, &LayoutOptions { show_torque: torque });
-                (w, h, dpr, torque, layout)
+            all_options().map(move |options| {
+                let layout = Layout::compute(w, h, dpr, &options);
+                (w, h, dpr, options, layout)
             })
         })
     })
 }
 
+/// The gutters the page needs for its HTML labels: left of, above and below every plot.
+fn gutter(kind: PanelKind) -> (f64, f64, f64) {
+    use flexarm::view::layout::margins;
+    if kind.is_stage() {
+        (0.0, margins::STAGE_TOP, 0.0)
+    } else if kind.is_analysis() {
+        (margins::ANALYSIS_LEFT, margins::PLOT_TOP, margins::PLOT_BOTTOM)
+    } else {
+        (margins::PLOT_LEFT, margins::PLOT_TOP, margins::PLOT_BOTTOM)
+    }
+}
+
 #[test]
 fn panels_lie_inside_the_canvas_and_do_not_overlap() {
-    for (w, h, dpr, torque, layout) in all_layouts() {
+    for (w, h, dpr, options, layout) in all_layouts() {
         let canvas = Rect::new(0.0, 0.0, w, h);
         let kinds: Vec<PanelKind> = layout.panels.iter().map(|p| p.kind).collect();
-        let mut want = vec![PanelKind::Arm, PanelKind::Error1, PanelKind::Error2];
-        if torque {
+        let mut want = vec![PanelKind::Arm];
+        if options.pair {
+            want.push(PanelKind::ArmB);
+        }
+        want.extend([PanelKind::Error1, PanelKind::Error2]);
+        if options.show_torque {
             want.push(PanelKind::Torque);
         }
-        assert_eq!(kinds, want);
+        if options.show_poles {
+            want.push(PanelKind::Poles);
+        }
+        if options.show_map {
+            want.extend([PanelKind::MapOff, PanelKind::MapOn]);
+        }
+        assert_eq!(kinds, want, "{options:?}");
         for (i, a) in layout.panels.iter().enumerate() {
-            assert!(canvas.contains_rect(&a.rect), "{w}×{h}@{dpr}: {:?} outside", a);
+            assert!(canvas.contains_rect(&a.rect), "{w}×{h}@{dpr} {options:?}: {:?} outside", a);
             let min_size = if w >= 600.0 && h >= 400.0 { 60.0 } else { 1.0 };
-            assert!(a.rect.w >= min_size && a.rect.h >= min_size, "{w}×{h}: {:?} too small", a);
+            assert!(a.rect.w >= min_size && a.rect.h >= min_size, "{w}×{h} {options:?}: {:?} too small", a);
+            // The label gutters stay free of other panels (and on the canvas), except on a tiny
+            // canvas where the rows are thinner than their gutters.
+            let (left, top, bottom) = gutter(a.kind);
+            if w < 360.0 {
+                continue;
+            }
+            let with_gutters = Rect::new(a.rect.x - left, a.rect.y - top, a.rect.w + left, a.rect.h + top + bottom);
+            assert!(canvas.contains_rect(&with_gutters), "{w}×{h} {options:?}: gutters of {:?} off canvas", a.kind);
             for b in &layout.panels[i + 1..] {
-                assert!(!a.rect.overlaps(&b.rect), "{w}×{h}: {:?} overlaps {:?}", a, b);
+                assert!(!a.rect.overlaps(&b.rect), "{w}×{h} {options:?}: {:?} overlaps {:?}", a, b);
+                let (bl, bt, bb) = gutter(b.kind);
+                let b_gutters = Rect::new(b.rect.x - bl, b.rect.y - bt, b.rect.w + bl, b.rect.h + bt + bb);
+                assert!(
+                    !with_gutters.overlaps(&b_gutters),
+                    "{w}×{h} {options:?}: gutters of {:?} and {:?} overlap",
+                    a.kind,
+                    b.kind
+                );
             }
         }
     }
 }
 
 #[test]
+fn the_analysis_row_sits_below_the_time_plots_right_of_the_stage() {
+    for (w, h) in [(1280.0, 800.0), (1400.0, 900.0), (1200.0, 560.0), (2560.0, 1440.0)] {
+        for torque in [false, true] {
+            let options = LayoutOptions { show_torque: torque, ..LayoutOptions::default() };
+            let l = Layout::compute(w, h, 1.0, &options);
+            assert_eq!(l.arrangement, Arrangement::SideBySide);
+            let arm = l.panel(PanelKind::Arm).unwrap().rect;
+            let share = arm.w / w;
+            assert!((0.35..=0.40).contains(&share), "{w}×{h}: stage share {share}");
+            let last_time = l.panel(if torque { PanelKind::Torque } else { PanelKind::Error2 }).unwrap().rect;
+            let poles = l.panel(PanelKind::Poles).unwrap().rect;
+            let off = l.panel(PanelKind::MapOff).unwrap().rect;
+            let on = l.panel(PanelKind::MapOn).unwrap().rect;
+            for r in [poles, off, on] {
+                assert!(r.x > arm.right(), "{w}×{h}: analysis right of the stage");
+                assert!(r.y > last_time.bottom(), "{w}×{h}: analysis below the time plots");
+                assert!(r.w >= 120.0 && r.h >= 120.0, "{w}×{h}: analysis panel {r:?} too small");
+            }
+            // One row, left to right: poles, map-off, map-on.
+            assert_eq!(poles.y, off.y);
+            assert_eq!(off.y, on.y);
+            assert!(poles.right() < off.x && off.right() < on.x);
+        }
+    }
+}
+
+#[test]
+fn narrow_canvases_wrap_the_analysis_panels_below_the_plots() {
+    for (w, h) in [(390.0, 844.0), (600.0, 900.0)] {
+        let l =
+            Layout::compute(w, h, 3.0, &LayoutOptions { show_torque: true, pair: true, ..LayoutOptions::default() });
+        assert_eq!(l.arrangement, Arrangement::Stacked);
+        let arm = l.panel(PanelKind::Arm).unwrap().rect;
+        let arm_b = l.panel(PanelKind::ArmB).unwrap().rect;
+        assert_eq!(arm.y, arm_b.y, "{w}×{h}: the two arms side by side on a wide stage");
+        assert!(arm.right() < arm_b.x);
+        let torque = l.panel(PanelKind::Torque).unwrap().rect;
+        for kind in [PanelKind::Poles, PanelKind::MapOff, PanelKind::MapOn] {
+            let r = l.panel(kind).unwrap().rect;
+            assert!(r.y > torque.bottom() && r.y > arm.bottom(), "{w}×{h}: {kind:?} below the plots");
+            assert!(r.w >= 60.0 && r.h >= 60.0, "{w}×{h}: {kind:?} {r:?}");
+        }
+    }
+}
+
+#[test]
+fn two_arms_share_the_stage() {
+    let l = Layout::compute(1400.0, 900.0, 2.0, &LayoutOptions { pair: true, ..LayoutOptions::default() });
+    let a = l.panel(PanelKind::Arm).unwrap().rect;
+    let b = l.panel(PanelKind::ArmB).unwrap().rect;
+    let single = Layout::compute(1400.0, 900.0, 2.0, &LayoutOptions::default());
+    let stage = single.panel(PanelKind::Arm).unwrap().rect;
+    assert!(stage.contains_rect(&a) || (a.x == stage.x && a.w == stage.w), "A inside the stage column");
+    assert!(a.x >= stage.x && b.x >= stage.x && a.right() <= stage.right() + 1e-9 && b.right() <= stage.right() + 1e-9);
+    assert!(!a.overlaps(&b));
+    // On this tall stage column one above the other gives each arm the larger square.
+    assert!(a.w.min(a.h) >= 350.0 && b.w.min(b.h) >= 350.0, "{a:?} {b:?}");
+    assert_eq!(PanelKind::ArmB.id(), "arm-b");
+}
+
+#[test]
 fn wide_canvases_put_the_arm_left_narrow_ones_on_top() {
+    assert_eq!(
+        LayoutOptions::default(),
+        LayoutOptions { show_torque: false, show_poles: true, show_map: true, pair: false },
+        "by default the pole plot and the maps are shown"
+    );
     let wide = Layout::compute(1280.0, 720.0, 1.0, &LayoutOptions::default());
     assert_eq!(wide.arrangement, Arrangement::SideBySide);
     let arm = wide.panel(PanelKind::Arm).unwrap().rect;
@@ -466,7 +583,7 @@ fn scene_scrolls_resets_and_reports_panels() {
     scene.draw(&sim);
     let panels = scene.panel_info();
     let ids: Vec<&str> = panels.iter().map(|p| p.id).collect();
-    assert_eq!(ids, ["arm", "e1", "e2", "torque"]);
+    assert_eq!(ids, ["arm", "e1", "e2", "torque", "poles", "map-off", "map-on"]);
     let e2 = info(&panels, "e2");
     assert!((e2.x_range[0] - 2.5).abs() < 1e-9 && (e2.x_range[1] - 12.5).abs() < 1e-9, "{:?}", e2.x_range);
     assert!(e2.x_ticks.iter().all(|t| *t >= 2.5 && *t <= 12.5));
@@ -492,7 +609,9 @@ fn scene_vertices_stay_on_the_canvas() {
     let (w, h) = scene.physical_size();
     assert!(!scene.vertices().is_empty());
     assert_eq!(scene.vertices().len() % 3, 0);
-    for v in scene.vertices() {
+    assert!(!scene.static_vertices().is_empty(), "empty maps still draw their panels");
+    assert_eq!(scene.static_vertices().len() % 3, 0);
+    for v in scene.vertices().iter().chain(scene.static_vertices()) {
         let [x, y] = v.position;
         assert!(x >= -0.5 && x <= w as f32 + 0.5 && y >= -0.5 && y <= h as f32 + 0.5, "vertex {x},{y} off canvas");
         assert!(v.color.iter().all(|c| (0.0..=1.0).contains(c)));
@@ -573,4 +692,403 @@ fn a_diverged_state_with_non_finite_samples_draws_without_panicking() {
     assert!(scene.vertices().iter().all(|v| v.position.iter().all(|x| x.is_finite())));
     let panels = scene.panel_info();
     assert!(panels.iter().all(|p| p.y_range.iter().all(|y| y.is_finite())));
+}
+
+// ---------------------------------------------------------------- log ticks
+
+#[test]
+fn log_ticks_follow_1_2_5_per_decade() {
+    assert_eq!(log_ticks(0.002, 0.25, 10), vec![0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2]);
+    assert_eq!(log_ticks(0.1, 5.0, 10), vec![0.1, 0.2, 0.5, 1.0, 2.0, 5.0]);
+    // Too many for the room: 1 and 5, then powers of ten only, then every other decade.
+    assert_eq!(log_ticks(0.002, 0.25, 4), vec![0.005, 0.01, 0.05, 0.1]);
+    assert_eq!(log_ticks(0.002, 0.25, 2), vec![0.01, 0.1]);
+    assert_eq!(log_ticks(1e-6, 1e6, 6), vec![1e-6, 1e-4, 0.01, 1.0, 100.0, 1e4, 1e6]);
+    // Too short for two 1-2-5 ticks: every mantissa.
+    assert_eq!(log_ticks(0.11, 0.45, 10), vec![0.2, 0.3, 0.4]);
+    assert!(log_ticks(0.0, 1.0, 5).is_empty() && log_ticks(2.0, 1.0, 5).is_empty());
+    assert!(log_ticks(1.0, f64::INFINITY, 5).is_empty() && log_ticks(f64::NAN, 1.0, 5).is_empty());
+}
+
+// ---------------------------------------------------------------- marching squares
+
+fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+    (0..n).map(|i| a + (b - a) * i as f64 / (n - 1) as f64).collect()
+}
+
+#[test]
+fn a_plane_has_a_straight_contour() {
+    let xs = linspace(0.0, 2.0, 21);
+    let ys = linspace(-1.0, 3.0, 9);
+    let values: Vec<f64> = ys.iter().flat_map(|_| xs.iter().copied()).collect();
+    // The level lies between grid lines: x = 1.03.
+    let segments = marching_squares(&xs, &ys, &values, 1.03);
+    assert_eq!(segments.len(), ys.len() - 1, "one segment per row of squares");
+    for s in &segments {
+        for p in s {
+            assert!((p[0] - 1.03).abs() < 1e-12, "{p:?}");
+        }
+    }
+    let lines = chain_segments(&segments);
+    assert_eq!(lines.len(), 1, "one polyline");
+    let line = &lines[0];
+    assert_eq!(line.len(), ys.len());
+    let (lo, hi) =
+        (line.first().unwrap()[1].min(line.last().unwrap()[1]), line.first().unwrap()[1].max(line.last().unwrap()[1]));
+    assert_eq!((lo, hi), (-1.0, 3.0), "from the bottom edge to the top edge");
+    // A plane ρ = x at level 1 exactly on a grid line is still found.
+    let values: Vec<f64> = ys.iter().flat_map(|_| xs.iter().copied()).collect();
+    let segments = marching_squares(&xs, &ys, &values, 1.0);
+    assert!(!segments.is_empty());
+    assert!(segments.iter().flatten().all(|p| (p[0] - 1.0).abs() < 1e-12));
+}
+
+#[test]
+fn a_cone_has_a_closed_circular_contour() {
+    let xs = linspace(-2.0, 2.0, 61);
+    let ys = linspace(-2.0, 2.0, 57);
+    let values: Vec<f64> = ys.iter().flat_map(|&y| xs.iter().map(move |&x| x.hypot(y))).collect();
+    // 1.3 = |(−1.2, 0.5)|: the contour runs exactly through a grid node there.
+    let r = 1.3;
+    let segments = marching_squares(&xs, &ys, &values, r);
+    assert!(segments.len() > 50);
+    for p in segments.iter().flatten() {
+        assert!((p[0].hypot(p[1]) - r).abs() < 2e-3, "{p:?} off the circle");
+    }
+    let lines = chain_segments(&segments);
+    assert_eq!(lines.len(), 1, "one closed polyline");
+    let line = &lines[0];
+    assert_eq!(line.first(), line.last(), "closed");
+    assert_eq!(line.len(), segments.len() + 1);
+}
+
+#[test]
+fn unknown_values_are_skipped_and_saddles_stay_separate() {
+    let xs = [0.0, 1.0, 2.0];
+    let ys = [0.0, 1.0];
+    // The right square has a NaN corner; the left one crosses.
+    let values = [0.0, 2.0, f64::NAN, 0.0, 2.0, 5.0];
+    let segments = marching_squares(&xs, &ys, &values, 1.0);
+    assert_eq!(segments.len(), 1);
+    // A partial map (missing rows) is the same as NaN rows.
+    assert_eq!(marching_squares(&xs, &ys, &values[..3], 1.0).len(), 0);
+    // A saddle: two segments that do not touch.
+    let saddle = marching_squares(&[0.0, 1.0], &[0.0, 1.0], &[2.0, 0.0, 0.0, 2.0], 1.0);
+    assert_eq!(saddle.len(), 2);
+    assert_eq!(chain_segments(&saddle).len(), 2);
+}
+
+// ---------------------------------------------------------------- maps
+
+#[test]
+fn the_map_colours_diverge_around_rho_1() {
+    let white = rho_color(1.0).0;
+    assert!(white[..3].iter().all(|c| *c > 0.9), "ρ = 1 near white: {white:?}");
+    let stable = rho_color(0.8).0;
+    assert!(stable[2] > stable[0] + 0.3, "ρ = 0.8 blue: {stable:?}");
+    let unstable = rho_color(1.2).0;
+    assert!(unstable[0] > unstable[2] + 0.3, "ρ = 1.2 red: {unstable:?}");
+    assert_eq!(rho_color(0.5), rho_color(0.8), "clamped below");
+    assert_eq!(rho_color(7.0), rho_color(1.2), "clamped above");
+    assert_eq!(rho_color(f64::INFINITY), rho_color(1.2));
+    assert_eq!(rho_color(f64::NAN), palette::MAP_PENDING, "not computed: grey");
+    // Darker (lower sum of components) the further from 1, on both sides.
+    let lum = |r: f64| rho_color(r).0[..3].iter().sum::<f32>();
+    assert!(lum(0.99) > lum(0.95) && lum(0.95) > lum(0.85));
+    assert!(lum(1.01) > lum(1.05) && lum(1.05) > lum(1.15));
+    assert!(lum(0.98) < lum(1.0) - 0.1, "ρ = 0.98 is visibly coloured");
+}
+
+#[test]
+fn a_stability_grid_validates_and_pads_partial_maps() {
+    let mut g = StabilityGrid::default();
+    assert!(g.is_empty());
+    assert_eq!(g.delta_range(), flexarm::view::map::DEFAULT_DELTA_RANGE);
+    g.set(&[0.01, 0.02, 0.04], &[1.0, 2.0], &[0.9, 1.1, 1.2]).unwrap();
+    assert_eq!(g.rho().len(), 6);
+    assert_eq!(g.at(0, 1), 1.1);
+    assert!(g.at(1, 0).is_nan(), "rows not computed yet are NaN");
+    assert!(g.at(0, 3).is_nan());
+    assert_eq!((g.delta_range(), g.alpha_range()), ([0.01, 0.04], [1.0, 2.0]));
+    assert!(g.set(&[0.01], &[1.0, 2.0], &[]).is_err(), "one column");
+    assert!(g.set(&[0.02, 0.01], &[1.0, 2.0], &[]).is_err(), "decreasing");
+    assert!(g.set(&[0.0, 0.01], &[1.0, 2.0], &[]).is_err(), "δ = 0 on a log axis");
+    assert!(g.set(&[0.01, 0.02], &[1.0, 2.0], &[1.0; 5]).is_err(), "too many values");
+    assert_eq!(g.rho().len(), 6, "a rejected map leaves the old one");
+    assert_eq!(MapSide::parse("on"), Ok(MapSide::On));
+    assert!(MapSide::parse("paper").unwrap_err().contains("\"off\""));
+    assert_eq!(MapSide::for_feedback(PreliminaryFeedbackChoice::Lq), MapSide::On);
+    assert_eq!(MapSide::for_feedback(PreliminaryFeedbackChoice::Off), MapSide::Off);
+}
+
+fn map_config(pf: PreliminaryFeedbackChoice) -> SimulationConfig {
+    SimulationConfig { preliminary_feedback: pf, ..Default::default() }
+}
+
+#[test]
+fn the_contour_of_the_map_without_feedback_brackets_the_stable_window() {
+    // δ from 2 ms to 0.25 s, α around 2: the loop without preliminary feedback is stable only
+    // for δ in a window of roughly 0.035–0.11 s.
+    let deltas = log_space(0.002, 0.25, 40);
+    let alphas = log_space(1.0, 4.0, 5);
+    let map = stability_map(&map_config(PreliminaryFeedbackChoice::Off), &deltas, &alphas).unwrap();
+    let ln_d: Vec<f64> = deltas.iter().map(|d| d.ln()).collect();
+    let ln_a: Vec<f64> = alphas.iter().map(|a| a.ln()).collect();
+    let segments = marching_squares(&ln_d, &ln_a, &map.spectral_radius, 1.0);
+    // Where the contour crosses α = 2 (the middle row).
+    let mid = 2f64.ln();
+    let mut crossings: Vec<f64> = segments
+        .iter()
+        .filter(|s| (s[0][1] - mid) * (s[1][1] - mid) <= 0.0 && s[0][1] != s[1][1])
+        .map(|s| {
+            let t = (mid - s[0][1]) / (s[1][1] - s[0][1]);
+            (s[0][0] + t * (s[1][0] - s[0][0])).exp()
+        })
+        .collect();
+    crossings.sort_by(f64::total_cmp);
+    crossings.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    // (A second, narrow stable band near δ ≈ 0.16–0.22 s, where the sampling aliases the flexible
+    // mode, adds two more crossings further right.)
+    assert!(crossings.len() >= 2, "the window's edges at α = 2: {crossings:?}");
+    assert!((0.025..0.045).contains(&crossings[0]), "lower edge {}", crossings[0]);
+    assert!((0.09..0.14).contains(&crossings[1]), "upper edge {}", crossings[1]);
+}
+
+#[test]
+fn maps_go_to_the_static_layer_and_change_only_on_set_map() {
+    let deltas = log_space(0.002, 0.25, 24);
+    let alphas = log_space(0.1, 5.0, 10);
+    let full = stability_map(&map_config(PreliminaryFeedbackChoice::Off), &deltas, &alphas).unwrap();
+    let sim = run(PreliminaryFeedbackChoice::Off, 0.5);
+    let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 2.0);
+    scene.draw(&sim);
+    let g0 = scene.static_generation();
+    let empty = scene.static_vertices().len();
+    // Half the rows so far.
+    scene.set_map(MapSide::Off, &deltas, &alphas, &full.spectral_radius[..5 * deltas.len()]).unwrap();
+    let g1 = scene.static_generation();
+    assert!(g1 > g0);
+    let half = scene.static_vertices().len();
+    scene.set_map(MapSide::Off, &deltas, &alphas, &full.spectral_radius).unwrap();
+    let whole = scene.static_vertices().len();
+    assert!(half > empty && whole > half, "cells and contour: {empty} → {half} → {whole}");
+    let g2 = scene.static_generation();
+    for _ in 0..5 {
+        scene.draw(&sim);
+    }
+    assert_eq!(scene.static_generation(), g2, "drawing frames does not rebuild the maps");
+    // Everything stays inside the map panels.
+    let off = scene.layout().to_physical(scene.layout().panel(PanelKind::MapOff).unwrap().rect);
+    let on = scene.layout().to_physical(scene.layout().panel(PanelKind::MapOn).unwrap().rect);
+    for v in scene.static_vertices() {
+        let [x, y] = [v.position[0] as f64, v.position[1] as f64];
+        let inside = |r: Rect| x >= r.x - 0.01 && x <= r.right() + 0.01 && y >= r.y - 0.01 && y <= r.bottom() + 0.01;
+        // The contour's halo may poke out by half its width.
+        let near = |r: Rect| x >= r.x - 5.0 && x <= r.right() + 5.0 && y >= r.y - 5.0 && y <= r.bottom() + 5.0;
+        assert!(inside(off) || inside(on) || near(off) || near(on), "static vertex {x},{y} outside the maps");
+    }
+    let panels = scene.panel_info();
+    let map = info(&panels, "map-off");
+    assert_eq!((map.x_scale, map.y_scale), ("log", "log"));
+    assert_eq!((map.x_label, map.y_label), ("δ [s]", "α [1/s]"));
+    assert_eq!(map.x_range, [deltas[0], deltas[23]]);
+    assert_eq!(map.y_range, [alphas[0], alphas[9]]);
+    assert!(map.x_ticks.contains(&0.01) && map.y_ticks.contains(&1.0), "{:?} {:?}", map.x_ticks, map.y_ticks);
+    assert!(panels.iter().filter(|p| !p.id.starts_with("map")).all(|p| p.x_scale == "linear" && p.y_scale == "linear"));
+    scene.set_options(&OptionsUpdate { show_map: Some(false), ..Default::default() }).unwrap();
+    assert!(scene.static_vertices().is_empty(), "hidden maps draw nothing");
+    assert!(scene.layout().panel(PanelKind::MapOff).is_none());
+    scene.set_options(&OptionsUpdate { show_map: Some(true), ..Default::default() }).unwrap();
+    assert_eq!(scene.static_vertices().len(), whole, "the map survives hiding");
+    scene.clear_maps();
+    assert!(scene.map(MapSide::Off).is_empty());
+    assert_eq!(scene.static_vertices().len(), empty);
+}
+
+// ---------------------------------------------------------------- poles
+
+fn loop_poles(poles: &[PoleInfo]) -> Vec<&PoleInfo> {
+    poles.iter().filter(|p| p.kind == PoleKind::Loop).collect()
+}
+
+#[test]
+fn preliminary_feedback_moves_the_flexible_pair_across_the_imaginary_axis() {
+    let mut flexible_re = Vec::new();
+    for pf in [PreliminaryFeedbackChoice::Off, PreliminaryFeedbackChoice::Paper] {
+        let sim = run(pf, 0.1);
+        let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
+        scene.draw(&sim);
+        let poles = scene.pole_info();
+        let loops = loop_poles(&poles);
+        assert_eq!(loops.len(), 10);
+        let flexible: Vec<_> = loops.iter().filter(|p| p.flexible).collect();
+        assert_eq!(flexible.len(), 2, "{pf:?}: one flexible pair");
+        assert!((flexible[0].re - flexible[1].re).abs() < 1e-9 && (flexible[0].im + flexible[1].im).abs() < 1e-9);
+        assert!((flexible[0].im.abs() - 28.4).abs() < 1.0, "{pf:?}: Im ≈ 28.4 rad/s: {}", flexible[0].im);
+        flexible_re.push(flexible[0].re);
+        for p in &poles {
+            assert_eq!(p.unstable, p.re > 0.0);
+            assert!((p.omega - p.re.hypot(p.im)).abs() < 1e-9);
+            assert!((p.zeta.unwrap() + p.re / p.omega).abs() < 1e-12);
+            assert_eq!(p.run, "A");
+        }
+        let open: Vec<_> = poles.iter().filter(|p| p.kind == PoleKind::A4Open).collect();
+        assert_eq!(open.len(), 2);
+        assert!((open[0].re - 2.64).abs() < 0.05 && (open[0].im.abs() - 29.58).abs() < 0.05, "A4 open {:?}", open[0]);
+        let a4: Vec<_> = poles.iter().filter(|p| p.kind == PoleKind::A4).collect();
+        let want = if pf == PreliminaryFeedbackChoice::Off { 2.64 } else { -2.48 };
+        assert!((a4[0].re - want).abs() < 0.05, "{pf:?}: A4 {:?}", a4[0]);
+        // Markers sit at their s in the panel; the far-left poles at the left edge.
+        let panel = scene.layout().panel(PanelKind::Poles).unwrap().rect;
+        let frame = PoleFrame::new(panel);
+        for p in &poles {
+            let (x, y) = (p.x.unwrap(), p.y.unwrap());
+            assert!(x >= panel.x && x <= panel.right() && y >= panel.y && y <= panel.bottom(), "{p:?}");
+            if p.in_view {
+                assert!((x - frame.x(p.re)).abs() < 1e-9 && (y - frame.y(p.im)).abs() < 1e-9);
+            }
+        }
+        let far: Vec<_> = loops.iter().filter(|p| p.re < -100.0).collect();
+        assert_eq!(far.len(), 2, "the poles at −300 and −700 1/s");
+        assert!(far.iter().all(|p| !p.in_view && p.x.unwrap() < panel.x + 10.0));
+        let info = scene.panel_info();
+        let plot = info.iter().find(|p| p.id == "poles").unwrap();
+        assert_eq!((plot.x_label, plot.y_label), ("Re s [1/s]", "Im s [rad/s]"));
+        assert_eq!((plot.x_range, plot.y_range), ([-8.0, 6.0], [-40.0, 40.0]));
+        assert!(plot.x_ticks.contains(&0.0) && plot.y_ticks.contains(&0.0) && plot.y_ticks.contains(&40.0));
+    }
+    assert!(flexible_re[0] > 2.0 && flexible_re[0] < 2.8, "without PF: Re ≈ +2.4, got {}", flexible_re[0]);
+    assert!(flexible_re[1] < -1.5 && flexible_re[1] > -3.5, "with PF: Re ≈ −2.8, got {}", flexible_re[1]);
+}
+
+#[test]
+fn the_analysis_is_cached_per_configuration() {
+    let mut sim = run(PreliminaryFeedbackChoice::Off, 0.1);
+    let mut scene = Scene::new(ViewOptions::default(), 1000.0, 700.0, 1.0);
+    scene.draw(&sim);
+    let first = scene.analysis(0).unwrap().report().cloned().unwrap();
+    let mut cache = scene.analysis(0).unwrap().clone();
+    assert!(!cache.update(Some(sim.config())), "same configuration: no recomputation");
+    let mut other = *sim.config();
+    other.preliminary_feedback = PreliminaryFeedbackChoice::Paper;
+    assert!(cache.update(Some(&other)));
+    sim.set_config(other).unwrap();
+    sim.advance(0.05).unwrap();
+    scene.draw(&sim);
+    let second = scene.analysis(0).unwrap().report().unwrap();
+    assert!(second.spectral_radius < 1.0 && first.spectral_radius > 1.0);
+    // Hiding the plot keeps the data for readouts, without positions.
+    scene.set_options(&OptionsUpdate { show_poles: Some(false), ..Default::default() }).unwrap();
+    scene.draw(&sim);
+    let poles = scene.pole_info();
+    assert!(!poles.is_empty() && poles.iter().all(|p| p.x.is_none()));
+    assert!(scene.panel_info().iter().all(|p| p.id != "poles"));
+}
+
+#[test]
+fn pole_markers_stay_within_their_budget_and_panel() {
+    let mut p = Painter::new();
+    for pf in [PreliminaryFeedbackChoice::Off, PreliminaryFeedbackChoice::Paper] {
+        for delta in [0.002, 0.01, 0.05, 0.2] {
+            let mut c = map_config(pf);
+            c.controller.sampling_period = delta;
+            let report = flexarm::analysis::analyze(&c, None).unwrap();
+            for dpr in [1.0, 3.0] {
+                for size in [80.0, 600.0] {
+                    p.clear();
+                    let rect = Rect::new(10.0, 20.0, size * dpr, size * dpr);
+                    let frame = PoleFrame::new(rect);
+                    for style in [PoleStyle::RUN_A, PoleStyle::RUN_B] {
+                        draw_flexible_halo(&mut p, &frame, &report, dpr);
+                        draw_a4(&mut p, &frame, &report, &style, dpr);
+                        draw_poles(&mut p, &frame, &report, &style, dpr);
+                    }
+                    assert!(p.len() <= 2 * RUN_VERTEX_BUDGET, "{} vertices", p.len());
+                    let margin = 20.0 * dpr;
+                    for v in p.vertices() {
+                        let [x, y] = [v.position[0] as f64, v.position[1] as f64];
+                        assert!(
+                            x >= rect.x - margin
+                                && x <= rect.right() + margin
+                                && y >= rect.y - margin
+                                && y <= rect.bottom() + margin,
+                            "δ = {delta}: vertex {x},{y} far outside"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------- pair
+
+#[test]
+fn a_pair_shows_two_arms_both_errors_and_both_runs_poles() {
+    let a = run(PreliminaryFeedbackChoice::Off, 3.8);
+    let b = run(PreliminaryFeedbackChoice::Paper, 3.8);
+    let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 2.0);
+    scene.draw(&b);
+    let single_e1 = info(&scene.panel_info(), "e1").y_range[1];
+    scene.draw_pair(&a, &b);
+    assert!(scene.is_pair());
+    let panels = scene.panel_info();
+    let ids: Vec<&str> = panels.iter().map(|p| p.id).collect();
+    assert_eq!(ids, ["arm", "arm-b", "e1", "e2", "poles", "map-off", "map-on"]);
+    // The scale covers both runs: A diverges, B stays small.
+    let e1 = info(&panels, "e1").y_range[1];
+    assert!(e1 >= max_abs(&a.traces().e1) && e1 >= max_abs(&b.traces().e1));
+    assert!(e1 > 10.0 * single_e1, "pair scale {e1} vs B alone {single_e1}");
+    let poles = scene.pole_info();
+    assert_eq!(loop_poles(&poles).iter().filter(|p| p.run == "A").count(), 10);
+    assert_eq!(loop_poles(&poles).iter().filter(|p| p.run == "B").count(), 10);
+    let flex = |run: &str| loop_poles(&poles).into_iter().find(|p| p.run == run && p.flexible).unwrap().re;
+    assert!(flex("A") > 0.0 && flex("B") < 0.0);
+    let series = scene.series_info();
+    assert_eq!(series.len(), 2);
+    assert_eq!((series[0].run, series[1].run), ("A", "B"));
+    assert_eq!(series[0].e1, palette::ERROR1.css());
+    assert_ne!(series[1].e1, series[0].e1);
+    assert!(series.iter().all(|s| s.color.starts_with('#') && s.color.len() == 7));
+    assert_ne!(series[0].pole_marker, series[1].pole_marker);
+    // Back to one run: the second arm goes away.
+    scene.draw(&a);
+    assert!(!scene.is_pair());
+    assert!(scene.layout().panel(PanelKind::ArmB).is_none());
+    assert_eq!(scene.series_info().len(), 1);
+    assert!(scene.pole_info().iter().all(|p| p.run == "A"));
+}
+
+#[test]
+fn a_pair_does_not_reallocate_after_warm_up() {
+    let mut a = run(PreliminaryFeedbackChoice::Off, 0.0);
+    let mut b = run(PreliminaryFeedbackChoice::Paper, 0.0);
+    let mut scene = Scene::new(ViewOptions { show_torque: true, ..Default::default() }, 1400.0, 900.0, 3.0);
+    let deltas = log_space(0.002, 0.25, 20);
+    let alphas = log_space(0.1, 5.0, 8);
+    let map = stability_map(a.config(), &deltas, &alphas).unwrap();
+    scene.set_map(MapSide::Off, &deltas, &alphas, &map.spectral_radius).unwrap();
+    scene.draw_pair(&a, &b);
+    let capacity = scene.painter().capacity();
+    let generation = scene.static_generation();
+    // A diverges after ≈ 4 s and then stops advancing; keep drawing it.
+    for _ in 0..180 {
+        a.advance(1.0 / 30.0).unwrap();
+        b.advance(1.0 / 30.0).unwrap();
+        scene.draw_pair(&a, &b);
+        assert_eq!(scene.painter().capacity(), capacity, "reallocated at t = {}", a.time());
+    }
+    assert_eq!(scene.static_generation(), generation);
+}
+
+#[test]
+fn options_include_the_analysis_panels() {
+    let mut o = ViewOptions::default();
+    assert!(o.show_poles && o.show_map, "shown by default");
+    o.apply(&OptionsUpdate { show_poles: Some(false), ..Default::default() }).unwrap();
+    assert!(!o.show_poles && o.show_map);
+    assert!(OptionsUpdate::check_field("show_map").is_ok() && OptionsUpdate::check_field("show_poles").is_ok());
+    assert!(OptionsUpdate::check_field("showMap").is_err());
+    assert_eq!(Color::hex(0x1f5fc4).css(), "#1f5fc4");
+    assert_eq!(Color::hex(0xffffff).with_alpha(0.5).css(), "rgba(255, 255, 255, 0.5)");
 }

@@ -155,3 +155,66 @@ impl Autoscale {
         self.limit
     }
 }
+
+/// Tick values for a logarithmic axis over [lo, hi] (both > 0): 1, 2, 5 × 10^k when at most
+/// `max_count + 1` of them fit, else 1 and 5 × 10^k, else only the powers of ten (every decade,
+/// or every 2nd, 3rd, ... decade on very long ranges). A range too short to hold two such ticks gets 1, 2, ..., 9 × 10^k.
+/// Empty for an empty, non-positive or non-finite range.
+///
+/// Values are built as m × 10^k or m / 10^−k from exact integers, so 0.002 is the double
+/// nearest to 0.002 (labels print cleanly).
+pub fn log_ticks(lo: f64, hi: f64, max_count: usize) -> Vec<f64> {
+    if !(lo > 0.0 && hi > lo && hi.is_finite()) {
+        return Vec::new();
+    }
+    let max_count = max_count.max(1);
+    let first = lo.log10().floor() as i32 - 1;
+    let last = hi.log10().ceil() as i32 + 1;
+    if last - first > 600 {
+        return Vec::new();
+    }
+    let collect = |mantissas: &[f64], decade_step: i32| -> Vec<f64> {
+        let mut out = Vec::new();
+        let mut k = first;
+        // Align the decades to multiples of the step so that 10^0 stays a tick.
+        k -= k.rem_euclid(decade_step);
+        while k <= last {
+            for &m in mantissas {
+                let v = power_of_ten_times(m, k);
+                if v >= lo * (1.0 - 1e-9) && v <= hi * (1.0 + 1e-9) {
+                    out.push(v);
+                }
+            }
+            k += decade_step;
+        }
+        out
+    };
+    let fine = collect(&[1.0, 2.0, 5.0], 1);
+    if fine.len() < 2 {
+        return collect(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0], 1);
+    }
+    if fine.len() <= max_count + 1 {
+        return fine;
+    }
+    let medium = collect(&[1.0, 5.0], 1);
+    if medium.len() <= max_count + 1 && medium.len() >= 2 {
+        return medium;
+    }
+    let mut step = 1;
+    loop {
+        let coarse = collect(&[1.0], step);
+        if coarse.len() <= max_count + 1 || step > 600 {
+            return coarse;
+        }
+        step += 1;
+    }
+}
+
+/// m × 10^k computed from exact integers (for |k| ≤ 22 the power is exact).
+fn power_of_ten_times(m: f64, k: i32) -> f64 {
+    if k >= 0 {
+        m * 10f64.powi(k)
+    } else {
+        m / 10f64.powi(-k)
+    }
+}

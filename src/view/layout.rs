@@ -1,16 +1,18 @@
 //! Where each panel goes on the canvas.
 //!
-//! The canvas is split into a *stage* (the arm picture) and a column of *plots* (time traces).
-//! On a wide canvas the stage takes the left ≈ 40 % and the plots stack on the right; on a narrow
-//! or portrait canvas the stage sits on top and the plots stack below it.
+//! The canvas is split into a *stage* (the arm picture, or two arms when two runs are compared)
+//! and a column of *plots*: the time traces stacked, then the analysis panels (pole plot and the
+//! two stability maps) in a row below them. On a wide canvas the stage takes the left ≈ 40 % and
+//! the plots sit on the right; on a narrow or portrait canvas the stage sits on top and the plots
+//! below it. The analysis panels share their row side by side, or wrap onto more rows when that
+//! gives every panel more room (narrow canvases).
 //!
 //! Panel rectangles are in CSS pixels and, for plots, are exactly the data area: the axis ranges
 //! map linearly onto them. Gutters around each plot are left free for the HTML tick labels and
 //! titles that the page places over the canvas.
 //!
-//! The lists of panels are data ([`PanelKind`] values), so later panels — a pole plot, a
-//! stability map, a second arm for a side-by-side comparison — are added by extending the enum
-//! and [`LayoutOptions::panels`], not by rewriting the arithmetic.
+//! The lists of panels are data ([`PanelKind`] values): new panels are added by extending the
+//! enum and [`LayoutOptions::panels`], not by rewriting the arithmetic.
 
 use serde::Serialize;
 
@@ -65,17 +67,25 @@ impl Rect {
     }
 }
 
-/// What a panel shows. New kinds (pole plot, stability map, second arm) will be added here.
+/// What a panel shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PanelKind {
-    /// The arm, its motor, the flexible joint and the reference arm.
+    /// The arm, its motor, the flexible joint and the reference arm (run A).
     Arm,
+    /// The second arm when two runs are compared (run B).
+    ArmB,
     /// Tracking error of link 1, e1 = q1 − q_d1 over time.
     Error1,
     /// Tracking error of link 2, e2 = q2 − q_d2 over time.
     Error2,
     /// Applied torques T1, T2 over time.
     Torque,
+    /// The sampled loop's eigenvalues as s = ln λ / δ, with the δ → 0 pair A4.
+    Poles,
+    /// ρ over (δ, α) without preliminary feedback.
+    MapOff,
+    /// ρ over (δ, α) with preliminary feedback.
+    MapOn,
 }
 
 impl PanelKind {
@@ -83,15 +93,34 @@ impl PanelKind {
     pub fn id(self) -> &'static str {
         match self {
             PanelKind::Arm => "arm",
+            PanelKind::ArmB => "arm-b",
             PanelKind::Error1 => "e1",
             PanelKind::Error2 => "e2",
             PanelKind::Torque => "torque",
+            PanelKind::Poles => "poles",
+            PanelKind::MapOff => "map-off",
+            PanelKind::MapOn => "map-on",
         }
     }
 
     /// True for panels that plot quantities against time.
     pub fn is_time_plot(self) -> bool {
         matches!(self, PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque)
+    }
+
+    /// True for the arm pictures.
+    pub fn is_stage(self) -> bool {
+        matches!(self, PanelKind::Arm | PanelKind::ArmB)
+    }
+
+    /// True for the stability maps.
+    pub fn is_map(self) -> bool {
+        matches!(self, PanelKind::MapOff | PanelKind::MapOn)
+    }
+
+    /// True for the panels of the analysis row: pole plot and maps.
+    pub fn is_analysis(self) -> bool {
+        matches!(self, PanelKind::Poles | PanelKind::MapOff | PanelKind::MapOn)
     }
 }
 
@@ -104,21 +133,55 @@ pub struct Panel {
 }
 
 /// Which panels to show.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LayoutOptions {
     /// Adds the torque panel below the error panels.
     pub show_torque: bool,
+    /// Adds the pole plot to the analysis row.
+    pub show_poles: bool,
+    /// Adds the two stability maps to the analysis row.
+    pub show_map: bool,
+    /// Two runs side by side: a second arm on the stage.
+    pub pair: bool,
+}
+
+impl Default for LayoutOptions {
+    /// What the page shows by default: one run, no torque, pole plot and maps.
+    fn default() -> Self {
+        Self { show_torque: false, show_poles: true, show_map: true, pair: false }
+    }
+}
+
+/// The panels of a layout, grouped by where they go.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct PanelLists {
+    /// The arm pictures, sharing the stage.
+    pub stage: Vec<PanelKind>,
+    /// The time plots, stacked.
+    pub plots: Vec<PanelKind>,
+    /// The analysis panels, in a row below the time plots.
+    pub analysis: Vec<PanelKind>,
 }
 
 impl LayoutOptions {
-    /// The stage panels (shown side by side) and the plot panels (stacked), in order.
-    pub fn panels(&self) -> (Vec<PanelKind>, Vec<PanelKind>) {
-        let stage = vec![PanelKind::Arm];
+    /// The stage panels, the time plots and the analysis panels, in order.
+    pub fn panels(&self) -> PanelLists {
+        let mut stage = vec![PanelKind::Arm];
+        if self.pair {
+            stage.push(PanelKind::ArmB);
+        }
         let mut plots = vec![PanelKind::Error1, PanelKind::Error2];
         if self.show_torque {
             plots.push(PanelKind::Torque);
         }
-        (stage, plots)
+        let mut analysis = Vec::new();
+        if self.show_poles {
+            analysis.push(PanelKind::Poles);
+        }
+        if self.show_map {
+            analysis.extend([PanelKind::MapOff, PanelKind::MapOn]);
+        }
+        PanelLists { stage, plots, analysis }
     }
 }
 
@@ -145,18 +208,31 @@ pub mod margins {
     pub const PLOT_BOTTOM: f64 = 20.0;
     /// Right of a plot.
     pub const PLOT_RIGHT: f64 = 10.0;
+    /// Left of an analysis panel: its tick labels are short ("−40", "0.2").
+    pub const ANALYSIS_LEFT: f64 = 44.0;
     /// Above the stage: room for a caption such as "spring twist ×20".
     pub const STAGE_TOP: f64 = 22.0;
 }
 
 /// Share of the canvas width given to the stage on a wide canvas.
 pub const STAGE_WIDTH_SHARE: f64 = 0.4;
+/// The same when the analysis row is shown (the row needs the width).
+pub const STAGE_WIDTH_SHARE_WITH_ANALYSIS: f64 = 0.38;
 /// Share of the canvas height given to the stage on a narrow canvas.
 pub const STAGE_HEIGHT_SHARE: f64 = 0.42;
+/// The same when the analysis panels are shown.
+pub const STAGE_HEIGHT_SHARE_WITH_ANALYSIS: f64 = 0.3;
 /// Canvases narrower than this (CSS px), or taller than wide × [`PORTRAIT_ASPECT`], stack.
 pub const NARROW_WIDTH: f64 = 640.0;
 /// Width / height below which the canvas counts as portrait.
 pub const PORTRAIT_ASPECT: f64 = 1.05;
+/// Height of one analysis row relative to one time-plot row (a single analysis row) ...
+pub const ANALYSIS_ROW_WEIGHT: f64 = 1.6;
+/// ... and per row when the analysis panels wrap onto several rows.
+pub const WRAPPED_ANALYSIS_ROW_WEIGHT: f64 = 1.25;
+/// A time plot's or analysis panel's data area is kept at least this tall (CSS px) when the
+/// canvas has room for it, by shrinking the other rows towards the same minimum.
+pub const MIN_PLOT_HEIGHT: f64 = 60.0;
 
 /// The panels for one canvas size.
 #[derive(Clone, Debug, PartialEq)]
@@ -181,12 +257,12 @@ impl Layout {
         let dpr = if device_pixel_ratio.is_finite() && device_pixel_ratio > 0.0 { device_pixel_ratio } else { 1.0 };
         let arrangement =
             if w < NARROW_WIDTH || w < PORTRAIT_ASPECT * h { Arrangement::Stacked } else { Arrangement::SideBySide };
-        let (stage_kinds, plot_kinds) = options.panels();
+        let lists = options.panels();
         let inner = Rect::new(0.0, 0.0, w, h).inset(margins::OUTER, margins::OUTER, margins::OUTER, margins::OUTER);
-        let (stage_area, plot_area) = split(inner, arrangement);
-        let mut panels = Vec::with_capacity(stage_kinds.len() + plot_kinds.len());
-        panels.extend(side_by_side(stage_area, &stage_kinds));
-        panels.extend(stacked_plots(plot_area, &plot_kinds));
+        let (stage_area, plot_area) = split(inner, arrangement, !lists.analysis.is_empty());
+        let mut panels = Vec::with_capacity(lists.stage.len() + lists.plots.len() + lists.analysis.len());
+        stage_panels(stage_area, &lists.stage, &mut panels);
+        plot_column(plot_area, &lists.plots, &lists.analysis, &mut panels);
         Layout { css_width: w, css_height: h, device_pixel_ratio: dpr, arrangement, panels }
     }
 
@@ -208,16 +284,18 @@ impl Layout {
 }
 
 /// Splits the inner area into the stage area and the plot area.
-fn split(inner: Rect, arrangement: Arrangement) -> (Rect, Rect) {
+fn split(inner: Rect, arrangement: Arrangement, analysis: bool) -> (Rect, Rect) {
     match arrangement {
         Arrangement::SideBySide => {
-            let stage_w = (inner.w * STAGE_WIDTH_SHARE).round();
+            let share = if analysis { STAGE_WIDTH_SHARE_WITH_ANALYSIS } else { STAGE_WIDTH_SHARE };
+            let stage_w = (inner.w * share).round();
             let stage = Rect::new(inner.x, inner.y, stage_w, inner.h);
             let plots = inner.inset(stage_w + margins::GAP, 0.0, 0.0, 0.0);
             (stage, plots)
         }
         Arrangement::Stacked => {
-            let stage_h = (inner.h * STAGE_HEIGHT_SHARE).round();
+            let share = if analysis { STAGE_HEIGHT_SHARE_WITH_ANALYSIS } else { STAGE_HEIGHT_SHARE };
+            let stage_h = (inner.h * share).round();
             let stage = Rect::new(inner.x, inner.y, inner.w, stage_h);
             let plots = inner.inset(0.0, stage_h + margins::GAP, 0.0, 0.0);
             (stage, plots)
@@ -225,25 +303,98 @@ fn split(inner: Rect, arrangement: Arrangement) -> (Rect, Rect) {
     }
 }
 
-/// Stage panels share their area in equal columns, each below a caption strip.
-fn side_by_side(area: Rect, kinds: &[PanelKind]) -> impl Iterator<Item = Panel> + '_ {
+/// Stage panels share their area in equal columns or equal rows, whichever gives each arm the
+/// larger square (two arms go side by side on a wide stage, one above the other on a tall one);
+/// each panel sits below a caption strip.
+fn stage_panels(area: Rect, kinds: &[PanelKind], out: &mut Vec<Panel>) {
     let n = kinds.len().max(1) as f64;
     let column_w = (area.w - margins::GAP * (n - 1.0)).max(0.0) / n;
-    kinds.iter().enumerate().map(move |(i, &kind)| {
-        let column = Rect::new(area.x + i as f64 * (column_w + margins::GAP), area.y, column_w, area.h);
-        Panel { kind, rect: column.inset(0.0, margins::STAGE_TOP, 0.0, 0.0) }
-    })
+    let column_h = (area.h - margins::STAGE_TOP).max(0.0);
+    let row_h = (area.h - margins::GAP * (n - 1.0)).max(0.0) / n;
+    let row_inner_h = (row_h - margins::STAGE_TOP).max(0.0);
+    let in_columns = column_w.min(column_h) >= area.w.min(row_inner_h);
+    for (i, &kind) in kinds.iter().enumerate() {
+        let cell = if in_columns {
+            Rect::new(area.x + i as f64 * (column_w + margins::GAP), area.y, column_w, area.h)
+        } else {
+            Rect::new(area.x, area.y + i as f64 * (row_h + margins::GAP), area.w, row_h)
+        };
+        out.push(Panel { kind, rect: cell.inset(0.0, margins::STAGE_TOP, 0.0, 0.0) });
+    }
 }
 
-/// Plot panels share their area in equal rows; each row keeps gutters for its labels.
-fn stacked_plots(area: Rect, kinds: &[PanelKind]) -> impl Iterator<Item = Panel> + '_ {
-    let n = kinds.len().max(1) as f64;
-    let row_h = area.h / n;
-    kinds.iter().enumerate().map(move |(i, &kind)| {
-        let row = Rect::new(area.x, area.y + i as f64 * row_h, area.w, row_h);
-        Panel {
+/// Row heights (time-plot row, analysis row) for `rows` analysis rows below `time_rows` time
+/// plots in a column `height` tall: in proportion to their weights, but with every data area at
+/// least [`MIN_PLOT_HEIGHT`] tall when that fits.
+fn row_heights(height: f64, time_rows: usize, rows: usize) -> (f64, f64) {
+    let weight = if rows > 1 { WRAPPED_ANALYSIS_ROW_WEIGHT } else { ANALYSIS_ROW_WEIGHT };
+    let (nt, na) = (time_rows as f64, rows as f64);
+    let unit = height / (nt + na * weight).max(1e-9);
+    let (mut time_row, mut analysis_row) = (unit, unit * weight);
+    let min_row = MIN_PLOT_HEIGHT + margins::PLOT_TOP + margins::PLOT_BOTTOM;
+    if nt * min_row + na * min_row <= height {
+        if time_rows > 0 && time_row < min_row {
+            time_row = min_row;
+            analysis_row = (height - nt * time_row) / na.max(1.0);
+        } else if rows > 0 && analysis_row < min_row {
+            analysis_row = min_row;
+            time_row = (height - na * analysis_row) / nt.max(1.0);
+        }
+    }
+    (time_row, analysis_row)
+}
+
+/// The time plots stacked, then the analysis panels in `columns` columns (rows filled from the
+/// bottom, so a short first row holds the pole plot alone and the maps stay together).
+fn place_plot_column(area: Rect, plots: &[PanelKind], analysis: &[PanelKind], columns: usize, out: &mut Vec<Panel>) {
+    let columns = columns.clamp(1, analysis.len().max(1));
+    let rows = analysis.len().div_ceil(columns);
+    let (time_row, analysis_row) = row_heights(area.h, plots.len(), rows);
+    for (i, &kind) in plots.iter().enumerate() {
+        let row = Rect::new(area.x, area.y + i as f64 * time_row, area.w, time_row);
+        out.push(Panel {
             kind,
             rect: row.inset(margins::PLOT_LEFT, margins::PLOT_TOP, margins::PLOT_RIGHT, margins::PLOT_BOTTOM),
+        });
+    }
+    let top = area.y + plots.len() as f64 * time_row;
+    let first_row = analysis.len() - (rows.saturating_sub(1)) * columns;
+    let mut next = 0;
+    for r in 0..rows {
+        let count = if r == 0 { first_row } else { columns };
+        let cell_w = area.w / count.max(1) as f64;
+        for c in 0..count {
+            let Some(&kind) = analysis.get(next) else { break };
+            next += 1;
+            let cell = Rect::new(area.x + c as f64 * cell_w, top + r as f64 * analysis_row, cell_w, analysis_row);
+            out.push(Panel {
+                kind,
+                rect: cell.inset(margins::ANALYSIS_LEFT, margins::PLOT_TOP, margins::PLOT_RIGHT, margins::PLOT_BOTTOM),
+            });
         }
-    })
+    }
+}
+
+/// Lays out the plot column, choosing how many columns the analysis panels use: the choice that
+/// makes the smallest data-area side (time plots' heights, analysis panels' widths and heights)
+/// largest; fewer columns win ties.
+fn plot_column(area: Rect, plots: &[PanelKind], analysis: &[PanelKind], out: &mut Vec<Panel>) {
+    if analysis.is_empty() {
+        place_plot_column(area, plots, analysis, 1, out);
+        return;
+    }
+    let mut best = (analysis.len(), f64::NEG_INFINITY);
+    let mut trial = Vec::with_capacity(plots.len() + analysis.len());
+    for columns in 1..=analysis.len() {
+        trial.clear();
+        place_plot_column(area, plots, analysis, columns, &mut trial);
+        let score = trial
+            .iter()
+            .map(|p| if p.kind.is_time_plot() { p.rect.h } else { p.rect.w.min(p.rect.h) })
+            .fold(f64::INFINITY, f64::min);
+        if score > best.1 + 1e-9 {
+            best = (columns, score);
+        }
+    }
+    place_plot_column(area, plots, analysis, best.0, out);
 }

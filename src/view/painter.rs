@@ -57,6 +57,17 @@ impl Color {
         Color(c)
     }
 
+    /// The colour as a CSS string: `#rrggbb`, or `rgba(r, g, b, a)` when not opaque.
+    pub fn css(self) -> String {
+        let [r, g, b, a] = self.0;
+        let byte = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
+        if a >= 1.0 {
+            format!("#{:02x}{:02x}{:02x}", byte(r), byte(g), byte(b))
+        } else {
+            format!("rgba({}, {}, {}, {})", byte(r), byte(g), byte(b), (a.clamp(0.0, 1.0) * 1000.0).round() / 1000.0)
+        }
+    }
+
     /// Components as the wgpu clear colour wants them (f64).
     pub fn to_f64(self) -> [f64; 4] {
         self.0.map(f64::from)
@@ -204,6 +215,46 @@ impl Painter {
             self.triangle(center, prev, p, color);
             prev = p;
         }
+    }
+
+    /// An × marker: two diagonals of half-size `r` (pixels) through `center`.
+    pub fn cross(&mut self, center: Point, r: f64, width: f64, color: Color) {
+        let [x, y] = center;
+        self.line([x - r, y - r], [x + r, y + r], width, color);
+        self.line([x - r, y + r], [x + r, y - r], width, color);
+    }
+
+    /// A + marker: a horizontal and a vertical bar of half-length `r` through `center`.
+    pub fn plus(&mut self, center: Point, r: f64, width: f64, color: Color) {
+        let [x, y] = center;
+        self.line([x - r, y], [x + r, y], width, color);
+        self.line([x, y - r], [x, y + r], width, color);
+    }
+
+    /// The outline of a diamond (a square on its corner) with half-diagonal `r`.
+    pub fn diamond(&mut self, center: Point, r: f64, width: f64, color: Color) {
+        let [x, y] = center;
+        let corners = [[x, y - r], [x + r, y], [x, y + r], [x - r, y], [x, y - r], [x + r, y]];
+        // Running once past the start closes the outline with a proper corner join.
+        let mut stroke = self.stroke(width, color, true);
+        for p in corners {
+            stroke.to(p);
+        }
+    }
+
+    /// A chevron (an open arrow head) of size `r` at `center`, pointing along `direction`
+    /// (any non-zero vector in pixel space; nothing is drawn for a zero or non-finite one).
+    pub fn chevron(&mut self, center: Point, direction: Point, r: f64, width: f64, color: Color) {
+        let len = direction[0].hypot(direction[1]);
+        if !(len > 0.0 && len.is_finite()) {
+            return;
+        }
+        let (dx, dy) = (direction[0] / len, direction[1] / len);
+        let tip = [center[0] + dx * r * 0.5, center[1] + dy * r * 0.5];
+        let back = [center[0] - dx * r * 0.5, center[1] - dy * r * 0.5];
+        let a = [back[0] - dy * r, back[1] + dx * r];
+        let b = [back[0] + dy * r, back[1] - dx * r];
+        self.polyline([a, tip, b], width, color);
     }
 
     /// A circle outline `width` pixels thick, centred on radius `r`.

@@ -1,20 +1,32 @@
-//! One frame of the page's picture, built from the closed loop: the layout, the autoscales that
-//! persist between frames, and the painter that collects the triangles.
+//! One frame of the page's picture, built from one closed loop or two (a side-by-side
+//! comparison): the layout, the autoscales and analyses that persist between frames, the
+//! stability maps, and the painters that collect the triangles.
 //!
-//! [`Scene`] is everything the renderer needs except the GPU: the wgpu layer only uploads
-//! [`Scene::vertices`] and forwards [`Scene::panel_info`] to the page for its HTML labels.
+//! [`Scene`] is everything the renderer needs except the GPU. It keeps two triangle lists: the
+//! *static* layer ([`Scene::static_vertices`]: the stability maps' cells and contours, rebuilt
+//! only when a map or the layout changes, with [`Scene::static_generation`] counting rebuilds)
+//! and the per-frame layer ([`Scene::vertices`]: everything else, drawn over the static layer).
+//! The wgpu layer uploads the first only when its generation changes and the second every frame,
+//! and forwards [`Scene::panel_info`], [`Scene::pole_info`] and [`Scene::series_info`] to the
+//! page for its HTML labels and hover readouts.
 
 use serde::{Deserialize, Serialize};
 
 use super::arm::{draw_arm_panel, ArmFrame, ArmPose, DEFAULT_SPRING_MAGNIFICATION, VERTEX_BUDGET as ARM_VERTEX_BUDGET};
 use super::axes::{Autoscale, AutoscaleSettings, Ticks};
 use super::layout::{Layout, LayoutOptions, Panel, PanelKind, Rect};
+use super::map::{draw_map_marker, draw_map_static, map_ticks, LogFrame, MapSide, StabilityGrid, MARKER_VERTEX_BUDGET};
 use super::painter::{Color, Painter, Vertex};
 use super::palette;
+use super::poles::{
+    describe_poles, draw_a4, draw_flexible_halo, draw_pole_background, draw_poles, PoleCache, PoleFrame, PoleInfo,
+    PoleStyle, IM_RANGE, RE_RANGE, RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET,
+};
 use super::traces::{
     draw_background, draw_frame, draw_series, max_abs, vertex_budget, PlotFrame, TimeWindow, DEFAULT_TIME_WINDOW,
 };
 use crate::closed_loop::{ClosedLoop, Snapshot, Traces};
+use crate::params::SimulationConfig;
 use crate::reference::Reference;
 
 /// Longest time window accepted, s.
@@ -31,6 +43,10 @@ pub struct ViewOptions {
     pub time_window: f64,
     /// Magnification M of the spring twist θ − q1 in the arm picture.
     pub spring_magnification: f64,
+    /// Show the pole plot.
+    pub show_poles: bool,
+    /// Show the two stability maps.
+    pub show_map: bool,
 }
 
 impl Default for ViewOptions {
@@ -39,6 +55,8 @@ impl Default for ViewOptions {
             show_torque: false,
             time_window: DEFAULT_TIME_WINDOW,
             spring_magnification: DEFAULT_SPRING_MAGNIFICATION,
+            show_poles: true,
+            show_map: true,
         }
     }
 }
@@ -51,11 +69,14 @@ pub struct OptionsUpdate {
     pub show_torque: Option<bool>,
     pub time_window: Option<f64>,
     pub spring_magnification: Option<f64>,
+    pub show_poles: Option<bool>,
+    pub show_map: Option<bool>,
 }
 
 impl OptionsUpdate {
     /// The accepted field names (for checking objects whose deserializer ignores unknown keys).
-    pub const FIELDS: [&'static str; 3] = ["show_torque", "time_window", "spring_magnification"];
+    pub const FIELDS: [&'static str; 5] =
+        ["show_torque", "time_window", "spring_magnification", "show_poles", "show_map"];
 
     /// An error message if `name` is not one of [`OptionsUpdate::FIELDS`].
     pub fn check_field(name: &str) -> Result<(), String> {
@@ -86,19 +107,27 @@ impl ViewOptions {
             }
             next.spring_magnification = m;
         }
+        if let Some(v) = update.show_poles {
+            next.show_poles = v;
+        }
+        if let Some(v) = update.show_map {
+            next.show_map = v;
+        }
         *self = next;
         Ok(())
     }
 
-    fn layout_options(&self) -> LayoutOptions {
-        LayoutOptions { show_torque: self.show_torque }
+    fn layout_options(&self, pair: bool) -> LayoutOptions {
+        LayoutOptions { show_torque: self.show_torque, show_poles: self.show_poles, show_map: self.show_map, pair }
     }
 }
 
 /// A panel as the page sees it, for placing HTML labels over the canvas (CSS pixels, origin at
 /// the canvas' top-left). For plots the rectangle is the data area: `x_range` maps onto
-/// [x, x + width] and `y_range` onto [y + height, y]. For the arm the ranges are the shown region
-/// in picture units (link 1 is 1 long) and there are no labels or ticks.
+/// [x, x + width] and `y_range` onto [y + height, y] — linearly, or logarithmically where
+/// `x_scale`/`y_scale` is "log" (then a fraction f of the width is x = lo·(hi/lo)^f). For the arms
+/// the ranges are the shown region in picture units (link 1 is 1 long) and there are no labels or
+/// ticks.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PanelInfo {
     pub id: &'static str,
@@ -112,39 +141,101 @@ pub struct PanelInfo {
     pub y_range: [f64; 2],
     pub x_ticks: Vec<f64>,
     pub y_ticks: Vec<f64>,
+    /// "linear" or "log".
+    pub x_scale: &'static str,
+    pub y_scale: &'static str,
 }
 
-/// Plot curve widths, CSS pixels.
+/// How one run is drawn, for the page's legend (colours as CSS strings).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SeriesInfo {
+    /// "A" or "B".
+    pub run: &'static str,
+    /// The run's main colour (legend swatch): e1's colour for A, the single hue of B.
+    pub color: String,
+    /// Curve colours in the e1, e2 and torque panels.
+    pub e1: String,
+    pub e2: String,
+    pub torque1: String,
+    pub torque2: String,
+    /// Curve width, CSS pixels.
+    pub line_width: f64,
+    /// "solid" (A) or "thin" (B: a thinner line in its own hue, drawn over A's).
+    pub style: &'static str,
+    /// Loop-pole marker in the pole plot: "cross" (×, A) or "plus" (+, B); unstable poles red.
+    pub pole_marker: &'static str,
+    /// Colour of stable loop poles and of the map marker.
+    pub pole_color: String,
+    /// Colour of unstable loop poles.
+    pub unstable_color: String,
+    /// Colours of the A4 markers: rings without preliminary feedback, diamonds with it.
+    pub a4_open_color: String,
+    pub a4_color: String,
+}
+
+/// The state of one run that the scene draws.
+#[derive(Clone, Copy, Debug)]
+pub struct RunState<'a> {
+    pub snapshot: &'a Snapshot,
+    pub traces: &'a Traces,
+    /// Shades the intervals where the reference moves (run A's only).
+    pub reference: Option<&'a Reference>,
+    /// The configuration in force: its analysis feeds the pole plot and its (δ, α1) the map
+    /// markers. None draws no poles and no markers for the run.
+    pub config: Option<&'a SimulationConfig>,
+}
+
+/// Plot curve widths, CSS pixels: run A, and run B drawn thinner over it.
 const CURVE_WIDTH: f64 = 1.75;
+const CURVE_WIDTH_B: f64 = 1.25;
 /// About one time tick per this many CSS pixels of plot width.
 const X_TICK_SPACING: f64 = 80.0;
 /// About one value tick per this many CSS pixels of plot height (±Y gets an even split).
 const Y_TICK_SPACING: f64 = 32.0;
+/// About one Re s tick per this many CSS pixels of pole-plot width.
+const POLE_X_TICK_SPACING: f64 = 30.0;
 
-/// The picture: layout, persistent autoscales and the triangle list of the latest frame.
+/// Run names, as the page sees them.
+const RUN_NAMES: [&str; 2] = ["A", "B"];
+
+/// The picture: layout, persistent autoscales, analyses and maps, and the triangle lists.
 #[derive(Clone, Debug)]
 pub struct Scene {
     options: ViewOptions,
+    /// Two runs side by side (set by the latest draw).
+    pair: bool,
     layout: Layout,
     painter: Painter,
+    /// The stability maps' cells and contours: rebuilt only when they or the layout change.
+    static_painter: Painter,
+    static_generation: u64,
     scale_e1: Autoscale,
     scale_e2: Autoscale,
     scale_torque: Autoscale,
-    /// Simulated time of the latest frame, s.
+    /// Simulated time of the latest frame, s (the later of the two runs').
     time: f64,
+    /// The analyses of run A and run B, recomputed when their configurations change.
+    analyses: [PoleCache; 2],
+    /// The maps without ([`MapSide::Off`]) and with ([`MapSide::On`]) preliminary feedback.
+    maps: [StabilityGrid; 2],
 }
 
 impl Scene {
     /// A scene for a canvas of the given CSS size and device-pixel ratio.
     pub fn new(options: ViewOptions, css_width: f64, css_height: f64, device_pixel_ratio: f64) -> Self {
         let mut scene = Self {
-            layout: Layout::compute(css_width, css_height, device_pixel_ratio, &options.layout_options()),
+            layout: Layout::compute(css_width, css_height, device_pixel_ratio, &options.layout_options(false)),
             options,
+            pair: false,
             painter: Painter::new(),
+            static_painter: Painter::new(),
+            static_generation: 0,
             scale_e1: Autoscale::new(AutoscaleSettings::ERROR),
             scale_e2: Autoscale::new(AutoscaleSettings::ERROR),
             scale_torque: Autoscale::new(AutoscaleSettings::TORQUE),
             time: 0.0,
+            analyses: Default::default(),
+            maps: Default::default(),
         };
         scene.relayout(css_width, css_height, device_pixel_ratio);
         scene
@@ -156,6 +247,11 @@ impl Scene {
 
     pub fn layout(&self) -> &Layout {
         &self.layout
+    }
+
+    /// True if the latest frame compared two runs.
+    pub fn is_pair(&self) -> bool {
+        self.pair
     }
 
     /// Validates and applies a partial options update (re-laying out if panels change).
@@ -170,23 +266,32 @@ impl Scene {
         self.relayout(css_width, css_height, device_pixel_ratio);
     }
 
-    /// Lays out again and reserves room for the largest frame this layout can produce, so that
-    /// drawing never reallocates.
+    /// Lays out again, reserves room for the largest frame this layout can produce (so that
+    /// drawing never reallocates) and rebuilds the static layer.
     fn relayout(&mut self, css_width: f64, css_height: f64, device_pixel_ratio: f64) {
-        self.layout = Layout::compute(css_width, css_height, device_pixel_ratio, &self.options.layout_options());
+        self.layout =
+            Layout::compute(css_width, css_height, device_pixel_ratio, &self.options.layout_options(self.pair));
         let budget: usize = self.layout.panels.iter().map(|panel| self.vertex_budget(panel)).sum();
         self.painter.reserve_total(budget);
+        self.rebuild_static();
     }
 
-    /// An upper bound on the vertices one panel writes.
+    /// An upper bound on the vertices one panel writes into the per-frame layer.
     fn vertex_budget(&self, panel: &Panel) -> usize {
+        let runs = if self.pair { 2 } else { 1 };
         match panel.kind {
-            PanelKind::Arm => ARM_VERTEX_BUDGET,
+            PanelKind::Arm | PanelKind::ArmB => ARM_VERTEX_BUDGET,
             PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
-                let series = plot_series(panel.kind, &Traces::default()).iter().flatten().count();
+                let series = plot_series(panel.kind, &Traces::default(), 0).iter().flatten().count() * runs;
                 let (x_ticks, y_ticks) = plot_tick_counts(panel.rect);
                 vertex_budget(self.layout.to_physical(panel.rect).w, series, x_ticks + y_ticks + 2)
             }
+            PanelKind::Poles => {
+                let (x_ticks, y_ticks) = pole_tick_counts(panel.rect);
+                let background = 6 * (x_ticks + y_ticks + 8) + 2 * 6 + 24;
+                background + runs * POLE_RUN_VERTEX_BUDGET
+            }
+            PanelKind::MapOff | PanelKind::MapOn => 24 + runs * MARKER_VERTEX_BUDGET,
         }
     }
 
@@ -195,14 +300,29 @@ impl Scene {
         self.layout.physical_size()
     }
 
-    /// The latest frame's triangle list.
+    /// The latest frame's per-frame triangle list (drawn over the static layer).
     pub fn vertices(&self) -> &[Vertex] {
         self.painter.vertices()
     }
 
-    /// The painter (for its byte view and capacity).
+    /// The painter of the per-frame layer (for its byte view and capacity).
     pub fn painter(&self) -> &Painter {
         &self.painter
+    }
+
+    /// The static layer: the stability maps' cells and contours (drawn first).
+    pub fn static_vertices(&self) -> &[Vertex] {
+        self.static_painter.vertices()
+    }
+
+    /// The painter of the static layer.
+    pub fn static_painter(&self) -> &Painter {
+        &self.static_painter
+    }
+
+    /// Increases whenever the static layer is rebuilt: upload it again when this changes.
+    pub fn static_generation(&self) -> u64 {
+        self.static_generation
     }
 
     /// The background colour the renderer clears to.
@@ -210,31 +330,120 @@ impl Scene {
         palette::BACKGROUND
     }
 
-    /// Builds the frame for the closed loop's newest state.
-    pub fn draw(&mut self, closed_loop: &ClosedLoop) -> &[Vertex] {
-        let reference = Reference::new(closed_loop.config().reference);
-        self.draw_state(&closed_loop.snapshot(), closed_loop.traces(), Some(&reference))
+    /// Hands over a (possibly partial) stability map: `rho` row-major by α for the first rows.
+    /// Rebuilds the static layer; call again as more rows arrive.
+    pub fn set_map(&mut self, side: MapSide, deltas: &[f64], alphas: &[f64], rho: &[f64]) -> Result<(), String> {
+        self.maps[side.index()].set(deltas, alphas, rho)?;
+        self.rebuild_static();
+        Ok(())
     }
 
-    /// Builds the frame from a snapshot and traces; `reference` (if given) shades the slews.
-    /// Allocates nothing once the painter has grown to the scene's size.
+    /// Forgets both maps.
+    pub fn clear_maps(&mut self) {
+        for m in &mut self.maps {
+            m.clear();
+        }
+        self.rebuild_static();
+    }
+
+    /// The map of one side as the scene holds it.
+    pub fn map(&self, side: MapSide) -> &StabilityGrid {
+        &self.maps[side.index()]
+    }
+
+    /// The analysis behind the pole plot for run A (0) or B (1).
+    pub fn analysis(&self, run: usize) -> Option<&PoleCache> {
+        self.analyses.get(run)
+    }
+
+    fn rebuild_static(&mut self) {
+        self.static_painter.clear();
+        let dpr = self.layout.device_pixel_ratio;
+        for panel in &self.layout.panels {
+            let Some(side) = MapSide::of_panel(panel.kind) else { continue };
+            let grid = &self.maps[side.index()];
+            let frame = LogFrame {
+                rect: self.layout.to_physical(panel.rect),
+                x_range: grid.delta_range(),
+                y_range: grid.alpha_range(),
+            };
+            let (x_ticks, y_ticks) = map_ticks(panel.rect, grid);
+            draw_map_static(&mut self.static_painter, &frame, grid, (&x_ticks, &y_ticks), dpr);
+        }
+        self.static_generation += 1;
+    }
+
+    /// Builds the frame for the closed loop's newest state (one run).
+    pub fn draw(&mut self, closed_loop: &ClosedLoop) -> &[Vertex] {
+        let reference = Reference::new(closed_loop.config().reference);
+        let snapshot = closed_loop.snapshot();
+        let run = RunState {
+            snapshot: &snapshot,
+            traces: closed_loop.traces(),
+            reference: Some(&reference),
+            config: Some(closed_loop.config()),
+        };
+        self.draw_runs(run, None)
+    }
+
+    /// Builds the frame comparing two closed loops: two arms, both runs' errors in the same
+    /// axes, both runs' poles, both markers on the maps.
+    pub fn draw_pair(&mut self, a: &ClosedLoop, b: &ClosedLoop) -> &[Vertex] {
+        let reference = Reference::new(a.config().reference);
+        let (snap_a, snap_b) = (a.snapshot(), b.snapshot());
+        let run_a =
+            RunState { snapshot: &snap_a, traces: a.traces(), reference: Some(&reference), config: Some(a.config()) };
+        let run_b = RunState { snapshot: &snap_b, traces: b.traces(), reference: None, config: Some(b.config()) };
+        self.draw_runs(run_a, Some(run_b))
+    }
+
+    /// Builds the frame from a snapshot and traces without a configuration (no poles, no map
+    /// markers); `reference` (if given) shades the slews.
     pub fn draw_state(&mut self, snapshot: &Snapshot, traces: &Traces, reference: Option<&Reference>) -> &[Vertex] {
-        if snapshot.time < self.time || !snapshot.time.is_finite() {
+        self.draw_runs(RunState { snapshot, traces, reference, config: None }, None)
+    }
+
+    /// Builds the frame for run A, and run B beside it if given. Allocates nothing once the
+    /// painter has grown to the scene's size, except when the mode (one run / two runs) changes
+    /// (a new layout) or a run's configuration changes (a new analysis).
+    pub fn draw_runs(&mut self, a: RunState<'_>, b: Option<RunState<'_>>) -> &[Vertex] {
+        let pair = b.is_some();
+        if pair != self.pair {
+            self.pair = pair;
+            self.relayout(self.layout.css_width, self.layout.css_height, self.layout.device_pixel_ratio);
+        }
+        self.analyses[0].update(a.config);
+        if let Some(b) = &b {
+            self.analyses[1].update(b.config);
+        }
+        let time_of = |r: &RunState<'_>| if r.snapshot.time.is_finite() { r.snapshot.time } else { f64::NAN };
+        let now = match &b {
+            Some(b) => time_of(&a).max(time_of(b)),
+            None => time_of(&a),
+        };
+        if now.is_nan() || now < self.time {
             // The simulation restarted: the old data are gone, so are their scales.
             self.scale_e1.reset();
             self.scale_e2.reset();
             self.scale_torque.reset();
         }
-        self.time = if snapshot.time.is_finite() { snapshot.time } else { 0.0 };
+        self.time = if now.is_finite() { now } else { 0.0 };
         self.painter.clear();
         let window = self.window();
         for i in 0..self.layout.panels.len() {
             let panel = self.layout.panels[i];
             match panel.kind {
-                PanelKind::Arm => self.draw_arm(panel, snapshot),
-                PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
-                    self.draw_plot(panel, window, traces, reference)
+                PanelKind::Arm => self.draw_arm(panel, a.snapshot),
+                PanelKind::ArmB => {
+                    if let Some(b) = &b {
+                        self.draw_arm(panel, b.snapshot);
+                    }
                 }
+                PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
+                    self.draw_plot(panel, window, &a, b.as_ref())
+                }
+                PanelKind::Poles => self.draw_pole_plot(panel),
+                PanelKind::MapOff | PanelKind::MapOn => self.draw_map_overlay(panel),
             }
         }
         self.painter.vertices()
@@ -242,6 +451,15 @@ impl Scene {
 
     fn window(&self) -> TimeWindow {
         TimeWindow::ending_at(self.time, self.options.time_window)
+    }
+
+    /// How many runs the frame shows.
+    fn runs(&self) -> usize {
+        if self.pair {
+            2
+        } else {
+            1
+        }
     }
 
     fn draw_arm(&mut self, panel: Panel, snapshot: &Snapshot) {
@@ -254,27 +472,78 @@ impl Scene {
         draw_arm_panel(&mut self.painter, rect, dpr, &actual, &reference, self.options.spring_magnification);
     }
 
-    fn draw_plot(&mut self, panel: Panel, window: TimeWindow, traces: &Traces, reference: Option<&Reference>) {
-        let n = traces.t.len();
-        let range = window.indices(&traces.t);
-        let series = plot_series(panel.kind, traces);
-        let data_max = series
-            .iter()
-            .flatten()
-            .map(|(values, _)| values.get(range.clone()).map_or(0.0, max_abs))
-            .fold(0.0, f64::max);
+    fn draw_plot(&mut self, panel: Panel, window: TimeWindow, a: &RunState<'_>, b: Option<&RunState<'_>>) {
+        let runs = [Some(a), b];
+        let mut data_max: f64 = 0.0;
+        for (run, state) in runs.iter().enumerate() {
+            let Some(state) = state else { continue };
+            let range = window.indices(&state.traces.t);
+            for (values, _) in plot_series(panel.kind, state.traces, run).iter().flatten() {
+                data_max = data_max.max(values.get(range.clone()).map_or(0.0, max_abs));
+            }
+        }
         let time = self.time;
         let Some(scale) = self.scale_mut(panel.kind) else { return };
         let y = scale.update(data_max, time);
         let dpr = self.layout.device_pixel_ratio;
         let frame = PlotFrame { rect: self.layout.to_physical(panel.rect), window, y_lo: -y, y_hi: y };
         let (x_ticks, y_ticks) = plot_ticks(panel.rect, window, y);
-        draw_background(&mut self.painter, &frame, x_ticks, y_ticks, reference, dpr);
-        for (values, color) in series.iter().flatten() {
-            let m = n.min(values.len());
-            draw_series(&mut self.painter, &frame, &traces.t[..m], &values[..m], CURVE_WIDTH * dpr, *color);
+        draw_background(&mut self.painter, &frame, x_ticks, y_ticks, a.reference, dpr);
+        for (run, state) in runs.iter().enumerate() {
+            let Some(state) = state else { continue };
+            let traces = state.traces;
+            let n = traces.t.len();
+            let width = if run == 0 { CURVE_WIDTH } else { CURVE_WIDTH_B };
+            for (values, color) in plot_series(panel.kind, traces, run).iter().flatten() {
+                let m = n.min(values.len());
+                draw_series(&mut self.painter, &frame, &traces.t[..m], &values[..m], width * dpr, *color);
+            }
         }
         draw_frame(&mut self.painter, &frame, dpr);
+    }
+
+    fn draw_pole_plot(&mut self, panel: Panel) {
+        let dpr = self.layout.device_pixel_ratio;
+        let frame = PoleFrame::new(self.layout.to_physical(panel.rect));
+        let (x_ticks, y_ticks) = pole_ticks(panel.rect);
+        draw_pole_background(&mut self.painter, &frame, x_ticks, y_ticks, dpr);
+        let runs = self.runs();
+        for cache in &self.analyses[..runs] {
+            if let Some(report) = cache.report() {
+                draw_flexible_halo(&mut self.painter, &frame, report, dpr);
+            }
+        }
+        // B first, so run A's markers stay on top.
+        for run in (0..runs).rev() {
+            if let Some(report) = self.analyses[run].report() {
+                draw_a4(&mut self.painter, &frame, report, &run_pole_style(run), dpr);
+            }
+        }
+        for run in (0..runs).rev() {
+            if let Some(report) = self.analyses[run].report() {
+                draw_poles(&mut self.painter, &frame, report, &run_pole_style(run), dpr);
+            }
+        }
+        self.painter.rect_outline(frame.rect, dpr.max(1.0), palette::FRAME);
+    }
+
+    fn draw_map_overlay(&mut self, panel: Panel) {
+        let Some(side) = MapSide::of_panel(panel.kind) else { return };
+        let dpr = self.layout.device_pixel_ratio;
+        let grid = &self.maps[side.index()];
+        let frame = LogFrame {
+            rect: self.layout.to_physical(panel.rect),
+            x_range: grid.delta_range(),
+            y_range: grid.alpha_range(),
+        };
+        for run in (0..self.runs()).rev() {
+            let Some(config) = self.analyses[run].config() else { continue };
+            let filled = MapSide::for_feedback(config.preliminary_feedback) == side;
+            let color = if run == 0 { palette::MAP_MARKER } else { palette::RUN_B };
+            let (delta, alpha) = (config.controller.sampling_period, config.controller.alpha[0]);
+            draw_map_marker(&mut self.painter, &frame, delta, alpha, filled, color, dpr);
+        }
+        self.painter.rect_outline(frame.rect, dpr.max(1.0), palette::FRAME);
     }
 
     fn scale_mut(&mut self, kind: PanelKind) -> Option<&mut Autoscale> {
@@ -282,7 +551,7 @@ impl Scene {
             PanelKind::Error1 => Some(&mut self.scale_e1),
             PanelKind::Error2 => Some(&mut self.scale_e2),
             PanelKind::Torque => Some(&mut self.scale_torque),
-            PanelKind::Arm => None,
+            _ => None,
         }
     }
 
@@ -291,7 +560,7 @@ impl Scene {
             PanelKind::Error1 => Some(&self.scale_e1),
             PanelKind::Error2 => Some(&self.scale_e2),
             PanelKind::Torque => Some(&self.scale_torque),
-            PanelKind::Arm => None,
+            _ => None,
         }
     }
 
@@ -315,16 +584,18 @@ impl Scene {
             y_range: [0.0, 0.0],
             x_ticks: Vec::new(),
             y_ticks: Vec::new(),
+            x_scale: "linear",
+            y_scale: "linear",
         };
-        match self.scale(panel.kind) {
-            None => {
+        match panel.kind {
+            PanelKind::Arm | PanelKind::ArmB => {
                 let rect_px = self.layout.to_physical(r);
                 let (x_range, y_range) = ArmFrame::fit(rect_px, self.layout.device_pixel_ratio).world_range(rect_px);
                 info.x_range = x_range;
                 info.y_range = y_range;
             }
-            Some(scale) => {
-                let y = scale.limit();
+            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
+                let y = self.scale(panel.kind).map_or(0.0, Autoscale::limit);
                 let (x_ticks, y_ticks) = plot_ticks(r, window, y);
                 info.x_label = "t [s]";
                 info.y_label = y_label(panel.kind);
@@ -333,8 +604,80 @@ impl Scene {
                 info.x_ticks = x_ticks.collect();
                 info.y_ticks = y_ticks.collect();
             }
+            PanelKind::Poles => {
+                let (x_ticks, y_ticks) = pole_ticks(r);
+                info.x_label = "Re s [1/s]";
+                info.y_label = "Im s [rad/s]";
+                info.x_range = RE_RANGE;
+                info.y_range = IM_RANGE;
+                info.x_ticks = x_ticks.collect();
+                info.y_ticks = y_ticks.collect();
+            }
+            PanelKind::MapOff | PanelKind::MapOn => {
+                let side = MapSide::of_panel(panel.kind).unwrap_or(MapSide::Off);
+                let grid = &self.maps[side.index()];
+                let (x_ticks, y_ticks) = map_ticks(r, grid);
+                info.x_label = "δ [s]";
+                info.y_label = "α [1/s]";
+                info.x_range = grid.delta_range();
+                info.y_range = grid.alpha_range();
+                info.x_ticks = x_ticks;
+                info.y_ticks = y_ticks;
+                info.x_scale = "log";
+                info.y_scale = "log";
+            }
         }
         info
+    }
+
+    /// Every marker of the pole plot (both runs in pair mode) with its position in CSS pixels,
+    /// for hover readouts. Positions are null when the pole plot is hidden.
+    pub fn pole_info(&self) -> Vec<PoleInfo> {
+        let frame = self.layout.panel(PanelKind::Poles).map(|p| PoleFrame::new(p.rect));
+        let mut out = Vec::new();
+        for (cache, name) in self.analyses.iter().zip(RUN_NAMES).take(self.runs()) {
+            if let Some(report) = cache.report() {
+                describe_poles(report, name, frame.as_ref(), &mut out);
+            }
+        }
+        out
+    }
+
+    /// How each shown run is drawn (one entry, or two in pair mode), for the page's legend.
+    pub fn series_info(&self) -> Vec<SeriesInfo> {
+        (0..self.runs())
+            .map(|run| {
+                let style = run_pole_style(run);
+                let [t1, t2] = plot_series(PanelKind::Torque, &Traces::default(), run).map(|s| s.map(|(_, c)| c));
+                let e1 = plot_series(PanelKind::Error1, &Traces::default(), run)[0].map(|(_, c)| c);
+                let e2 = plot_series(PanelKind::Error2, &Traces::default(), run)[0].map(|(_, c)| c);
+                let css = |c: Option<Color>| c.map(Color::css).unwrap_or_default();
+                SeriesInfo {
+                    run: RUN_NAMES[run],
+                    color: css(e1),
+                    e1: css(e1),
+                    e2: css(e2),
+                    torque1: css(t1),
+                    torque2: css(t2),
+                    line_width: if run == 0 { CURVE_WIDTH } else { CURVE_WIDTH_B },
+                    style: if run == 0 { "solid" } else { "thin" },
+                    pole_marker: if style.plus { "plus" } else { "cross" },
+                    pole_color: style.stable.css(),
+                    unstable_color: style.unstable.css(),
+                    a4_open_color: style.a4_open.css(),
+                    a4_color: style.a4.css(),
+                }
+            })
+            .collect()
+    }
+}
+
+/// The pole-plot style of run A (0) or B (1).
+fn run_pole_style(run: usize) -> PoleStyle {
+    if run == 0 {
+        PoleStyle::RUN_A
+    } else {
+        PoleStyle::RUN_B
     }
 }
 
@@ -344,19 +687,23 @@ fn y_label(kind: PanelKind) -> &'static str {
         PanelKind::Error1 => "e1 [rad]",
         PanelKind::Error2 => "e2 [rad]",
         PanelKind::Torque => "T1, T2 [N m]",
-        PanelKind::Arm => "",
+        _ => "",
     }
 }
 
-/// The curves of a plot and their colours (at most two per plot).
-fn plot_series(kind: PanelKind, traces: &Traces) -> [Option<(&[f64], Color)>; 2] {
+/// The curves of a time plot and their colours (at most two per plot) for run A (0) or B (1).
+/// Run A keeps the usual colours; run B draws everything in its own hue (T2 lighter).
+fn plot_series(kind: PanelKind, traces: &Traces, run: usize) -> [Option<(&[f64], Color)>; 2] {
+    let b = run != 0;
+    let pick = |a: Color, b_color: Color| if b { b_color } else { a };
     match kind {
-        PanelKind::Error1 => [Some((traces.e1.as_slice(), palette::ERROR1)), None],
-        PanelKind::Error2 => [Some((traces.e2.as_slice(), palette::ERROR2)), None],
-        PanelKind::Torque => {
-            [Some((traces.torque1.as_slice(), palette::TORQUE1)), Some((traces.torque2.as_slice(), palette::TORQUE2))]
-        }
-        PanelKind::Arm => [None, None],
+        PanelKind::Error1 => [Some((traces.e1.as_slice(), pick(palette::ERROR1, palette::RUN_B))), None],
+        PanelKind::Error2 => [Some((traces.e2.as_slice(), pick(palette::ERROR2, palette::RUN_B))), None],
+        PanelKind::Torque => [
+            Some((traces.torque1.as_slice(), pick(palette::TORQUE1, palette::RUN_B))),
+            Some((traces.torque2.as_slice(), pick(palette::TORQUE2, palette::RUN_B_LIGHT))),
+        ],
+        _ => [None, None],
     }
 }
 
@@ -372,4 +719,17 @@ fn plot_tick_counts(rect_css: Rect) -> (usize, usize) {
 fn plot_ticks(rect_css: Rect, window: TimeWindow, y: f64) -> (Ticks, Ticks) {
     let (x_count, y_count) = plot_tick_counts(rect_css);
     (Ticks::new(window.start, window.end, x_count), Ticks::new(-y, y, y_count))
+}
+
+/// How many Re s and Im s intervals the pole plot gets at most.
+fn pole_tick_counts(rect_css: Rect) -> (usize, usize) {
+    let x_count = (rect_css.w / POLE_X_TICK_SPACING).floor().clamp(2.0, 14.0) as usize;
+    let y_count = (rect_css.h / Y_TICK_SPACING).floor().clamp(2.0, 16.0) as usize;
+    (x_count, y_count)
+}
+
+/// Re s and Im s ticks of the pole plot whose data area is `rect_css` (CSS pixels).
+fn pole_ticks(rect_css: Rect) -> (Ticks, Ticks) {
+    let (x_count, y_count) = pole_tick_counts(rect_css);
+    (Ticks::new(RE_RANGE[0], RE_RANGE[1], x_count), Ticks::new(IM_RANGE[0], IM_RANGE[1], y_count))
 }

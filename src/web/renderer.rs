@@ -3,8 +3,10 @@
 //!
 //! The GPU side is deliberately thin: one WGSL shader maps physical pixels to clip space (the
 //! viewport size is a uniform) and passes the vertex colour through; alpha blending makes the
-//! reference arm translucent. One vertex buffer is reused and grows only when a frame needs more.
-//! All geometry, layout and autoscaling lives in `view`, where native tests cover it.
+//! reference arm translucent. Two vertex buffers are reused and grow only when needed: the
+//! static layer (the stability maps' cells and contours), uploaded only when the scene rebuilds it,
+//! and the per-frame layer drawn over it. All geometry, layout and autoscaling lives in `view`,
+//! where native tests cover it.
 
 use std::sync::Arc;
 
@@ -12,8 +14,8 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
-use super::Simulation;
-use crate::view::{Color, OptionsUpdate, PanelInfo, Scene, Vertex, ViewOptions};
+use super::{Simulation, StabilityMapJob};
+use crate::view::{Color, MapSide, OptionsUpdate, PanelInfo, PoleInfo, Scene, SeriesInfo, Vertex, ViewOptions};
 
 /// WGSL for both backends: pixel → clip space, colour passed through. When the surface only
 /// offers an sRGB format the fragment shader decodes the (sRGB-encoded) colours to linear, so
@@ -103,13 +105,21 @@ fn warn(message: &str) {
 #[derive(Serialize)]
 struct LayoutReport {
     panels: Vec<PanelInfo>,
+    /// "single" after `render`, "pair" after `renderPair`.
+    mode: &'static str,
+    /// How each shown run is drawn (legend): one entry, or two in pair mode.
+    series: Vec<SeriesInfo>,
+    /// Every marker of the pole plot, for hover readouts.
+    poles: Vec<PoleInfo>,
     spring_magnification: f64,
     backend: &'static str,
 }
 
 /// Draws a [`Simulation`] on a canvas: the arm on one side, the error (and torque) traces on the
-/// other. Create it with `await Renderer.create(canvas)`, call `resize` when the canvas' CSS size
-/// or the device-pixel ratio changes, and `render(sim)` once per animation frame.
+/// other, below them the pole plot and the stability maps without and with preliminary feedback.
+/// Create it with `await Renderer.create(canvas)`, call `resize` when the canvas' CSS size or the
+/// device-pixel ratio changes, `setMap("off"|"on", job)` when a [`StabilityMapJob`] has new rows,
+/// and `render(sim)` (or `renderPair(a, b)` to compare two runs) once per animation frame.
 #[wasm_bindgen]
 pub struct Renderer {
     backend: Backend,
@@ -124,6 +134,11 @@ pub struct Renderer {
     uniforms: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     vertices: wgpu::Buffer,
+    /// The static layer (stability maps), drawn before `vertices`.
+    static_vertices: wgpu::Buffer,
+    /// Vertices in `static_vertices`, and the scene's static generation they came from.
+    static_count: u32,
+    static_uploaded: Option<u64>,
     /// Set once a frame had more vertices than the device allows in one buffer.
     warned_truncation: bool,
     scene: Scene,
@@ -185,8 +200,9 @@ impl Renderer {
     }
 
     /// Changes drawing options: `{show_torque?: bool, time_window?: seconds,
-    /// spring_magnification?: number}`. Missing fields stay as they are; an invalid or unknown
-    /// field changes nothing and throws.
+    /// spring_magnification?: number, show_poles?: bool, show_map?: bool}` (the pole plot and the
+    /// stability maps are shown by default). Missing fields stay as they are; an invalid or
+    /// unknown field changes nothing and throws.
     #[wasm_bindgen(js_name = setOptions)]
     pub fn set_options(&mut self, options: JsValue) -> Result<(), JsError> {
         if options.is_undefined() || options.is_null() {
@@ -209,6 +225,70 @@ impl Renderer {
     /// (hidden tab, lost or outdated surface: it is reconfigured for the next frame).
     pub fn render(&mut self, sim: &Simulation) -> Result<(), JsError> {
         self.scene.draw(sim.closed_loop());
+        self.present()
+    }
+
+    /// Draws two simulations side by side: arm A ("arm") and arm B ("arm-b"), both runs' errors
+    /// (and torques) in the same axes — A solid in the usual colours, B thinner in violet (see
+    /// `layout().series`) — both runs' poles (B as violet +), and both runs' markers on the maps.
+    /// `render(sim)` goes back to the single view.
+    #[wasm_bindgen(js_name = renderPair)]
+    pub fn render_pair(&mut self, a: &Simulation, b: &Simulation) -> Result<(), JsError> {
+        self.scene.draw_pair(a.closed_loop(), b.closed_loop());
+        self.present()
+    }
+
+    /// Copies a stability map (possibly still being computed) into the picture: `which` is
+    /// "off" (the map without preliminary feedback) or "on" (with it). Nothing is recomputed per
+    /// frame; call again as more rows arrive.
+    #[wasm_bindgen(js_name = setMap)]
+    pub fn set_map(&mut self, which: &str, job: &StabilityMapJob) -> Result<(), JsError> {
+        let side = MapSide::parse(which).map_err(|e| JsError::new(&format!("setMap: {e}")))?;
+        let (deltas, alphas, rho) = job.grid();
+        self.scene.set_map(side, deltas, alphas, rho).map_err(|e| JsError::new(&format!("setMap: {e}")))
+    }
+
+    /// Forgets both stability maps (their panels show an empty grid until `setMap`).
+    #[wasm_bindgen(js_name = clearMaps)]
+    pub fn clear_maps(&mut self) {
+        self.scene.clear_maps();
+    }
+
+    /// The panels for HTML labels over the canvas (CSS pixels, origin top-left of the canvas):
+    /// `{panels: [{id: "arm"|"arm-b"|"e1"|"e2"|"torque"|"poles"|"map-off"|"map-on", x, y,
+    /// width, height, x_label, y_label, x_range: [a, b], y_range: [lo, hi], x_ticks: [..],
+    /// y_ticks: [..], x_scale: "linear"|"log", y_scale}], mode: "single"|"pair",
+    /// series: [{run: "A"|"B", color, e1, e2, torque1, torque2, line_width, style, pole_marker,
+    /// pole_color, unstable_color, a4_open_color, a4_color}], poles: [{run, kind:
+    /// "loop"|"a4_open"|"a4", re, im, zeta, omega, unstable, flexible, x, y, in_view}],
+    /// spring_magnification, backend}`. For plots the rectangle is the data area: x_range spans
+    /// its width and y_range its height (lo at the bottom), logarithmically where the scale is
+    /// "log" (a fraction f of the width is lo·(hi/lo)^f). Ranges and ticks are those of the latest
+    /// frame; pole x, y are the markers' centres in CSS pixels.
+    pub fn layout(&self) -> Result<JsValue, JsError> {
+        let report = LayoutReport {
+            panels: self.scene.panel_info(),
+            mode: if self.scene.is_pair() { "pair" } else { "single" },
+            series: self.scene.series_info(),
+            poles: self.scene.pole_info(),
+            spring_magnification: self.scene.options().spring_magnification,
+            backend: self.backend.name(),
+        };
+        super::to_js(&report)
+    }
+}
+
+/// A surface texture ready to draw on.
+enum Acquired {
+    Good(wgpu::SurfaceTexture),
+    /// Usable, but the surface should be reconfigured after presenting.
+    Suboptimal(wgpu::SurfaceTexture),
+}
+
+impl Renderer {
+    /// Uploads the scene's layers and draws them on the next surface texture.
+    fn present(&mut self) -> Result<(), JsError> {
+        self.upload_static();
         let vertex_count = self.upload_vertices();
         let Some(frame) = self.acquire_frame()? else {
             return Ok(());
@@ -237,9 +317,15 @@ impl Renderer {
                 occlusion_query_set: None,
                 multiview_mask: None,
             });
-            if vertex_count > 0 {
+            if self.static_count > 0 || vertex_count > 0 {
                 pass.set_pipeline(&self.pipeline);
                 pass.set_bind_group(0, &self.bind_group, &[]);
+            }
+            if self.static_count > 0 {
+                pass.set_vertex_buffer(0, self.static_vertices.slice(..));
+                pass.draw(0..self.static_count, 0..1);
+            }
+            if vertex_count > 0 {
                 pass.set_vertex_buffer(0, self.vertices.slice(..));
                 pass.draw(0..vertex_count, 0..1);
             }
@@ -252,29 +338,6 @@ impl Renderer {
         Ok(())
     }
 
-    /// The panels for HTML labels over the canvas (CSS pixels, origin top-left of the canvas):
-    /// `{panels: [{id: "arm"|"e1"|"e2"|"torque", x, y, width, height, x_label, y_label,
-    /// x_range: [a, b], y_range: [lo, hi], x_ticks: [..], y_ticks: [..]}], spring_magnification,
-    /// backend}`. For plots the rectangle is the data area: x_range spans its width and y_range
-    /// its height (lo at the bottom). Ranges and ticks are those of the latest frame.
-    pub fn layout(&self) -> Result<JsValue, JsError> {
-        let report = LayoutReport {
-            panels: self.scene.panel_info(),
-            spring_magnification: self.scene.options().spring_magnification,
-            backend: self.backend.name(),
-        };
-        super::to_js(&report)
-    }
-}
-
-/// A surface texture ready to draw on.
-enum Acquired {
-    Good(wgpu::SurfaceTexture),
-    /// Usable, but the surface should be reconfigured after presenting.
-    Suboptimal(wgpu::SurfaceTexture),
-}
-
-impl Renderer {
     /// Builds the pipeline and buffers on an opened device.
     fn with_gpu(canvas: HtmlCanvasElement, gpu: Gpu) -> Result<Renderer, JsError> {
         let Gpu { backend, surface, adapter, device, queue } = gpu;
@@ -318,6 +381,7 @@ impl Renderer {
         });
         let pipeline = create_pipeline(&device, &bind_group_layout, config.format);
         let vertices = create_vertex_buffer(&device, MIN_VERTEX_BUFFER);
+        let static_vertices = create_vertex_buffer(&device, MIN_VERTEX_BUFFER);
 
         let mut renderer = Renderer {
             backend,
@@ -331,6 +395,9 @@ impl Renderer {
             uniforms,
             bind_group,
             vertices,
+            static_vertices,
+            static_count: 0,
+            static_uploaded: None,
             warned_truncation: false,
             scene,
         };
@@ -366,25 +433,19 @@ impl Renderer {
     /// vertices to draw.
     fn upload_vertices(&mut self) -> u32 {
         let bytes = self.scene.painter().vertex_bytes();
-        let max_buffer = self.device.limits().max_buffer_size;
-        let mut len = bytes.len() as u64;
-        if len > max_buffer {
-            // Keep whole triangles that fit; this needs an absurdly large canvas.
-            let triangle = 3 * Vertex::SIZE as u64;
-            len = max_buffer / triangle * triangle;
-            if !self.warned_truncation {
-                warn("flexarm: the frame has more triangles than one GPU buffer holds; some are not drawn");
-                self.warned_truncation = true;
-            }
+        upload(&self.device, &self.queue, &mut self.vertices, bytes, &mut self.warned_truncation)
+    }
+
+    /// Uploads the static layer if the scene rebuilt it since the last upload.
+    fn upload_static(&mut self) {
+        let generation = self.scene.static_generation();
+        if self.static_uploaded == Some(generation) {
+            return;
         }
-        if len > self.vertices.size() {
-            let size = len.next_power_of_two().clamp(MIN_VERTEX_BUFFER, max_buffer.max(MIN_VERTEX_BUFFER));
-            self.vertices = create_vertex_buffer(&self.device, size);
-        }
-        if len > 0 {
-            self.queue.write_buffer(&self.vertices, 0, &bytes[..len as usize]);
-        }
-        u32::try_from(len / Vertex::SIZE as u64).unwrap_or(u32::MAX)
+        let bytes = self.scene.static_painter().vertex_bytes();
+        self.static_count =
+            upload(&self.device, &self.queue, &mut self.static_vertices, bytes, &mut self.warned_truncation);
+        self.static_uploaded = Some(generation);
     }
 
     /// The next surface texture, reconfiguring once if the surface is outdated or lost.
@@ -566,6 +627,37 @@ fn create_pipeline(
         multiview_mask: None,
         cache: None,
     })
+}
+
+/// Copies `bytes` (whole vertices) into `buffer`, replacing it with a larger one if needed;
+/// returns how many vertices to draw. Beyond the device's buffer limit whole triangles are
+/// dropped and a warning is logged once.
+fn upload(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    buffer: &mut wgpu::Buffer,
+    bytes: &[u8],
+    warned_truncation: &mut bool,
+) -> u32 {
+    let max_buffer = device.limits().max_buffer_size;
+    let mut len = bytes.len() as u64;
+    if len > max_buffer {
+        // Keep whole triangles that fit; this needs an absurdly large canvas.
+        let triangle = 3 * Vertex::SIZE as u64;
+        len = max_buffer / triangle * triangle;
+        if !*warned_truncation {
+            warn("flexarm: the frame has more triangles than one GPU buffer holds; some are not drawn");
+            *warned_truncation = true;
+        }
+    }
+    if len > buffer.size() {
+        let size = len.next_power_of_two().clamp(MIN_VERTEX_BUFFER, max_buffer.max(MIN_VERTEX_BUFFER));
+        *buffer = create_vertex_buffer(device, size);
+    }
+    if len > 0 {
+        queue.write_buffer(buffer, 0, &bytes[..len as usize]);
+    }
+    u32::try_from(len / Vertex::SIZE as u64).unwrap_or(u32::MAX)
 }
 
 fn create_vertex_buffer(device: &wgpu::Device, size: u64) -> wgpu::Buffer {

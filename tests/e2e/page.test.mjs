@@ -98,6 +98,60 @@ async function canvasInk(page, file) {
   }, png.toString('base64'));
 }
 
+/** For each rectangle (CSS px in the canvas): how much of it is drawn. `ink` is the fraction of
+ * pixels that differ from the canvas background (its corner), `marks` the fraction that differ
+ * from the rectangle's own most common colour, `colours` the distinct colours. */
+async function regionInk(page, rects, file) {
+  const png = await page.locator('#canvas').screenshot({ path: file });
+  return page.evaluate(async ({ b64, rects }) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const scale = img.width / document.querySelector('#canvas').getBoundingClientRect().width;
+    const all = ctx.getImageData(0, 0, c.width, c.height).data;
+    const bg = [all[0], all[1], all[2]];
+    return rects.map((r) => {
+      const x0 = Math.max(0, Math.floor(r.x * scale)); const y0 = Math.max(0, Math.floor(r.y * scale));
+      const x1 = Math.min(c.width, Math.ceil((r.x + r.width) * scale)); const y1 = Math.min(c.height, Math.ceil((r.y + r.height) * scale));
+      if (x1 <= x0 || y1 <= y0) return { ink: 0, marks: 0, colours: 0 };
+      const { data } = ctx.getImageData(x0, y0, x1 - x0, y1 - y0);
+      const counts = new Map();
+      let ink = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        const d = Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]);
+        if (d > 30) ink++;
+        const key = (data[i] >> 3) << 10 | (data[i + 1] >> 3) << 5 | (data[i + 2] >> 3);
+        counts.set(key, (counts.get(key) || 0) + 1);
+      }
+      const n = data.length / 4;
+      const dominant = Math.max(...counts.values());
+      return { ink: ink / n, marks: (n - dominant) / n, colours: counts.size };
+    });
+  }, { b64: png.toString('base64'), rects });
+}
+
+/** The renderer's latest layout as the page keeps it. */
+const layoutOf = (page) => page.evaluate(() => window.flexarm.lastLayout);
+
+/** Waits until the layout has panels with all of `ids`; returns the layout. */
+async function waitForPanels(page, ids, timeout = 20000) {
+  await page.waitForFunction((want) => {
+    const panels = window.flexarm?.lastLayout?.panels || [];
+    return want.every((id) => panels.some((p) => p.id === id && p.width > 0 && p.height > 0));
+  }, ids, { timeout });
+  return layoutOf(page);
+}
+
+/** The number a slider's aria-valuetext shows ("0.0500 s" → 0.05). */
+async function sliderNumber(page, id) {
+  const text = await page.$eval(id, (el) => el.getAttribute('aria-valuetext') || '');
+  return Number.parseFloat(text);
+}
+
 test('the canvas shows the arm and the traces', async () => {
   const { page, problems } = await open('?speed=1');
   await page.waitForTimeout(1500);
@@ -161,6 +215,7 @@ test('performance figures (printed for the README)', async () => {
   const { page, problems } = await open('?speed=1');
   await page.waitForTimeout(5000);
   const perf = await page.evaluate(() => window.flexarmPerf());
+  assert.ok(perf.map_ms === null || perf.map_ms > 0, `map_ms ${perf.map_ms}`);
   // How fast the wasm build simulates when nothing else runs: 10 s of the paper's loop.
   const throughput = await page.evaluate(() => {
     const Sim = window.flexarm.wasm.Simulation;
@@ -173,10 +228,101 @@ test('performance figures (printed for the README)', async () => {
   });
   console.log(`# wasm ${(wasm.length / 1e6).toFixed(2)} MB raw, ${(gzip / 1e6).toFixed(2)} MB gzip`);
   console.log(`# first frame ${perf.first_frame_ms?.toFixed(0)} ms after navigation; script per frame median ${perf.script_ms_median?.toFixed(2)} ms, p99 ${perf.script_ms_p99?.toFixed(2)} ms over ${perf.frames} frames (${perf.fps} fps, ${perf.backend})`);
+  await page.waitForFunction(() => window.flexarmPerf().map_ms > 0, null, { timeout: 60000 });
+  const maps = await page.evaluate(() => window.flexarmPerf().map_times);
+  const fmtMap = (m) => `${m.ms.toFixed(0)} ms start to done (${m.compute_ms.toFixed(0)} ms computing) for pf=${m.pf}`;
+  console.log(`# stability map 100 × 60 in chunks of 8 ms: ${maps.map(fmtMap).join('; ')} (goal ≤ 1000 ms)`);
   console.log(`# live simulation rate ${perf.sim_rate} simulated s per wall s at speed 1×; wasm throughput ${throughput.toFixed(0)} simulated s per wall s`);
   assert.ok(gzip < 1.5e6, `wasm gzip ${gzip} bytes exceeds the 1.5 MB goal`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
+  assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));
+  assert.ok((await page.evaluate(() => window.flexarmPerf().map_ms)) > 0, 'map_ms recorded');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a click on the map without preliminary feedback sets δ, α and PF off', async () => {
+  const { page, problems } = await open('?pf=paper&delta=0.01&alpha1=1&alpha2=1&speed=1');
+  const layout = await waitForPanels(page, ['map-off', 'map-on']);
+  // Let the maps fill in, so the screenshot shows them.
+  await page.waitForFunction(() => window.flexarmPerf().map_times.length >= 2, null, { timeout: 60000 });
+  const p = layout.panels.find((q) => q.id === 'map-off');
+  assert.equal(p.x_scale, 'log');
+  assert.equal(p.y_scale, 'log');
+  // δ = 0.05 s, α = 2 1/s: log axes, α from the bottom.
+  const fx = Math.log(0.05 / p.x_range[0]) / Math.log(p.x_range[1] / p.x_range[0]);
+  const fy = Math.log(2 / p.y_range[0]) / Math.log(p.y_range[1] / p.y_range[0]);
+  const box = await page.locator('#canvas').boundingBox();
+  await page.mouse.click(box.x + p.x + fx * p.width, box.y + p.y + (1 - fy) * p.height);
+  await page.waitForFunction(() => document.querySelector('#pf').value === 'off', null, { timeout: 5000 });
+  const delta = await sliderNumber(page, '#delta');
+  const alpha1 = await sliderNumber(page, '#alpha1');
+  const alpha2 = await sliderNumber(page, '#alpha2');
+  assert.ok(Math.abs(delta / 0.05 - 1) < 0.04, `δ slider shows ${delta}`);
+  assert.ok(Math.abs(alpha1 / 2 - 1) < 0.04, `α1 slider shows ${alpha1}`);
+  assert.equal(alpha2, alpha1, 'α1 = α2');
+  assert.equal(await page.$eval('#pf', (el) => el.value), 'off');
+  const url = new URL(page.url()).searchParams;
+  assert.equal(url.get('pf'), 'off');
+  assert.ok(Math.abs(Number(url.get('delta')) / 0.05 - 1) < 0.04, `URL delta=${url.get('delta')}`);
+  // δ = 0.05 s without K_pr is inside the stable window: the linear analysis says ρ < 1.
+  await page.waitForFunction(() => /ρ = 0\.\d+ < 1/.test(document.querySelector('#verdict-rho').textContent), null, { timeout: 5000 });
+  const progress = await page.$eval('#map-progress', (el) => [el.getAttribute('role'), el.getAttribute('aria-valuenow')]);
+  assert.deepEqual(progress, ['progressbar', '100']);
+  assert.match(await page.textContent('#map-time'), /6000 points in \d+\.\d\d s/);
+  await page.mouse.move(box.x + 2, box.y + 2);
+  await page.waitForTimeout(400);
+  await page.screenshot({ path: path.join(shots, 'map-click.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the pole plot is drawn and a pole explains itself', async () => {
+  const { page, problems } = await open('?preset=fig5.3&speed=1');
+  await waitForPanels(page, ['poles']);
+  await page.waitForFunction(() => (window.flexarm.lastLayout?.poles || []).length >= 8, null, { timeout: 20000 });
+  await page.waitForTimeout(500);
+  const layout = await layoutOf(page);
+  const panel = layout.panels.find((q) => q.id === 'poles');
+  assert.ok(layout.poles.length >= 8, `${layout.poles.length} poles`);
+  const kinds = new Set(layout.poles.map((q) => q.kind));
+  for (const k of ['loop', 'a4_open']) assert.ok(kinds.has(k), `pole kinds ${[...kinds]}`);
+  const [ink] = await regionInk(page, [panel], path.join(shots, 'poles-canvas.png'));
+  assert.ok(ink.marks > 0.003 && ink.colours >= 3, `poles panel: ${JSON.stringify(ink)}`);
+  // Hover the δ → 0 pair without preliminary feedback (upper one): the tooltip names it.
+  const a4 = layout.poles.find((q) => q.kind === 'a4_open' && q.im > 0);
+  const fx = (a4.re - panel.x_range[0]) / (panel.x_range[1] - panel.x_range[0]);
+  const fy = (a4.im - panel.y_range[0]) / (panel.y_range[1] - panel.y_range[0]);
+  const box = await page.locator('#canvas').boundingBox();
+  await page.mouse.move(box.x + panel.x + fx * panel.width, box.y + panel.y + (1 - fy) * panel.height);
+  await page.waitForSelector('#plot-tip:not([hidden])', { timeout: 3000 });
+  const tip = await page.textContent('#plot-tip');
+  assert.match(tip, /A4 without PF/);
+  assert.match(tip, /ζ/);
+  assert.match(tip, /rad\/s/);
+  await page.screenshot({ path: path.join(shots, 'poles.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('side by side: two arms, both runs, two verdicts', async () => {
+  const { page, problems } = await open('?preset=fig5.3&speed=2');
+  await page.check('#compare');
+  const layout = await waitForPanels(page, ['arm', 'arm-b']);
+  assert.equal(await page.$eval('#b-pf', (el) => el.value), 'paper', 'B = A with the preliminary feedback switched');
+  assert.ok(await page.isVisible('#verdict-b'));
+  assert.equal(await page.getAttribute('#verdict-b', 'role'), 'status');
+  // A (no K_pr, δ = 0.01 s) goes unstable, B (paper K_pr) stays stable.
+  await waitForVerdict(page, ['unstable', 'diverged'], 30000);
+  assert.equal(await page.$eval('#verdict-b', (el) => el.dataset.verdict), 'stable');
+  const arms = ['arm', 'arm-b'].map((id) => layout.panels.find((q) => q.id === id));
+  const ink = await regionInk(page, arms, path.join(shots, 'side-by-side-canvas.png'));
+  for (const [i, r] of ink.entries()) assert.ok(r.ink > 0.01 && r.colours >= 3, `${arms[i].id}: ${JSON.stringify(r)}`);
+  const legend = await page.textContent('#pair-legend');
+  assert.match(legend, /A:.*no K_pr/);
+  assert.match(legend, /B:.*paper K_pr/);
+  await page.screenshot({ path: path.join(shots, 'side-by-side.png') });
   assert.deepEqual(problems, []);
   await page.close();
 });

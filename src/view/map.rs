@@ -1,0 +1,478 @@
+//! Stability maps: ρ over (δ, α) with both axes logarithmic, the ρ = 1 contour by marching
+//! squares, and the marker of the current configuration.
+//!
+//! The grid arrives from a `StabilityMapJob` row by row (ρ row-major by α, not yet computed rows
+//! missing). The cells and the contour change only when the page hands over new rows, so they are
+//! tessellated once into the scene's static layer; only the markers are drawn every frame.
+
+use std::collections::HashMap;
+
+use super::axes::log_ticks;
+use super::layout::{PanelKind, Rect};
+use super::painter::{Color, Painter, Point};
+use super::palette;
+use crate::params::PreliminaryFeedbackChoice;
+
+/// A contour segment: two points in the caller's coordinates.
+pub type Segment = [[f64; 2]; 2];
+
+/// The segments where the bilinear-ish interpolant of `values` crosses `level` (marching
+/// squares). `values[iy * xs.len() + ix]` is the value at (xs[ix], ys[iy]); missing entries (a
+/// shorter slice) and NaN count as unknown and the squares touching them are skipped.
+///
+/// Crossings are placed by linear interpolation along the square's edges, always from the lower
+/// to the higher grid index, so neighbouring squares produce bit-identical shared endpoints
+/// (which [`chain_segments`] relies on). Saddles are resolved with the mean of the four corners.
+pub fn marching_squares(xs: &[f64], ys: &[f64], values: &[f64], level: f64) -> Vec<Segment> {
+    let (nx, ny) = (xs.len(), ys.len());
+    let mut out = Vec::new();
+    if nx < 2 || ny < 2 {
+        return out;
+    }
+    let value = |ix: usize, iy: usize| values.get(iy * nx + ix).copied().unwrap_or(f64::NAN);
+    // The crossing on the edge from node a to node b (a before b in index order).
+    let cross = |a: (usize, usize), b: (usize, usize)| -> [f64; 2] {
+        let (va, vb) = (value(a.0, a.1), value(b.0, b.1));
+        let t = ((level - va) / (vb - va)).clamp(0.0, 1.0);
+        let t = if t.is_finite() { t } else { 0.5 };
+        let (xa, ya, xb, yb) = (xs[a.0], ys[a.1], xs[b.0], ys[b.1]);
+        // A crossing on a node is that node exactly, whichever edge finds it.
+        if t == 0.0 {
+            [xa, ya]
+        } else if t == 1.0 {
+            [xb, yb]
+        } else {
+            [xa + t * (xb - xa), ya + t * (yb - ya)]
+        }
+    };
+    let push = |out: &mut Vec<Segment>, s: Segment| {
+        // A contour touching a node gives zero-length pieces: nothing to draw or chain.
+        if s[0] != s[1] {
+            out.push(s);
+        }
+    };
+    for iy in 0..ny - 1 {
+        for ix in 0..nx - 1 {
+            let corners = [(ix, iy), (ix + 1, iy), (ix + 1, iy + 1), (ix, iy + 1)];
+            let v = corners.map(|(x, y)| value(x, y));
+            if v.iter().any(|v| v.is_nan()) {
+                continue;
+            }
+            let above = v.map(|v| v >= level);
+            // Edges: 0 bottom (c0–c1), 1 right (c1–c2), 2 top (c3–c2), 3 left (c0–c3).
+            let edge = |e: usize| match e {
+                0 => cross(corners[0], corners[1]),
+                1 => cross(corners[1], corners[2]),
+                2 => cross(corners[3], corners[2]),
+                _ => cross(corners[0], corners[3]),
+            };
+            let crossed = [above[0] != above[1], above[1] != above[2], above[3] != above[2], above[0] != above[3]];
+            let count = crossed.iter().filter(|c| **c).count();
+            if count == 2 {
+                let mut it = (0..4).filter(|&e| crossed[e]);
+                let (a, b) = (it.next().unwrap_or(0), it.next().unwrap_or(0));
+                push(&mut out, [edge(a), edge(b)]);
+            } else if count == 4 {
+                let centre_above = (v[0] + v[1] + v[2] + v[3]) / 4.0 >= level;
+                // Corners 0 and 2 share a side of the level, 1 and 3 the other. If the centre is
+                // on the side of corners 0 and 2 they are joined and 1 and 3 are cut off, else
+                // the other way round.
+                if centre_above == above[0] {
+                    push(&mut out, [edge(0), edge(1)]); // around corner 1
+                    push(&mut out, [edge(2), edge(3)]); // around corner 3
+                } else {
+                    push(&mut out, [edge(3), edge(0)]); // around corner 0
+                    push(&mut out, [edge(1), edge(2)]); // around corner 2
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Joins segments that share endpoints (exactly, bit for bit) into polylines. A closed contour
+/// comes back with its first point repeated at the end.
+pub fn chain_segments(segments: &[Segment]) -> Vec<Vec<[f64; 2]>> {
+    let key = |p: [f64; 2]| (p[0].to_bits(), p[1].to_bits());
+    let mut ends: HashMap<(u64, u64), Vec<usize>> = HashMap::new();
+    for (i, s) in segments.iter().enumerate() {
+        ends.entry(key(s[0])).or_default().push(i);
+        ends.entry(key(s[1])).or_default().push(i);
+    }
+    let mut used = vec![false; segments.len()];
+    // The unused segment touching `p`, and its other end.
+    let mut next_from = |p: [f64; 2], used: &mut Vec<bool>| -> Option<[f64; 2]> {
+        let list = ends.get_mut(&key(p))?;
+        while let Some(i) = list.pop() {
+            if !used[i] {
+                used[i] = true;
+                let s = segments[i];
+                return Some(if key(s[0]) == key(p) { s[1] } else { s[0] });
+            }
+        }
+        None
+    };
+    let mut lines = Vec::new();
+    for i in 0..segments.len() {
+        if used[i] {
+            continue;
+        }
+        used[i] = true;
+        let mut forward = vec![segments[i][0], segments[i][1]];
+        while let Some(p) = next_from(*forward.last().unwrap_or(&segments[i][1]), &mut used) {
+            forward.push(p);
+        }
+        let mut backward = Vec::new();
+        let mut tail = segments[i][0];
+        while let Some(p) = next_from(tail, &mut used) {
+            backward.push(p);
+            tail = p;
+        }
+        backward.reverse();
+        backward.extend(forward);
+        lines.push(backward);
+    }
+    lines
+}
+
+/// ρ is shown between these bounds; beyond them the colour saturates.
+pub const RHO_SHOWN: [f64; 2] = [0.8, 1.2];
+
+/// The diverging colour of ρ: white at ρ = 1, blue shades darkening towards ρ = 0.8 (stable),
+/// orange to dark red towards ρ = 1.2 (unstable); light grey for NaN (not computed yet).
+/// A square-root ramp keeps ρ = 0.98 and 1.02 visibly coloured.
+pub fn rho_color(rho: f64) -> Color {
+    if rho.is_nan() {
+        return palette::MAP_PENDING;
+    }
+    let (lo, hi) = (RHO_SHOWN[0], RHO_SHOWN[1]);
+    let u = if rho < 1.0 { (rho - 1.0) / (1.0 - lo) } else { (rho - 1.0) / (hi - 1.0) };
+    let t = u.abs().min(1.0).sqrt();
+    let (mid, far) = if rho < 1.0 {
+        (palette::MAP_STABLE_MID, palette::MAP_STABLE_FAR)
+    } else {
+        (palette::MAP_UNSTABLE_MID, palette::MAP_UNSTABLE_FAR)
+    };
+    if t <= 0.5 {
+        palette::MAP_NEUTRAL.lerp(mid, t * 2.0)
+    } else {
+        mid.lerp(far, (t - 0.5) * 2.0)
+    }
+}
+
+/// Which of the two maps: without or with preliminary feedback.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MapSide {
+    Off,
+    On,
+}
+
+impl MapSide {
+    /// "off" or "on", as the page names the maps.
+    pub fn parse(name: &str) -> Result<MapSide, String> {
+        match name {
+            "off" => Ok(MapSide::Off),
+            "on" => Ok(MapSide::On),
+            _ => Err(format!("unknown map '{name}': \"off\" (without preliminary feedback) or \"on\" (with it)")),
+        }
+    }
+
+    /// The map a configuration with this preliminary feedback belongs to.
+    pub fn for_feedback(pf: PreliminaryFeedbackChoice) -> MapSide {
+        match pf {
+            PreliminaryFeedbackChoice::Off => MapSide::Off,
+            PreliminaryFeedbackChoice::Paper | PreliminaryFeedbackChoice::Lq => MapSide::On,
+        }
+    }
+
+    /// The panel that shows this map.
+    pub fn panel(self) -> PanelKind {
+        match self {
+            MapSide::Off => PanelKind::MapOff,
+            MapSide::On => PanelKind::MapOn,
+        }
+    }
+
+    /// The map a panel shows, if it is a map.
+    pub fn of_panel(kind: PanelKind) -> Option<MapSide> {
+        match kind {
+            PanelKind::MapOff => Some(MapSide::Off),
+            PanelKind::MapOn => Some(MapSide::On),
+            _ => None,
+        }
+    }
+
+    /// Index into two-element arrays.
+    pub fn index(self) -> usize {
+        match self {
+            MapSide::Off => 0,
+            MapSide::On => 1,
+        }
+    }
+}
+
+/// δ range of an empty map panel, s.
+pub const DEFAULT_DELTA_RANGE: [f64; 2] = [0.002, 0.25];
+/// α range of an empty map panel, 1/s.
+pub const DEFAULT_ALPHA_RANGE: [f64; 2] = [0.1, 5.0];
+
+/// A stability map as the scene keeps it: the grid and ρ, NaN where not computed yet.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StabilityGrid {
+    deltas: Vec<f64>,
+    alphas: Vec<f64>,
+    /// `alphas.len() × deltas.len()`, row-major by α.
+    rho: Vec<f64>,
+}
+
+impl StabilityGrid {
+    /// Copies a (possibly partial) map: `rho` holds the first rows, row-major by α. Both axes
+    /// need at least two strictly increasing, positive, finite values. Keeps its memory, so
+    /// handing over the same map again as rows arrive does not allocate.
+    pub fn set(&mut self, deltas: &[f64], alphas: &[f64], rho: &[f64]) -> Result<(), String> {
+        let axis_ok = |v: &[f64]| {
+            v.len() >= 2 && v.iter().all(|x| x.is_finite() && *x > 0.0) && v.windows(2).all(|w| w[1] > w[0])
+        };
+        if !axis_ok(deltas) || !axis_ok(alphas) {
+            return Err("a stability map needs at least two increasing, positive sampling periods and α values".into());
+        }
+        let cells = deltas.len() * alphas.len();
+        if rho.len() > cells {
+            return Err(format!(
+                "a {} × {} stability map has {cells} cells, got {} values",
+                alphas.len(),
+                deltas.len(),
+                rho.len()
+            ));
+        }
+        self.deltas.clear();
+        self.deltas.extend_from_slice(deltas);
+        self.alphas.clear();
+        self.alphas.extend_from_slice(alphas);
+        self.rho.clear();
+        self.rho.extend_from_slice(rho);
+        self.rho.resize(cells, f64::NAN);
+        Ok(())
+    }
+
+    /// Forgets the map.
+    pub fn clear(&mut self) {
+        self.deltas.clear();
+        self.alphas.clear();
+        self.rho.clear();
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.deltas.is_empty()
+    }
+
+    pub fn deltas(&self) -> &[f64] {
+        &self.deltas
+    }
+
+    pub fn alphas(&self) -> &[f64] {
+        &self.alphas
+    }
+
+    /// ρ row-major by α, NaN where not computed.
+    pub fn rho(&self) -> &[f64] {
+        &self.rho
+    }
+
+    /// ρ at (α index, δ index); NaN outside the grid or where not computed.
+    pub fn at(&self, alpha_index: usize, delta_index: usize) -> f64 {
+        if delta_index >= self.deltas.len() {
+            return f64::NAN;
+        }
+        self.rho.get(alpha_index * self.deltas.len() + delta_index).copied().unwrap_or(f64::NAN)
+    }
+
+    /// The δ range the panel shows: the grid's first and last δ, or the default when empty.
+    pub fn delta_range(&self) -> [f64; 2] {
+        match (self.deltas.first(), self.deltas.last()) {
+            (Some(&a), Some(&b)) => [a, b],
+            _ => DEFAULT_DELTA_RANGE,
+        }
+    }
+
+    /// The α range the panel shows.
+    pub fn alpha_range(&self) -> [f64; 2] {
+        match (self.alphas.first(), self.alphas.last()) {
+            (Some(&a), Some(&b)) => [a, b],
+            _ => DEFAULT_ALPHA_RANGE,
+        }
+    }
+}
+
+/// A map panel's data area in physical pixels with logarithmic δ (x) and α (y) axes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LogFrame {
+    pub rect: Rect,
+    /// δ at the left and right edges.
+    pub x_range: [f64; 2],
+    /// α at the bottom and top edges.
+    pub y_range: [f64; 2],
+}
+
+impl LogFrame {
+    /// Horizontal pixel of ln δ = `lx` (not clamped).
+    pub fn x_log(&self, lx: f64) -> f64 {
+        let (a, b) = (self.x_range[0].ln(), self.x_range[1].ln());
+        self.rect.x + self.rect.w * (lx - a) / (b - a)
+    }
+
+    /// Vertical pixel of ln α = `ly` (not clamped).
+    pub fn y_log(&self, ly: f64) -> f64 {
+        let (a, b) = (self.y_range[0].ln(), self.y_range[1].ln());
+        self.rect.bottom() - self.rect.h * (ly - a) / (b - a)
+    }
+
+    /// The pixel of (δ, α).
+    pub fn point(&self, delta: f64, alpha: f64) -> Point {
+        [self.x_log(delta.ln()), self.y_log(alpha.ln())]
+    }
+}
+
+/// About one tick label per this many CSS pixels along a map axis.
+const TICK_SPACING_X: f64 = 46.0;
+const TICK_SPACING_Y: f64 = 26.0;
+
+/// The δ and α ticks of a map panel whose data area is `rect_css` (CSS pixels).
+pub fn map_ticks(rect_css: Rect, grid: &StabilityGrid) -> (Vec<f64>, Vec<f64>) {
+    let [d0, d1] = grid.delta_range();
+    let [a0, a1] = grid.alpha_range();
+    let nx = (rect_css.w / TICK_SPACING_X).floor().clamp(1.0, 20.0) as usize;
+    let ny = (rect_css.h / TICK_SPACING_Y).floor().clamp(1.0, 20.0) as usize;
+    (log_ticks(d0, d1, nx), log_ticks(a0, a1, ny))
+}
+
+/// Cell boundaries (in ln units) around grid values `ln_values`: midway between neighbours, the
+/// outer ones at the first and last value (the panel shows exactly the grid's range).
+fn boundaries(ln_values: &[f64], out: &mut Vec<f64>) {
+    out.clear();
+    let n = ln_values.len();
+    if n == 0 {
+        return;
+    }
+    out.push(ln_values[0]);
+    for w in ln_values.windows(2) {
+        out.push(0.5 * (w[0] + w[1]));
+    }
+    out.push(ln_values[n - 1]);
+}
+
+/// Draws a whole map panel's static part into `painter`: background, filled cells (runs of
+/// equal colour merged into one quad), faint grid lines at the ticks and the ρ = 1 contour.
+/// Allocates (scratch vectors, the contour): call it when the map or the layout changes, not
+/// per frame.
+pub fn draw_map_static(
+    painter: &mut Painter,
+    frame: &LogFrame,
+    grid: &StabilityGrid,
+    ticks: (&[f64], &[f64]),
+    dpr: f64,
+) {
+    let r = frame.rect;
+    painter.rect(r, palette::MAP_PENDING);
+    if !grid.is_empty() {
+        let ln_d: Vec<f64> = grid.deltas().iter().map(|d| d.ln()).collect();
+        let ln_a: Vec<f64> = grid.alphas().iter().map(|a| a.ln()).collect();
+        let (mut bx, mut by) = (Vec::new(), Vec::new());
+        boundaries(&ln_d, &mut bx);
+        boundaries(&ln_a, &mut by);
+        let xs: Vec<f64> = bx.iter().map(|&l| frame.x_log(l)).collect();
+        let ys: Vec<f64> = by.iter().map(|&l| frame.y_log(l)).collect();
+        for i in 0..ln_a.len() {
+            let (y_bottom, y_top) = (ys[i], ys[i + 1]);
+            let mut j = 0;
+            while j < ln_d.len() {
+                let color = rho_color(grid.at(i, j));
+                let mut k = j + 1;
+                while k < ln_d.len() && rho_color(grid.at(i, k)) == color {
+                    k += 1;
+                }
+                painter.rect(Rect::new(xs[j], y_top, xs[k] - xs[j], y_bottom - y_top), color);
+                j = k;
+            }
+        }
+        draw_grid_lines(painter, frame, ticks, dpr);
+        let segments = marching_squares(&ln_d, &ln_a, grid.rho(), 1.0);
+        let lines = chain_segments(&segments);
+        let to_px = |p: &[f64; 2]| [frame.x_log(p[0]), frame.y_log(p[1])];
+        for line in &lines {
+            painter.polyline(line.iter().map(to_px), 4.0 * dpr, palette::CONTOUR_HALO);
+        }
+        for line in &lines {
+            painter.polyline(line.iter().map(to_px), 2.0 * dpr, palette::CONTOUR);
+        }
+    } else {
+        draw_grid_lines(painter, frame, ticks, dpr);
+    }
+}
+
+/// Faint lines at the ticks; those on the panel's edges are left to the frame (they would poke
+/// out of the panel by half their width).
+fn draw_grid_lines(painter: &mut Painter, frame: &LogFrame, ticks: (&[f64], &[f64]), dpr: f64) {
+    let r = frame.rect;
+    let w = dpr.max(1.0);
+    for &d in ticks.0 {
+        let x = frame.x_log(d.ln());
+        if x - w / 2.0 >= r.x && x + w / 2.0 <= r.right() {
+            painter.line([x, r.y], [x, r.bottom()], w, palette::MAP_GRID);
+        }
+    }
+    for &a in ticks.1 {
+        let y = frame.y_log(a.ln());
+        if y - w / 2.0 >= r.y && y + w / 2.0 <= r.bottom() {
+            painter.line([r.x, y], [r.right(), y], w, palette::MAP_GRID);
+        }
+    }
+}
+
+/// An upper bound on the vertices [`draw_map_marker`] writes (circles ≤ 128 segments).
+pub const MARKER_VERTEX_BUDGET: usize = 2 * 128 * 3 + 2 * 128 * 6 + 8 * 6 + 24;
+
+/// The marker of a configuration (δ, α1) on a map: a crosshair with a solid centre when the map
+/// is the one for its preliminary feedback (`filled`), a hollow ring on the other map. Outside
+/// the map's range it becomes a chevron at the nearest edge, pointing to where it would be.
+pub fn draw_map_marker(
+    painter: &mut Painter,
+    frame: &LogFrame,
+    delta: f64,
+    alpha: f64,
+    filled: bool,
+    color: Color,
+    dpr: f64,
+) {
+    if !(delta > 0.0 && alpha > 0.0 && delta.is_finite() && alpha.is_finite()) {
+        return;
+    }
+    let p = frame.point(delta, alpha);
+    let inner = frame.rect.inset(6.0 * dpr, 6.0 * dpr, 6.0 * dpr, 6.0 * dpr);
+    let c = [p[0].clamp(inner.x, inner.right()), p[1].clamp(inner.y, inner.bottom())];
+    let outside = frame.rect.x > p[0] || p[0] > frame.rect.right() || frame.rect.y > p[1] || p[1] > frame.rect.bottom();
+    if outside {
+        let dir = [p[0] - c[0], p[1] - c[1]];
+        painter.chevron(c, dir, 5.0 * dpr, 3.5 * dpr, palette::MARKER_HALO);
+        painter.chevron(c, dir, 5.0 * dpr, 1.75 * dpr, color);
+        return;
+    }
+    let r = 6.0 * dpr;
+    if filled {
+        let arm = 12.0 * dpr;
+        for (a, b) in [([c[0] - arm, c[1]], [c[0] - r, c[1]]), ([c[0] + r, c[1]], [c[0] + arm, c[1]])] {
+            painter.line(a, b, 3.5 * dpr, palette::MARKER_HALO);
+            painter.line(a, b, 1.5 * dpr, color);
+        }
+        for (a, b) in [([c[0], c[1] - arm], [c[0], c[1] - r]), ([c[0], c[1] + r], [c[0], c[1] + arm])] {
+            painter.line(a, b, 3.5 * dpr, palette::MARKER_HALO);
+            painter.line(a, b, 1.5 * dpr, color);
+        }
+        painter.circle(c, r, palette::MARKER_HALO);
+        painter.ring(c, r * 0.8, 1.5 * dpr, color);
+        painter.circle(c, r * 0.45, color);
+    } else {
+        painter.ring(c, r, 3.5 * dpr, palette::MARKER_HALO);
+        painter.ring(c, r, 1.5 * dpr, color);
+    }
+}

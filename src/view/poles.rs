@@ -1,0 +1,357 @@
+//! The pole plot: the sampled closed loop's eigenvalues as continuous-time equivalents
+//! s = ln λ / δ, the imaginary axis that separates stable from unstable, and the δ → 0 pair A4
+//! without and with the preliminary feedback — the picture of *why* small δ goes unstable.
+//!
+//! The analysis ([`crate::analysis::analyze`], ≈ 100 µs) runs only when the configuration
+//! changes ([`PoleCache`]); drawing the ten poles and four A4 markers per frame is cheap.
+
+use serde::Serialize;
+
+use super::layout::Rect;
+use super::painter::{Color, Painter, Point};
+use super::palette;
+use crate::analysis::{analyze, StabilityReport};
+use crate::params::SimulationConfig;
+
+/// Re s shown by default, 1/s: the flexible pair at ≈ ±2.6 and the slow poles at ≈ −2.
+pub const RE_RANGE: [f64; 2] = [-8.0, 6.0];
+/// Im s shown by default, rad/s: the flexible pair at ≈ ±29.6.
+pub const IM_RANGE: [f64; 2] = [-40.0, 40.0];
+/// The sampled loop has this many eigenvalues (8 plant/integrator states + 2 held inputs).
+pub const MAX_LOOP_POLES: usize = 10;
+
+/// The analysis of the configuration last drawn, recomputed only when the configuration changes.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PoleCache {
+    key: Option<SimulationConfig>,
+    report: Option<StabilityReport>,
+    error: Option<String>,
+}
+
+impl PoleCache {
+    /// Makes the cache describe `config` (or nothing); returns true if it had to recompute.
+    pub fn update(&mut self, config: Option<&SimulationConfig>) -> bool {
+        match config {
+            None => {
+                let changed = self.key.is_some();
+                *self = PoleCache::default();
+                changed
+            }
+            Some(c) if self.key.as_ref() == Some(c) => false,
+            Some(c) => {
+                self.key = Some(*c);
+                match analyze(c, None) {
+                    Ok(r) => {
+                        self.report = Some(r);
+                        self.error = None;
+                    }
+                    Err(e) => {
+                        self.report = None;
+                        self.error = Some(e.to_string());
+                    }
+                }
+                true
+            }
+        }
+    }
+
+    /// The configuration described.
+    pub fn config(&self) -> Option<&SimulationConfig> {
+        self.key.as_ref()
+    }
+
+    /// The analysis, if it succeeded.
+    pub fn report(&self) -> Option<&StabilityReport> {
+        self.report.as_ref()
+    }
+
+    /// Why the analysis failed, if it did.
+    pub fn error(&self) -> Option<&str> {
+        self.error.as_deref()
+    }
+}
+
+/// What a marker in the pole plot stands for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PoleKind {
+    /// An eigenvalue of the sampled loop.
+    Loop,
+    /// The δ → 0 pair A4 without preliminary feedback.
+    A4Open,
+    /// The δ → 0 pair A4 with the configured preliminary feedback.
+    A4,
+}
+
+/// One marker of the pole plot as the page sees it (for hover readouts).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PoleInfo {
+    /// "A" or "B".
+    pub run: &'static str,
+    pub kind: PoleKind,
+    /// Re s, 1/s.
+    pub re: f64,
+    /// Im s, rad/s.
+    pub im: f64,
+    /// Damping ratio −Re s / |s| (null for s = 0).
+    pub zeta: Option<f64>,
+    /// |s|, rad/s.
+    pub omega: f64,
+    /// Re s > 0.
+    pub unstable: bool,
+    /// One of the flexible pair (the loop's complex pair with the largest |Im s|).
+    pub flexible: bool,
+    /// The marker's centre in CSS pixels (canvas top-left origin); for a pole outside the shown
+    /// range, the chevron at the panel's edge. Null when the pole plot is hidden.
+    pub x: Option<f64>,
+    pub y: Option<f64>,
+    /// False if the pole lies outside the shown range (drawn as a chevron at the edge).
+    pub in_view: bool,
+}
+
+/// How a run's markers look.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PoleStyle {
+    /// Loop poles as × (run A) or + (run B).
+    pub plus: bool,
+    /// Loop poles with Re s ≤ 0.
+    pub stable: Color,
+    /// Loop poles with Re s > 0.
+    pub unstable: Color,
+    /// A4 without preliminary feedback (rings).
+    pub a4_open: Color,
+    /// A4 with the configured preliminary feedback (diamonds).
+    pub a4: Color,
+}
+
+impl PoleStyle {
+    pub const RUN_A: PoleStyle = PoleStyle {
+        plus: false,
+        stable: palette::POLE_STABLE,
+        unstable: palette::POLE_UNSTABLE,
+        a4_open: palette::A4_OPEN,
+        a4: palette::A4_FEEDBACK,
+    };
+    pub const RUN_B: PoleStyle = PoleStyle {
+        plus: true,
+        stable: palette::RUN_B,
+        unstable: palette::POLE_UNSTABLE,
+        a4_open: palette::RUN_B_LIGHT,
+        a4: palette::RUN_B,
+    };
+}
+
+/// The pole plot's data area in physical pixels and the s-plane region mapped onto it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PoleFrame {
+    pub rect: Rect,
+    pub re: [f64; 2],
+    pub im: [f64; 2],
+}
+
+impl PoleFrame {
+    /// The default view on a data area.
+    pub fn new(rect: Rect) -> PoleFrame {
+        PoleFrame { rect, re: RE_RANGE, im: IM_RANGE }
+    }
+
+    /// Horizontal pixel of Re s (not clamped).
+    pub fn x(&self, re: f64) -> f64 {
+        self.rect.x + self.rect.w * (re - self.re[0]) / (self.re[1] - self.re[0])
+    }
+
+    /// Vertical pixel of Im s (not clamped).
+    pub fn y(&self, im: f64) -> f64 {
+        self.rect.bottom() - self.rect.h * (im - self.im[0]) / (self.im[1] - self.im[0])
+    }
+
+    /// Where the marker of s goes: its pixel if inside the view (inset by `margin` pixels), else
+    /// the nearest point of the inset view and the direction towards s.
+    pub fn marker(&self, s: [f64; 2], margin: f64) -> (Point, Option<Point>) {
+        let p = [self.x(s[0]), self.y(s[1])];
+        let inside = s[0] >= self.re[0] && s[0] <= self.re[1] && s[1] >= self.im[0] && s[1] <= self.im[1];
+        if inside {
+            return (p, None);
+        }
+        let m = margin.min(self.rect.w / 2.0).min(self.rect.h / 2.0).max(0.0);
+        let inner = self.rect.inset(m, m, m, m);
+        let c = [p[0].clamp(inner.x, inner.right()), p[1].clamp(inner.y, inner.bottom())];
+        let dir = [p[0] - c[0], p[1] - c[1]];
+        (c, Some(dir))
+    }
+}
+
+/// The indices (into `report.poles`) of the flexible pair: the complex pair (λ not real) with the
+/// largest |Im s|.
+pub fn flexible_pair(report: &StabilityReport) -> [Option<usize>; 2] {
+    let mut best: Option<(usize, f64)> = None;
+    for (i, p) in report.poles.iter().enumerate() {
+        let Some(s) = p.continuous else { continue };
+        let [lr, li] = p.discrete;
+        if li.abs() <= 1e-12 * lr.hypot(li) || li <= 0.0 {
+            continue;
+        }
+        if best.is_none_or(|(_, im)| s[1].abs() > im) {
+            best = Some((i, s[1].abs()));
+        }
+    }
+    let Some((i, _)) = best else { return [None, None] };
+    let [lr, li] = report.poles[i].discrete;
+    // Its conjugate: the pole with λ nearest to conj(λ).
+    let partner = report
+        .poles
+        .iter()
+        .enumerate()
+        .filter(|(j, _)| *j != i)
+        .min_by(|(_, a), (_, b)| {
+            let da = (a.discrete[0] - lr).hypot(a.discrete[1] + li);
+            let db = (b.discrete[0] - lr).hypot(b.discrete[1] + li);
+            da.total_cmp(&db)
+        })
+        .map(|(j, _)| j);
+    [Some(i), partner]
+}
+
+/// Marker sizes, CSS pixels.
+mod size {
+    pub const CROSS: f64 = 5.0;
+    pub const CROSS_WIDTH: f64 = 2.0;
+    pub const HALO: f64 = 10.0;
+    pub const A4_RING: f64 = 11.0;
+    pub const A4_WIDTH: f64 = 1.75;
+    pub const A4_DIAMOND: f64 = 7.0;
+    pub const CHEVRON: f64 = 5.0;
+    pub const EDGE: f64 = 8.0;
+}
+
+/// An upper bound on the vertices [`draw_flexible_halo`], [`draw_a4`] and [`draw_poles`] write
+/// for one run (circles ≤ 128 segments).
+pub const RUN_VERTEX_BUDGET: usize = MAX_LOOP_POLES * (128 * 3 + 2 * 6 + 18) + 4 * (128 * 6 + 60);
+
+/// The background of the pole plot: panel, the unstable half-plane tinted, grid lines at the
+/// ticks, the real axis and — emphasised — the imaginary axis Re s = 0.
+pub fn draw_pole_background(
+    painter: &mut Painter,
+    frame: &PoleFrame,
+    x_ticks: impl Iterator<Item = f64>,
+    y_ticks: impl Iterator<Item = f64>,
+    dpr: f64,
+) {
+    let r = frame.rect;
+    painter.rect(r, palette::PANEL);
+    let x0 = frame.x(0.0).clamp(r.x, r.right());
+    if x0 < r.right() {
+        painter.rect(Rect::new(x0, r.y, r.right() - x0, r.h), palette::UNSTABLE_REGION);
+    }
+    let grid = dpr.max(1.0);
+    for re in x_ticks {
+        let x = frame.x(re);
+        painter.line([x, r.y], [x, r.bottom()], grid, palette::GRID);
+    }
+    for im in y_ticks {
+        let y = frame.y(im);
+        painter.line([r.x, y], [r.right(), y], grid, palette::GRID);
+    }
+    if frame.im[0] < 0.0 && frame.im[1] > 0.0 {
+        let y = frame.y(0.0);
+        painter.line([r.x, y], [r.right(), y], 1.5 * grid, palette::AXIS);
+    }
+    if frame.re[0] < 0.0 && frame.re[1] > 0.0 {
+        painter.line([x0, r.y], [x0, r.bottom()], 2.5 * dpr, palette::IMAGINARY_AXIS);
+    }
+}
+
+/// The δ → 0 pair A4 of one run: rings without preliminary feedback, diamonds with it.
+pub fn draw_a4(painter: &mut Painter, frame: &PoleFrame, report: &StabilityReport, style: &PoleStyle, dpr: f64) {
+    for s in report.limit_pair_open {
+        match frame.marker(s, size::EDGE * dpr) {
+            (p, None) => painter.ring(p, size::A4_RING * dpr, size::A4_WIDTH * dpr, style.a4_open),
+            (p, Some(d)) => painter.chevron(p, d, size::CHEVRON * dpr, 1.5 * dpr, style.a4_open),
+        }
+    }
+    for s in report.limit_pair {
+        match frame.marker(s, size::EDGE * dpr) {
+            (p, None) => painter.diamond(p, size::A4_DIAMOND * dpr, size::A4_WIDTH * dpr, style.a4),
+            (p, Some(d)) => painter.chevron(p, d, size::CHEVRON * dpr, 1.5 * dpr, style.a4),
+        }
+    }
+}
+
+/// The amber halo behind the flexible pair of one run (drawn first, under the A4 markers).
+pub fn draw_flexible_halo(painter: &mut Painter, frame: &PoleFrame, report: &StabilityReport, dpr: f64) {
+    for i in flexible_pair(report).into_iter().flatten() {
+        let Some(s) = report.poles[i].continuous else { continue };
+        if let (p, None) = frame.marker(s, size::EDGE * dpr) {
+            painter.circle(p, size::HALO * dpr, palette::POLE_HALO);
+        }
+    }
+}
+
+/// The loop poles of one run: × (or +) markers coloured by stability, poles outside the view as
+/// chevrons at the edge. Poles with λ = 0 are skipped.
+pub fn draw_poles(painter: &mut Painter, frame: &PoleFrame, report: &StabilityReport, style: &PoleStyle, dpr: f64) {
+    for pole in report.poles.iter().take(MAX_LOOP_POLES) {
+        let Some(s) = pole.continuous else { continue };
+        if !(s[0].is_finite() && s[1].is_finite()) {
+            continue;
+        }
+        let color = if s[0] > 0.0 { style.unstable } else { style.stable };
+        match frame.marker(s, size::EDGE * dpr) {
+            (p, None) => {
+                if style.plus {
+                    painter.plus(p, size::CROSS * 1.2 * dpr, size::CROSS_WIDTH * dpr, color);
+                } else {
+                    painter.cross(p, size::CROSS * dpr, size::CROSS_WIDTH * dpr, color);
+                }
+            }
+            (p, Some(d)) => painter.chevron(p, d, size::CHEVRON * dpr, size::CROSS_WIDTH * dpr, color),
+        }
+    }
+}
+
+/// Appends the markers of one run's analysis to `out` for the page; `frame_css` is the pole
+/// plot's data area in CSS pixels (None if the plot is hidden).
+pub fn describe_poles(
+    report: &StabilityReport,
+    run: &'static str,
+    frame_css: Option<&PoleFrame>,
+    out: &mut Vec<PoleInfo>,
+) {
+    let flexible = flexible_pair(report);
+    let mut push = |kind: PoleKind, s: [f64; 2], flexible: bool| {
+        let omega = s[0].hypot(s[1]);
+        let (pos, in_view) = match frame_css {
+            Some(f) => {
+                let (p, off) = f.marker(s, size::EDGE);
+                (Some(p), off.is_none())
+            }
+            None => (None, s[0] >= RE_RANGE[0] && s[0] <= RE_RANGE[1] && s[1] >= IM_RANGE[0] && s[1] <= IM_RANGE[1]),
+        };
+        out.push(PoleInfo {
+            run,
+            kind,
+            re: s[0],
+            im: s[1],
+            zeta: (omega > 0.0).then(|| -s[0] / omega),
+            omega,
+            unstable: s[0] > 0.0,
+            flexible,
+            x: pos.map(|p| p[0]),
+            y: pos.map(|p| p[1]),
+            in_view,
+        });
+    };
+    for (i, pole) in report.poles.iter().enumerate() {
+        if let Some(s) = pole.continuous {
+            if s[0].is_finite() && s[1].is_finite() {
+                push(PoleKind::Loop, s, flexible.contains(&Some(i)));
+            }
+        }
+    }
+    for s in report.limit_pair_open {
+        push(PoleKind::A4Open, s, false);
+    }
+    for s in report.limit_pair {
+        push(PoleKind::A4, s, false);
+    }
+}
