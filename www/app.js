@@ -1374,7 +1374,15 @@ function verdictDetail(m) {
     const why = DIVERGENCE_REASONS[m.divergence_reason] || '';
     return `diverged at t = ${at} s${why ? ` (${why})` : ''} — change a parameter or press reset`;
   }
-  if (m.growth_rate == null) return 'so far — no growth measured yet';
+  if (m.growth_rate == null) {
+    // With a repeating slew the growth is measured cycle to cycle (two full cycles are needed),
+    // so say what the linear analysis expects meanwhile.
+    const rho = state.rhoPreview;
+    if (rho != null && Number.isFinite(rho) && rho >= 1) {
+      return 'so far — no growth measured yet, but ρ ≥ 1 predicts the errors will grow';
+    }
+    return 'so far — no growth measured yet';
+  }
   if (m.verdict === 'unstable') return 'the errors grow exponentially';
   return 'the errors stay bounded';
 }
