@@ -6,7 +6,7 @@
 //! Coriolis terms and ∂M/∂q2 · q̈ vanish. The friction is taken as cancelled by the observer
 //! (continuous compensation), so the analysis describes the friction-free loop.
 
-use nalgebra::{Complex, Matrix2, SMatrix, SVector};
+use nalgebra::{Complex, Matrix2, SMatrix};
 use serde::{Deserialize, Serialize};
 
 use crate::feedback::{resolve_gain, FeedbackGain};
@@ -365,5 +365,3 @@ pub fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     }
 }
 
-#[allow(dead_code)]
-fn _assert_types(_: SVector<f64, 2>) {}
