@@ -364,4 +364,3 @@ pub fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
         _ => (0..n).map(|i| lo * (hi / lo).powf(i as f64 / (n - 1) as f64)).collect(),
     }
 }
-

@@ -179,5 +179,9 @@ fn repeating_maneuver_verdict_does_not_flicker() {
     c.controller.alpha = [0.5, 0.5];
     let mut sim = ClosedLoop::new(c).unwrap();
     sim.advance(40.0).unwrap();
-    assert!(matches!(sim.metrics().verdict, Verdict::Unstable { .. } | Verdict::Diverged { .. }), "{:?}", sim.metrics());
+    assert!(
+        matches!(sim.metrics().verdict, Verdict::Unstable { .. } | Verdict::Diverged { .. }),
+        "{:?}",
+        sim.metrics()
+    );
 }

@@ -71,7 +71,10 @@ fn errors_shrink_with_delta() {
 fn spectral_radius_matches_the_native_core() {
     for &(delta, alpha, pf, native) in NATIVE_RHO {
         let wasm = spectral_radius(config(delta, alpha, pf)).map_err(JsValue::from).unwrap();
-        assert!((wasm - native).abs() <= 1e-9 * native, "δ = {delta}, α = {alpha}, {pf}: wasm {wasm} vs native {native}");
+        assert!(
+            (wasm - native).abs() <= 1e-9 * native,
+            "δ = {delta}, α = {alpha}, {pf}: wasm {wasm} vs native {native}"
+        );
         // The handle's analysis reports the same ρ.
         let mut sim = Simulation::new(config(delta, alpha, pf)).map_err(JsValue::from).unwrap();
         let report = sim.analysis().map_err(JsValue::from).unwrap();
@@ -122,9 +125,8 @@ fn traces_are_typed_arrays() {
 #[wasm_bindgen_test]
 fn stability_map_in_chunks() {
     use flexarm::web::StabilityMapJob;
-    let mut job = StabilityMapJob::new(config(0.01, 2.0, "off"), 0.005, 0.15, 12, 1.0, 2.0, 3)
-        .map_err(JsValue::from)
-        .unwrap();
+    let mut job =
+        StabilityMapJob::new(config(0.01, 2.0, "off"), 0.005, 0.15, 12, 1.0, 2.0, 3).map_err(JsValue::from).unwrap();
     let mut steps = 0;
     while !job.is_done() {
         let progress = job.step(0.0).map_err(JsValue::from).unwrap();
