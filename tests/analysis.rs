@@ -2,7 +2,7 @@
 //! and the sampled loop's eigenvalues.
 
 use flexarm::analysis::*;
-use flexarm::feedback::*;
+use flexarm::control::feedback::*;
 use flexarm::*;
 use nalgebra::{Complex, DMatrix};
 use std::f64::consts::PI;

@@ -1,8 +1,8 @@
 //! The sampled-data loop of Fig. 2.1: timing, incremental use, live parameter changes, output.
 
-use flexarm::feedback::paper_gain;
-use flexarm::predictive::{Predictor, StateVector};
-use flexarm::reference::Reference;
+use flexarm::control::feedback::paper_gain;
+use flexarm::control::predictive::{Predictor, StateVector};
+use flexarm::model::reference::Reference;
 use flexarm::*;
 use nalgebra::Vector2;
 
@@ -99,7 +99,7 @@ fn divergence_ends_the_run_cleanly() {
     sim.advance(1.0).unwrap();
     assert_eq!(sim.time(), t, "a finished run does not move");
     // The last trace row is the moment of divergence.
-    assert_eq!(*sim.traces().t.last().unwrap(), t);
+    assert_eq!(*sim.traces().t().last().unwrap(), t);
 }
 
 #[test]
@@ -135,8 +135,8 @@ fn traces_have_the_requested_rate_and_a_csv_with_units() {
     let c = SimulationConfig { output_interval: 0.01, ..Default::default() };
     let report = simulate(&c, 1.0).unwrap();
     assert_eq!(report.traces.len(), 101);
-    assert!((report.traces.t[1] - 0.01).abs() < 1e-12);
-    let csv = report.traces.to_csv();
+    assert!((report.traces.t()[1] - 0.01).abs() < 1e-12);
+    let csv = report.traces.to_csv(None);
     let mut lines = csv.lines();
     let header = lines.next().unwrap();
     assert!(header.starts_with("t [s],q1 [rad]") && header.contains("e1 [rad]") && header.contains("T1 [N m]"));
@@ -151,7 +151,7 @@ fn repeating_maneuver_keeps_moving() {
     c.reference.repeat_hold = Some(0.5);
     let report = simulate(&c, 6.0).unwrap();
     assert_eq!(report.metrics.verdict, Verdict::Stable);
-    let q1 = &report.traces.q1;
+    let q1 = &report.traces.q1();
     let back_home = q1.iter().skip(q1.len() / 3).any(|v| v.abs() < 1e-2);
     assert!(back_home, "the arm returns to the start");
 }

@@ -2,7 +2,7 @@
 //! analysis of the sampled loop.
 
 use flexarm::analysis::spectral_radius;
-use flexarm::closed_loop::DivergenceReason;
+use flexarm::control::DivergenceReason;
 use flexarm::*;
 
 const RUN: f64 = 8.0;
@@ -130,15 +130,15 @@ fn continuous_friction_compensation_equals_the_friction_free_plant() {
     let free = simulate(&free, 4.0).unwrap();
     let diff = compensated
         .traces
-        .e1
+        .e1()
         .iter()
-        .zip(&free.traces.e1)
-        .chain(compensated.traces.e2.iter().zip(&free.traces.e2))
+        .zip(free.traces.e1())
+        .chain(compensated.traces.e2().iter().zip(free.traces.e2()))
         .map(|(a, b)| (a - b).abs())
         .fold(0.0, f64::max);
     assert!(diff < 1e-6, "compensated vs friction-free: {diff:e} rad");
     // The friction was really there: the observer saw the Coulomb levels.
-    let xf_max = compensated.traces.xf1_hat.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let xf_max = compensated.traces.xf1_hat().iter().fold(0.0f64, |m, v| m.max(v.abs()));
     assert!(xf_max > 0.9 * PlantParameters::default().fc1);
 
     let mut off = config(0.01, PreliminaryFeedbackChoice::Paper);

@@ -1,6 +1,6 @@
 //! The plant of eq. (4.1): energy conservation, and the integrator's accuracy.
 
-use flexarm::plant::{Plant, PlantState};
+use flexarm::model::plant::{Plant, PlantState};
 use flexarm::*;
 use nalgebra::{Vector2, Vector3};
 
@@ -15,7 +15,7 @@ fn unforced_undamped_plant_conserves_energy() {
     let plant = Plant::new(PlantParameters::undamped_frictionless());
     let mut s = swinging_state();
     let e0 = plant.energy(&s.q, &s.qdot);
-    let h = flexarm::params::DEFAULT_PLANT_STEP_MAX;
+    let h = flexarm::control::config::DEFAULT_PLANT_STEP_MAX;
     let mut worst: f64 = 0.0;
     for _ in 0..(5.0 / h).round() as usize {
         plant.step(&mut s, h, |_, _, _| Vector2::zeros());
@@ -82,7 +82,7 @@ fn errors_with_step(friction: FrictionCompensation, plant_step_max: f64) -> (Vec
     };
     let report = simulate(&config, 3.0).unwrap();
     assert_eq!(report.metrics.verdict.label(), "stable");
-    (report.traces.e1.clone(), report.traces.e2.clone())
+    (report.traces.e1().to_vec(), report.traces.e2().to_vec())
 }
 
 fn worst_difference(a: &(Vec<f64>, Vec<f64>), b: &(Vec<f64>, Vec<f64>)) -> (f64, f64) {

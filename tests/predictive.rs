@@ -2,9 +2,9 @@
 //! agreement with the independent linear (pencil) form used by the analysis.
 
 use flexarm::analysis::{linearize_at_rest, predictor_gain};
-use flexarm::feedback::{paper_gain, FeedbackGain};
-use flexarm::predictive::{Predictor, StateVector, StepUnknowns};
-use flexarm::reference::Reference;
+use flexarm::control::feedback::{paper_gain, FeedbackGain};
+use flexarm::control::predictive::{Predictor, StateVector, StepUnknowns};
+use flexarm::model::reference::Reference;
 use flexarm::*;
 use nalgebra::Vector2;
 
@@ -120,7 +120,7 @@ fn structured_newton_solve_equals_dense_lu() {
         let predictor = Predictor::new(&plant, &controller);
         let z = StepUnknowns::new(1.1, -2.5, 0.9, 40.0, -7.0);
         let (res, jac) = predictor.residual_and_jacobian(&moving_state(), &reference.sample(0.6), &z);
-        let structured = flexarm::predictive::solve_structured(&jac, &res).unwrap();
+        let structured = flexarm::control::predictive::solve_structured(&jac, &res).unwrap();
         let dense = jac.lu().solve(&res).unwrap();
         assert!((structured - dense).amax() < 1e-9 * (1.0 + dense.amax()), "{structured} vs {dense}");
     }

@@ -1,6 +1,6 @@
 //! The 9th-order slew of section 5 (with the sign of the τ⁵ term corrected, ERRATA.md).
 
-use flexarm::reference::{profile, Reference};
+use flexarm::model::reference::{profile, Reference};
 use flexarm::SlewParameters;
 use std::f64::consts::PI;
 

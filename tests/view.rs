@@ -1,11 +1,15 @@
 //! The drawing model without a GPU: ticks, autoscale, layout, painter, traces, arm, scene.
 
 use flexarm::analysis::{log_space, stability_map};
-use flexarm::closed_loop::{Snapshot, Traces};
+use flexarm::control::{Column, Snapshot, Traces};
+use flexarm::plot::color::rho_color;
+use flexarm::plot::contour::{chain_segments, marching_squares};
+use flexarm::plot::ticks::{log_ticks, nice_ceil, Ticks};
+use flexarm::session::{Run, RunSettings};
 use flexarm::view::arm::{drawn_twist, spring_end_angle, ArmFrame, ArmPose, MAX_DRAWN_TWIST, WORLD_HALF_EXTENT};
-use flexarm::view::axes::{log_ticks, nice_ceil, Autoscale, AutoscaleSettings, Ticks};
+use flexarm::view::autoscale::{Autoscale, AutoscaleSettings};
 use flexarm::view::layout::Arrangement;
-use flexarm::view::map::{chain_segments, marching_squares, rho_color, StabilityGrid};
+use flexarm::view::map::StabilityGrid;
 use flexarm::view::poles::{draw_a4, draw_flexible_halo, draw_poles, PoleFrame, PoleStyle, RUN_VERTEX_BUDGET};
 use flexarm::view::traces::{draw_series, max_abs, PlotFrame, TimeWindow};
 use flexarm::view::*;
@@ -543,6 +547,13 @@ fn run(feedback: PreliminaryFeedbackChoice, seconds: f64) -> ClosedLoop {
     sim
 }
 
+/// A run of the session (with its analysis) at δ = 0.01 s after `seconds`.
+fn analysed(feedback: PreliminaryFeedbackChoice, seconds: f64) -> Run {
+    let mut r = Run::new(RunSettings { delta: 0.01, pf: feedback, ..Default::default() }).unwrap();
+    r.advance(seconds, 60.0).unwrap();
+    r
+}
+
 fn info<'a>(panels: &'a [PanelInfo], id: &str) -> &'a PanelInfo {
     panels.iter().find(|p| p.id == id).unwrap()
 }
@@ -554,7 +565,7 @@ fn scene_autoscale_reads_both_a_stable_and_a_diverging_run() {
     scene.draw(&stable);
     let panels = scene.panel_info();
     let e1 = info(&panels, "e1");
-    let max_e1 = max_abs(&stable.traces().e1);
+    let max_e1 = max_abs(&stable.traces().e1());
     assert!(max_e1 < 1e-3, "the stable run's e1 is small: {max_e1}");
     assert!(e1.y_range[1] >= max_e1 && e1.y_range[1] <= 5.0 * max_e1, "{:?} for max {max_e1}", e1.y_range);
     assert_eq!(e1.y_range[0], -e1.y_range[1]);
@@ -568,7 +579,7 @@ fn scene_autoscale_reads_both_a_stable_and_a_diverging_run() {
     let panels = scene.panel_info();
     for id in ["e1", "e2"] {
         let p = info(&panels, id);
-        let column = if id == "e1" { &unstable.traces().e1 } else { &unstable.traces().e2 };
+        let column = if id == "e1" { &unstable.traces().e1() } else { &unstable.traces().e2() };
         let m = max_abs(column);
         assert!(m > 0.05, "the unstable run's {id} grows: {m}");
         assert!(p.y_range[1] >= m && p.y_range[1] <= 2.5 * 1.1 * m, "{id}: {:?} for max {m}", p.y_range);
@@ -666,16 +677,23 @@ fn the_reserved_capacity_covers_an_oscillating_run_from_the_first_frame() {
 
 #[test]
 fn a_diverged_state_with_non_finite_samples_draws_without_panicking() {
-    let mut traces = Traces::default();
+    let (mut t, mut e1, mut e2, mut torque1, mut torque2) = (vec![], vec![], vec![], vec![], vec![]);
     for i in 0..2000 {
-        let t = i as f64 * 0.002;
+        let ti = i as f64 * 0.002;
         let bad = i > 1500;
-        traces.t.push(t);
-        traces.e1.push(if bad { f64::NAN } else { (t * 30.0).sin() * t });
-        traces.e2.push(if bad { f64::INFINITY } else { 1e-5 });
-        traces.torque1.push(0.0);
-        traces.torque2.push(if i % 2 == 0 { f64::NEG_INFINITY } else { 1.0 });
+        t.push(ti);
+        e1.push(if bad { f64::NAN } else { (ti * 30.0).sin() * ti });
+        e2.push(if bad { f64::INFINITY } else { 1e-5 });
+        torque1.push(0.0);
+        torque2.push(if i % 2 == 0 { f64::NEG_INFINITY } else { 1.0 });
     }
+    let traces = Traces::from_columns([
+        (Column::T, t),
+        (Column::E1, e1),
+        (Column::E2, e2),
+        (Column::Torque1, torque1),
+        (Column::Torque2, torque2),
+    ]);
     let snapshot = Snapshot {
         time: 4.0,
         q: [f64::NAN, 1.0, 2.0],
@@ -915,9 +933,9 @@ fn loop_poles(poles: &[PoleInfo]) -> Vec<&PoleInfo> {
 fn preliminary_feedback_moves_the_flexible_pair_across_the_imaginary_axis() {
     let mut flexible_re = Vec::new();
     for pf in [PreliminaryFeedbackChoice::Off, PreliminaryFeedbackChoice::Paper] {
-        let sim = run(pf, 0.1);
+        let sim = analysed(pf, 0.1);
         let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
-        scene.draw(&sim);
+        scene.draw_loops(sim.closed_loop(), sim.analysis().report(), None);
         let poles = scene.pole_info();
         let loops = loop_poles(&poles);
         assert_eq!(loops.len(), 10);
@@ -963,23 +981,22 @@ fn preliminary_feedback_moves_the_flexible_pair_across_the_imaginary_axis() {
 
 #[test]
 fn the_analysis_is_cached_per_configuration() {
-    let mut sim = run(PreliminaryFeedbackChoice::Off, 0.1);
+    let mut sim = analysed(PreliminaryFeedbackChoice::Off, 0.1);
     let mut scene = Scene::new(ViewOptions::default(), 1000.0, 700.0, 1.0);
-    scene.draw(&sim);
-    let first = scene.analysis(0).unwrap().report().cloned().unwrap();
-    let mut cache = scene.analysis(0).unwrap().clone();
-    assert!(!cache.update(Some(sim.config())), "same configuration: no recomputation");
-    let mut other = *sim.config();
-    other.preliminary_feedback = PreliminaryFeedbackChoice::Paper;
-    assert!(cache.update(Some(&other)));
-    sim.set_config(other).unwrap();
-    sim.advance(0.05).unwrap();
-    scene.draw(&sim);
-    let second = scene.analysis(0).unwrap().report().unwrap();
+    scene.draw_loops(sim.closed_loop(), sim.analysis().report(), None);
+    let first = scene.analysis(0).cloned().unwrap();
+    let mut cache = sim.analysis().clone();
+    assert!(!cache.update(sim.closed_loop().config()), "same configuration: no recomputation");
+    let other = RunSettings { pf: PreliminaryFeedbackChoice::Paper, ..*sim.settings() };
+    assert!(cache.update(&other.config()));
+    sim.change(other, false).unwrap();
+    sim.advance(0.05, 60.0).unwrap();
+    scene.draw_loops(sim.closed_loop(), sim.analysis().report(), None);
+    let second = scene.analysis(0).unwrap();
     assert!(second.spectral_radius < 1.0 && first.spectral_radius > 1.0);
     // Hiding the plot keeps the data for readouts, without positions.
     scene.set_options(&OptionsUpdate { show_poles: Some(false), ..Default::default() }).unwrap();
-    scene.draw(&sim);
+    scene.draw_loops(sim.closed_loop(), sim.analysis().report(), None);
     let poles = scene.pole_info();
     assert!(!poles.is_empty() && poles.iter().all(|p| p.x.is_none()));
     assert!(scene.panel_info().iter().all(|p| p.id != "poles"));
@@ -1025,19 +1042,19 @@ fn pole_markers_stay_within_their_budget_and_panel() {
 
 #[test]
 fn a_pair_shows_two_arms_both_errors_and_both_runs_poles() {
-    let a = run(PreliminaryFeedbackChoice::Off, 3.8);
-    let b = run(PreliminaryFeedbackChoice::Paper, 3.8);
+    let (ra, rb) = (analysed(PreliminaryFeedbackChoice::Off, 3.8), analysed(PreliminaryFeedbackChoice::Paper, 3.8));
+    let (a, b) = (ra.closed_loop(), rb.closed_loop());
     let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 2.0);
-    scene.draw(&b);
+    scene.draw_loops(b, rb.analysis().report(), None);
     let single_e1 = info(&scene.panel_info(), "e1").y_range[1];
-    scene.draw_pair(&a, &b);
+    scene.draw_loops(a, ra.analysis().report(), Some((b, rb.analysis().report())));
     assert!(scene.is_pair());
     let panels = scene.panel_info();
     let ids: Vec<&str> = panels.iter().map(|p| p.id).collect();
     assert_eq!(ids, ["arm", "arm-b", "e1", "e2", "poles", "map-off", "map-on"]);
     // The scale covers both runs: A diverges, B stays small.
     let e1 = info(&panels, "e1").y_range[1];
-    assert!(e1 >= max_abs(&a.traces().e1) && e1 >= max_abs(&b.traces().e1));
+    assert!(e1 >= max_abs(&a.traces().e1()) && e1 >= max_abs(&b.traces().e1()));
     assert!(e1 > 10.0 * single_e1, "pair scale {e1} vs B alone {single_e1}");
     let poles = scene.pole_info();
     assert_eq!(loop_poles(&poles).iter().filter(|p| p.run == "A").count(), 10);
@@ -1052,7 +1069,7 @@ fn a_pair_shows_two_arms_both_errors_and_both_runs_poles() {
     assert!(series.iter().all(|s| s.color.starts_with('#') && s.color.len() == 7));
     assert_ne!(series[0].pole_marker, series[1].pole_marker);
     // Back to one run: the second arm goes away.
-    scene.draw(&a);
+    scene.draw_loops(a, ra.analysis().report(), None);
     assert!(!scene.is_pair());
     assert!(scene.layout().panel(PanelKind::ArmB).is_none());
     assert_eq!(scene.series_info().len(), 1);
@@ -1068,14 +1085,14 @@ fn a_pair_does_not_reallocate_after_warm_up() {
     let alphas = log_space(0.1, 5.0, 8);
     let map = stability_map(a.config(), &deltas, &alphas).unwrap();
     scene.set_map(MapSide::Off, &deltas, &alphas, &map.spectral_radius).unwrap();
-    scene.draw_pair(&a, &b);
+    scene.draw_loops(&a, None, Some((&b, None)));
     let capacity = scene.painter().capacity();
     let generation = scene.static_generation();
     // A diverges after ≈ 4 s and then stops advancing; keep drawing it.
     for _ in 0..180 {
         a.advance(1.0 / 30.0).unwrap();
         b.advance(1.0 / 30.0).unwrap();
-        scene.draw_pair(&a, &b);
+        scene.draw_loops(&a, None, Some((&b, None)));
         assert_eq!(scene.painter().capacity(), capacity, "reallocated at t = {}", a.time());
     }
     assert_eq!(scene.static_generation(), generation);

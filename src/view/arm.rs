@@ -9,8 +9,8 @@
 use core::f64::consts::PI;
 
 use super::layout::Rect;
-use super::painter::{Color, Painter, Point};
-use super::palette;
+use super::painter::{Painter, Point};
+use crate::plot::{palette, Color};
 
 /// Drawn length of link 1 (picture units).
 ///

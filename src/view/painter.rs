@@ -5,6 +5,7 @@
 //! becomes f32 only when a vertex is written.
 
 use super::layout::Rect;
+use crate::plot::Color;
 
 /// A point in physical pixels, (x right, y down).
 pub type Point = [f64; 2];
@@ -26,52 +27,6 @@ impl Vertex {
     pub const SIZE: usize = core::mem::size_of::<Vertex>();
     /// Byte offset of `color` inside a vertex.
     pub const COLOR_OFFSET: usize = 8;
-}
-
-/// A colour: sRGB-encoded components and straight alpha.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Color(pub [f32; 4]);
-
-impl Color {
-    /// An opaque colour from `0xRRGGBB`.
-    pub const fn hex(rgb: u32) -> Self {
-        let r = ((rgb >> 16) & 0xff) as f32 / 255.0;
-        let g = ((rgb >> 8) & 0xff) as f32 / 255.0;
-        let b = (rgb & 0xff) as f32 / 255.0;
-        Color([r, g, b, 1.0])
-    }
-
-    /// The same colour with opacity `alpha` (0 transparent, 1 opaque).
-    pub const fn with_alpha(self, alpha: f32) -> Self {
-        let [r, g, b, _] = self.0;
-        Color([r, g, b, alpha])
-    }
-
-    /// Linear interpolation between `self` (f = 0) and `other` (f = 1); f is clamped to [0, 1].
-    pub fn lerp(self, other: Color, f: f64) -> Color {
-        let f = if f.is_nan() { 0.0 } else { f.clamp(0.0, 1.0) as f32 };
-        let mut c = self.0;
-        for (a, b) in c.iter_mut().zip(other.0) {
-            *a += (b - *a) * f;
-        }
-        Color(c)
-    }
-
-    /// The colour as a CSS string: `#rrggbb`, or `rgba(r, g, b, a)` when not opaque.
-    pub fn css(self) -> String {
-        let [r, g, b, a] = self.0;
-        let byte = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
-        if a >= 1.0 {
-            format!("#{:02x}{:02x}{:02x}", byte(r), byte(g), byte(b))
-        } else {
-            format!("rgba({}, {}, {}, {})", byte(r), byte(g), byte(b), (a.clamp(0.0, 1.0) * 1000.0).round() / 1000.0)
-        }
-    }
-
-    /// Components as the wgpu clear colour wants them (f64).
-    pub fn to_f64(self) -> [f64; 4] {
-        self.0.map(f64::from)
-    }
 }
 
 /// Collects coloured triangles for one frame.

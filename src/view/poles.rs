@@ -2,16 +2,15 @@
 //! s = ln λ / δ, the imaginary axis that separates stable from unstable, and the δ → 0 pair A4
 //! without and with the preliminary feedback — the picture of *why* small δ goes unstable.
 //!
-//! The analysis ([`crate::analysis::analyze`], ≈ 100 µs) runs only when the configuration
-//! changes ([`PoleCache`]); drawing the ten poles and four A4 markers per frame is cheap.
+//! The analysis comes from the session, which computes it once per change that matters; drawing
+//! the ten poles and four A4 markers per frame is cheap.
 
 use serde::Serialize;
 
 use super::layout::Rect;
-use super::painter::{Color, Painter, Point};
-use super::palette;
-use crate::analysis::{analyze, StabilityReport};
-use crate::params::SimulationConfig;
+use super::painter::{Painter, Point};
+use crate::analysis::StabilityReport;
+use crate::plot::{palette, Color};
 
 /// Re s shown by default, 1/s: the flexible pair at ≈ ±2.6 and the slow poles at ≈ −2.
 pub const RE_RANGE: [f64; 2] = [-8.0, 6.0];
@@ -19,57 +18,6 @@ pub const RE_RANGE: [f64; 2] = [-8.0, 6.0];
 pub const IM_RANGE: [f64; 2] = [-40.0, 40.0];
 /// The sampled loop has this many eigenvalues (8 plant/integrator states + 2 held inputs).
 pub const MAX_LOOP_POLES: usize = 10;
-
-/// The analysis of the configuration last drawn, recomputed only when the configuration changes.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct PoleCache {
-    key: Option<SimulationConfig>,
-    report: Option<StabilityReport>,
-    error: Option<String>,
-}
-
-impl PoleCache {
-    /// Makes the cache describe `config` (or nothing); returns true if it had to recompute.
-    pub fn update(&mut self, config: Option<&SimulationConfig>) -> bool {
-        match config {
-            None => {
-                let changed = self.key.is_some();
-                *self = PoleCache::default();
-                changed
-            }
-            Some(c) if self.key.as_ref() == Some(c) => false,
-            Some(c) => {
-                self.key = Some(*c);
-                match analyze(c, None) {
-                    Ok(r) => {
-                        self.report = Some(r);
-                        self.error = None;
-                    }
-                    Err(e) => {
-                        self.report = None;
-                        self.error = Some(e.to_string());
-                    }
-                }
-                true
-            }
-        }
-    }
-
-    /// The configuration described.
-    pub fn config(&self) -> Option<&SimulationConfig> {
-        self.key.as_ref()
-    }
-
-    /// The analysis, if it succeeded.
-    pub fn report(&self) -> Option<&StabilityReport> {
-        self.report.as_ref()
-    }
-
-    /// Why the analysis failed, if it did.
-    pub fn error(&self) -> Option<&str> {
-        self.error.as_deref()
-    }
-}
 
 /// What a marker in the pole plot stands for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

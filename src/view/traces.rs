@@ -3,11 +3,11 @@
 
 use core::ops::Range;
 
-use super::axes::Ticks;
 use super::layout::Rect;
-use super::painter::{Color, Painter, Point};
-use super::palette;
-use crate::reference::Reference;
+use super::painter::{Painter, Point};
+use crate::model::reference::Reference;
+use crate::plot::Ticks;
+use crate::plot::{palette, Color};
 
 /// Default width W of the time window, s.
 pub const DEFAULT_TIME_WINDOW: f64 = 10.0;

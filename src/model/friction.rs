@@ -4,11 +4,11 @@
 //! The time constant ε/|v| is about 1e-4 s at slew speeds, far below any sensible explicit step,
 //! so the friction states are advanced with the exact solution for a velocity held over the step
 //! (an exponential update, unconditionally stable) and split from the mechanical states
-//! (see [`crate::plant`]).
+//! (see [`crate::model::plant`]).
 
 use nalgebra::Vector2;
 
-use crate::params::PlantParameters;
+use crate::model::params::PlantParameters;
 
 /// Exact solution of ε ẋ = −|v| x + Fc v over `dt` for a constant velocity `v`.
 ///

@@ -1,33 +1,38 @@
-//! One frame of the page's picture, built from one closed loop or two (a side-by-side
-//! comparison): the layout, the autoscales and analyses that persist between frames, the
-//! stability maps, and the painters that collect the triangles.
+//! One frame of the page's picture, built from a session (one run or two side by side): the
+//! layout, the autoscales that persist between frames, the stability maps, and the painters that
+//! collect the triangles. [`info`] describes the frame for the page's HTML labels and tooltips.
 //!
 //! [`Scene`] is everything the renderer needs except the GPU. It keeps two triangle lists: the
 //! *static* layer ([`Scene::static_vertices`]: the stability maps' cells and contours, rebuilt
 //! only when a map or the layout changes, with [`Scene::static_generation`] counting rebuilds)
 //! and the per-frame layer ([`Scene::vertices`]: everything else, drawn over the static layer).
-//! The wgpu layer uploads the first only when its generation changes and the second every frame,
-//! and forwards [`Scene::panel_info`], [`Scene::pole_info`] and [`Scene::series_info`] to the
-//! page for its HTML labels and hover readouts.
+//! The analyses come with the runs (the session computes them once per change); the scene keeps
+//! a copy of the latest for its descriptions, updated only when it changes.
+
+pub mod info;
 
 use serde::{Deserialize, Serialize};
 
-use super::arm::{draw_arm_panel, ArmFrame, ArmPose, DEFAULT_SPRING_MAGNIFICATION, VERTEX_BUDGET as ARM_VERTEX_BUDGET};
-use super::axes::{Autoscale, AutoscaleSettings, Ticks};
+use super::arm::{draw_arm_panel, ArmPose, DEFAULT_SPRING_MAGNIFICATION, VERTEX_BUDGET as ARM_VERTEX_BUDGET};
+use super::autoscale::{Autoscale, AutoscaleSettings};
 use super::layout::{Layout, LayoutOptions, Panel, PanelKind, Rect};
-use super::map::{draw_map_marker, draw_map_static, map_ticks, LogFrame, MapSide, StabilityGrid, MARKER_VERTEX_BUDGET};
-use super::painter::{Color, Painter, Vertex};
-use super::palette;
+use super::map::{draw_map_marker, draw_map_static, map_ticks, side_of, LogFrame, StabilityGrid, MARKER_VERTEX_BUDGET};
+use super::painter::{Painter, Vertex};
 use super::poles::{
-    describe_poles, draw_a4, draw_flexible_halo, draw_pole_background, draw_poles, PoleCache, PoleFrame, PoleInfo,
-    PoleStyle, IM_RANGE, RE_RANGE, RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET,
+    draw_a4, draw_flexible_halo, draw_pole_background, draw_poles, PoleFrame, PoleStyle, IM_RANGE, RE_RANGE,
+    RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET,
 };
 use super::traces::{
     draw_background, draw_frame, draw_series, max_abs, vertex_budget, PlotFrame, TimeWindow, DEFAULT_TIME_WINDOW,
 };
-use crate::closed_loop::{ClosedLoop, Snapshot, Traces};
-use crate::params::SimulationConfig;
-use crate::reference::Reference;
+use crate::analysis::StabilityReport;
+use crate::control::config::SimulationConfig;
+use crate::control::{ClosedLoop, Snapshot, Traces};
+use crate::model::reference::Reference;
+use crate::plot::{palette, Color, Ticks};
+use crate::session::{MapSide, Run, Session};
+
+pub use info::{PanelInfo, Probe, SeriesInfo, TickLabel, TipLine};
 
 /// Longest time window accepted, s.
 pub const MAX_TIME_WINDOW: f64 = 3600.0;
@@ -122,57 +127,6 @@ impl ViewOptions {
     }
 }
 
-/// A panel as the page sees it, for placing HTML labels over the canvas (CSS pixels, origin at
-/// the canvas' top-left). For plots the rectangle is the data area: `x_range` maps onto
-/// [x, x + width] and `y_range` onto [y + height, y] — linearly, or logarithmically where
-/// `x_scale`/`y_scale` is "log" (then a fraction f of the width is x = lo·(hi/lo)^f). For the arms
-/// the ranges are the shown region in picture units (link 1 is 1 long) and there are no labels or
-/// ticks.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct PanelInfo {
-    pub id: &'static str,
-    pub x: f64,
-    pub y: f64,
-    pub width: f64,
-    pub height: f64,
-    pub x_label: &'static str,
-    pub y_label: &'static str,
-    pub x_range: [f64; 2],
-    pub y_range: [f64; 2],
-    pub x_ticks: Vec<f64>,
-    pub y_ticks: Vec<f64>,
-    /// "linear" or "log".
-    pub x_scale: &'static str,
-    pub y_scale: &'static str,
-}
-
-/// How one run is drawn, for the page's legend (colours as CSS strings).
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct SeriesInfo {
-    /// "A" or "B".
-    pub run: &'static str,
-    /// The run's main colour (legend swatch): e1's colour for A, the single hue of B.
-    pub color: String,
-    /// Curve colours in the e1, e2 and torque panels.
-    pub e1: String,
-    pub e2: String,
-    pub torque1: String,
-    pub torque2: String,
-    /// Curve width, CSS pixels.
-    pub line_width: f64,
-    /// "solid" (A) or "thin" (B: a thinner line in its own hue, drawn over A's).
-    pub style: &'static str,
-    /// Loop-pole marker in the pole plot: "cross" (×, A) or "plus" (+, B); unstable poles red.
-    pub pole_marker: &'static str,
-    /// Colour of stable loop poles and of the map marker.
-    pub pole_color: String,
-    /// Colour of unstable loop poles.
-    pub unstable_color: String,
-    /// Colours of the A4 markers: rings without preliminary feedback, diamonds with it.
-    pub a4_open_color: String,
-    pub a4_color: String,
-}
-
 /// The state of one run that the scene draws.
 #[derive(Clone, Copy, Debug)]
 pub struct RunState<'a> {
@@ -180,9 +134,36 @@ pub struct RunState<'a> {
     pub traces: &'a Traces,
     /// Shades the intervals where the reference moves (run A's only).
     pub reference: Option<&'a Reference>,
-    /// The configuration in force: its analysis feeds the pole plot and its (δ, α1) the map
-    /// markers. None draws no poles and no markers for the run.
+    /// The configuration in force: its (δ, α1) gives the map markers. None draws no markers.
     pub config: Option<&'a SimulationConfig>,
+    /// The linear analysis of the run's settings: the pole plot. None draws no poles.
+    pub analysis: Option<&'a StabilityReport>,
+}
+
+/// What the scene remembers of a run between frames, for its descriptions.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct RunMemory {
+    config: Option<SimulationConfig>,
+    report: Option<StabilityReport>,
+}
+
+impl RunMemory {
+    /// Takes the run's configuration and analysis, copying only what changed; true if anything did.
+    fn update(&mut self, config: Option<&SimulationConfig>, report: Option<&StabilityReport>) -> bool {
+        let mut changed = false;
+        if self.config.as_ref() != config {
+            self.config = config.copied();
+            changed = true;
+        }
+        if self.report.as_ref() != report {
+            match (&mut self.report, report) {
+                (Some(mine), Some(r)) => mine.clone_from(r),
+                (mine, r) => *mine = r.cloned(),
+            }
+            changed = true;
+        }
+        changed
+    }
 }
 
 /// Plot curve widths, CSS pixels: run A, and run B drawn thinner over it.
@@ -198,7 +179,7 @@ const POLE_X_TICK_SPACING: f64 = 30.0;
 /// Run names, as the page sees them.
 const RUN_NAMES: [&str; 2] = ["A", "B"];
 
-/// The picture: layout, persistent autoscales, analyses and maps, and the triangle lists.
+/// The picture: layout, persistent autoscales, the latest analyses and maps, the triangle lists.
 #[derive(Clone, Debug)]
 pub struct Scene {
     options: ViewOptions,
@@ -214,10 +195,15 @@ pub struct Scene {
     scale_torque: Autoscale,
     /// Simulated time of the latest frame, s (the later of the two runs').
     time: f64,
-    /// The analyses of run A and run B, recomputed when their configurations change.
-    analyses: [PoleCache; 2],
+    /// Run A's and B's configuration and analysis as of the latest frame.
+    runs: [RunMemory; 2],
     /// The maps without ([`MapSide::Off`]) and with ([`MapSide::On`]) preliminary feedback.
     maps: [StabilityGrid; 2],
+    /// Which session map (and how many rows of it) each grid holds.
+    map_sources: [Option<(u64, usize)>; 2],
+    /// Increases whenever [`Scene::panel_info`] would describe the frame differently.
+    info_generation: u64,
+    info_signature: [f64; 6],
 }
 
 impl Scene {
@@ -234,8 +220,11 @@ impl Scene {
             scale_e2: Autoscale::new(AutoscaleSettings::ERROR),
             scale_torque: Autoscale::new(AutoscaleSettings::TORQUE),
             time: 0.0,
-            analyses: Default::default(),
+            runs: Default::default(),
             maps: Default::default(),
+            map_sources: [None; 2],
+            info_generation: 0,
+            info_signature: [f64::NAN; 6],
         };
         scene.relayout(css_width, css_height, device_pixel_ratio);
         scene
@@ -267,13 +256,15 @@ impl Scene {
     }
 
     /// Lays out again, reserves room for the largest frame this layout can produce (so that
-    /// drawing never reallocates) and rebuilds the static layer.
+    /// drawing never reallocates) and rebuilds the static layer. Only a new size or a new set of
+    /// panels gets here; drawing a frame never does.
     fn relayout(&mut self, css_width: f64, css_height: f64, device_pixel_ratio: f64) {
         self.layout =
             Layout::compute(css_width, css_height, device_pixel_ratio, &self.options.layout_options(self.pair));
         let budget: usize = self.layout.panels.iter().map(|panel| self.vertex_budget(panel)).sum();
         self.painter.reserve_total(budget);
         self.rebuild_static();
+        self.info_generation += 1;
     }
 
     /// An upper bound on the vertices one panel writes into the per-frame layer.
@@ -325,6 +316,17 @@ impl Scene {
         self.static_generation
     }
 
+    /// Increases whenever the panels' description ([`Scene::panel_info`], [`Scene::pole_info`])
+    /// changes: layout, scales, ticks, analyses, maps. Between changes only the time window moves.
+    pub fn info_generation(&self) -> u64 {
+        self.info_generation
+    }
+
+    /// The time window of the latest frame, s.
+    pub fn time_window(&self) -> TimeWindow {
+        self.window()
+    }
+
     /// The background colour the renderer clears to.
     pub fn background(&self) -> Color {
         palette::BACKGROUND
@@ -334,7 +336,9 @@ impl Scene {
     /// Rebuilds the static layer; call again as more rows arrive.
     pub fn set_map(&mut self, side: MapSide, deltas: &[f64], alphas: &[f64], rho: &[f64]) -> Result<(), String> {
         self.maps[side.index()].set(deltas, alphas, rho)?;
+        self.map_sources[side.index()] = None;
         self.rebuild_static();
+        self.info_generation += 1;
         Ok(())
     }
 
@@ -343,7 +347,9 @@ impl Scene {
         for m in &mut self.maps {
             m.clear();
         }
+        self.map_sources = [None; 2];
         self.rebuild_static();
+        self.info_generation += 1;
     }
 
     /// The map of one side as the scene holds it.
@@ -351,16 +357,16 @@ impl Scene {
         &self.maps[side.index()]
     }
 
-    /// The analysis behind the pole plot for run A (0) or B (1).
-    pub fn analysis(&self, run: usize) -> Option<&PoleCache> {
-        self.analyses.get(run)
+    /// The configuration and analysis of run A (0) or B (1) as of the latest frame.
+    pub fn analysis(&self, run: usize) -> Option<&StabilityReport> {
+        self.runs.get(run).and_then(|r| r.report.as_ref())
     }
 
     fn rebuild_static(&mut self) {
         self.static_painter.clear();
         let dpr = self.layout.device_pixel_ratio;
         for panel in &self.layout.panels {
-            let Some(side) = MapSide::of_panel(panel.kind) else { continue };
+            let Some(side) = side_of(panel.kind) else { continue };
             let grid = &self.maps[side.index()];
             let frame = LogFrame {
                 rect: self.layout.to_physical(panel.rect),
@@ -373,48 +379,101 @@ impl Scene {
         self.static_generation += 1;
     }
 
-    /// Builds the frame for the closed loop's newest state (one run).
-    pub fn draw(&mut self, closed_loop: &ClosedLoop) -> &[Vertex] {
-        let reference = Reference::new(closed_loop.config().reference);
-        let snapshot = closed_loop.snapshot();
-        let run = RunState {
-            snapshot: &snapshot,
-            traces: closed_loop.traces(),
-            reference: Some(&reference),
-            config: Some(closed_loop.config()),
-        };
-        self.draw_runs(run, None)
+    /// Copies the rows of the session's maps that the scene does not have yet.
+    fn sync_maps(&mut self, session: &Session) {
+        for side in MapSide::BOTH {
+            let Some(entry) = session.maps().shown(side) else { continue };
+            let generation = Some(entry.generation());
+            if self.map_sources[side.index()] == generation {
+                continue;
+            }
+            let job = entry.job();
+            if self.maps[side.index()].set(job.deltas(), job.alphas(), job.values()).is_ok() {
+                self.map_sources[side.index()] = generation;
+                self.rebuild_static();
+                self.info_generation += 1;
+            }
+        }
     }
 
-    /// Builds the frame comparing two closed loops: two arms, both runs' errors in the same
-    /// axes, both runs' poles, both markers on the maps.
-    pub fn draw_pair(&mut self, a: &ClosedLoop, b: &ClosedLoop) -> &[Vertex] {
+    /// Builds the frame for a session: run A, and run B beside it when comparing, with their
+    /// analyses, and the session's maps (copied only when they have new rows).
+    pub fn draw_session(&mut self, session: &Session) -> &[Vertex] {
+        self.sync_maps(session);
+        let a = session.run(0).expect("a session always has run A");
+        let (sa, ra) = (a.closed_loop().snapshot(), Reference::new(a.closed_loop().config().reference));
+        let run_a = run_state(a, &sa, Some(&ra));
+        match session.run(1) {
+            Some(b) => {
+                let sb = b.closed_loop().snapshot();
+                self.draw_runs(run_a, Some(run_state(b, &sb, None)));
+            }
+            None => {
+                self.draw_runs(run_a, None);
+            }
+        }
+        self.painter.vertices()
+    }
+
+    /// Builds the frame for one closed loop without an analysis (no poles).
+    pub fn draw(&mut self, closed_loop: &ClosedLoop) -> &[Vertex] {
+        self.draw_loops(closed_loop, None, None)
+    }
+
+    /// Builds the frame for one closed loop with its analysis, and a second one beside it.
+    pub fn draw_loops(
+        &mut self,
+        a: &ClosedLoop,
+        analysis: Option<&StabilityReport>,
+        b: Option<(&ClosedLoop, Option<&StabilityReport>)>,
+    ) -> &[Vertex] {
         let reference = Reference::new(a.config().reference);
-        let (snap_a, snap_b) = (a.snapshot(), b.snapshot());
-        let run_a =
-            RunState { snapshot: &snap_a, traces: a.traces(), reference: Some(&reference), config: Some(a.config()) };
-        let run_b = RunState { snapshot: &snap_b, traces: b.traces(), reference: None, config: Some(b.config()) };
-        self.draw_runs(run_a, Some(run_b))
+        let snap_a = a.snapshot();
+        let run_a = RunState {
+            snapshot: &snap_a,
+            traces: a.traces(),
+            reference: Some(&reference),
+            config: Some(a.config()),
+            analysis,
+        };
+        match b {
+            Some((b, analysis_b)) => {
+                let snap_b = b.snapshot();
+                let run_b = RunState {
+                    snapshot: &snap_b,
+                    traces: b.traces(),
+                    reference: None,
+                    config: Some(b.config()),
+                    analysis: analysis_b,
+                };
+                self.draw_runs(run_a, Some(run_b))
+            }
+            None => self.draw_runs(run_a, None),
+        }
     }
 
     /// Builds the frame from a snapshot and traces without a configuration (no poles, no map
     /// markers); `reference` (if given) shades the slews.
     pub fn draw_state(&mut self, snapshot: &Snapshot, traces: &Traces, reference: Option<&Reference>) -> &[Vertex] {
-        self.draw_runs(RunState { snapshot, traces, reference, config: None }, None)
+        self.draw_runs(RunState { snapshot, traces, reference, config: None, analysis: None }, None)
     }
 
     /// Builds the frame for run A, and run B beside it if given. Allocates nothing once the
     /// painter has grown to the scene's size, except when the mode (one run / two runs) changes
-    /// (a new layout) or a run's configuration changes (a new analysis).
+    /// (a new layout) or a run's analysis changes (a copy for the descriptions).
     pub fn draw_runs(&mut self, a: RunState<'_>, b: Option<RunState<'_>>) -> &[Vertex] {
         let pair = b.is_some();
         if pair != self.pair {
             self.pair = pair;
             self.relayout(self.layout.css_width, self.layout.css_height, self.layout.device_pixel_ratio);
         }
-        self.analyses[0].update(a.config);
-        if let Some(b) = &b {
-            self.analyses[1].update(b.config);
+        let mut changed = self.runs[0].update(a.config, a.analysis);
+        changed |= match &b {
+            Some(b) => self.runs[1].update(b.config, b.analysis),
+            None => self.runs[1].update(None, None),
+        };
+        if changed {
+            self.info_generation += 1;
         }
         let time_of = |r: &RunState<'_>| if r.snapshot.time.is_finite() { r.snapshot.time } else { f64::NAN };
         let now = match &b {
@@ -446,7 +505,32 @@ impl Scene {
                 PanelKind::MapOff | PanelKind::MapOn => self.draw_map_overlay(panel),
             }
         }
+        self.note_info_changes(window);
         self.painter.vertices()
+    }
+
+    /// Bumps the info generation when the scales or the time ticks changed this frame.
+    fn note_info_changes(&mut self, window: TimeWindow) {
+        let first_tick = self
+            .layout
+            .panels
+            .iter()
+            .find(|p| p.kind.is_time_plot())
+            .and_then(|p| plot_ticks(p.rect, window, 1.0).0.next())
+            .unwrap_or(f64::NAN);
+        let signature = [
+            self.scale_e1.limit(),
+            self.scale_e2.limit(),
+            self.scale_torque.limit(),
+            first_tick,
+            window.width(),
+            if self.pair { 2.0 } else { 1.0 },
+        ];
+        let same = signature.iter().zip(&self.info_signature).all(|(a, b)| a == b || (a.is_nan() && b.is_nan()));
+        if !same {
+            self.info_signature = signature;
+            self.info_generation += 1;
+        }
     }
 
     fn window(&self) -> TimeWindow {
@@ -454,7 +538,7 @@ impl Scene {
     }
 
     /// How many runs the frame shows.
-    fn runs(&self) -> usize {
+    fn run_count(&self) -> usize {
         if self.pair {
             2
         } else {
@@ -477,7 +561,7 @@ impl Scene {
         let mut data_max: f64 = 0.0;
         for (run, state) in runs.iter().enumerate() {
             let Some(state) = state else { continue };
-            let range = window.indices(&state.traces.t);
+            let range = window.indices(state.traces.t());
             for (values, _) in plot_series(panel.kind, state.traces, run).iter().flatten() {
                 data_max = data_max.max(values.get(range.clone()).map_or(0.0, max_abs));
             }
@@ -492,11 +576,11 @@ impl Scene {
         for (run, state) in runs.iter().enumerate() {
             let Some(state) = state else { continue };
             let traces = state.traces;
-            let n = traces.t.len();
+            let t = traces.t();
             let width = if run == 0 { CURVE_WIDTH } else { CURVE_WIDTH_B };
             for (values, color) in plot_series(panel.kind, traces, run).iter().flatten() {
-                let m = n.min(values.len());
-                draw_series(&mut self.painter, &frame, &traces.t[..m], &values[..m], width * dpr, *color);
+                let m = t.len().min(values.len());
+                draw_series(&mut self.painter, &frame, &t[..m], &values[..m], width * dpr, *color);
             }
         }
         draw_frame(&mut self.painter, &frame, dpr);
@@ -507,20 +591,20 @@ impl Scene {
         let frame = PoleFrame::new(self.layout.to_physical(panel.rect));
         let (x_ticks, y_ticks) = pole_ticks(panel.rect);
         draw_pole_background(&mut self.painter, &frame, x_ticks, y_ticks, dpr);
-        let runs = self.runs();
-        for cache in &self.analyses[..runs] {
-            if let Some(report) = cache.report() {
+        let runs = self.run_count();
+        for memory in &self.runs[..runs] {
+            if let Some(report) = &memory.report {
                 draw_flexible_halo(&mut self.painter, &frame, report, dpr);
             }
         }
         // B first, so run A's markers stay on top.
         for run in (0..runs).rev() {
-            if let Some(report) = self.analyses[run].report() {
+            if let Some(report) = &self.runs[run].report {
                 draw_a4(&mut self.painter, &frame, report, &run_pole_style(run), dpr);
             }
         }
         for run in (0..runs).rev() {
-            if let Some(report) = self.analyses[run].report() {
+            if let Some(report) = &self.runs[run].report {
                 draw_poles(&mut self.painter, &frame, report, &run_pole_style(run), dpr);
             }
         }
@@ -528,7 +612,7 @@ impl Scene {
     }
 
     fn draw_map_overlay(&mut self, panel: Panel) {
-        let Some(side) = MapSide::of_panel(panel.kind) else { return };
+        let Some(side) = side_of(panel.kind) else { return };
         let dpr = self.layout.device_pixel_ratio;
         let grid = &self.maps[side.index()];
         let frame = LogFrame {
@@ -536,8 +620,8 @@ impl Scene {
             x_range: grid.delta_range(),
             y_range: grid.alpha_range(),
         };
-        for run in (0..self.runs()).rev() {
-            let Some(config) = self.analyses[run].config() else { continue };
+        for run in (0..self.run_count()).rev() {
+            let Some(config) = &self.runs[run].config else { continue };
             let filled = MapSide::for_feedback(config.preliminary_feedback) == side;
             let color = if run == 0 { palette::MAP_MARKER } else { palette::RUN_B };
             let (delta, alpha) = (config.controller.sampling_period, config.controller.alpha[0]);
@@ -563,112 +647,16 @@ impl Scene {
             _ => None,
         }
     }
+}
 
-    /// The panels with their axis ranges, ticks and labels as of the latest frame.
-    pub fn panel_info(&self) -> Vec<PanelInfo> {
-        let window = self.window();
-        self.layout.panels.iter().map(|panel| self.describe(panel, window)).collect()
-    }
-
-    fn describe(&self, panel: &Panel, window: TimeWindow) -> PanelInfo {
-        let r = panel.rect;
-        let mut info = PanelInfo {
-            id: panel.kind.id(),
-            x: r.x,
-            y: r.y,
-            width: r.w,
-            height: r.h,
-            x_label: "",
-            y_label: "",
-            x_range: [0.0, 0.0],
-            y_range: [0.0, 0.0],
-            x_ticks: Vec::new(),
-            y_ticks: Vec::new(),
-            x_scale: "linear",
-            y_scale: "linear",
-        };
-        match panel.kind {
-            PanelKind::Arm | PanelKind::ArmB => {
-                let rect_px = self.layout.to_physical(r);
-                let (x_range, y_range) = ArmFrame::fit(rect_px, self.layout.device_pixel_ratio).world_range(rect_px);
-                info.x_range = x_range;
-                info.y_range = y_range;
-            }
-            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
-                let y = self.scale(panel.kind).map_or(0.0, Autoscale::limit);
-                let (x_ticks, y_ticks) = plot_ticks(r, window, y);
-                info.x_label = "t [s]";
-                info.y_label = y_label(panel.kind);
-                info.x_range = [window.start, window.end];
-                info.y_range = [-y, y];
-                info.x_ticks = x_ticks.collect();
-                info.y_ticks = y_ticks.collect();
-            }
-            PanelKind::Poles => {
-                let (x_ticks, y_ticks) = pole_ticks(r);
-                info.x_label = "Re s [1/s]";
-                info.y_label = "Im s [rad/s]";
-                info.x_range = RE_RANGE;
-                info.y_range = IM_RANGE;
-                info.x_ticks = x_ticks.collect();
-                info.y_ticks = y_ticks.collect();
-            }
-            PanelKind::MapOff | PanelKind::MapOn => {
-                let side = MapSide::of_panel(panel.kind).unwrap_or(MapSide::Off);
-                let grid = &self.maps[side.index()];
-                let (x_ticks, y_ticks) = map_ticks(r, grid);
-                info.x_label = "δ [s]";
-                info.y_label = "α [1/s]";
-                info.x_range = grid.delta_range();
-                info.y_range = grid.alpha_range();
-                info.x_ticks = x_ticks;
-                info.y_ticks = y_ticks;
-                info.x_scale = "log";
-                info.y_scale = "log";
-            }
-        }
-        info
-    }
-
-    /// Every marker of the pole plot (both runs in pair mode) with its position in CSS pixels,
-    /// for hover readouts. Positions are null when the pole plot is hidden.
-    pub fn pole_info(&self) -> Vec<PoleInfo> {
-        let frame = self.layout.panel(PanelKind::Poles).map(|p| PoleFrame::new(p.rect));
-        let mut out = Vec::new();
-        for (cache, name) in self.analyses.iter().zip(RUN_NAMES).take(self.runs()) {
-            if let Some(report) = cache.report() {
-                describe_poles(report, name, frame.as_ref(), &mut out);
-            }
-        }
-        out
-    }
-
-    /// How each shown run is drawn (one entry, or two in pair mode), for the page's legend.
-    pub fn series_info(&self) -> Vec<SeriesInfo> {
-        (0..self.runs())
-            .map(|run| {
-                let style = run_pole_style(run);
-                let [t1, t2] = plot_series(PanelKind::Torque, &Traces::default(), run).map(|s| s.map(|(_, c)| c));
-                let e1 = plot_series(PanelKind::Error1, &Traces::default(), run)[0].map(|(_, c)| c);
-                let e2 = plot_series(PanelKind::Error2, &Traces::default(), run)[0].map(|(_, c)| c);
-                let css = |c: Option<Color>| c.map(Color::css).unwrap_or_default();
-                SeriesInfo {
-                    run: RUN_NAMES[run],
-                    color: css(e1),
-                    e1: css(e1),
-                    e2: css(e2),
-                    torque1: css(t1),
-                    torque2: css(t2),
-                    line_width: if run == 0 { CURVE_WIDTH } else { CURVE_WIDTH_B },
-                    style: if run == 0 { "solid" } else { "thin" },
-                    pole_marker: if style.plus { "plus" } else { "cross" },
-                    pole_color: style.stable.css(),
-                    unstable_color: style.unstable.css(),
-                    a4_open_color: style.a4_open.css(),
-                    a4_color: style.a4.css(),
-                }
-            })
-            .collect()
+/// What the scene draws of a session's run.
+fn run_state<'a>(run: &'a Run, snapshot: &'a Snapshot, reference: Option<&'a Reference>) -> RunState<'a> {
+    RunState {
+        snapshot,
+        traces: run.closed_loop().traces(),
+        reference,
+        config: Some(run.closed_loop().config()),
+        analysis: run.analysis().report(),
     }
 }
 
@@ -697,11 +685,11 @@ fn plot_series(kind: PanelKind, traces: &Traces, run: usize) -> [Option<(&[f64],
     let b = run != 0;
     let pick = |a: Color, b_color: Color| if b { b_color } else { a };
     match kind {
-        PanelKind::Error1 => [Some((traces.e1.as_slice(), pick(palette::ERROR1, palette::RUN_B))), None],
-        PanelKind::Error2 => [Some((traces.e2.as_slice(), pick(palette::ERROR2, palette::RUN_B))), None],
+        PanelKind::Error1 => [Some((traces.e1(), pick(palette::ERROR1, palette::RUN_B))), None],
+        PanelKind::Error2 => [Some((traces.e2(), pick(palette::ERROR2, palette::RUN_B))), None],
         PanelKind::Torque => [
-            Some((traces.torque1.as_slice(), pick(palette::TORQUE1, palette::RUN_B))),
-            Some((traces.torque2.as_slice(), pick(palette::TORQUE2, palette::RUN_B_LIGHT))),
+            Some((traces.torque1(), pick(palette::TORQUE1, palette::RUN_B))),
+            Some((traces.torque2(), pick(palette::TORQUE2, palette::RUN_B_LIGHT))),
         ],
         _ => [None, None],
     }

@@ -34,12 +34,15 @@
 
 use nalgebra::{SMatrix, SVector, Vector2, Vector3};
 
-use crate::params::{ControllerParameters, PlantParameters};
-use crate::plant::Plant;
-use crate::reference::{Reference, ReferenceSample};
+use crate::control::config::ControllerParameters;
+use crate::model::params::PlantParameters;
+use crate::model::plant::Plant;
+use crate::model::reference::{Reference, ReferenceSample};
 
 /// The controller's state X = (q1, q2, θ, q̇1, q̇2, θ̇, w1, w2).
 pub type StateVector = SVector<f64, 8>;
+/// A feedback gain from X = (q1, q2, θ, q̇1, q̇2, θ̇, w1, w2) to U = (T1, T2).
+pub type FeedbackGain = SMatrix<f64, 2, 8>;
 /// Newton unknowns of one step, z = (q̇1⁺, q̇2⁺, θ̇⁺, T1⁺, T2⁺).
 pub type StepUnknowns = SVector<f64, 5>;
 /// Jacobian ∂R/∂z of one step.

@@ -5,7 +5,7 @@
 //! In the limit δ → 0 the predictive controller acts as a linear feedback K_lim that keeps a
 //! 6-dimensional subspace V* (the consistent states of the stabilized DAE) invariant with all six
 //! eigenvalues at −α, and never looks at the motor coordinates x2 = (θ, θ̇): on the quotient
-//! ℝ⁸/V* it leaves the 2×2 matrix A4 untouched (see [`crate::analysis::limit_pair`]). The
+//! ℝ⁸/V* it leaves the 2×2 matrix A4 untouched (see [`super::linear::limit_pair`]). The
 //! preliminary feedback is designed on that part alone, u = K2 x2, with x2 = Ψ x the motor
 //! coordinates measured from V*, and mapped back to the full state, K_pr = K2 Ψ.
 //!
@@ -15,15 +15,15 @@
 //! T2 about 6.7 times more than T1 (ERRATA.md says "about 6"; 6.7 reproduces both printed rows of
 //! K_pr at q2 = 0, α = 2 to within 2.5 %, while 6 leaves the T2 row 11 % high).
 
-use nalgebra::{Complex, DMatrix, Matrix2, SMatrix};
+use nalgebra::{Complex, DMatrix, Matrix2};
 use serde::{Deserialize, Serialize};
 
-use crate::analysis::{limit_pair, linearize_at_rest};
-use crate::params::{PlantParameters, PreliminaryFeedbackChoice, SimulationConfig};
-use crate::Error;
+use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
+use crate::control::linear::{limit_pair, linearize_at_rest};
+use crate::error::Error;
+use crate::model::params::PlantParameters;
 
-/// A feedback gain from X = (q1, q2, θ, q̇1, q̇2, θ̇, w1, w2) to U = (T1, T2).
-pub type FeedbackGain = SMatrix<f64, 2, 8>;
+pub use crate::control::predictive::FeedbackGain;
 
 /// The paper's K_pr (section 4), acting on the absolute state.
 pub fn paper_gain() -> FeedbackGain {

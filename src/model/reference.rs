@@ -5,7 +5,7 @@
 
 use nalgebra::Vector2;
 
-use crate::params::SlewParameters;
+use crate::model::params::SlewParameters;
 
 /// q_d and its first two time derivatives for both links at one instant.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -7,7 +7,7 @@
 //! # Integrator
 //! One plant step of length h is a Strang splitting:
 //! 1. friction half step: xf advanced over h/2 by the exact exponential update of
-//!    [`crate::friction::dahl_update`] at the current velocities;
+//!    [`crate::model::friction::dahl_update`] at the current velocities;
 //! 2. the mechanical states (q, q̇) advanced over h by classical RK4 with xf frozen;
 //! 3. friction half step at the new velocities.
 //!
@@ -18,8 +18,8 @@
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 
-use crate::friction::advance_friction;
-use crate::params::PlantParameters;
+use crate::model::friction::advance_friction;
+use crate::model::params::PlantParameters;
 
 /// The physical state of the arm.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -159,17 +159,34 @@ impl Plant {
         h: f64,
         torque: impl Fn(&Vector3<f64>, &Vector3<f64>, &Vector2<f64>) -> Vector2<f64>,
     ) {
+        let mut none = SVector::<f64, 0>::zeros();
+        self.step_with(state, &mut none, h, |_, q, v, _, xf| torque(q, v, xf), |_, _, _| SVector::zeros());
+    }
+
+    /// One plant step of length `h` with `R` states riding along (the controller's integrators w
+    /// in the closed loop): the same split step as [`Plant::step`], with the riders advanced by
+    /// the same RK4 stages as (q, q̇). `torque(s, q, q̇, riders, xf)` and `rider_rate(s, q, riders)`
+    /// receive s, the time since the start of the step.
+    pub fn step_with<const R: usize>(
+        &self,
+        state: &mut PlantState,
+        riders: &mut SVector<f64, R>,
+        h: f64,
+        torque: impl Fn(f64, &Vector3<f64>, &Vector3<f64>, &SVector<f64, R>, &Vector2<f64>) -> Vector2<f64>,
+        rider_rate: impl Fn(f64, &Vector3<f64>, &SVector<f64, R>) -> SVector<f64, R>,
+    ) {
         self.friction_half_step(state, 0.5 * h);
         let friction = state.friction;
-        let x = mechanical_vector(state);
-        let x = rk4(&x, h, |_, x| {
-            let (q, v) = split_mechanical(x);
-            let a = self.acceleration(&q, &v, &friction, &torque(&q, &v, &friction));
-            join_mechanical(&v, &a)
+        let x = Stages { mechanical: mechanical_vector(state), riders: *riders };
+        let x = rk4(x, h, |s, x: &Stages<R>| {
+            let (q, v) = split_mechanical(&x.mechanical);
+            let a = self.acceleration(&q, &v, &friction, &torque(s, &q, &v, &x.riders, &friction));
+            Stages { mechanical: join_mechanical(&v, &a), riders: rider_rate(s, &q, &x.riders) }
         });
-        let (q, v) = split_mechanical(&x);
+        let (q, v) = split_mechanical(&x.mechanical);
         state.q = q;
         state.qdot = v;
+        *riders = x.riders;
         self.friction_half_step(state, 0.5 * h);
     }
 
@@ -196,15 +213,38 @@ pub(crate) fn split_mechanical(x: &SVector<f64, 6>) -> (Vector3<f64>, Vector3<f6
     (Vector3::new(x[0], x[1], x[2]), Vector3::new(x[3], x[4], x[5]))
 }
 
+/// What one RK4 stage carries: (q, q̇) and the riders. Component-wise arithmetic, so the result
+/// is the same as RK4 on the stacked vector.
+#[derive(Clone, Copy, Debug)]
+struct Stages<const R: usize> {
+    mechanical: SVector<f64, 6>,
+    riders: SVector<f64, R>,
+}
+
+impl<const R: usize> core::ops::Add for Stages<R> {
+    type Output = Self;
+    #[inline]
+    fn add(self, o: Self) -> Self {
+        Self { mechanical: self.mechanical + o.mechanical, riders: self.riders + o.riders }
+    }
+}
+
+impl<const R: usize> core::ops::Mul<f64> for Stages<R> {
+    type Output = Self;
+    #[inline]
+    fn mul(self, k: f64) -> Self {
+        Self { mechanical: self.mechanical * k, riders: self.riders * k }
+    }
+}
+
 /// One classical fourth-order Runge–Kutta step of ẋ = f(s, x), where s is the time since the
 /// start of the step.
 #[inline]
-pub(crate) fn rk4<const N: usize>(
-    x: &SVector<f64, N>,
-    h: f64,
-    f: impl Fn(f64, &SVector<f64, N>) -> SVector<f64, N>,
-) -> SVector<f64, N> {
-    let k1 = f(0.0, x);
+pub(crate) fn rk4<T>(x: T, h: f64, f: impl Fn(f64, &T) -> T) -> T
+where
+    T: Copy + core::ops::Add<Output = T> + core::ops::Mul<f64, Output = T>,
+{
+    let k1 = f(0.0, &x);
     let k2 = f(0.5 * h, &(x + k1 * (0.5 * h)));
     let k3 = f(0.5 * h, &(x + k2 * (0.5 * h)));
     let k4 = f(h, &(x + k3 * h));

@@ -1,0 +1,213 @@
+//! Stability maps: ρ over a grid of sampling periods δ and α1 = α2 = α, computed row by row as a
+//! resumable [`MapJob`] (the page spreads one over frames; the CLI runs it to the end).
+
+use serde::{Deserialize, Serialize};
+
+use super::sampled::{LinearSettings, LoopModel};
+use crate::control::config::SimulationConfig;
+use crate::error::Error;
+
+/// A logarithmic (δ, α) grid: ranges and sizes.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct MapGrid {
+    /// δ from, to, s.
+    pub delta: [f64; 2],
+    pub n_delta: usize,
+    /// α = α1 = α2 from, to, 1/s.
+    pub alpha: [f64; 2],
+    pub n_alpha: usize,
+}
+
+impl MapGrid {
+    /// The grid of the page and of `flexarm map`: δ over the δ control's span (2 ms – 0.25 s) and
+    /// α over the α control's span (0.1 – 5 1/s), 100 × 60 points.
+    pub const DEFAULT: MapGrid = MapGrid {
+        delta: crate::schema::DELTA_SPEC.control,
+        n_delta: 100,
+        alpha: crate::schema::ALPHA_SPEC.control,
+        n_alpha: 60,
+    };
+    /// The most points per axis.
+    pub const MAX_POINTS: usize = 2000;
+
+    /// The δ values of the columns, s.
+    pub fn deltas(&self) -> Vec<f64> {
+        log_space(self.delta[0], self.delta[1], self.n_delta)
+    }
+
+    /// The α values of the rows, 1/s.
+    pub fn alphas(&self) -> Vec<f64> {
+        log_space(self.alpha[0], self.alpha[1], self.n_alpha)
+    }
+}
+
+/// ρ over a grid of sampling periods and stabilizing constants (α1 = α2 = α).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StabilityMap {
+    /// δ values, s.
+    pub sampling_periods: Vec<f64>,
+    /// α values, 1/s.
+    pub alphas: Vec<f64>,
+    /// ρ for alpha index i and δ index j at `i * sampling_periods.len() + j`.
+    pub spectral_radius: Vec<f64>,
+}
+
+impl StabilityMap {
+    /// ρ at (α index, δ index).
+    pub fn at(&self, alpha_index: usize, delta_index: usize) -> f64 {
+        self.spectral_radius[alpha_index * self.sampling_periods.len() + delta_index]
+    }
+
+    /// ρ along the row of α index `alpha_index`.
+    pub fn row(&self, alpha_index: usize) -> &[f64] {
+        let n = self.sampling_periods.len();
+        &self.spectral_radius[alpha_index * n..(alpha_index + 1) * n]
+    }
+
+    /// The fraction of the cells with ρ < 1.
+    pub fn stable_fraction(&self) -> f64 {
+        let n = self.spectral_radius.len().max(1);
+        self.spectral_radius.iter().filter(|r| **r < 1.0).count() as f64 / n as f64
+    }
+}
+
+/// A stability map being computed, one row of α at a time.
+#[derive(Clone, Debug)]
+pub struct MapJob {
+    settings: LinearSettings,
+    deltas: Vec<f64>,
+    alphas: Vec<f64>,
+    /// ρ of the finished rows, row-major by α.
+    rho: Vec<f64>,
+    /// Cells whose analysis failed (ρ = NaN).
+    failed: usize,
+}
+
+impl MapJob {
+    /// A map of `settings` (its preliminary feedback, inner loop, k, m, plant; δ and α are the
+    /// grid's) over the given axes. The corners are checked now, so a bad grid fails here.
+    pub fn new(settings: &LinearSettings, deltas: Vec<f64>, alphas: Vec<f64>) -> Result<Self, Error> {
+        for (d, a) in [(deltas.first(), alphas.first()), (deltas.last(), alphas.last())] {
+            if let (Some(&d), Some(&a)) = (d, a) {
+                settings.at(d, [a, a]).controller.validate()?;
+            }
+        }
+        let rho = Vec::with_capacity(deltas.len() * alphas.len());
+        Ok(Self { settings: *settings, deltas, alphas, rho, failed: 0 })
+    }
+
+    /// A job on `grid` for `settings`.
+    pub fn on_grid(settings: &LinearSettings, grid: &MapGrid) -> Result<Self, Error> {
+        Self::new(settings, grid.deltas(), grid.alphas())
+    }
+
+    /// The settings mapped (δ and α of the grid replace theirs).
+    pub fn settings(&self) -> &LinearSettings {
+        &self.settings
+    }
+
+    pub fn deltas(&self) -> &[f64] {
+        &self.deltas
+    }
+
+    pub fn alphas(&self) -> &[f64] {
+        &self.alphas
+    }
+
+    /// ρ of the rows computed so far, row-major by α.
+    pub fn values(&self) -> &[f64] {
+        &self.rho
+    }
+
+    pub fn rows_done(&self) -> usize {
+        self.rho.len() / self.deltas.len().max(1)
+    }
+
+    pub fn is_done(&self) -> bool {
+        self.rows_done() >= self.alphas.len()
+    }
+
+    /// Fraction of rows computed, 0–1.
+    pub fn progress(&self) -> f64 {
+        if self.alphas.is_empty() {
+            1.0
+        } else {
+            self.rows_done() as f64 / self.alphas.len() as f64
+        }
+    }
+
+    /// Cells whose analysis failed so far (shown as NaN).
+    pub fn failed_cells(&self) -> usize {
+        self.failed
+    }
+
+    /// Computes the next row. A row whose linear algebra fails somewhere is redone cell by cell,
+    /// the failing cells becoming NaN; configuration errors are returned.
+    pub fn step_row(&mut self) -> Result<(), Error> {
+        if self.is_done() {
+            return Ok(());
+        }
+        let alpha = self.alphas[self.rows_done()];
+        let row_settings = self.settings.at(self.settings.controller.sampling_period, [alpha, alpha]);
+        let before = self.rho.len();
+        let row = LoopModel::new(&row_settings).and_then(|model| {
+            for &delta in &self.deltas {
+                self.rho.push(model.spectral_radius(delta)?);
+            }
+            Ok(())
+        });
+        match row {
+            Ok(()) => Ok(()),
+            Err(Error::Analysis(_)) => {
+                self.rho.truncate(before);
+                for &delta in &self.deltas {
+                    let cell = LoopModel::new(&row_settings).and_then(|m| m.spectral_radius(delta));
+                    let r = cell.unwrap_or(f64::NAN);
+                    self.failed += usize::from(r.is_nan());
+                    self.rho.push(r);
+                }
+                Ok(())
+            }
+            Err(e) => {
+                self.rho.truncate(before);
+                Err(e)
+            }
+        }
+    }
+
+    /// Computes rows until `stop()` says so (after at least one row) or the map is done.
+    pub fn step_while(&mut self, mut keep_going: impl FnMut() -> bool) -> Result<(), Error> {
+        while !self.is_done() {
+            self.step_row()?;
+            if !keep_going() {
+                break;
+            }
+        }
+        Ok(())
+    }
+
+    /// Runs to the end.
+    pub fn finish(mut self) -> Result<StabilityMap, Error> {
+        self.step_while(|| true)?;
+        Ok(StabilityMap { sampling_periods: self.deltas, alphas: self.alphas, spectral_radius: self.rho })
+    }
+}
+
+/// Computes ρ on the grid `alphas × sampling_periods`, all other settings from `config`.
+pub fn stability_map(
+    config: &SimulationConfig,
+    sampling_periods: &[f64],
+    alphas: &[f64],
+) -> Result<StabilityMap, Error> {
+    config.validate()?;
+    MapJob::new(&LinearSettings::of(config, None), sampling_periods.to_vec(), alphas.to_vec())?.finish()
+}
+
+/// Geometric spacing from `lo` to `hi` with `n` points (for logarithmic axes).
+pub fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    match n {
+        0 => vec![],
+        1 => vec![lo],
+        _ => (0..n).map(|i| lo * (hi / lo).powf(i as f64 / (n - 1) as f64)).collect(),
+    }
+}

@@ -1,0 +1,19 @@
+//! Linear stability analysis of the sampled loop: its one-period map linearized at rest, the
+//! eigenvalues and spectral radius ρ ([`sampled`]), stability maps ρ(δ, α) as resumable jobs
+//! ([`map`]), and the stable windows of δ ([`windows`]).
+//!
+//! Architecture invariant: `analysis` reads the controller (`control`) and the arm (`model`) and
+//! is read by the session, the CLI and the figures; it never runs the nonlinear simulation.
+
+pub mod map;
+pub mod sampled;
+pub mod windows;
+
+pub use map::{log_space, stability_map, MapGrid, MapJob, StabilityMap};
+pub use sampled::{
+    analyze, loop_eigenvalues, sampled_loop_matrix, spectral_radius, LinearSettings, LoopModel, Pole, StabilityReport,
+};
+pub use windows::{stable_intervals, stable_windows, StableWindows};
+
+/// The linearization and the δ → 0 limit live with the controller they describe.
+pub use crate::control::linear::{limit_pair, linearize_at_rest, predictor_gain, LimitPair, LinearModel};

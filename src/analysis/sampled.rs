@@ -1,0 +1,218 @@
+//! The sampled closed loop of Fig. 2.1 linearized at rest: its one-period map, eigenvalues λ and
+//! spectral radius ρ (the loop is stable iff ρ < 1), and the report the page and the CLI show.
+
+use nalgebra::{Complex, SMatrix};
+use serde::{Deserialize, Serialize};
+
+use crate::control::config::{ControllerParameters, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
+use crate::control::feedback::{resolve_gain, FeedbackGain};
+use crate::control::linear::{limit_pair, linearize_at_rest, predictor_gain, LinearModel, Mat10, Mat8};
+use crate::error::Error;
+use crate::model::params::PlantParameters;
+
+/// What the linear analysis of a configuration depends on, and nothing else: the friction
+/// compensation, the slew's start and timing, the trace spacing and the divergence bound do not
+/// change ρ (the analysis takes the friction as cancelled). Two configurations with equal
+/// `LinearSettings` have the same eigenvalues — this is the key every cache of analyses uses.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LinearSettings {
+    pub plant: PlantParameters,
+    /// Link angles (q1, q2) of the rest point, rad.
+    pub rest: [f64; 2],
+    pub controller: ControllerParameters,
+    pub preliminary_feedback: PreliminaryFeedbackChoice,
+    pub inner_loop: InnerLoop,
+    /// Operating point q2 of the LQ design, rad.
+    pub lq_design_q2: f64,
+}
+
+impl LinearSettings {
+    /// The settings of `config`, linearized at the end of its slew (or at link-2 angle `q2`).
+    pub fn of(config: &SimulationConfig, q2: Option<f64>) -> Self {
+        Self {
+            plant: config.plant,
+            rest: [config.reference.end[0], q2.unwrap_or(config.reference.end[1])],
+            controller: config.controller,
+            preliminary_feedback: config.preliminary_feedback,
+            inner_loop: config.inner_loop,
+            lq_design_q2: config.lq_design_q2,
+        }
+    }
+
+    /// The same settings at another sampling period and α1 = α2 = `alpha` (a map cell).
+    pub fn at(&self, delta: f64, alpha: [f64; 2]) -> Self {
+        let mut s = *self;
+        s.controller.sampling_period = delta;
+        s.controller.alpha = alpha;
+        s
+    }
+
+    /// The same settings with another preliminary feedback.
+    pub fn with_feedback(&self, pf: PreliminaryFeedbackChoice) -> Self {
+        Self { preliminary_feedback: pf, ..*self }
+    }
+
+    /// A configuration with these settings (defaults elsewhere), for validation and the LQ design.
+    fn config(&self) -> SimulationConfig {
+        let mut c = SimulationConfig {
+            plant: self.plant,
+            controller: self.controller,
+            preliminary_feedback: self.preliminary_feedback,
+            inner_loop: self.inner_loop,
+            lq_design_q2: self.lq_design_q2,
+            ..SimulationConfig::default()
+        };
+        c.reference.end = self.rest;
+        c
+    }
+}
+
+/// The linearized plant and the preliminary feedback for fixed α: everything but δ. Maps and the
+/// search for stable windows reuse one `LoopModel` for many δ.
+#[derive(Clone, Debug)]
+pub struct LoopModel {
+    settings: LinearSettings,
+    model: LinearModel,
+    gain: FeedbackGain,
+}
+
+impl LoopModel {
+    /// Validates the settings, designs the gain (LQ needs α) and linearizes at rest.
+    pub fn new(settings: &LinearSettings) -> Result<Self, Error> {
+        let config = settings.config();
+        config.validate()?;
+        let gain = resolve_gain(&config)?;
+        let model = linearize_at_rest(&settings.plant, settings.controller.alpha, settings.rest);
+        Ok(Self { settings: *settings, model, gain })
+    }
+
+    /// The settings at the model's own δ.
+    pub fn settings(&self) -> &LinearSettings {
+        &self.settings
+    }
+
+    /// The one-period map at sampling period `delta` (validated against the schema's range).
+    pub fn loop_matrix(&self, delta: f64) -> Result<Mat10, Error> {
+        let mut controller = self.settings.controller;
+        controller.sampling_period = delta;
+        controller.validate()?;
+        sampled_loop_matrix(&self.model, &self.gain, &controller, self.settings.inner_loop)
+    }
+
+    /// ρ at sampling period `delta`.
+    pub fn spectral_radius(&self, delta: f64) -> Result<f64, Error> {
+        Ok(loop_eigenvalues(&self.loop_matrix(delta)?).first().map(|c| c.norm()).unwrap_or(0.0))
+    }
+
+    /// The whole report at the model's own δ.
+    pub fn report(&self) -> Result<StabilityReport, Error> {
+        let delta = self.settings.controller.sampling_period;
+        let ev = loop_eigenvalues(&self.loop_matrix(delta)?);
+        let spectral_radius = ev.first().map(|c| c.norm()).unwrap_or(0.0);
+        let poles = ev
+            .iter()
+            .map(|l| Pole {
+                discrete: [l.re, l.im],
+                continuous: (l.norm() > 0.0).then(|| {
+                    let s = l.ln() / delta;
+                    [s.re, s.im]
+                }),
+            })
+            .collect();
+        let open = limit_pair(&self.model, &FeedbackGain::zeros())?;
+        let with_pf = limit_pair(&self.model, &self.gain)?;
+        Ok(StabilityReport {
+            sampling_period: delta,
+            rest: self.settings.rest,
+            spectral_radius,
+            growth_rate: spectral_radius.ln() / delta,
+            poles,
+            limit_pair_open: pair(&open.eigenvalues),
+            limit_pair: pair(&with_pf.eigenvalues),
+        })
+    }
+}
+
+/// The sampled closed loop linearized at rest, as a map of ζ = (x(t_ρ), v on [t_ρ, t_ρ+1)):
+/// x_{ρ+1} = Φ x_ρ + Γ v_ρ (+ Γ K x_ρ for a sampled inner loop), v_{ρ+1} = K_pred x_ρ
+/// (the prediction from x(t_ρ) is applied one period later, Fig. 2.1).
+pub fn sampled_loop_matrix(
+    model: &LinearModel,
+    gain: &FeedbackGain,
+    controller: &ControllerParameters,
+    inner_loop: InnerLoop,
+) -> Result<Mat10, Error> {
+    let delta = controller.sampling_period;
+    let k_pred = predictor_gain(model, gain, controller)?;
+    let a_plant = match inner_loop {
+        InnerLoop::Continuous => model.a + model.b * gain,
+        InnerLoop::Sampled => model.a,
+    };
+    let mut aug = Mat10::zeros();
+    aug.fixed_view_mut::<8, 8>(0, 0).copy_from(&(a_plant * delta));
+    aug.fixed_view_mut::<8, 2>(0, 8).copy_from(&(model.b * delta));
+    let transition = aug.exp();
+    let phi: Mat8 = transition.fixed_view::<8, 8>(0, 0).into_owned();
+    let gamma: SMatrix<f64, 8, 2> = transition.fixed_view::<8, 2>(0, 8).into_owned();
+    let phi = match inner_loop {
+        InnerLoop::Continuous => phi,
+        InnerLoop::Sampled => phi + gamma * gain,
+    };
+    let mut m = Mat10::zeros();
+    m.fixed_view_mut::<8, 8>(0, 0).copy_from(&phi);
+    m.fixed_view_mut::<8, 2>(0, 8).copy_from(&gamma);
+    m.fixed_view_mut::<2, 8>(8, 0).copy_from(&k_pred);
+    Ok(m)
+}
+
+/// One eigenvalue of the sampled loop.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Pole {
+    /// λ, the eigenvalue of the one-period map.
+    pub discrete: [f64; 2],
+    /// s = ln λ / δ, its continuous-time equivalent, 1/s (`None` for λ = 0).
+    pub continuous: Option<[f64; 2]>,
+}
+
+/// The stability analysis of one configuration.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StabilityReport {
+    /// δ, s.
+    pub sampling_period: f64,
+    /// Link angles of the rest point, rad.
+    pub rest: [f64; 2],
+    /// ρ, the spectral radius of the one-period map: the loop is stable iff ρ < 1.
+    pub spectral_radius: f64,
+    /// ln ρ / δ, the asymptotic growth rate of the errors, 1/s.
+    pub growth_rate: f64,
+    /// All ten eigenvalues, largest |λ| first.
+    pub poles: Vec<Pole>,
+    /// The δ → 0 pair A4 without preliminary feedback, 1/s.
+    pub limit_pair_open: [[f64; 2]; 2],
+    /// The δ → 0 pair A4 with the configured preliminary feedback, 1/s.
+    pub limit_pair: [[f64; 2]; 2],
+}
+
+fn pair(c: &[Complex<f64>; 2]) -> [[f64; 2]; 2] {
+    [[c[0].re, c[0].im], [c[1].re, c[1].im]]
+}
+
+/// Eigenvalues of the one-period map, largest modulus first.
+pub fn loop_eigenvalues(m: &Mat10) -> Vec<Complex<f64>> {
+    let mut ev: Vec<Complex<f64>> = m.complex_eigenvalues().iter().copied().collect();
+    ev.sort_by(|a, b| b.norm().total_cmp(&a.norm()).then(b.im.total_cmp(&a.im)));
+    ev
+}
+
+/// Analyses `config` linearized at rest at its final configuration, or at link-2 angle `q2`.
+pub fn analyze(config: &SimulationConfig, q2: Option<f64>) -> Result<StabilityReport, Error> {
+    config.validate()?;
+    LoopModel::new(&LinearSettings::of(config, q2))?.report()
+}
+
+/// The spectral radius alone.
+pub fn spectral_radius(config: &SimulationConfig, q2: Option<f64>) -> Result<f64, Error> {
+    config.validate()?;
+    let settings = LinearSettings::of(config, q2);
+    LoopModel::new(&settings)?.spectral_radius(settings.controller.sampling_period)
+}

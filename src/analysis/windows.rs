@@ -1,0 +1,108 @@
+//! Where the loop is stable along δ: the intervals of the sampling period with ρ < 1 for fixed
+//! α, preliminary feedback and inner loop. Without preliminary feedback there are several such
+//! windows (at α = 2 about 0.035–0.101 s, 0.107–0.116 s and 0.163–0.224 s): ρ is not monotone in δ.
+
+use serde::Serialize;
+
+use super::sampled::{LinearSettings, LoopModel};
+use crate::error::Error;
+
+/// Grid points of the scan that brackets the edges (logarithmic; ≈ 2 % apart over 2 ms – 0.25 s).
+pub const SCAN_POINTS: usize = 240;
+/// The edges are located to within this, s.
+pub const EDGE_TOLERANCE: f64 = 1e-4;
+
+/// The stable intervals of δ within a range.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct StableWindows {
+    /// The δ range searched, s.
+    pub range: [f64; 2],
+    /// The intervals [from, to] where ρ < 1, in increasing order, s. An interval that reaches an
+    /// end of the range ends there (the loop may stay stable beyond it).
+    pub windows: Vec<[f64; 2]>,
+    /// Each edge inside the range lies within this of the true crossing of ρ = 1, s.
+    pub tolerance: f64,
+}
+
+impl StableWindows {
+    /// True if δ lies in one of the windows.
+    pub fn contains(&self, delta: f64) -> bool {
+        self.windows.iter().any(|w| delta >= w[0] && delta <= w[1])
+    }
+}
+
+/// The intervals of δ in `range` where ρ < 1 for `settings` (its δ is ignored): ρ on a
+/// logarithmic scan of [`SCAN_POINTS`] points, then each change of sign of ρ − 1 bisected to
+/// [`EDGE_TOLERANCE`]. Windows narrower than the scan's spacing can be missed.
+pub fn stable_windows(settings: &LinearSettings, range: [f64; 2]) -> Result<StableWindows, Error> {
+    let model = LoopModel::new(settings)?;
+    let deltas = super::map::log_space(range[0], range[1], SCAN_POINTS);
+    // A cell whose linear algebra fails counts as not stable.
+    let stable = |d: f64| model.spectral_radius(d).map(|r| r < 1.0);
+    let mut flags = Vec::with_capacity(deltas.len());
+    for &d in &deltas {
+        flags.push(match stable(d) {
+            Ok(s) => s,
+            Err(Error::Analysis(_)) => false,
+            Err(e) => return Err(e),
+        });
+    }
+    // The crossing between a (stability `sa`) and b, by bisection.
+    let edge = |mut a: f64, mut b: f64, sa: bool| -> f64 {
+        while b - a > EDGE_TOLERANCE {
+            let m = 0.5 * (a + b);
+            if stable(m).unwrap_or(false) == sa {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        0.5 * (a + b)
+    };
+    let mut windows = Vec::new();
+    let mut start: Option<f64> = None;
+    for i in 0..deltas.len() {
+        match (flags[i], start) {
+            (true, None) => start = Some(if i == 0 { deltas[0] } else { edge(deltas[i - 1], deltas[i], false) }),
+            (false, Some(s)) => {
+                windows.push([s, edge(deltas[i - 1], deltas[i], true)]);
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        windows.push([s, deltas[deltas.len() - 1]]);
+    }
+    Ok(StableWindows { range, windows, tolerance: EDGE_TOLERANCE })
+}
+
+/// The δ intervals of one grid row where ρ < 1: runs of stable cells whose ends are moved to the
+/// crossing of ρ = 1, interpolated linearly in log δ (a run that reaches the end of the grid, or
+/// a NaN cell, ends at that grid point). A map's summary; [`stable_windows`] is the precise search.
+pub fn stable_intervals(deltas: &[f64], rho: &[f64]) -> Vec<[f64; 2]> {
+    let crossing = |a: usize, b: usize| {
+        let (ra, rb) = (rho[a], rho[b]);
+        if !(ra.is_finite() && rb.is_finite()) || ra == rb {
+            return None;
+        }
+        let t = (1.0 - ra) / (rb - ra);
+        Some((deltas[a].ln() + t * (deltas[b].ln() - deltas[a].ln())).exp())
+    };
+    let n = deltas.len().min(rho.len());
+    let mut out = Vec::new();
+    let mut j = 0;
+    while j < n {
+        if rho[j] < 1.0 {
+            let start = j;
+            while j + 1 < n && rho[j + 1] < 1.0 {
+                j += 1;
+            }
+            let lo = if start > 0 { crossing(start - 1, start).unwrap_or(deltas[start]) } else { deltas[start] };
+            let hi = if j + 1 < n { crossing(j, j + 1).unwrap_or(deltas[j]) } else { deltas[j] };
+            out.push([lo, hi]);
+        }
+        j += 1;
+    }
+    out
+}

@@ -1,0 +1,82 @@
+//! `flexarm analyze`: the sampled loop linearized at rest — ρ, the eigenvalues, the δ → 0 pair A4.
+
+use clap::{ArgMatches, Command};
+use flexarm::analysis::{self, StabilityReport};
+use flexarm::schema;
+use flexarm::SimulationConfig;
+use serde_json::json;
+
+use crate::cli::{self, lib_error, Failure, Res};
+use crate::output::{describe_config, linear_verdict};
+
+/// The run settings the analysis depends on (friction compensation and the slew do not change ρ).
+pub const KEYS: &[&str] = &["delta", "alpha", "alpha1", "alpha2", "pf", "inner", "k", "eps_ratio"];
+
+pub fn command() -> Command {
+    cli::command("analyze", "The sampled loop linearized at rest: ρ, its eigenvalues, and the δ → 0 pair A4")
+        .args(cli::run_args(KEYS))
+        .arg(cli::param_arg(&schema::Q2))
+        .arg(cli::flag("json", "Print the stability report as one JSON object"))
+}
+
+pub fn run(m: &ArgMatches) -> Res<String> {
+    let settings = cli::read_settings(m, KEYS)?;
+    let config = settings.a.config();
+    let q2 = m.get_one::<String>(schema::Q2.key).map(|_| cli::number(m, &schema::Q2)).transpose()?;
+    let report = analysis::analyze(&config, q2).map_err(lib_error)?;
+    if m.get_flag("json") {
+        // Non-finite floats (e.g. ln 0) become null in serde_json's Value.
+        let mut v = serde_json::to_value(&report).map_err(|e| Failure(format!("JSON encoding failed: {e}"), 1))?;
+        v["state"] = json!(settings.run_query());
+        v["verdict"] = json!(linear_verdict(report.spectral_radius));
+        v["alpha"] = json!(config.controller.alpha);
+        v["k"] = json!(config.controller.horizon_steps);
+        v["eps_ratio"] = json!(config.controller.eps_ratio);
+        v["pf"] = json!(config.preliminary_feedback.name());
+        v["inner"] = json!(config.inner_loop.name());
+        v["preliminary_feedback"] = json!(config.preliminary_feedback.name());
+        v["inner_loop"] = json!(config.inner_loop.name());
+        return Ok(v.to_string() + "\n");
+    }
+    Ok(analysis_text(&config, &report))
+}
+
+fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
+    let mut s = format!(
+        "flexarm analyze: sampled loop linearized at rest at q1 = {:.4} rad, q2 = {:.4} rad\nconfiguration\n{}",
+        r.rest[0],
+        r.rest[1],
+        describe_config(c)
+    );
+    s += &format!(
+        "spectral radius ρ = {:.6} → {} (ρ < 1 ⇒ linearly stable)\ngrowth rate ln ρ/δ = {:.4} 1/s\n",
+        r.spectral_radius,
+        linear_verdict(r.spectral_radius),
+        r.growth_rate
+    );
+    s += "eigenvalues of the one-period map (s = ln λ/δ, ζ = −Re s/|s|):\n";
+    s += &format!(
+        "  {:>2}  {:>10} {:>11} {:>11}  {:>11} {:>11}  {:>8} {:>11}\n",
+        "#", "|λ|", "Re λ", "Im λ", "Re s [1/s]", "Im s [1/s]", "ζ", "|s| [rad/s]"
+    );
+    for (i, p) in r.poles.iter().enumerate() {
+        let [re, im] = p.discrete;
+        s += &format!("  {:>2}  {:>10.6} {:>11.6} {:>11.6}", i + 1, re.hypot(im), re, im);
+        s += &match p.continuous {
+            Some([sr, si]) => {
+                let w = sr.hypot(si);
+                let zeta = if w > 0.0 { format!("{:>8.4}", -sr / w) } else { format!("{:>8}", "—") };
+                format!("  {sr:>11.4} {si:>11.4}  {zeta} {w:>11.4}\n")
+            }
+            None => "  (λ = 0: no continuous equivalent)\n".into(),
+        };
+    }
+    let pair = |p: [[f64; 2]; 2]| format!("{:.4} ± {:.4}j 1/s", p[0][0], p[0][1].abs());
+    s += &format!("δ → 0 pair A4 without preliminary feedback: {}\n", pair(r.limit_pair_open));
+    s += &format!(
+        "δ → 0 pair A4 with preliminary feedback ({}): {}\n",
+        c.preliminary_feedback.name(),
+        pair(r.limit_pair)
+    );
+    s
+}

@@ -1,0 +1,163 @@
+//! The command line built from the schema: every run parameter becomes a flag with its label,
+//! unit, range and default as help; values are read by the schema, so the CLI, the page and the
+//! URL accept and refuse the same things with the same words.
+
+use clap::{Arg, ArgAction, ArgMatches, Command};
+use flexarm::error::Error;
+use flexarm::schema::{self, Kind, Param};
+use flexarm::session::{Settings, Source};
+
+/// A failure to report: the message (without `error: `) and the exit status.
+pub struct Failure(pub String, pub i32);
+
+pub type Res<T> = Result<T, Failure>;
+
+/// A mistake in the command line (status 2).
+pub fn usage_error(msg: impl Into<String>) -> Failure {
+    Failure(msg.into(), 2)
+}
+
+/// A library error: the user's input (status 2), naming the flag that sets the parameter; a failed
+/// analysis is a failure of the run (status 1).
+pub fn lib_error(e: Error) -> Failure {
+    let flag = |p: &Param| match p.key {
+        "eps_ratio" => " (set with --eps-ratio and --k)".to_string(),
+        "alpha1" | "alpha2" => format!(" (set with {} or --alpha)", p.flag()),
+        _ => format!(" (set with {})", p.flag()),
+    };
+    match &e {
+        Error::Config(c) => {
+            let hint = schema::PARAMS.iter().find(|p| p.name == c.parameter).map(|p| flag(p)).unwrap_or_default();
+            usage_error(format!("{e}{hint}"))
+        }
+        Error::Parse(p) => {
+            let hint = schema::param(&p.key).map(flag).unwrap_or_default();
+            usage_error(format!("{e}{hint}"))
+        }
+        Error::InvalidDuration(_) => usage_error(format!("{e} (set with --duration)")),
+        Error::Analysis(_) => Failure(e.to_string(), 1),
+    }
+}
+
+/// The value name in usage lines: `S` for seconds, `A` for 1/s, `N` for counts, the choices.
+fn value_name(p: &Param) -> String {
+    match (&p.kind, p.unit) {
+        (Kind::Choice { options, .. }, _) => options.iter().map(|o| o.value).collect::<Vec<_>>().join("|"),
+        (Kind::Number(n), _) if n.integer => "N".into(),
+        (_, "s") => "S".into(),
+        (_, "1/s") => "A".into(),
+        (_, "rad") => "RAD".into(),
+        _ => "X".into(),
+    }
+}
+
+/// The help line of a parameter: label, unit, range, default.
+fn help(p: &Param) -> String {
+    let default = match p.default_value() {
+        schema::Value::Switch(false) => String::new(),
+        v => format!("; default {}", v.text()),
+    };
+    let unit = if p.unit.is_empty() { String::new() } else { format!(", {}", p.unit) };
+    let range = match &p.kind {
+        Kind::Number(n) => format!(" ({}{default})", n.allowed_text(p.unit)),
+        Kind::Choice { .. } => format!(" ({}{default})", p.allowed(false)),
+        Kind::Switch { .. } => String::new(),
+    };
+    format!("{}{unit}{range}. {}", p.label, p.help)
+}
+
+/// A flag for a schema parameter.
+pub fn param_arg(p: &'static Param) -> Arg {
+    let long = p.flag().trim_start_matches("--").to_string();
+    let arg = Arg::new(p.key).long(long).help(help(p));
+    match p.kind {
+        Kind::Switch { .. } => arg.action(ArgAction::SetTrue),
+        _ => arg.value_name(value_name(p)).allow_negative_numbers(true).action(ArgAction::Set),
+    }
+}
+
+/// The flags of these run parameters, and `--state`.
+pub fn run_args(keys: &[&str]) -> Vec<Arg> {
+    let mut args: Vec<Arg> = keys.iter().filter_map(|k| schema::param(k)).map(param_arg).collect();
+    args.push(
+        Arg::new("state")
+            .long("state")
+            .value_name("STATE")
+            .help(
+                "Settings as a state string, e.g. 'delta=0.01&alpha=2&pf=off' (the page's URL query, its \
+                 'copy as command line' and the CSV/SVG headers give one); flags given as well override it",
+            )
+            .action(ArgAction::Set),
+    );
+    args
+}
+
+/// The settings of a command: the CLI's defaults, then `--state`, then each flag (in the schema's
+/// order, so `--alpha` comes before `--alpha1`/`--alpha2`).
+pub fn read_settings(m: &ArgMatches, keys: &[&str]) -> Res<Settings> {
+    let mut settings = Settings::default();
+    if let Some(state) = m.get_one::<String>("state") {
+        settings.read(state, Source::CommandLine).map_err(|e| usage_error(format!("--state: {}", lib_error(e).0)))?;
+    }
+    for p in schema::PARAMS.iter().filter(|p| keys.contains(&p.key)) {
+        let text = match p.kind {
+            Kind::Switch { .. } => m.get_flag(p.key).then(|| "1".to_string()),
+            _ => m.get_one::<String>(p.key).cloned(),
+        };
+        if let Some(text) = text {
+            settings.set_text(p.key, &text, Source::CommandLine).map_err(lib_error)?;
+        }
+    }
+    settings.a.config().validate().map_err(|e| lib_error(e.into()))?;
+    Ok(settings)
+}
+
+/// A number of a CLI-only schema parameter (duration, output interval, q2), or its default.
+pub fn number(m: &ArgMatches, p: &'static Param) -> Res<f64> {
+    match m.get_one::<String>(p.key) {
+        None => Ok(p.number().map_or(0.0, |n| n.default)),
+        Some(text) => p.parse(text, false).map(|v| v.number().unwrap_or(f64::NAN)).map_err(lib_error),
+    }
+}
+
+/// A finite decimal number (Rust would also accept "inf" and "NaN").
+pub fn parse_number(s: &str) -> Option<f64> {
+    s.trim().parse::<f64>().ok().filter(|v| v.is_finite())
+}
+
+/// A boolean flag.
+pub fn flag(name: &'static str, help: &'static str) -> Arg {
+    Arg::new(name).long(name).help(help).action(ArgAction::SetTrue)
+}
+
+/// An option with a value.
+pub fn option(name: &'static str, value: &'static str, help: impl Into<String>) -> Arg {
+    Arg::new(name).long(name).value_name(value).help(help.into()).allow_negative_numbers(true).action(ArgAction::Set)
+}
+
+/// A subcommand with the common settings.
+pub fn command(name: &'static str, about: &'static str) -> Command {
+    Command::new(name).bin_name(format!("flexarm {name}")).about(about).disable_version_flag(true)
+}
+
+/// Writes an output file; a failure is reported with the flag that named the file (status 1).
+pub fn write_file(flag: &str, path: &str, contents: &str) -> Res<()> {
+    std::fs::write(path, contents).map_err(|e| Failure(format!("could not write {flag} file '{path}': {e}"), 1))
+}
+
+/// Flags that other commands have but this one does not, with the flag to use instead: hidden,
+/// so that using one explains itself instead of a "did you mean" guess.
+pub fn redirects(pairs: &[(&'static str, &'static str)]) -> Vec<Arg> {
+    pairs
+        .iter()
+        .map(|(name, _)| Arg::new(*name).long(*name).hide(true).allow_negative_numbers(true).action(ArgAction::Set))
+        .collect()
+}
+
+/// The error for the first redirected flag given.
+pub fn check_redirects(m: &ArgMatches, command: &str, pairs: &[(&'static str, &'static str)]) -> Res<()> {
+    match pairs.iter().find(|(name, _)| m.contains_id(name) && m.value_source(name).is_some()) {
+        Some((name, instead)) => Err(usage_error(format!("--{name} is not available in '{command}': use {instead}"))),
+        None => Ok(()),
+    }
+}

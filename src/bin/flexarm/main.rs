@@ -1,0 +1,136 @@
+//! `flexarm`: the command-line front end of the flexible-joint arm simulator.
+//!
+//! * `flexarm simulate` runs one closed-loop slew and prints a summary (or one JSON object, or
+//!   writes the traces as CSV and the errors as SVG),
+//! * `flexarm analyze` prints the linear stability analysis at rest (ρ, eigenvalues, the δ → 0
+//!   pair A4),
+//! * `flexarm sweep` tabulates ρ (and optionally simulation verdicts) over lists of δ and α,
+//! * `flexarm map` computes ρ on a logarithmic (δ, α) grid without and/or with preliminary
+//!   feedback, summarizes it, and writes it as CSV, JSON or an SVG figure.
+//!
+//! The flags of the run settings come from the schema ([`flexarm::schema`]), as do their ranges
+//! and error messages. Bad input prints one `error: ...` line to stderr and exits with status 2;
+//! a failed file write or analysis exits with status 1.
+
+mod analyze;
+mod cli;
+mod map;
+mod output;
+mod simulate;
+mod sweep;
+
+use std::io::Write;
+
+use clap::error::ErrorKind;
+use clap::Command;
+
+use cli::{Failure, Res};
+
+const ABOUT: &str =
+    "flexarm — predictive control of a flexible-joint robot arm (von Wissel, Nikoukhah & Campbell 1994)";
+
+const AFTER: &str = "ρ is the spectral radius of the one-period map linearized at rest: ρ < 1 ⇒ linearly stable.\n\
+                     'flexarm COMMAND --help' describes one command.";
+
+fn commands() -> Vec<Command> {
+    vec![simulate::command(), analyze::command(), sweep::command(), map::command()]
+}
+
+fn root() -> Command {
+    Command::new("flexarm")
+        .about(ABOUT)
+        .disable_version_flag(true)
+        .disable_help_subcommand(true)
+        .subcommand_required(true)
+        .subcommands(commands())
+        .subcommand(
+            Command::new("help")
+                .about("Print this overview, or one command's help")
+                .arg(clap::Arg::new("command").value_name("COMMAND").action(clap::ArgAction::Set)),
+        )
+}
+
+/// The overview: every command with all its flags (one place to read them all).
+fn overview() -> String {
+    let mut s = format!("{ABOUT}\n\n");
+    for mut c in commands() {
+        let name = c.get_name().to_string();
+        s += &format!("──── flexarm {name} ────\n");
+        s += &c.render_help().to_string();
+        s += "\n";
+    }
+    s += AFTER;
+    s += "\n";
+    s
+}
+
+/// A clap error on one line: the message, its tips, and where to read more.
+fn one_line(e: &clap::Error, command: Option<&str>) -> String {
+    let rendered = e.render().to_string();
+    let mut parts: Vec<String> = Vec::new();
+    for line in rendered.lines().map(str::trim) {
+        if line.is_empty() || line.starts_with("Usage:") || line.starts_with("For more information") {
+            continue;
+        }
+        parts.push(line.trim_start_matches("error: ").to_string());
+    }
+    let see = match command {
+        Some(c) => format!("see 'flexarm {c} --help'"),
+        None => "see 'flexarm --help'".into(),
+    };
+    format!("{} ({see})", parts.join("; "))
+}
+
+fn run(args: Vec<String>) -> Res<String> {
+    let command = args.iter().find(|a| commands().iter().any(|c| c.get_name() == a.as_str())).cloned();
+    let matches = match root().try_get_matches_from(std::iter::once("flexarm".to_string()).chain(args.iter().cloned()))
+    {
+        Ok(m) => m,
+        Err(e) => {
+            return match e.kind() {
+                // `flexarm --help` is the overview of every command; `flexarm map --help` map's own.
+                ErrorKind::DisplayHelp if command.is_none() => Ok(overview()),
+                ErrorKind::DisplayHelp => Ok(e.render().to_string()),
+                ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+                    if args.iter().any(|a| a == "-h" || a == "--help") =>
+                {
+                    Ok(overview())
+                }
+                ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+                    Err(cli::usage_error(
+                        "no command given: use simulate, analyze, sweep, map or help (see 'flexarm --help')",
+                    ))
+                }
+                _ => Err(cli::usage_error(one_line(&e, command.as_deref()))),
+            };
+        }
+    };
+    match matches.subcommand() {
+        Some(("simulate", m)) => simulate::run(m),
+        Some(("analyze", m)) => analyze::run(m),
+        Some(("sweep", m)) => sweep::run(m),
+        Some(("map", m)) => map::run(m),
+        Some(("help", m)) => match m.get_one::<String>("command") {
+            None => Ok(overview()),
+            Some(name) => match commands().into_iter().find(|c| c.get_name() == name) {
+                Some(mut c) => Ok(c.render_help().to_string()),
+                None => Err(cli::usage_error(format!("unknown command '{name}': use simulate, analyze, sweep or map"))),
+            },
+        },
+        _ => Ok(overview()),
+    }
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(args) {
+        Ok(out) => {
+            // Ignore a closed pipe (e.g. `flexarm analyze | head`) rather than panicking.
+            let _ = std::io::stdout().lock().write_all(out.as_bytes());
+        }
+        Err(Failure(msg, code)) => {
+            eprintln!("error: {}", msg.replace('\n', " "));
+            std::process::exit(code);
+        }
+    }
+}

@@ -1,0 +1,58 @@
+//! Words and numbers the commands share: the configuration line, the verdicts.
+
+use flexarm::control::{DivergenceReason, Verdict};
+use flexarm::SimulationConfig;
+
+/// The verdict in words, e.g. "unstable (errors grow at 2.273 1/s)".
+pub fn verdict_text(verdict: Verdict, bound: f64) -> String {
+    match verdict {
+        Verdict::Stable => "stable".into(),
+        Verdict::Unstable { growth_rate } => format!("unstable (errors grow at {growth_rate:.3} 1/s)"),
+        Verdict::Diverged { at, reason } => format!(
+            "diverged at t = {at:.3} s ({})",
+            match reason {
+                DivergenceReason::ErrorBound => format!("a tracking error exceeded {bound:.4} rad"),
+                DivergenceReason::NonFinite => "the state became NaN or infinite".into(),
+                DivergenceReason::NewtonFailure => "Newton's iteration in the predictor failed".into(),
+            }
+        ),
+    }
+}
+
+/// "stable" for ρ < 1, else "unstable".
+pub fn linear_verdict(rho: f64) -> &'static str {
+    if rho < 1.0 {
+        "stable"
+    } else {
+        "unstable"
+    }
+}
+
+/// The configuration lines shared by the text outputs.
+pub fn describe_config(c: &SimulationConfig) -> String {
+    let k = &c.controller;
+    format!(
+        "  δ = {} s, α1 = {} 1/s, α2 = {} 1/s, k = {}, m = {} (ε = {:.3e} s, τ = kε = {:.3e} s)\n  \
+         preliminary feedback {}, inner loop {}, friction compensation {}\n",
+        k.sampling_period,
+        k.alpha[0],
+        k.alpha[1],
+        k.horizon_steps,
+        k.eps_ratio,
+        k.integration_step(),
+        k.horizon(),
+        c.preliminary_feedback.name(),
+        c.inner_loop.name(),
+        c.friction_compensation.name()
+    )
+}
+
+/// "δ = 0.01 s, α = 2 1/s" (or α1, α2 when they differ).
+pub fn delta_alpha_text(c: &SimulationConfig) -> String {
+    let k = &c.controller;
+    if k.alpha[0] == k.alpha[1] {
+        format!("δ = {} s, α = {} 1/s", k.sampling_period, k.alpha[0])
+    } else {
+        format!("δ = {} s, α1 = {} 1/s, α2 = {} 1/s", k.sampling_period, k.alpha[0], k.alpha[1])
+    }
+}

@@ -1,0 +1,130 @@
+//! `flexarm simulate`: one closed-loop run, its summary, and the traces as CSV or SVG.
+
+use clap::{ArgMatches, Command};
+use flexarm::analysis;
+use flexarm::schema;
+use flexarm::session::Settings;
+use flexarm::{RunReport, SimulationConfig, Verdict};
+use serde_json::{json, Value};
+
+use crate::cli::{self, lib_error, write_file, Failure, Res};
+use crate::output::{delta_alpha_text, describe_config, linear_verdict, verdict_text};
+
+/// The run settings `simulate` takes.
+pub const KEYS: &[&str] =
+    &["delta", "alpha", "alpha1", "alpha2", "pf", "friction", "inner", "repeat", "k", "eps_ratio"];
+
+pub fn command() -> Command {
+    cli::command("simulate", "Run the closed loop from rest along the slew and summarize it")
+        .args(cli::run_args(KEYS))
+        .arg(cli::param_arg(&schema::DURATION))
+        .arg(cli::param_arg(&schema::OUTPUT_INTERVAL))
+        .arg(cli::option(
+            "csv",
+            "FILE",
+            "Write the traces (t [s], q [rad], e [rad], T [N m], ...) to FILE, headed by the state string",
+        ))
+        .arg(cli::option("svg", "FILE", "Write a figure of the tracking errors e1, e2 over time to FILE (SVG)"))
+        .arg(cli::flag("json", "Print one JSON object instead of the text summary"))
+}
+
+pub fn run(m: &ArgMatches) -> Res<String> {
+    let settings = cli::read_settings(m, KEYS)?;
+    let duration = cli::number(m, &schema::DURATION)?;
+    let mut config = settings.a.config();
+    config.output_interval = cli::number(m, &schema::OUTPUT_INTERVAL)?;
+    config.validate().map_err(|e| lib_error(e.into()))?;
+    let json_out = m.get_flag("json");
+    let report = flexarm::simulate(&config, duration).map_err(lib_error)?;
+    let rho = analysis::spectral_radius(&config, None).ok();
+    let state = settings.run_query();
+    let mut out = if json_out {
+        simulation_json(&settings, &config, duration, &report, rho).to_string() + "\n"
+    } else {
+        simulation_text(&config, duration, &report, rho)
+    };
+    if let Some(path) = m.get_one::<String>("csv") {
+        let comment = format!("flexarm state: {state} | {}", settings.command_line(Some(duration)));
+        std::fs::write(path, report.traces.to_csv(Some(&comment)))
+            .map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
+        if !json_out {
+            out += &format!("traces ({} rows) written to {path}\n", report.traces.len());
+        }
+    }
+    if let Some(path) = m.get_one::<String>("svg") {
+        let title = format!(
+            "Tracking errors: {}, PF {} — {}",
+            delta_alpha_text(&config),
+            config.preliminary_feedback.name(),
+            verdict_text(report.metrics.verdict, config.divergence_bound)
+        );
+        write_file("--svg", path, &flexarm::svg::error_traces_svg(&report.traces, &title, Some(&state)))?;
+        if !json_out {
+            out += &format!("figure of the tracking errors written to {path}\n");
+        }
+    }
+    Ok(out)
+}
+
+/// The run as one JSON object: the settings under their schema keys (and the long names of
+/// earlier versions), the state string, the metrics and ρ.
+pub fn simulation_json(
+    settings: &Settings,
+    c: &SimulationConfig,
+    duration: f64,
+    r: &RunReport,
+    rho: Option<f64>,
+) -> Value {
+    let m = &r.metrics;
+    let (at, reason) = match m.verdict {
+        Verdict::Diverged { at, reason } => (Some(at), serde_json::to_value(reason).ok()),
+        _ => (None, None),
+    };
+    json!({
+        "state": settings.run_query(),
+        "delta": c.controller.sampling_period,
+        "alpha1": c.controller.alpha[0],
+        "alpha2": c.controller.alpha[1],
+        "k": c.controller.horizon_steps,
+        "eps_ratio": c.controller.eps_ratio,
+        "pf": c.preliminary_feedback.name(),
+        "inner": c.inner_loop.name(),
+        "friction": c.friction_compensation.name(),
+        "repeat": settings.a.repeat,
+        "preliminary_feedback": c.preliminary_feedback.name(),
+        "inner_loop": c.inner_loop.name(),
+        "friction_compensation": c.friction_compensation.name(),
+        "duration": duration,
+        "simulated_time": m.time,
+        "verdict": m.verdict.label(),
+        "diverged_at": at,
+        "divergence_reason": reason,
+        "max_error_slew": m.max_error_slew,
+        "max_error_after": m.max_error_after,
+        "rms_error": m.rms_error,
+        "growth_rate": m.growth_rate,
+        "max_torque": m.max_torque,
+        "spectral_radius": rho,
+    })
+}
+
+fn simulation_text(c: &SimulationConfig, duration: f64, r: &RunReport, rho: Option<f64>) -> String {
+    let m = &r.metrics;
+    let verdict = verdict_text(m.verdict, c.divergence_bound);
+    let pair = |v: [f64; 2], unit: &str| format!("{:.3e}, {:.3e} {unit}", v[0], v[1]);
+    let growth = m.growth_rate.map_or("n/a (run too short)".into(), |g| format!("{g:.4} 1/s"));
+    let rho = rho.map_or("n/a (analysis failed)".into(), |r| {
+        format!("{r:.6} → linearly {} (ρ < 1 ⇒ linearly stable)", linear_verdict(r))
+    });
+    let slew = if c.reference.repeat_hold.is_some() { "the repeating slew" } else { "the 1-s slew" };
+    let mut s = format!("flexarm simulate: {duration} s of {slew}\nconfiguration\n{}", describe_config(c));
+    s += &format!("result (simulated {:.3} s)\n", m.time);
+    s += &format!("  verdict                     {verdict}\n");
+    s += &format!("  max |e1|, |e2| during slew  {}\n", pair(m.max_error_slew, "rad"));
+    s += &format!("  max |e1|, |e2| after slew   {}\n", pair(m.max_error_after, "rad"));
+    s += &format!("  RMS e1, e2                  {}\n", pair(m.rms_error, "rad"));
+    s += &format!("  growth rate                 {growth}\n");
+    s += &format!("  max |T1|, |T2|              {:.3}, {:.3} N m\n", m.max_torque[0], m.max_torque[1]);
+    s += &format!("  spectral radius ρ           {rho}\n");
+    s
+}

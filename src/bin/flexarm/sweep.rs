@@ -1,0 +1,110 @@
+//! `flexarm sweep`: ρ (and optionally simulation verdicts) over lists of δ and α.
+
+use clap::{ArgMatches, Command};
+use flexarm::analysis;
+use flexarm::schema;
+use flexarm::Verdict;
+use serde_json::{json, Value};
+
+use crate::cli::{self, lib_error, parse_number, usage_error, Res};
+use crate::output::linear_verdict;
+use crate::simulate::simulation_json;
+
+/// The run settings `sweep` takes besides its lists of δ and α.
+pub const KEYS: &[&str] = &["pf", "friction", "inner", "repeat", "k", "eps_ratio"];
+
+/// Flags of other commands, and what `sweep` has instead.
+const REDIRECTS: &[(&str, &str)] = &[("alpha1", "--alpha LIST (α1 = α2)"), ("alpha2", "--alpha LIST (α1 = α2)")];
+
+pub fn command() -> Command {
+    cli::command("sweep", "Tabulate ρ (and, with --simulate, simulation verdicts) over lists of δ and α")
+        .arg(
+            cli::option(
+                "delta_list",
+                "LIST",
+                "Sampling periods, s: a comma list 0.005,0.01,0.02 or START:STOP:N (N points, logarithmically spaced \
+             when both ends are > 0)",
+            )
+            .long("delta"),
+        )
+        .arg(cli::option("alpha_list", "LIST", "Values of α = α1 = α2, 1/s, same syntax").long("alpha"))
+        .args(cli::run_args(KEYS))
+        .arg(cli::flag("simulate", "Also run each point for --duration s"))
+        .arg(cli::param_arg(&schema::DURATION))
+        .arg(cli::flag("json", "Print an array of JSON objects"))
+        .args(cli::redirects(REDIRECTS))
+}
+
+/// `0.005,0.01,0.02` or `START:STOP:N` (log-spaced if both ends are > 0, else linear).
+fn parse_list(flag: &str, text: &str) -> Res<Vec<f64>> {
+    let bad = |why: &str| {
+        usage_error(format!("{flag} expects a comma list like 0.005,0.01 or START:STOP:N ({why}), got '{text}'"))
+    };
+    if let Some((range, n)) = text.rsplit_once(':') {
+        let (lo, hi) = range.split_once(':').ok_or_else(|| bad("a range has three parts"))?;
+        let (lo, hi) = (
+            parse_number(lo).ok_or_else(|| bad("START is not a number"))?,
+            parse_number(hi).ok_or_else(|| bad("STOP is not a number"))?,
+        );
+        let n: usize = n
+            .trim()
+            .parse()
+            .ok()
+            .filter(|&n| (1..=10_000).contains(&n))
+            .ok_or_else(|| bad("N must be a whole number from 1 to 10000"))?;
+        if lo > 0.0 && hi > 0.0 {
+            return Ok(analysis::log_space(lo, hi, n));
+        }
+        return Ok((0..n).map(|i| if n == 1 { lo } else { lo + (hi - lo) * i as f64 / (n - 1) as f64 }).collect());
+    }
+    text.split(',').map(|v| parse_number(v).ok_or_else(|| bad("not a number"))).collect()
+}
+
+pub fn run(m: &ArgMatches) -> Res<String> {
+    cli::check_redirects(m, "sweep", REDIRECTS)?;
+    let settings = cli::read_settings(m, KEYS)?;
+    let list = |name: &str, flag: &str, what: &str| -> Res<Vec<f64>> {
+        let text = m.get_one::<String>(name).ok_or_else(|| usage_error(format!("sweep needs {flag} LIST ({what})")))?;
+        parse_list(flag, text)
+    };
+    let deltas = list("delta_list", "--delta", "sampling periods in s")?;
+    let alphas = list("alpha_list", "--alpha", "α = α1 = α2 in 1/s")?;
+    let run = m.get_flag("simulate");
+    let duration = cli::number(m, &schema::DURATION)?;
+    let mut rows = Vec::new();
+    let mut text = format!("{:>10} {:>8} {:>12} {:>9}", "δ [s]", "α [1/s]", "ρ", "linear");
+    if run {
+        text += &format!("  {:>28}  {:>21}  {:>21}", "simulation", "max |e| slew [rad]", "max |e| after [rad]");
+    }
+    text += "\n";
+    for &alpha in &alphas {
+        for &delta in &deltas {
+            let mut point = settings;
+            point.a.delta = delta;
+            point.a.alpha = [alpha, alpha];
+            let c = point.a.config();
+            let rho = analysis::spectral_radius(&c, None).map_err(lib_error)?;
+            let mut row = json!({
+                "delta": delta, "alpha": alpha, "spectral_radius": rho, "verdict": linear_verdict(rho),
+                "state": point.run_query(),
+            });
+            text += &format!("{delta:>10.5} {alpha:>8.3} {rho:>12.6} {:>9}", linear_verdict(rho));
+            if run {
+                let r = flexarm::simulate(&c, duration).map_err(lib_error)?;
+                row["simulation"] = simulation_json(&point, &c, duration, &r, Some(rho));
+                let m = &r.metrics;
+                let verdict = match m.verdict {
+                    Verdict::Stable => "stable".to_string(),
+                    Verdict::Unstable { growth_rate } => format!("unstable ({growth_rate:.2} 1/s)"),
+                    Verdict::Diverged { at, .. } => format!("diverged at {at:.2} s"),
+                };
+                let [s1, s2] = m.max_error_slew;
+                let [a1, a2] = m.max_error_after;
+                text += &format!("  {verdict:>28}  {s1:>10.3e} {s2:>10.3e}  {a1:>10.3e} {a2:>10.3e}");
+            }
+            text += "\n";
+            rows.push(row);
+        }
+    }
+    Ok(if m.get_flag("json") { Value::Array(rows).to_string() + "\n" } else { text })
+}

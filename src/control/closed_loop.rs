@@ -1,0 +1,377 @@
+//! The sampled-data loop of Fig. 2.1: plant, friction observer, preliminary feedback and the
+//! delayed predictive controller, with traces, metrics and a verdict.
+//!
+//! Timing: at each sampling instant t_ρ = ρδ the controller measures X = x(t_ρ) and computes
+//! V^ρ; it is applied, piecewise constant, on [t_{ρ+1}, t_{ρ+2}) (one period of computation
+//! delay). Nothing has been computed on [0, δ), so v = 0 there. The applied torque is
+//!
+//! T(t) = v(t) + K_pr x(t) (or K_pr x(t_ρ) for a sampled inner loop) + friction compensation,
+//!
+//! where the compensation is the observer output x̂f(t) (continuous), x̂f(t_ρ) (held) or 0.
+//! The controller's integrators w are integrated with the plant from the measured error.
+//!
+//! The same [`ClosedLoop`] value serves batch runs ([`simulate`]) and live animation
+//! ([`ClosedLoop::advance`]); a new configuration takes effect at the next sampling instant.
+
+use nalgebra::{Vector2, Vector3};
+
+use super::config::{FrictionCompensation, InnerLoop, SimulationConfig};
+use super::feedback::{resolve_gain, FeedbackGain};
+use super::metrics::{DivergenceReason, ErrorStats, Metrics};
+use super::predictive::{Predictor, StateVector};
+use super::traces::{Snapshot, Traces};
+use crate::error::{ConfigError, Error};
+use crate::model::friction::FrictionObserver;
+use crate::model::plant::{Plant, PlantState};
+use crate::model::reference::Reference;
+
+/// A whole run's result.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunReport {
+    pub config: SimulationConfig,
+    pub metrics: Metrics,
+    pub traces: Traces,
+}
+
+/// Runs `config` from rest on the reference for `duration` seconds (or until it diverges).
+pub fn simulate(config: &SimulationConfig, duration: f64) -> Result<RunReport, Error> {
+    let mut sim = ClosedLoop::new(*config)?;
+    sim.advance(duration)?;
+    Ok(RunReport { config: *config, metrics: sim.metrics(), traces: sim.traces().clone() })
+}
+
+/// Derived settings that follow from the configuration.
+#[derive(Clone, Copy, Debug)]
+struct Derived {
+    plant: Plant,
+    reference: Reference,
+    predictor: Predictor,
+    gain: FeedbackGain,
+    /// Plant step h = δ / steps_per_period, s.
+    plant_step: f64,
+    steps_per_period: usize,
+    output_every: usize,
+}
+
+impl Derived {
+    fn new(config: &SimulationConfig) -> Result<Self, Error> {
+        config.validate()?;
+        let delta = config.controller.sampling_period;
+        let steps_per_period = (delta / config.plant_step_max).ceil().max(1.0) as usize;
+        let plant_step = delta / steps_per_period as f64;
+        let output_every = (config.output_interval / plant_step).round().max(1.0) as usize;
+        Ok(Self {
+            plant: Plant::new(config.plant),
+            reference: Reference::new(config.reference),
+            predictor: Predictor::new(&config.plant, &config.controller),
+            gain: resolve_gain(config)?,
+            plant_step,
+            steps_per_period,
+            output_every,
+        })
+    }
+}
+
+/// The closed loop of Fig. 2.1 as a value that can be stepped or run to the end.
+#[derive(Clone, Debug)]
+pub struct ClosedLoop {
+    config: SimulationConfig,
+    derived: Derived,
+    /// A configuration waiting for the next sampling instant.
+    pending: Option<(SimulationConfig, Derived)>,
+
+    time: f64,
+    /// Time of the last change of δ; sampling instants are origin + n δ (no accumulated rounding).
+    period_origin: f64,
+    periods_since_origin: u64,
+    period_start: f64,
+    step_in_period: usize,
+    steps_taken: u64,
+
+    plant_state: PlantState,
+    /// The controller's integrators w = (w1, w2), eq. (4.2).
+    integrators: Vector2<f64>,
+    observer: FrictionObserver,
+
+    /// v applied on the current period.
+    v_applied: Vector2<f64>,
+    /// v computed at the last sampling instant, applied from the next one.
+    v_next: Option<Vector2<f64>>,
+    /// U_k of the last prediction: the Newton seed of the next one.
+    torque_guess: Vector2<f64>,
+    held_compensation: Vector2<f64>,
+    held_feedback: Vector2<f64>,
+    applied_torque: Vector2<f64>,
+    /// An extra torque (the "poke") and the time it ends.
+    disturbance: Option<(Vector2<f64>, f64)>,
+
+    traces: Traces,
+    stats: ErrorStats,
+    divergence: Option<(f64, DivergenceReason)>,
+}
+
+impl ClosedLoop {
+    /// A loop at rest on the reference at t = 0.
+    pub fn new(config: SimulationConfig) -> Result<Self, Error> {
+        let derived = Derived::new(&config)?;
+        let r0 = derived.reference.sample(0.0);
+        let mut sim = Self {
+            config,
+            derived,
+            pending: None,
+            time: 0.0,
+            period_origin: 0.0,
+            periods_since_origin: 0,
+            period_start: 0.0,
+            step_in_period: 0,
+            steps_taken: 0,
+            plant_state: PlantState::at_rest(r0.q[0], r0.q[1]),
+            integrators: Vector2::zeros(),
+            observer: FrictionObserver::default(),
+            v_applied: Vector2::zeros(),
+            v_next: None,
+            torque_guess: Vector2::zeros(),
+            held_compensation: Vector2::zeros(),
+            held_feedback: Vector2::zeros(),
+            applied_torque: Vector2::zeros(),
+            disturbance: None,
+            traces: Traces::default(),
+            stats: ErrorStats::default(),
+            divergence: None,
+        };
+        sim.applied_torque = sim.torque_at(&sim.controller_state());
+        sim.record_trace();
+        Ok(sim)
+    }
+
+    /// Starts over from rest with the current (and any pending) configuration.
+    pub fn reset(&mut self) -> Result<(), Error> {
+        let config = self.pending.take().map(|(c, _)| c).unwrap_or(self.config);
+        *self = Self::new(config)?;
+        Ok(())
+    }
+
+    /// The configuration in force.
+    pub fn config(&self) -> &SimulationConfig {
+        &self.config
+    }
+
+    /// Validates `config` and schedules it for the next sampling instant.
+    pub fn set_config(&mut self, config: SimulationConfig) -> Result<(), Error> {
+        let derived = Derived::new(&config)?;
+        self.pending = Some((config, derived));
+        Ok(())
+    }
+
+    /// The preliminary feedback gain in force.
+    pub fn feedback_gain(&self) -> &FeedbackGain {
+        &self.derived.gain
+    }
+
+    /// Adds `torque` (T1, T2, N m) to the applied torques for the next `duration` seconds.
+    pub fn apply_disturbance(&mut self, torque: [f64; 2], duration: f64) -> Result<(), Error> {
+        if !(duration.is_finite() && duration >= 0.0) {
+            return Err(Error::InvalidDuration(duration));
+        }
+        if !torque.iter().all(|v| v.is_finite()) {
+            return Err(Error::Config(ConfigError::new("disturbance torque", torque[0] + torque[1], "must be finite")));
+        }
+        self.disturbance = Some((Vector2::from(torque), self.time + duration));
+        Ok(())
+    }
+
+    /// Simulated time, s.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// True once the run has diverged; further `advance` calls do nothing.
+    pub fn is_finished(&self) -> bool {
+        self.divergence.is_some()
+    }
+
+    /// Advances the simulation by `dt` seconds (to the nearest plant step), stopping early if
+    /// it diverges.
+    pub fn advance(&mut self, dt: f64) -> Result<(), Error> {
+        if !(dt.is_finite() && (0.0..=1e6).contains(&dt)) {
+            return Err(Error::InvalidDuration(dt));
+        }
+        let target = self.time + dt;
+        while self.divergence.is_none() && self.time + 0.5 * self.derived.plant_step <= target {
+            self.step();
+        }
+        Ok(())
+    }
+
+    /// Advances to the next sampling instant (at least one plant step).
+    pub fn advance_one_period(&mut self) {
+        loop {
+            if self.divergence.is_some() {
+                return;
+            }
+            self.step();
+            if self.step_in_period == 0 {
+                return;
+            }
+        }
+    }
+
+    /// The measured controller state X = (q, q̇, w).
+    fn controller_state(&self) -> StateVector {
+        controller_vector(&self.plant_state.q, &self.plant_state.qdot, &self.integrators)
+    }
+
+    /// The applied torque for controller state `x` at the current instant.
+    fn torque_at(&self, x: &StateVector) -> Vector2<f64> {
+        let feedback = match self.config.inner_loop {
+            InnerLoop::Continuous => self.derived.gain * x,
+            InnerLoop::Sampled => self.held_feedback,
+        };
+        let compensation = match self.config.friction_compensation {
+            FrictionCompensation::Continuous => self.observer.estimate,
+            FrictionCompensation::Held => self.held_compensation,
+            FrictionCompensation::Off => Vector2::zeros(),
+        };
+        let poke = match self.disturbance {
+            Some((torque, until)) if self.time < until => torque,
+            _ => Vector2::zeros(),
+        };
+        self.v_applied + feedback + compensation + poke
+    }
+
+    /// The work of a sampling instant: new configuration, new v, new prediction.
+    fn sample(&mut self) {
+        if let Some((config, derived)) = self.pending.take() {
+            if config.controller.sampling_period != self.config.controller.sampling_period {
+                self.period_origin = self.time;
+                self.periods_since_origin = 0;
+            }
+            if config != self.config {
+                self.stats.fit_from = self.time;
+            }
+            self.config = config;
+            self.derived = derived;
+        }
+        let x = self.controller_state();
+        self.v_applied = self.v_next.take().unwrap_or_else(Vector2::zeros);
+        self.held_compensation = self.observer.estimate;
+        self.held_feedback = self.derived.gain * x;
+        match self.derived.predictor.predict(&self.derived.reference, self.time, &x, &self.torque_guess) {
+            Ok(p) => {
+                self.torque_guess = p.torque;
+                self.v_next = Some(p.torque - self.derived.gain * p.state);
+            }
+            Err(_) => self.divergence = Some((self.time, DivergenceReason::NewtonFailure)),
+        }
+    }
+
+    /// One plant step: the plant's own split step with the integrators w riding along, the
+    /// observer advanced in the same two half steps.
+    fn step(&mut self) {
+        if self.step_in_period == 0 {
+            self.sample();
+            if self.divergence.is_some() {
+                return;
+            }
+        }
+        let d = self.derived;
+        let h = d.plant_step;
+        let p = &d.plant.params;
+        let t0 = self.time;
+
+        self.observer.advance(p, self.plant_state.qdot[2], self.plant_state.qdot[1], 0.5 * h);
+        let alpha = self.config.controller.alpha;
+        let mut w = self.integrators;
+        let this = &*self;
+        let mut plant_state = this.plant_state;
+        d.plant.step_with(
+            &mut plant_state,
+            &mut w,
+            h,
+            |_, q, v, w, _| this.torque_at(&controller_vector(q, v, w)),
+            // ẇ_i = α_i³ (q_i − q_di), eq. (4.2).
+            |s, q, _| {
+                let qd = d.reference.sample(t0 + s).q;
+                Vector2::new(alpha[0].powi(3) * (q[0] - qd[0]), alpha[1].powi(3) * (q[1] - qd[1]))
+            },
+        );
+        self.plant_state = plant_state;
+        self.integrators = w;
+        self.observer.advance(p, self.plant_state.qdot[2], self.plant_state.qdot[1], 0.5 * h);
+
+        self.step_in_period += 1;
+        self.steps_taken += 1;
+        if self.step_in_period == d.steps_per_period {
+            self.step_in_period = 0;
+            self.periods_since_origin += 1;
+            self.period_start =
+                self.period_origin + self.periods_since_origin as f64 * self.config.controller.sampling_period;
+            self.time = self.period_start;
+        } else {
+            self.time = self.period_start + self.step_in_period as f64 * h;
+        }
+
+        self.applied_torque = self.torque_at(&self.controller_state());
+        let r = d.reference.sample(self.time);
+        let e = Vector2::new(self.plant_state.q[0] - r.q[0], self.plant_state.q[1] - r.q[1]);
+        if !self.plant_state.is_finite() || !self.integrators.iter().all(|v| v.is_finite()) {
+            self.divergence = Some((self.time, DivergenceReason::NonFinite));
+        } else if e.amax() > self.config.divergence_bound {
+            self.divergence = Some((self.time, DivergenceReason::ErrorBound));
+        } else {
+            let cycle = self.config.reference.repeat_hold.map(|hold| 2.0 * (self.config.reference.slew_time + hold));
+            self.stats.record(self.time, &e, &self.applied_torque, d.reference.is_moving(self.time), cycle);
+        }
+        if self.steps_taken.is_multiple_of(d.output_every as u64) || self.divergence.is_some() {
+            self.record_trace();
+        }
+    }
+
+    fn record_trace(&mut self) {
+        let s = self.snapshot();
+        self.traces.push(&s);
+    }
+
+    /// The newest state.
+    pub fn snapshot(&self) -> Snapshot {
+        let r = self.derived.reference.sample(self.time);
+        let s = &self.plant_state;
+        Snapshot {
+            time: self.time,
+            q: [s.q[0], s.q[1], s.q[2]],
+            qdot: [s.qdot[0], s.qdot[1], s.qdot[2]],
+            qd: [r.q[0], r.q[1]],
+            error: [s.q[0] - r.q[0], s.q[1] - r.q[1]],
+            torque: [self.applied_torque[0], self.applied_torque[1]],
+            v: [self.v_applied[0], self.v_applied[1]],
+            xf_hat: [self.observer.estimate[0], self.observer.estimate[1]],
+            w: [self.integrators[0], self.integrators[1]],
+        }
+    }
+
+    /// The plant's full physical state (including the true friction torques).
+    pub fn plant_state(&self) -> &PlantState {
+        &self.plant_state
+    }
+
+    /// The recorded time series.
+    pub fn traces(&self) -> &Traces {
+        &self.traces
+    }
+
+    /// Mutable access to the traces (e.g. to bound their length in a live view).
+    pub fn traces_mut(&mut self) -> &mut Traces {
+        &mut self.traces
+    }
+
+    /// Metrics and verdict so far.
+    pub fn metrics(&self) -> Metrics {
+        self.stats.metrics(self.time, self.config.reference.slew_time, self.divergence)
+    }
+}
+
+/// X = (q, q̇, w) from its parts.
+#[inline]
+fn controller_vector(q: &Vector3<f64>, v: &Vector3<f64>, w: &Vector2<f64>) -> StateVector {
+    StateVector::from_column_slice(&[q[0], q[1], q[2], v[0], v[1], v[2], w[0], w[1]])
+}

@@ -1,0 +1,20 @@
+//! The controller and the closed loop: the predictive controller of eqs. (2.3)–(2.4), the
+//! stabilized DAE linearized and its δ → 0 limit, the preliminary feedback K_pr (paper and LQ),
+//! and the sampled loop of Fig. 2.1 that records traces, metrics and a verdict.
+//!
+//! Module graph (no cycles): `config` ← `predictive` ← `linear` ← `feedback` ← `closed_loop`
+//! (with `traces` and `metrics`). Architecture invariant: `control` knows nothing of the
+//! stability analysis of the sampled loop, the session or the page.
+
+pub mod closed_loop;
+pub mod config;
+pub mod feedback;
+pub mod linear;
+pub mod metrics;
+pub mod predictive;
+pub mod traces;
+
+pub use closed_loop::{simulate, ClosedLoop, RunReport};
+pub use config::{ControllerParameters, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
+pub use metrics::{DivergenceReason, Metrics, Verdict};
+pub use traces::{Column, Snapshot, Traces};

@@ -1,0 +1,173 @@
+//! Colours: the [`Color`] type, the [`palette`] of every picture (canvas and SVG), and the
+//! diverging ramp of the spectral radius ρ ([`rho_color`]), written once.
+
+/// A colour: sRGB-encoded components and straight alpha.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Color(pub [f32; 4]);
+
+impl Color {
+    /// An opaque colour from `0xRRGGBB`.
+    pub const fn hex(rgb: u32) -> Self {
+        let r = ((rgb >> 16) & 0xff) as f32 / 255.0;
+        let g = ((rgb >> 8) & 0xff) as f32 / 255.0;
+        let b = (rgb & 0xff) as f32 / 255.0;
+        Color([r, g, b, 1.0])
+    }
+
+    /// The same colour with opacity `alpha` (0 transparent, 1 opaque).
+    pub const fn with_alpha(self, alpha: f32) -> Self {
+        let [r, g, b, _] = self.0;
+        Color([r, g, b, alpha])
+    }
+
+    /// Linear interpolation between `self` (f = 0) and `other` (f = 1); f is clamped to [0, 1].
+    pub fn lerp(self, other: Color, f: f64) -> Color {
+        let f = if f.is_nan() { 0.0 } else { f.clamp(0.0, 1.0) as f32 };
+        let mut c = self.0;
+        for (a, b) in c.iter_mut().zip(other.0) {
+            *a += (b - *a) * f;
+        }
+        Color(c)
+    }
+
+    /// The colour as a CSS string: `#rrggbb`, or `rgba(r, g, b, a)` when not opaque.
+    pub fn css(self) -> String {
+        let [r, g, b, a] = self.0;
+        let byte = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
+        if a >= 1.0 {
+            format!("#{:02x}{:02x}{:02x}", byte(r), byte(g), byte(b))
+        } else {
+            format!("rgba({}, {}, {}, {})", byte(r), byte(g), byte(b), (a.clamp(0.0, 1.0) * 1000.0).round() / 1000.0)
+        }
+    }
+
+    /// Components as the wgpu clear colour wants them (f64).
+    pub fn to_f64(self) -> [f64; 4] {
+        self.0.map(f64::from)
+    }
+}
+
+/// The colours of the picture: a calm light background, readable on a projector.
+pub mod palette {
+    use super::Color;
+
+    /// Canvas background (behind the panels).
+    pub const BACKGROUND: Color = Color::hex(0xf3f1ec);
+    /// Panel fill.
+    pub const PANEL: Color = Color::hex(0xffffff);
+    /// Panel frame.
+    pub const FRAME: Color = Color::hex(0xb9b6ae);
+    /// Grid lines.
+    pub const GRID: Color = Color::hex(0xe4e1da);
+    /// Zero line and the arm's 0-rad direction.
+    pub const AXIS: Color = Color::hex(0x9c988f);
+    /// Shading of the time intervals where the reference moves.
+    pub const MOTION: Color = Color::hex(0xfbf0d2);
+
+    /// Link 1: dark blue.
+    pub const LINK1: Color = Color::hex(0x1d3f8c);
+    /// Link 2: teal.
+    pub const LINK2: Color = Color::hex(0x13958f);
+    /// The elbow joint.
+    pub const JOINT: Color = Color::hex(0x2b2b33);
+    /// The reference arm: translucent grey.
+    pub const GHOST: Color = Color::hex(0x6f6f6f).with_alpha(0.33);
+
+    /// Motor disc, its edge and its angle marker: orange.
+    pub const MOTOR: Color = Color::hex(0xf7c98f);
+    pub const MOTOR_EDGE: Color = Color::hex(0xd9731a);
+    pub const MOTOR_MARKER: Color = Color::hex(0xa34700);
+    /// The spring, relaxed and fully stretched (the colour blends with the drawn twist).
+    pub const SPRING_RELAXED: Color = Color::hex(0xe98a1e);
+    pub const SPRING_STRETCHED: Color = Color::hex(0xc42a1c);
+    /// The circle the spring coils along.
+    pub const SPRING_TRACK: Color = Color::hex(0xe98a1e).with_alpha(0.25);
+
+    /// e1: blue; e2: red-orange.
+    pub const ERROR1: Color = Color::hex(0x1f5fc4);
+    pub const ERROR2: Color = Color::hex(0xe0521b);
+    /// Torques, with the colours of their links' errors.
+    pub const TORQUE1: Color = ERROR1;
+    pub const TORQUE2: Color = ERROR2;
+
+    /// Run B of a comparison: one violet hue for its curves, poles and map marker ...
+    pub const RUN_B: Color = Color::hex(0x8a3cc2);
+    /// ... and a lighter violet for its T2 and its A4-without-feedback rings.
+    pub const RUN_B_LIGHT: Color = Color::hex(0xc39be0);
+
+    /// Pole plot: loop poles with Re s ≤ 0 (dark) and Re s > 0 (red).
+    pub const POLE_STABLE: Color = Color::hex(0x24242c);
+    pub const POLE_UNSTABLE: Color = Color::hex(0xd7191c);
+    /// The amber halo behind the flexible pair.
+    pub const POLE_HALO: Color = Color::hex(0xf5b301).with_alpha(0.45);
+    /// A4 without preliminary feedback (rings) and with it (diamonds).
+    pub const A4_OPEN: Color = Color::hex(0x7d7670);
+    pub const A4_FEEDBACK: Color = Color::hex(0x168a45);
+    /// The unstable half-plane Re s > 0, faintly tinted.
+    pub const UNSTABLE_REGION: Color = Color::hex(0xfcecea);
+    /// The imaginary axis Re s = 0, emphasised.
+    pub const IMAGINARY_AXIS: Color = Color::hex(0x3b3b44);
+
+    /// Stability map: ρ = 1 (near white), stable shades towards ρ = 0.8, unstable towards 1.2.
+    pub const MAP_NEUTRAL: Color = Color::hex(0xf7f6f2);
+    pub const MAP_STABLE_MID: Color = Color::hex(0x8dbfdf);
+    pub const MAP_STABLE_FAR: Color = Color::hex(0x1b5599);
+    pub const MAP_UNSTABLE_MID: Color = Color::hex(0xf4a37c);
+    pub const MAP_UNSTABLE_FAR: Color = Color::hex(0xae1c24);
+    /// Cells not computed yet.
+    pub const MAP_PENDING: Color = Color::hex(0xdcdad5);
+    /// Faint grid lines over the map cells.
+    pub const MAP_GRID: Color = Color::hex(0xffffff).with_alpha(0.45);
+    /// The ρ = 1 contour and the white halo under it.
+    pub const CONTOUR: Color = Color::hex(0x141418);
+    pub const CONTOUR_HALO: Color = Color::hex(0xffffff).with_alpha(0.7);
+    /// Run A's marker on the maps, and the white halo that keeps markers readable on dark cells.
+    pub const MAP_MARKER: Color = Color::hex(0x101014);
+    pub const MARKER_HALO: Color = Color::hex(0xffffff).with_alpha(0.9);
+}
+
+/// ρ is shown between these bounds; beyond them the colour saturates.
+pub const RHO_SHOWN: [f64; 2] = [0.8, 1.2];
+
+/// Where ρ sits on the colour ramp, in [0, 1]: ½ at ρ = 1, 0 at ρ ≤ 0.8, 1 at ρ ≥ 1.2, and in
+/// between ½ ± ½ √(|ρ − 1| / 0.2). The square root keeps ρ = 0.98 and 1.02 visibly coloured.
+/// NaN for NaN.
+pub fn rho_position(rho: f64) -> f64 {
+    if rho.is_nan() {
+        return f64::NAN;
+    }
+    let (lo, hi) = (RHO_SHOWN[0], RHO_SHOWN[1]);
+    let u = if rho < 1.0 { (rho - 1.0) / (1.0 - lo) } else { (rho - 1.0) / (hi - 1.0) };
+    let t = u.abs().min(1.0).sqrt();
+    if rho < 1.0 {
+        0.5 - 0.5 * t
+    } else {
+        0.5 + 0.5 * t
+    }
+}
+
+/// The ramp at position `p` in [0, 1]: dark blue (stable) through near white (ρ = 1) to dark
+/// red (unstable).
+pub fn ramp_color(p: f64) -> Color {
+    let p = if p.is_finite() { p.clamp(0.0, 1.0) } else { 0.5 };
+    let t = (2.0 * p - 1.0).abs();
+    let (mid, far) = if p < 0.5 {
+        (palette::MAP_STABLE_MID, palette::MAP_STABLE_FAR)
+    } else {
+        (palette::MAP_UNSTABLE_MID, palette::MAP_UNSTABLE_FAR)
+    };
+    if t <= 0.5 {
+        palette::MAP_NEUTRAL.lerp(mid, t * 2.0)
+    } else {
+        mid.lerp(far, (t - 0.5) * 2.0)
+    }
+}
+
+/// The colour of ρ on the maps: [`ramp_color`] at [`rho_position`]; light grey for NaN (not
+/// computed yet).
+pub fn rho_color(rho: f64) -> Color {
+    if rho.is_nan() {
+        return palette::MAP_PENDING;
+    }
+    ramp_color(rho_position(rho))
+}

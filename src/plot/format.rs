@@ -1,0 +1,170 @@
+//! Numbers as people read them: tick labels, readouts and figures all format through here, with
+//! a real minus sign (−) and no trailing zeros.
+
+/// Replaces a leading ASCII hyphen (and the one of an exponent) by the minus sign −.
+pub fn minus(s: &str) -> String {
+    s.replace('-', "−")
+}
+
+/// Trims trailing zeros of a decimal (and the point if nothing follows it).
+fn trim(s: &str) -> &str {
+    if s.contains('.') && !s.contains('e') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s
+    }
+}
+
+/// A number alone: up to six significant digits, trailing zeros trimmed, exponent notation
+/// below 1e-4 and from 1e6 on ("0.002", "−1.5", "2e−7", "250").
+pub fn number(v: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    if !v.is_finite() {
+        return if v.is_nan() {
+            "—".into()
+        } else if v > 0.0 {
+            "∞".into()
+        } else {
+            "−∞".into()
+        };
+    }
+    let e = v.abs().log10().floor() as i32;
+    if (-4..=5).contains(&e) {
+        let s = format!("{:.*}", (5 - e).clamp(0, 12) as usize, v);
+        minus(trim(&s))
+    } else {
+        let m = v / 10f64.powi(e);
+        let m = format!("{m:.3}");
+        minus(&format!("{}e{e}", trim(&m)))
+    }
+}
+
+/// `digits` significant digits without an exponent for ordinary magnitudes (1e-3 ≤ |v| < 1e6),
+/// else in exponent notation: "2.64", "29.6", "3.34e−4". "—" for a missing value.
+pub fn sig(v: f64, digits: usize) -> String {
+    if !v.is_finite() {
+        return "—".into();
+    }
+    let a = v.abs();
+    if a != 0.0 && !(1e-3..1e6).contains(&a) {
+        return sci(v, digits);
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let e = a.log10().floor() as i32;
+    let decimals = (digits as i32 - 1 - e).max(0) as usize;
+    minus(&format!("{v:.decimals$}"))
+}
+
+/// `digits` significant digits in exponent notation: "3.34e−4". "—" for a missing value.
+pub fn sci(v: f64, digits: usize) -> String {
+    if !v.is_finite() {
+        return "—".into();
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let s = format!("{:.*e}", digits.saturating_sub(1), v);
+    minus(&s.replace("e+", "e"))
+}
+
+/// `digits` significant digits, trailing zeros trimmed ("0.0349", "0.1", "2.09").
+pub fn sig_trim(v: f64, digits: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return number(v);
+    }
+    let decimals = (digits as i32 - 1 - v.abs().log10().floor() as i32).max(0) as usize;
+    minus(trim(&format!("{v:.decimals$}")))
+}
+
+/// Labels for a set of ticks of a linear axis: fixed decimals enough to tell neighbours apart,
+/// or the fewest exponent digits that name each tick exactly when the values are tiny or huge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TickFormat {
+    exponent: bool,
+    decimals: usize,
+    /// A tick this close to zero reads "0".
+    zero: f64,
+}
+
+impl TickFormat {
+    /// The format for these ticks (evenly spaced, as [`super::ticks::Ticks`] makes them).
+    pub fn for_ticks(ticks: &[f64]) -> TickFormat {
+        let max_abs = ticks.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let mut step = ticks.windows(2).map(|w| (w[1] - w[0]).abs()).fold(f64::INFINITY, f64::min);
+        if !step.is_finite() || step == 0.0 {
+            step = if max_abs > 0.0 { max_abs } else { 1.0 };
+        }
+        let exponent = max_abs != 0.0 && !(1e-2..1e5).contains(&max_abs);
+        let decimals = (-(step.log10() + 1e-9).floor()).clamp(0.0, 6.0) as usize;
+        TickFormat { exponent, decimals, zero: step * 1e-6 }
+    }
+
+    /// One tick's label.
+    pub fn format(&self, v: f64) -> String {
+        if v.abs() < self.zero {
+            return "0".into();
+        }
+        if self.exponent {
+            // The fewest mantissa digits that still name the tick: 5e−4, 1e−3, 2.5e−4.
+            for d in 0..=6 {
+                let text = format!("{v:.d$e}");
+                if text.parse::<f64>().is_ok_and(|back| (back - v).abs() <= self.zero) {
+                    return minus(&text);
+                }
+            }
+            return minus(&format!("{v:.6e}"));
+        }
+        let s = format!("{v:.*}", self.decimals);
+        if s.parse::<f64>() == Ok(0.0) {
+            "0".into()
+        } else {
+            minus(&s)
+        }
+    }
+}
+
+/// A log-axis label: three significant digits, no exponent, no trailing zeros ("0.002", "5").
+pub fn log_tick(v: f64) -> String {
+    sig_trim(v, 3)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_read_cleanly() {
+        assert_eq!(number(0.002), "0.002");
+        assert_eq!(number(-1.5), "−1.5");
+        assert_eq!(number(2e-7), "2e−7");
+        assert_eq!(number(250.0), "250");
+        assert_eq!(sig(2.639, 3), "2.64");
+        assert_eq!(sig(-29.58, 4), "−29.58");
+        assert_eq!(sig(3.34e-4, 3), "3.34e−4");
+        assert_eq!(sci(0.000334, 3), "3.34e−4");
+        assert_eq!(sig_trim(0.034912, 3), "0.0349");
+        assert_eq!(sig_trim(0.1, 3), "0.1");
+        assert_eq!(log_tick(0.002), "0.002");
+        assert_eq!(log_tick(5.0), "5");
+    }
+
+    #[test]
+    fn tick_labels_tell_neighbours_apart() {
+        let f = TickFormat::for_ticks(&[-0.2, 0.0, 0.2, 0.4]);
+        assert_eq!(f.format(0.4), "0.4");
+        assert_eq!(f.format(-0.2), "−0.2");
+        assert_eq!(f.format(1e-17), "0");
+        let f = TickFormat::for_ticks(&[0.0, 0.5, 1.0, 1.5]);
+        assert_eq!(f.format(1.0), "1.0");
+        let f = TickFormat::for_ticks(&[-5e-4, 0.0, 5e-4]);
+        assert_eq!(f.format(5e-4), "5e−4");
+        let f = TickFormat::for_ticks(&[0.0, 2.5e-4, 5e-4]);
+        assert_eq!(f.format(2.5e-4), "2.5e−4");
+        let f = TickFormat::for_ticks(&[10.0, 20.0, 30.0]);
+        assert_eq!(f.format(20.0), "20");
+    }
+}

@@ -1,0 +1,728 @@
+//! Every user-settable parameter, once: its key (the same word in the URL, on the command line as
+//! `--key` with `-` for `_`, and in JSON), label, symbol, unit, allowed range and why, the span of
+//! the page's control and its scale, the default, and a help text.
+//!
+//! The page builds its controls, URL parsing and notices from [`PARAMS`]; the CLI builds its flags
+//! and help from it; the core's validation checks its numbers against the same [`NumberSpec`]s, so
+//! a range is written in one place. This module is data and the checks on single values; how the
+//! values map onto a configuration lives in [`crate::session::settings`].
+
+use crate::error::{ConfigError, Error, ParseError};
+
+/// How a numeric control moves between its ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Scale {
+    Linear,
+    /// Logarithmic: equal steps multiply the value (δ, α, speed span decades).
+    Log,
+}
+
+/// A number: its hard limits, the span of the page's control, scale, precision and default.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NumberSpec {
+    /// Smallest value accepted; inclusive only if `min_inclusive`.
+    pub min: f64,
+    pub min_inclusive: bool,
+    /// Largest value accepted (inclusive); `f64::INFINITY` for none.
+    pub max: f64,
+    /// The allowed range in words, when the plain "must be > 0 and at most …" would not say why.
+    pub allowed: Option<&'static str>,
+    /// The span of the page's control (a part of the limits).
+    pub control: [f64; 2],
+    pub scale: Scale,
+    /// Significant digits a control position is rounded to (0.0347 s, not 0.034712…).
+    pub digits: u32,
+    /// Whole numbers only.
+    pub integer: bool,
+    pub default: f64,
+}
+
+impl NumberSpec {
+    /// The allowed range in words, as `--help` and notices say it.
+    pub fn allowed_text(&self, unit: &str) -> String {
+        if let Some(text) = self.allowed {
+            return text.to_string();
+        }
+        if self.max.is_finite() {
+            format!("{} and at most {}{}", self.low_text(unit), self.max, unit_suffix(unit))
+        } else {
+            self.low_text(unit)
+        }
+    }
+
+    /// What `v` violates, in words: "must be > 0", "must be at most 10 s".
+    pub fn violation_text(&self, v: f64, unit: &str) -> String {
+        if let Some(text) = self.allowed {
+            return text.to_string();
+        }
+        if !v.is_finite() {
+            "must be a finite number".to_string()
+        } else if v > self.max {
+            format!("must be at most {}{}", self.max, unit_suffix(unit))
+        } else if self.integer && v.fract() != 0.0 {
+            "must be a whole number".to_string()
+        } else {
+            self.low_text(unit)
+        }
+    }
+
+    fn low_text(&self, unit: &str) -> String {
+        let op = if self.min_inclusive { "≥" } else { ">" };
+        let unit = if self.min == 0.0 { "" } else { unit };
+        format!("must be {op} {}{}", self.min, unit_suffix(unit))
+    }
+
+    /// True if `v` lies within the hard limits.
+    pub fn admits(&self, v: f64) -> bool {
+        v.is_finite()
+            && (v > self.min || (self.min_inclusive && v == self.min))
+            && v <= self.max
+            && (!self.integer || v.fract() == 0.0)
+    }
+
+    /// True if `v` lies within the control's span (with a little slack for rounded text).
+    pub fn in_control(&self, v: f64) -> bool {
+        v.is_finite() && v >= self.control[0] * (1.0 - 1e-9) && v <= self.control[1] * (1.0 + 1e-9)
+    }
+
+    /// The control position in [0, 1] of `v` (clamped to the control's span).
+    pub fn position(&self, v: f64) -> f64 {
+        let [lo, hi] = self.control;
+        let f = match self.scale {
+            Scale::Log => (v / lo).ln() / (hi / lo).ln(),
+            Scale::Linear => (v - lo) / (hi - lo),
+        };
+        if f.is_finite() {
+            f.clamp(0.0, 1.0)
+        } else {
+            0.0
+        }
+    }
+
+    /// The value at control position `f` in [0, 1], rounded to `digits` significant digits (whole
+    /// numbers for integer parameters) and kept inside the span.
+    pub fn value_at(&self, f: f64) -> f64 {
+        let [lo, hi] = self.control;
+        let f = if f.is_finite() { f.clamp(0.0, 1.0) } else { 0.0 };
+        let raw = match self.scale {
+            Scale::Log => lo * (hi / lo).powf(f),
+            Scale::Linear => lo + f * (hi - lo),
+        };
+        let v = if self.integer { raw.round() } else { round_significant(raw, self.digits) };
+        v.clamp(lo, hi)
+    }
+}
+
+fn unit_suffix(unit: &str) -> String {
+    if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    }
+}
+
+/// `v` rounded to `digits` significant digits.
+pub fn round_significant(v: f64, digits: u32) -> f64 {
+    if v == 0.0 || !v.is_finite() {
+        return v;
+    }
+    // Through the decimal text, so 0.0347 is the double nearest to 0.0347.
+    format!("{:.*e}", digits.saturating_sub(1) as usize, v).parse().unwrap_or(v)
+}
+
+/// One option of a choice.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Choice {
+    /// The word in URLs, on the command line and in JSON.
+    pub value: &'static str,
+    /// What the page's selector shows.
+    pub label: &'static str,
+}
+
+/// What kind of value a parameter takes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind {
+    Number(NumberSpec),
+    Choice {
+        options: &'static [Choice],
+        default: &'static str,
+    },
+    /// On or off: `1`/`0` in URLs and state strings, a bare `--flag` on the command line.
+    Switch {
+        default: bool,
+    },
+}
+
+/// Where a parameter can be set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Scope {
+    /// A setting of a run (run A on the page): page, URL, state string and every CLI command that
+    /// runs or analyses the loop.
+    Run,
+    /// Run B of the page's comparison (URL and page only).
+    Compare,
+    /// How the page plays (URL and page only).
+    Page,
+    /// A command-line option of a run (not a control on the page).
+    Cli,
+}
+
+/// One user-settable parameter.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Param {
+    /// URL key, JSON field, and the CLI flag `--key` (with `-` for `_`).
+    pub key: &'static str,
+    /// Label on the page, e.g. "Sampling period δ".
+    pub label: &'static str,
+    /// The paper's symbol, e.g. "δ" (empty if none).
+    pub symbol: &'static str,
+    /// SI unit ("s", "1/s", "" for none).
+    pub unit: &'static str,
+    /// The name error messages use, e.g. "sampling_period (δ)".
+    pub name: &'static str,
+    pub kind: Kind,
+    pub scope: Scope,
+    /// One or two sentences for tooltips and `--help`.
+    pub help: &'static str,
+}
+
+/// A parsed value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Value {
+    Number(f64),
+    Choice(&'static str),
+    Switch(bool),
+}
+
+impl Value {
+    /// The value as the state string writes it.
+    pub fn text(&self) -> String {
+        match self {
+            Value::Number(v) => format_number(*v),
+            Value::Choice(s) => (*s).to_string(),
+            Value::Switch(b) => if *b { "1" } else { "0" }.to_string(),
+        }
+    }
+
+    pub fn number(&self) -> Option<f64> {
+        match self {
+            Value::Number(v) => Some(*v),
+            _ => None,
+        }
+    }
+
+    pub fn choice(&self) -> Option<&'static str> {
+        match self {
+            Value::Choice(s) => Some(s),
+            _ => None,
+        }
+    }
+
+    pub fn switch(&self) -> Option<bool> {
+        match self {
+            Value::Switch(b) => Some(*b),
+            _ => None,
+        }
+    }
+}
+
+/// The shortest decimal text that reads back as `v` (0.01, not 0.010000000000000000208).
+pub fn format_number(v: f64) -> String {
+    let s = format!("{v}");
+    if s.len() <= 12 {
+        return s;
+    }
+    for digits in 1..=17 {
+        let t = format!("{:.*e}", digits - 1, v);
+        if t.parse::<f64>().ok() == Some(v) {
+            let short: f64 = t.parse().unwrap_or(v);
+            let plain = format!("{short}");
+            return if plain.len() <= t.len() + 2 { plain } else { t };
+        }
+    }
+    s
+}
+
+impl Param {
+    /// The number spec, for numeric parameters.
+    pub fn number(&self) -> Option<&NumberSpec> {
+        match &self.kind {
+            Kind::Number(n) => Some(n),
+            _ => None,
+        }
+    }
+
+    /// The default value.
+    pub fn default_value(&self) -> Value {
+        match self.kind {
+            Kind::Number(n) => Value::Number(n.default),
+            Kind::Choice { default, .. } => Value::Choice(default),
+            Kind::Switch { default } => Value::Switch(default),
+        }
+    }
+
+    /// The command-line flag, `--eps-ratio` for `eps_ratio`.
+    pub fn flag(&self) -> String {
+        format!("--{}", self.key.replace('_', "-"))
+    }
+
+    /// The allowed values in words: "0.002–0.25 s (logarithmic)", "off | paper | lq", "1 | 0".
+    pub fn allowed(&self, control: bool) -> String {
+        match &self.kind {
+            Kind::Number(n) if control => {
+                let unit = if self.unit.is_empty() { String::new() } else { format!(" {}", self.unit) };
+                format!("{}–{}{unit}", format_number(n.control[0]), format_number(n.control[1]))
+            }
+            Kind::Number(n) => n.allowed_text(self.unit),
+            Kind::Choice { options, .. } => options.iter().map(|o| o.value).collect::<Vec<_>>().join(" | "),
+            Kind::Switch { .. } => "1 | 0".to_string(),
+        }
+    }
+
+    /// Checks a number against the hard limits: the error names the parameter and the range.
+    pub fn check(&self, v: f64) -> Result<f64, ConfigError> {
+        let Kind::Number(n) = &self.kind else {
+            return Err(ConfigError::new(self.name, v, "is not a number parameter"));
+        };
+        if !v.is_finite() {
+            return Err(ConfigError::new(self.name, v, "must be a finite number"));
+        }
+        if n.admits(v) {
+            Ok(v)
+        } else {
+            Err(ConfigError::new(self.name, v, &n.violation_text(v, self.unit)))
+        }
+    }
+
+    /// Reads `text` as a value of this parameter. With `control` a number must also lie within
+    /// the page control's span (URL values); otherwise within the hard limits (command line).
+    pub fn parse(&self, text: &str, control: bool) -> Result<Value, Error> {
+        let t = text.trim();
+        let parse_error = |expected: String| ParseError { key: self.key.into(), text: text.into(), expected };
+        match &self.kind {
+            Kind::Number(n) => {
+                let what = if n.integer { "a whole number" } else { "a number" };
+                // Rust would also read "inf" and "NaN"; a user never means those.
+                let v: f64 = t
+                    .parse()
+                    .ok()
+                    .filter(|v: &f64| v.is_finite())
+                    .ok_or_else(|| parse_error(format!("{what} ({})", self.allowed(control))))?;
+                if control && !n.in_control(v) {
+                    return Err(parse_error(self.allowed(true)).into());
+                }
+                if n.integer && v.fract() != 0.0 {
+                    return Err(parse_error(format!("a whole number ({})", self.allowed(control))).into());
+                }
+                Ok(Value::Number(self.check(v)?))
+            }
+            Kind::Choice { options, .. } => options
+                .iter()
+                .find(|o| o.value == t)
+                .map(|o| Value::Choice(o.value))
+                .ok_or_else(|| parse_error(format!("one of {}", self.allowed(control))).into()),
+            Kind::Switch { .. } => match t {
+                "1" | "true" | "on" | "yes" => Ok(Value::Switch(true)),
+                "0" | "false" | "off" | "no" => Ok(Value::Switch(false)),
+                _ => Err(parse_error("1 or 0".into()).into()),
+            },
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------------- the table
+
+/// The numbers of δ (also the default map and window range).
+pub const DELTA_SPEC: NumberSpec = NumberSpec {
+    min: 0.0,
+    min_inclusive: false,
+    max: 10.0,
+    allowed: None,
+    control: [0.002, 0.25],
+    scale: Scale::Log,
+    digits: 3,
+    integer: false,
+    default: 0.01,
+};
+
+/// The numbers of α1, α2 (also the default map range).
+pub const ALPHA_SPEC: NumberSpec = NumberSpec {
+    min: 0.0,
+    min_inclusive: false,
+    max: 1000.0,
+    allowed: None,
+    control: [0.1, 5.0],
+    scale: Scale::Log,
+    digits: 3,
+    integer: false,
+    default: 2.0,
+};
+
+const PF_OPTIONS: &[Choice] = &[
+    Choice { value: "off", label: "off (original controller)" },
+    Choice { value: "paper", label: "paper K_pr" },
+    Choice { value: "lq", label: "LQ design" },
+];
+
+/// δ, the sampling period.
+pub const DELTA: Param = Param {
+    key: "delta",
+    label: "Sampling period δ",
+    symbol: "δ",
+    unit: "s",
+    name: "sampling_period (δ)",
+    kind: Kind::Number(DELTA_SPEC),
+    scope: Scope::Run,
+    help: "The controller measures the arm every δ seconds and applies the torque it predicted one period later, \
+           held for δ.",
+};
+
+/// α1 = α2 at once (a shorthand on the command line and in URLs).
+pub const ALPHA: Param = Param {
+    key: "alpha",
+    label: "Error decay rate α (both links)",
+    symbol: "α",
+    unit: "1/s",
+    name: "alpha (α1 = α2)",
+    kind: Kind::Number(ALPHA_SPEC),
+    scope: Scope::Run,
+    help: "Sets α1 = α2: each link error is asked to obey (d/dt + α)³ e = 0, three poles at −α.",
+};
+
+/// α1, the error decay rate of link 1.
+pub const ALPHA1: Param = Param {
+    key: "alpha1",
+    label: "Error decay rate α1 (link 1)",
+    symbol: "α1",
+    unit: "1/s",
+    name: "alpha1 (α1)",
+    kind: Kind::Number(ALPHA_SPEC),
+    scope: Scope::Run,
+    help: "The stabilizing polynomial p(s) = (s + α1)³ of link 1's error, eq. (4.3).",
+};
+
+/// α2, the error decay rate of link 2.
+pub const ALPHA2: Param = Param {
+    key: "alpha2",
+    label: "Error decay rate α2 (link 2)",
+    symbol: "α2",
+    unit: "1/s",
+    name: "alpha2 (α2)",
+    kind: Kind::Number(ALPHA_SPEC),
+    scope: Scope::Run,
+    help: "The stabilizing polynomial p(s) = (s + α2)³ of link 2's error, eq. (4.3).",
+};
+
+/// The preliminary feedback u = K_pr x + v.
+pub const PF: Param = Param {
+    key: "pf",
+    label: "Preliminary feedback K_pr",
+    symbol: "K_pr",
+    unit: "",
+    name: "preliminary feedback (pf)",
+    kind: Kind::Choice { options: PF_OPTIONS, default: "paper" },
+    scope: Scope::Run,
+    help: "A fixed linear state feedback under the predictive controller: off (Jankowski–Van Brussel), the \
+           paper's K_pr, or this program's LQ design.",
+};
+
+/// The friction compensation T = v + x̂f, eq. (4.4).
+pub const FRICTION: Param = Param {
+    key: "friction",
+    label: "Friction compensation x̂f",
+    symbol: "x̂f",
+    unit: "",
+    name: "friction compensation (friction)",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "continuous", label: "continuous (paper)" },
+            Choice { value: "held", label: "held over δ" },
+            Choice { value: "off", label: "off" },
+        ],
+        default: "continuous",
+    },
+    scope: Scope::Run,
+    help: "How the observed Dahl friction is fed forward: continuously (cancels it), held over each period, or \
+           not at all.",
+};
+
+/// Continuous or sampled inner loop.
+pub const INNER: Param = Param {
+    key: "inner",
+    label: "Inner loop u = K_pr x + v",
+    symbol: "",
+    unit: "",
+    name: "inner loop (inner)",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "continuous", label: "continuous" },
+            Choice { value: "sampled", label: "sampled at δ" },
+        ],
+        default: "continuous",
+    },
+    scope: Scope::Run,
+    help: "Whether the preliminary feedback acts continuously (analog) or is sampled and held at δ.",
+};
+
+/// The repeating there-and-back slew.
+pub const REPEAT: Param = Param {
+    key: "repeat",
+    label: "Repeat the slew (there and back, hold 1.5 s)",
+    symbol: "",
+    unit: "",
+    name: "repeat",
+    kind: Kind::Switch { default: false },
+    scope: Scope::Run,
+    help: "Slew there and back again and again (holding 1.5 s at each end) instead of the paper's single slew.",
+};
+
+/// k, the horizon steps.
+pub const K: Param = Param {
+    key: "k",
+    label: "Horizon steps k",
+    symbol: "k",
+    unit: "",
+    name: "k (horizon steps)",
+    kind: Kind::Number(NumberSpec {
+        min: 4.0,
+        min_inclusive: true,
+        max: 1000.0,
+        allowed: Some("must be an integer greater than the DAE index 3 (and at most 1000)"),
+        control: [4.0, 24.0],
+        scale: Scale::Linear,
+        digits: 2,
+        integer: true,
+        default: 12.0,
+    }),
+    scope: Scope::Run,
+    help: "The predictor takes k backward-Euler steps of ε = δ/m; δ ≤ kε ≤ 2δ, i.e. k/2 ≤ m ≤ k.",
+};
+
+/// m, so that ε = δ/m.
+pub const EPS_RATIO: Param = Param {
+    key: "eps_ratio",
+    label: "Step ratio m = δ/ε",
+    symbol: "m",
+    unit: "",
+    name: "eps_ratio (m = δ/ε)",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: false,
+        max: 1000.0,
+        allowed: None,
+        control: [2.0, 24.0],
+        scale: Scale::Linear,
+        digits: 3,
+        integer: false,
+        default: 8.0,
+    }),
+    scope: Scope::Run,
+    help: "The predictor's step is ε = δ/m; with k steps the horizon kε must lie between δ and 2δ.",
+};
+
+/// Simulated time of a command-line run.
+pub const DURATION: Param = Param {
+    key: "duration",
+    label: "Duration",
+    symbol: "",
+    unit: "s",
+    name: "duration",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: true,
+        max: 1e6,
+        allowed: Some("must be a finite number ≥ 0 s (at most 1e6 s)"),
+        control: [1.0, 60.0],
+        scale: Scale::Log,
+        digits: 3,
+        integer: false,
+        default: 4.0,
+    }),
+    scope: Scope::Cli,
+    help: "Simulated time: by default the 1-s slew and 3 s after it.",
+};
+
+/// Spacing of the recorded traces.
+pub const OUTPUT_INTERVAL: Param = Param {
+    key: "output_interval",
+    label: "Trace spacing",
+    symbol: "",
+    unit: "s",
+    name: "output_interval",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: false,
+        max: 10.0,
+        allowed: None,
+        control: [0.001, 0.1],
+        scale: Scale::Log,
+        digits: 3,
+        integer: false,
+        default: 0.002,
+    }),
+    scope: Scope::Cli,
+    help: "Spacing of the recorded time series, s (rounded to whole plant steps).",
+};
+
+/// The link-2 angle of the rest point of the analysis.
+pub const Q2: Param = Param {
+    key: "q2",
+    label: "Rest angle q2",
+    symbol: "q2",
+    unit: "rad",
+    name: "q2",
+    kind: Kind::Number(NumberSpec {
+        min: -1e3,
+        min_inclusive: true,
+        max: 1e3,
+        allowed: Some("must be a finite angle in rad"),
+        control: [-3.2, 3.2],
+        scale: Scale::Linear,
+        digits: 4,
+        integer: false,
+        default: 0.0,
+    }),
+    scope: Scope::Cli,
+    help: "Link-2 angle of the rest point the loop is linearized at, rad (default: the end of the slew, 0).",
+};
+
+/// Playback speed of the page.
+pub const SPEED: Param = Param {
+    key: "speed",
+    label: "Playback speed",
+    symbol: "",
+    unit: "×",
+    name: "speed",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: false,
+        max: 100.0,
+        allowed: None,
+        control: [0.1, 4.0],
+        scale: Scale::Log,
+        digits: 2,
+        integer: false,
+        default: 1.0,
+    }),
+    scope: Scope::Page,
+    help: "Simulated seconds per wall-clock second.",
+};
+
+/// Two runs side by side.
+pub const COMPARE: Param = Param {
+    key: "compare",
+    label: "Compare two runs side by side",
+    symbol: "",
+    unit: "",
+    name: "compare",
+    kind: Kind::Switch { default: false },
+    scope: Scope::Page,
+    help: "Run B beside run A: B shares the slew, friction compensation and inner loop, with its own K_pr, δ and α.",
+};
+
+/// Run B's preliminary feedback.
+pub const B_PF: Param =
+    Param { key: "b_pf", label: "B: preliminary feedback", scope: Scope::Compare, name: "b_pf", ..PF };
+
+/// Run B's sampling period.
+pub const B_DELTA: Param =
+    Param { key: "b_delta", label: "B: sampling period δ", scope: Scope::Compare, name: "b_delta", ..DELTA };
+
+/// Run B's α1 = α2.
+pub const B_ALPHA: Param =
+    Param { key: "b_alpha", label: "B: error decay rate α1 = α2", scope: Scope::Compare, name: "b_alpha", ..ALPHA };
+
+/// Every parameter, in the order the page shows them and `--help` lists them.
+pub const PARAMS: &[&Param] = &[
+    &DELTA,
+    &ALPHA,
+    &ALPHA1,
+    &ALPHA2,
+    &PF,
+    &FRICTION,
+    &INNER,
+    &REPEAT,
+    &K,
+    &EPS_RATIO,
+    &DURATION,
+    &OUTPUT_INTERVAL,
+    &Q2,
+    &SPEED,
+    &COMPARE,
+    &B_PF,
+    &B_DELTA,
+    &B_ALPHA,
+];
+
+/// The parameter with this key.
+pub fn param(key: &str) -> Option<&'static Param> {
+    PARAMS.iter().copied().find(|p| p.key == key)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_are_unique_and_flags_are_kebab_case() {
+        for (i, p) in PARAMS.iter().enumerate() {
+            assert!(PARAMS[..i].iter().all(|q| q.key != p.key), "{} twice", p.key);
+            assert!(p.key.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_'));
+            assert!(!p.flag().contains('_'));
+        }
+        assert_eq!(EPS_RATIO.flag(), "--eps-ratio");
+    }
+
+    #[test]
+    fn defaults_lie_within_the_limits_and_the_controls_within_the_limits() {
+        for p in PARAMS {
+            if let Kind::Number(n) = p.kind {
+                assert!(n.admits(n.default), "{}", p.key);
+                assert!(n.admits(n.control[0]) && n.admits(n.control[1]), "{}", p.key);
+                assert!(n.control[0] < n.control[1], "{}", p.key);
+            }
+            if let Kind::Choice { options, default } = p.kind {
+                assert!(options.iter().any(|o| o.value == default), "{}", p.key);
+            }
+        }
+    }
+
+    #[test]
+    fn positions_and_values_round_trip_on_log_controls() {
+        let n = DELTA.number().unwrap();
+        assert_eq!(n.value_at(0.0), 0.002);
+        assert_eq!(n.value_at(1.0), 0.25);
+        for v in [0.002, 0.01, 0.04, 0.1, 0.25] {
+            assert!((n.value_at(n.position(v)) / v - 1.0).abs() < 5e-3, "{v}");
+        }
+        assert_eq!(n.position(1e-9), 0.0);
+        assert_eq!(n.position(100.0), 1.0);
+    }
+
+    #[test]
+    fn parsing_checks_syntax_and_range() {
+        assert_eq!(DELTA.parse("0.04", true).unwrap(), Value::Number(0.04));
+        assert!(DELTA.parse("abc", true).is_err());
+        assert!(DELTA.parse("inf", false).is_err());
+        assert!(DELTA.parse("0.5", true).is_err(), "outside the control");
+        assert!(DELTA.parse("0.5", false).is_ok(), "inside the limits");
+        let e = DELTA.parse("-1", false).unwrap_err().to_string();
+        assert_eq!(e, "invalid sampling_period (δ) = -1: must be > 0");
+        assert!(DELTA.check(11.0).unwrap_err().to_string().ends_with("must be at most 10 s"));
+        assert!(K.parse("2.5", false).is_err() && K.parse("12", false).is_ok());
+        assert_eq!(PF.parse("lq", false).unwrap(), Value::Choice("lq"));
+        let e = PF.parse("maybe", false).unwrap_err().to_string();
+        assert!(e.contains("off | paper | lq"), "{e}");
+        assert_eq!(REPEAT.parse("1", true).unwrap(), Value::Switch(true));
+    }
+
+    #[test]
+    fn numbers_print_short() {
+        assert_eq!(format_number(0.01), "0.01");
+        assert_eq!(format_number(0.1 + 0.2), "0.30000000000000004");
+        assert_eq!(format_number(2.0), "2");
+        assert_eq!(round_significant(0.034712, 3), 0.0347);
+    }
+}

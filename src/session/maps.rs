@@ -1,0 +1,310 @@
+//! The two stability maps the page shows — without and with preliminary feedback — for the
+//! current settings: which map a setting change needs (decided here, not in the page), a small
+//! cache of maps already computed, and the work spread over frames.
+
+use crate::analysis::{LinearSettings, MapGrid, MapJob};
+use crate::control::config::PreliminaryFeedbackChoice;
+use crate::plot::format;
+
+/// Which of the two maps: without or with preliminary feedback.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum MapSide {
+    Off,
+    On,
+}
+
+impl MapSide {
+    pub const BOTH: [MapSide; 2] = [MapSide::Off, MapSide::On];
+
+    /// "off" or "on", as the page names the maps.
+    pub fn parse(name: &str) -> Result<MapSide, String> {
+        match name {
+            "off" => Ok(MapSide::Off),
+            "on" => Ok(MapSide::On),
+            _ => Err(format!("unknown map '{name}': \"off\" (without preliminary feedback) or \"on\" (with it)")),
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            MapSide::Off => "off",
+            MapSide::On => "on",
+        }
+    }
+
+    /// The map a configuration with this preliminary feedback belongs to.
+    pub fn for_feedback(pf: PreliminaryFeedbackChoice) -> MapSide {
+        match pf {
+            PreliminaryFeedbackChoice::Off => MapSide::Off,
+            PreliminaryFeedbackChoice::Paper | PreliminaryFeedbackChoice::Lq => MapSide::On,
+        }
+    }
+
+    /// The preliminary feedback this side maps, given run A's: none on the left; on the right A's
+    /// own feedback if it is the LQ design, else the paper's.
+    pub fn feedback(self, current: PreliminaryFeedbackChoice) -> PreliminaryFeedbackChoice {
+        match (self, current) {
+            (MapSide::Off, _) => PreliminaryFeedbackChoice::Off,
+            (MapSide::On, PreliminaryFeedbackChoice::Lq) => PreliminaryFeedbackChoice::Lq,
+            (MapSide::On, _) => PreliminaryFeedbackChoice::Paper,
+        }
+    }
+
+    /// Index into two-element arrays.
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// "ρ without K_pr", "ρ with paper K_pr".
+    pub fn caption(self, pf: PreliminaryFeedbackChoice) -> String {
+        match self.feedback(pf) {
+            PreliminaryFeedbackChoice::Off => "ρ without K_pr".into(),
+            f => format!("ρ with {}", feedback_short(f)),
+        }
+    }
+}
+
+/// "no K_pr", "paper K_pr", "LQ K_pr".
+pub fn feedback_short(pf: PreliminaryFeedbackChoice) -> &'static str {
+    match pf {
+        PreliminaryFeedbackChoice::Off => "no K_pr",
+        PreliminaryFeedbackChoice::Paper => "paper K_pr",
+        PreliminaryFeedbackChoice::Lq => "LQ K_pr",
+    }
+}
+
+/// Maps kept (each 6000 numbers); the least recently shown go first.
+pub const CACHE_SIZE: usize = 8;
+
+/// One map, computed or being computed.
+#[derive(Clone, Debug)]
+pub struct MapEntry {
+    /// The settings mapped, with δ and α normalized away (the cache key).
+    key: LinearSettings,
+    job: MapJob,
+    /// Why the job stopped, if it failed.
+    failed: Option<String>,
+    /// Wall-clock bookkeeping, ms: first chunk, total computing, start to done.
+    started_ms: Option<f64>,
+    compute_ms: f64,
+    done_ms: Option<f64>,
+    last_shown: u64,
+    /// Distinguishes entries, so the picture knows when it shows another map.
+    id: u64,
+}
+
+impl MapEntry {
+    pub fn job(&self) -> &MapJob {
+        &self.job
+    }
+
+    pub fn is_done(&self) -> bool {
+        self.failed.is_some() || self.job.is_done()
+    }
+
+    /// Changes whenever the picture of this map would: another map, or more rows.
+    pub fn generation(&self) -> (u64, usize) {
+        (self.id, self.job.rows_done())
+    }
+
+    pub fn feedback(&self) -> PreliminaryFeedbackChoice {
+        self.key.preliminary_feedback
+    }
+}
+
+/// How long a finished map took, ms (for the page's performance figures).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct MapTime {
+    pub pf: &'static str,
+    pub ms: f64,
+    pub compute_ms: f64,
+}
+
+/// The progress line under the maps.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct MapStatus {
+    /// 0–100.
+    pub percent: u32,
+    pub done: bool,
+    pub text: String,
+    /// Cells per map.
+    pub points: usize,
+}
+
+/// The maps the page shows and the cache behind them.
+#[derive(Clone, Debug)]
+pub struct Maps {
+    grid: MapGrid,
+    entries: Vec<MapEntry>,
+    /// Index into `entries` of the map each side shows.
+    shown: [Option<usize>; 2],
+    /// Work pauses while the maps are hidden.
+    pub enabled: bool,
+    counter: u64,
+    times: Vec<MapTime>,
+}
+
+impl Default for Maps {
+    fn default() -> Self {
+        Self::new(MapGrid::DEFAULT)
+    }
+}
+
+impl Maps {
+    pub fn new(grid: MapGrid) -> Self {
+        Self { grid, entries: Vec::new(), shown: [None; 2], enabled: true, counter: 0, times: Vec::new() }
+    }
+
+    pub fn grid(&self) -> &MapGrid {
+        &self.grid
+    }
+
+    /// Makes both sides show the maps of run A's linear settings `a` (starting jobs as needed).
+    pub fn show(&mut self, a: &LinearSettings) {
+        for side in MapSide::BOTH {
+            let key = a.at(0.0, [0.0, 0.0]).with_feedback(side.feedback(a.preliminary_feedback));
+            self.counter += 1;
+            let index = match self.entries.iter().position(|e| e.key == key) {
+                Some(i) => i,
+                None => {
+                    let (job, failed) = match MapJob::on_grid(&key, &self.grid) {
+                        Ok(job) => (job, None),
+                        // An empty job that reports the problem (the map panel stays grey).
+                        Err(e) => (
+                            MapJob::new(&key, Vec::new(), Vec::new()).expect("an empty job is valid"),
+                            Some(e.to_string()),
+                        ),
+                    };
+                    self.entries.push(MapEntry {
+                        key,
+                        job,
+                        failed,
+                        started_ms: None,
+                        compute_ms: 0.0,
+                        done_ms: None,
+                        last_shown: 0,
+                        id: self.counter,
+                    });
+                    self.entries.len() - 1
+                }
+            };
+            self.entries[index].last_shown = self.counter;
+            self.shown[side.index()] = Some(index);
+        }
+        self.evict();
+    }
+
+    fn evict(&mut self) {
+        while self.entries.len() > CACHE_SIZE {
+            let in_use = |i: usize| self.shown.contains(&Some(i));
+            let Some(oldest) =
+                (0..self.entries.len()).filter(|&i| !in_use(i)).min_by_key(|&i| self.entries[i].last_shown)
+            else {
+                return;
+            };
+            self.entries.remove(oldest);
+            for s in self.shown.iter_mut().flatten() {
+                if *s > oldest {
+                    *s -= 1;
+                }
+            }
+        }
+    }
+
+    /// The map a side shows.
+    pub fn shown(&self, side: MapSide) -> Option<&MapEntry> {
+        self.shown[side.index()].and_then(|i| self.entries.get(i))
+    }
+
+    /// True while a shown map is unfinished and the maps are enabled.
+    pub fn pending(&self) -> bool {
+        self.enabled && MapSide::BOTH.iter().any(|&s| self.shown(s).is_some_and(|e| !e.is_done()))
+    }
+
+    /// Computes rows of the first unfinished shown map (the left one first) until `now()` (ms)
+    /// has moved `budget_ms` past the start (at least one row). Returns true if work remains.
+    pub fn work(&mut self, now: &mut dyn FnMut() -> f64, budget_ms: f64) -> bool {
+        if !self.enabled {
+            return false;
+        }
+        let Some(index) =
+            MapSide::BOTH.iter().filter_map(|&s| self.shown[s.index()]).find(|&i| !self.entries[i].is_done())
+        else {
+            return false;
+        };
+        let entry = &mut self.entries[index];
+        let start = now();
+        entry.started_ms.get_or_insert(start);
+        let result = entry.job.step_while(|| now() - start < budget_ms);
+        let end = now();
+        entry.compute_ms += end - start;
+        if let Err(e) = result {
+            entry.failed = Some(e.to_string());
+        } else if entry.job.is_done() {
+            let ms = end - entry.started_ms.unwrap_or(start);
+            entry.done_ms = Some(ms);
+            self.times.push(MapTime { pf: entry.key.preliminary_feedback.name(), ms, compute_ms: entry.compute_ms });
+        }
+        self.pending()
+    }
+
+    /// ρ at (δ, α) on a side's map: the nearest grid cell; NaN where not computed yet.
+    pub fn rho_at(&self, side: MapSide, delta: f64, alpha: f64) -> f64 {
+        let Some(entry) = self.shown(side) else { return f64::NAN };
+        let g = &self.grid;
+        let frac = |v: f64, r: [f64; 2]| (v / r[0]).ln() / (r[1] / r[0]).ln();
+        let i = (frac(delta, g.delta) * (g.n_delta - 1) as f64).round().clamp(0.0, (g.n_delta - 1) as f64) as usize;
+        let j = (frac(alpha, g.alpha) * (g.n_alpha - 1) as f64).round().clamp(0.0, (g.n_alpha - 1) as f64) as usize;
+        entry.job.values().get(j * g.n_delta + i).copied().unwrap_or(f64::NAN)
+    }
+
+    /// Start-to-done times of every map finished so far.
+    pub fn times(&self) -> &[MapTime] {
+        &self.times
+    }
+
+    /// The progress line: "computing 6000 points per map… 37 %", then the times.
+    pub fn status(&self) -> MapStatus {
+        let points = self.grid.n_delta * self.grid.n_alpha;
+        let entries: Vec<&MapEntry> = MapSide::BOTH.iter().filter_map(|&s| self.shown(s)).collect();
+        if entries.is_empty() {
+            return MapStatus { percent: 0, done: false, text: "waiting to start".into(), points };
+        }
+        let progress = entries.iter().map(|e| if e.is_done() { 1.0 } else { e.job.progress() }).sum::<f64>()
+            / entries.len() as f64;
+        let percent = (progress * 100.0).round() as u32;
+        let done = entries.iter().all(|e| e.is_done());
+        let text = if let Some(e) = entries.iter().find_map(|e| e.failed.as_ref()) {
+            format!("map failed: {e}")
+        } else if done {
+            let parts: Vec<String> = entries
+                .iter()
+                .map(|e| {
+                    let time = e.done_ms.map_or("—".into(), |ms| format!("{:.2}", ms / 1000.0));
+                    let which = match e.feedback() {
+                        PreliminaryFeedbackChoice::Off => "without K_pr".to_string(),
+                        f => format!("with {}", feedback_short(f)),
+                    };
+                    format!("{time} s {which}")
+                })
+                .collect();
+            format!("map: {points} points in {}", parts.join(", "))
+        } else if !self.enabled {
+            format!("paused at {percent} % (maps hidden)")
+        } else {
+            format!("computing {points} points per map… {percent} %")
+        };
+        MapStatus { percent, done, text, points }
+    }
+
+    /// The caption of a side's map for run A's feedback `pf`.
+    pub fn caption(&self, side: MapSide, pf: PreliminaryFeedbackChoice) -> String {
+        side.caption(pf)
+    }
+}
+
+/// "δ = 0.05 s, α = 2 1/s" for tooltips.
+pub fn point_text(delta: f64, alpha: f64) -> String {
+    format!("δ = {} s, α = {} 1/s", format::sig(delta, 3), format::sig(alpha, 3))
+}

@@ -1,0 +1,421 @@
+//! What a user has open: the settings (one [`Settings`] value, read from and written to the state
+//! string), run A and, when comparing, run B with their analyses, the two stability maps, and the
+//! stable windows of δ. The page and the CLI meet here: the wasm binding wraps a [`Session`] and
+//! converts; it decides nothing.
+//!
+//! Architecture invariant: no web types; every decision about which change restarts a run, which
+//! settings change ρ or which map is needed is made here, not in the page.
+
+pub mod maps;
+pub mod presets;
+pub mod run;
+pub mod settings;
+pub mod status;
+
+use serde::Serialize;
+
+use crate::analysis::{stable_windows, LinearSettings, StableWindows};
+use crate::control::config::PreliminaryFeedbackChoice;
+use crate::error::{Error, ParseError};
+use crate::schema::{self, Kind, Scope, Value};
+
+pub use maps::{MapSide, Maps};
+pub use presets::{preset, Preset, PRESETS};
+pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS};
+pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source};
+pub use status::{run_status, RunStatus};
+
+/// The longest simulated time one `advance` call may cover, s: after a stalled tab the
+/// simulation skips ahead instead of freezing the page to catch up.
+pub const MAX_ADVANCE_PER_CALL: f64 = 0.25;
+
+/// The poke: (T1, T2) in N m for this many seconds.
+pub const POKE: ([f64; 2], f64) = ([40.0, 5.0], 0.05);
+
+/// Everything the page shows about the session, in words.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Status {
+    /// Run A, then run B when comparing.
+    pub runs: Vec<RunStatus>,
+    /// Why the run restarted, or what a change waits for ("" if nothing to say).
+    pub note: String,
+    /// The preset the settings match ("" if none).
+    pub preset: String,
+    pub maps: maps::MapStatus,
+}
+
+/// The stable windows of δ for one set of linear settings (δ itself ignored), cached.
+#[derive(Clone, Debug, Default)]
+struct WindowsCache {
+    key: Option<LinearSettings>,
+    result: Option<Result<StableWindows, String>>,
+}
+
+/// A user's session: settings, runs, analyses, maps.
+#[derive(Clone, Debug)]
+pub struct Session {
+    settings: Settings,
+    a: Run,
+    b: Option<Run>,
+    maps: Maps,
+    windows: WindowsCache,
+    note: String,
+    trace_seconds: f64,
+}
+
+impl Session {
+    /// A session with `settings`, both runs at rest.
+    pub fn new(settings: Settings) -> Result<Self, Error> {
+        let a = Run::new(settings.a)?;
+        let b = settings.b.map(|b| Run::new(b.run(&settings.a))).transpose()?;
+        let mut session = Self {
+            settings,
+            a,
+            b,
+            maps: Maps::default(),
+            windows: WindowsCache::default(),
+            note: String::new(),
+            trace_seconds: DEFAULT_TRACE_SECONDS,
+        };
+        session.maps.show(&session.linear_settings());
+        Ok(session)
+    }
+
+    /// The page's session for a URL query: the page's start settings with the query read over
+    /// them. Bad values become notices; settings that cannot run together fall back to the start.
+    pub fn open(query: &str) -> (Self, Vec<Notice>) {
+        let mut settings = Settings::page_start();
+        let mut notices = settings.read(query, Source::Page).unwrap_or_default();
+        match Self::new(settings) {
+            Ok(s) => (s, notices),
+            Err(e) => {
+                notices.push(Notice { key: "state".into(), text: format!("{e}; using the defaults") });
+                (Self::new(Settings::page_start()).expect("the page's start settings are valid"), notices)
+            }
+        }
+    }
+
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// Run A (0) or run B (1, when comparing).
+    pub fn run(&self, index: usize) -> Option<&Run> {
+        match index {
+            0 => Some(&self.a),
+            1 => self.b.as_ref(),
+            _ => None,
+        }
+    }
+
+    /// The runs shown: A, then B when comparing.
+    pub fn runs(&self) -> impl Iterator<Item = &Run> {
+        std::iter::once(&self.a).chain(self.b.as_ref())
+    }
+
+    fn runs_mut(&mut self) -> impl Iterator<Item = &mut Run> {
+        std::iter::once(&mut self.a).chain(self.b.as_mut())
+    }
+
+    /// The preset the settings match, if any.
+    pub fn preset(&self) -> Option<&'static Preset> {
+        PRESETS.iter().find(|p| p.matches(&self.settings))
+    }
+
+    /// What the last change did to the runs ("" if nothing to say).
+    pub fn note(&self) -> &str {
+        &self.note
+    }
+
+    /// Run A's settings as the linear analysis sees them.
+    fn linear_settings(&self) -> LinearSettings {
+        LinearSettings::of(&self.settings.a.config(), None)
+    }
+
+    // ------------------------------------------------------------------------------- changes
+
+    /// Sets one parameter from its text as a control gives it (numbers within the control's span).
+    pub fn set(&mut self, key: &str, text: &str) -> Result<(), Error> {
+        let p = schema::param(key).ok_or_else(|| not_a_setting(key))?;
+        let v = p.parse(text, true)?;
+        self.set_value(key, v)
+    }
+
+    /// Sets a numeric parameter from its control's position in [0, 1] (a slider).
+    pub fn set_position(&mut self, key: &str, position: f64) -> Result<(), Error> {
+        let p = schema::param(key).ok_or_else(|| not_a_setting(key))?;
+        let Kind::Number(n) = p.kind else { return Err(not_a_setting(key)) };
+        self.set_value(key, Value::Number(n.value_at(position)))
+    }
+
+    /// Sets one parameter to a checked value and carries the change to the runs.
+    pub fn set_value(&mut self, key: &str, value: Value) -> Result<(), Error> {
+        let mut next = self.settings;
+        next.set(key, value)?;
+        // The reference jumping under a moving arm would be a kick, not the setting: start over.
+        let restart = key == "repeat" && next.a.repeat != self.settings.a.repeat;
+        let why = if restart { "The reference changed, so the run restarted from rest." } else { "" };
+        self.apply(next, restart, why)
+    }
+
+    /// Applies a preset (its settings over the current ones) and restarts from rest.
+    pub fn apply_preset(&mut self, id: &str) -> Result<(), Error> {
+        let p = preset(id).ok_or_else(|| {
+            Error::Parse(ParseError {
+                key: "preset".into(),
+                text: id.into(),
+                expected: format!("one of {}", PRESETS.iter().map(|p| p.id).collect::<Vec<_>>().join(" | ")),
+            })
+        })?;
+        let mut next = self.settings;
+        p.apply(&mut next)?;
+        self.apply(next, true, &format!("Preset applied; the run restarted: {}.", p.title))
+    }
+
+    /// Reads a state string (a URL query) over the current settings and restarts from rest.
+    pub fn read_state(&mut self, state: &str) -> Result<Vec<Notice>, Error> {
+        let mut next = self.settings;
+        let notices = next.read(state, Source::Page)?;
+        self.apply(next, true, "")?;
+        Ok(notices)
+    }
+
+    /// Runs A at a point picked on a map: (δ, α1 = α2 = α) rounded to the controls' precision and
+    /// kept within their spans, with the map's preliminary feedback (none on the left; on the
+    /// right A's own if it has one, else the paper's).
+    pub fn set_from_map(&mut self, side: MapSide, delta: f64, alpha: f64) -> Result<(), Error> {
+        let spec = |p: &schema::Param| *p.number().expect("δ and α are numbers");
+        let (ds, al) = (spec(&schema::DELTA), spec(&schema::ALPHA));
+        let d = ds.value_at(ds.position(schema::round_significant(delta, ds.digits)));
+        let a = al.value_at(al.position(schema::round_significant(alpha, al.digits)));
+        let pf = match (side, self.settings.a.pf) {
+            (MapSide::Off, _) => PreliminaryFeedbackChoice::Off,
+            (MapSide::On, PreliminaryFeedbackChoice::Off) => PreliminaryFeedbackChoice::Paper,
+            (MapSide::On, current) => current,
+        };
+        let mut next = self.settings;
+        next.a.delta = d;
+        next.a.alpha = [a, a];
+        next.a.pf = pf;
+        self.apply(next, false, "")
+    }
+
+    /// Makes `next` the settings: run A (and B) take it live, or restart when `restart` or when
+    /// they had diverged; the comparison starts and stops here. Invalid settings change nothing.
+    fn apply(&mut self, next: Settings, restart: bool, why: &str) -> Result<(), Error> {
+        // Validate everything first, so a failure leaves the session as it was.
+        next.a.config().validate()?;
+        if let Some(b) = next.b {
+            b.run(&next.a).config().validate()?;
+        }
+        let was_comparing = self.b.is_some();
+        let a_restarted = self.a.change(next.a, restart)?;
+        let mut notes = Vec::new();
+        match (next.b, self.b.as_mut()) {
+            (Some(b), Some(run)) => {
+                if run.change(b.run(&next.a), restart)? && !restart {
+                    notes.push("Run B had diverged, so it restarted from rest with the new settings.");
+                }
+            }
+            (Some(b), None) => {
+                self.b = Some(Run::new(b.run(&next.a))?);
+                // A fresh B beside a running A would compare different moments: restart A too.
+                self.a.reset()?;
+                notes.push("Comparing two runs: both restarted from rest together.");
+            }
+            (None, _) => self.b = None,
+        }
+        if a_restarted && !restart && was_comparing == next.b.is_some() {
+            notes.insert(0, "The previous run had diverged, so it restarted from rest with the new settings.");
+        }
+        self.settings = next;
+        self.note = if !why.is_empty() { why.to_string() } else { notes.join(" ") };
+        self.maps.show(&self.linear_settings());
+        Ok(())
+    }
+
+    // ----------------------------------------------------------------------------------- time
+
+    /// Advances both runs by `wall_seconds × speed` of simulated time (at most
+    /// [`MAX_ADVANCE_PER_CALL`]); returns the simulated time run A covered.
+    pub fn advance(&mut self, wall_seconds: f64) -> Result<f64, Error> {
+        if !(wall_seconds.is_finite() && wall_seconds >= 0.0) {
+            return Err(Error::InvalidDuration(wall_seconds));
+        }
+        let dt = (wall_seconds * self.settings.speed).min(MAX_ADVANCE_PER_CALL);
+        let before = self.a.closed_loop().time();
+        let keep = self.trace_seconds;
+        for run in self.runs_mut() {
+            run.advance(dt, keep)?;
+        }
+        Ok(self.a.closed_loop().time() - before)
+    }
+
+    /// Advances to A's next sampling instant; B follows A's clock (or its own period if A stopped).
+    pub fn step_period(&mut self) {
+        let keep = self.trace_seconds;
+        self.a.step_period(keep);
+        let t = self.a.closed_loop().time();
+        let a_finished = self.a.closed_loop().is_finished();
+        if let Some(b) = self.b.as_mut() {
+            let dt = t - b.closed_loop().time();
+            if dt > 1e-12 {
+                let _ = b.advance(dt, keep);
+            } else if a_finished {
+                b.step_period(keep);
+            }
+        }
+        if self.note.starts_with("Paused") {
+            self.note.clear();
+        }
+    }
+
+    /// Both runs back to rest.
+    pub fn reset(&mut self) -> Result<(), Error> {
+        for run in self.runs_mut() {
+            run.reset()?;
+        }
+        self.note.clear();
+        Ok(())
+    }
+
+    /// A short torque kick on both runs ([`POKE`]).
+    pub fn poke(&mut self) -> Result<(), Error> {
+        let (torque, duration) = POKE;
+        for run in self.runs_mut() {
+            run.poke(torque, duration)?;
+        }
+        Ok(())
+    }
+
+    /// Seconds of traces kept per run.
+    pub fn set_trace_seconds(&mut self, seconds: f64) -> Result<(), Error> {
+        if !(seconds.is_finite() && seconds > 0.0 && seconds <= 3600.0) {
+            return Err(Error::InvalidDuration(seconds));
+        }
+        self.trace_seconds = seconds;
+        Ok(())
+    }
+
+    /// Sets the note shown under the verdict (e.g. while paused).
+    pub fn set_note(&mut self, note: &str) {
+        self.note = note.to_string();
+    }
+
+    // ---------------------------------------------------------------------------- analysis
+
+    /// The stability maps.
+    pub fn maps(&self) -> &Maps {
+        &self.maps
+    }
+
+    pub fn maps_mut(&mut self) -> &mut Maps {
+        &mut self.maps
+    }
+
+    /// The stable windows of δ over the δ control's span for run A's settings (everything but δ),
+    /// computed on first use after a change that matters.
+    pub fn windows(&mut self) -> Result<&StableWindows, Error> {
+        let key = self.linear_settings().at(0.0, self.settings.a.alpha);
+        if self.windows.key != Some(key) {
+            let range = schema::DELTA.number().expect("δ is a number").control;
+            let result = stable_windows(&self.linear_settings(), range).map_err(|e| e.to_string());
+            self.windows = WindowsCache { key: Some(key), result: Some(result) };
+        }
+        match self.windows.result.as_ref().expect("just computed") {
+            Ok(w) => Ok(w),
+            Err(e) => Err(Error::Parse(ParseError { key: "windows".into(), text: String::new(), expected: e.clone() })),
+        }
+    }
+
+    /// The status of both runs, in words.
+    pub fn status(&self) -> Status {
+        let mut runs = vec![run_status("A", &self.a)];
+        if let Some(b) = &self.b {
+            runs.push(run_status("B", b));
+        }
+        Status {
+            runs,
+            note: self.note.clone(),
+            preset: self.preset().map_or(String::new(), |p| p.id.to_string()),
+            maps: self.maps.status(),
+        }
+    }
+
+    // ------------------------------------------------------------------------------ export
+
+    /// The state string (the page's URL query).
+    pub fn state_string(&self) -> String {
+        self.settings.to_query()
+    }
+
+    /// `flexarm simulate …` reproducing run A up to its current time.
+    pub fn command_line(&self) -> String {
+        self.settings.command_line(Some(self.a.closed_loop().time()))
+    }
+
+    /// Run A's traces as CSV, headed by its state string.
+    pub fn csv(&self) -> String {
+        let comment = format!("flexarm state: {} | {}", self.settings.run_query(), self.settings.command_line(None));
+        self.a.closed_loop().traces().to_csv(Some(&comment))
+    }
+
+    /// The controls' current values, for the page to show.
+    pub fn controls(&self) -> Vec<ControlValue> {
+        schema::PARAMS
+            .iter()
+            .filter(|p| matches!(p.scope, Scope::Run | Scope::Page | Scope::Compare))
+            .filter_map(|p| {
+                let v = self.settings.get(p.key)?;
+                let (position, text) = match (&p.kind, v) {
+                    (Kind::Number(n), Value::Number(x)) => (Some(n.position(x)), display(p, x)),
+                    _ => (None, v.text()),
+                };
+                Some(ControlValue { key: p.key, value: v.text(), position, text })
+            })
+            .collect()
+    }
+}
+
+/// A control's value as the page shows it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ControlValue {
+    pub key: &'static str,
+    /// The value as the state string writes it.
+    pub value: String,
+    /// The slider position in [0, 1] (numbers only).
+    pub position: Option<f64>,
+    /// The value with its unit, as shown beside the control ("0.0100 s", "2.00 1/s", "1.0×").
+    pub text: String,
+}
+
+/// A number with the precision of its control and its unit ("0.0100 s", "2.00 1/s", "1.0×", "12").
+pub fn display(p: &schema::Param, x: f64) -> String {
+    let spec = p.number();
+    let v = if spec.is_some_and(|n| n.integer) {
+        format!("{x}")
+    } else if p.key == schema::SPEED.key && x >= 1.0 {
+        format!("{x:.1}")
+    } else {
+        precision(x, spec.map_or(3, |n| n.digits as usize))
+    };
+    match p.unit {
+        "" => v,
+        "×" => format!("{v}×"),
+        u => format!("{v} {u}"),
+    }
+}
+
+/// `digits` significant digits, keeping trailing zeros ("0.0100", "2.00").
+fn precision(x: f64, digits: usize) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let e = x.abs().log10().floor() as i32;
+    let decimals = (digits as i32 - 1 - e).max(0) as usize;
+    format!("{x:.decimals$}")
+}
+
+fn not_a_setting(key: &str) -> Error {
+    Error::Parse(ParseError { key: key.into(), text: String::new(), expected: "a setting of the page".into() })
+}

@@ -1,0 +1,82 @@
+//! Named starting points that reproduce the paper's figures and its remarks, each a state string
+//! (the same text as a URL query).
+
+use super::settings::{Settings, Source};
+use crate::error::Error;
+
+/// A named starting point: the paper's figures and two of its remarks.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Preset {
+    /// Short identifier used in URLs (`?preset=fig5.3`) and on the command line.
+    pub id: &'static str,
+    /// One-line description for a student.
+    pub title: &'static str,
+    /// The settings it makes, as a state string.
+    pub state: &'static str,
+}
+
+impl Preset {
+    /// Applies the preset's settings over `settings`.
+    pub fn apply(&self, settings: &mut Settings) -> Result<(), Error> {
+        settings.read(self.state, Source::CommandLine).map(|_| ())
+    }
+
+    /// True if `settings` already have every value this preset sets.
+    pub fn matches(&self, settings: &Settings) -> bool {
+        let mut applied = *settings;
+        self.apply(&mut applied).is_ok() && applied.a == settings.a
+    }
+}
+
+/// All presets, in the order a student meets them.
+pub const PRESETS: [Preset; 5] = [
+    Preset {
+        id: "fig5.1",
+        title: "Fig. 5.1: δ = 0.04 s with preliminary feedback (satisfactory errors)",
+        state: "delta=0.04&alpha=2&pf=paper",
+    },
+    Preset {
+        id: "fig5.2",
+        title: "Fig. 5.2: δ = 0.01 s with preliminary feedback (smaller errors)",
+        state: "delta=0.01&alpha=2&pf=paper",
+    },
+    Preset {
+        id: "fig5.3",
+        title: "Fig. 5.3: δ = 0.01 s without preliminary feedback (unstable)",
+        state: "delta=0.01&alpha=2&pf=off",
+    },
+    Preset {
+        id: "large-delta",
+        title: "Large δ works without preliminary feedback (δ = 0.06 s)",
+        state: "delta=0.06&alpha=2&pf=off",
+    },
+    Preset {
+        id: "small-alpha",
+        title: "Smaller α slows the growth (α = 0.5, no preliminary feedback)",
+        state: "delta=0.01&alpha=0.5&pf=off",
+    },
+];
+
+/// The preset with identifier `id`.
+pub fn preset(id: &str) -> Option<&'static Preset> {
+    PRESETS.iter().find(|p| p.id == id)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_preset_applies_and_matches_afterwards() {
+        for p in &PRESETS {
+            let mut s = Settings::page_start();
+            p.apply(&mut s).unwrap();
+            assert!(p.matches(&s), "{}", p.id);
+            assert!(s.a.repeat, "{}: a preset leaves the slew as it was", p.id);
+        }
+        let mut s = Settings::default();
+        preset("fig5.3").unwrap().apply(&mut s).unwrap();
+        s.a.delta = 0.02;
+        assert!(!preset("fig5.3").unwrap().matches(&s));
+    }
+}

@@ -1,0 +1,120 @@
+//! One run of the page (A or B): the closed loop, its settings, and the linear analysis of those
+//! settings, computed once per change that matters.
+
+use crate::analysis::{analyze, LinearSettings, StabilityReport};
+use crate::control::config::SimulationConfig;
+use crate::control::ClosedLoop;
+use crate::error::Error;
+
+use super::settings::RunSettings;
+
+/// The analysis of one configuration, recomputed only when its [`LinearSettings`] change.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct AnalysisCache {
+    key: Option<LinearSettings>,
+    result: Option<Result<StabilityReport, String>>,
+}
+
+impl AnalysisCache {
+    /// Makes the cache describe `config`; returns true if it had to recompute.
+    pub fn update(&mut self, config: &SimulationConfig) -> bool {
+        let key = LinearSettings::of(config, None);
+        if self.key == Some(key) {
+            return false;
+        }
+        self.key = Some(key);
+        self.result = Some(analyze(config, None).map_err(|e| e.to_string()));
+        true
+    }
+
+    /// The analysis, if it succeeded.
+    pub fn report(&self) -> Option<&StabilityReport> {
+        self.result.as_ref().and_then(|r| r.as_ref().ok())
+    }
+
+    /// Why the analysis failed, if it did.
+    pub fn error(&self) -> Option<&str> {
+        self.result.as_ref().and_then(|r| r.as_ref().err()).map(String::as_str)
+    }
+}
+
+/// Seconds of traces a page run keeps for drawing and export.
+pub const DEFAULT_TRACE_SECONDS: f64 = 60.0;
+
+/// A run: the loop, the settings it runs with, their analysis.
+#[derive(Clone, Debug)]
+pub struct Run {
+    sim: ClosedLoop,
+    settings: RunSettings,
+    analysis: AnalysisCache,
+}
+
+impl Run {
+    /// A run at rest on the reference.
+    pub fn new(settings: RunSettings) -> Result<Self, Error> {
+        let sim = ClosedLoop::new(settings.config())?;
+        let mut analysis = AnalysisCache::default();
+        analysis.update(sim.config());
+        Ok(Self { sim, settings, analysis })
+    }
+
+    pub fn closed_loop(&self) -> &ClosedLoop {
+        &self.sim
+    }
+
+    pub fn settings(&self) -> &RunSettings {
+        &self.settings
+    }
+
+    /// The linear analysis of the settings (those on screen: a change is analysed at once,
+    /// though the loop takes it at its next sampling instant).
+    pub fn analysis(&self) -> &AnalysisCache {
+        &self.analysis
+    }
+
+    /// Takes new settings: live at the next sampling instant, or from rest when `restart` (or
+    /// when the run has diverged and cannot go on). Returns true if the run restarted.
+    pub fn change(&mut self, settings: RunSettings, restart: bool) -> Result<bool, Error> {
+        let config = settings.config();
+        self.sim.set_config(config)?;
+        self.settings = settings;
+        self.analysis.update(&config);
+        let restarted = restart || self.sim.is_finished();
+        if restarted {
+            self.sim.reset()?;
+        }
+        Ok(restarted)
+    }
+
+    /// Back to rest with the current settings.
+    pub fn reset(&mut self) -> Result<(), Error> {
+        self.sim.reset()
+    }
+
+    /// Advances by `dt` simulated seconds, keeping `trace_seconds` of traces.
+    pub fn advance(&mut self, dt: f64, trace_seconds: f64) -> Result<(), Error> {
+        self.sim.advance(dt)?;
+        self.bound_traces(trace_seconds);
+        Ok(())
+    }
+
+    /// Advances to the next sampling instant.
+    pub fn step_period(&mut self, trace_seconds: f64) {
+        self.sim.advance_one_period();
+        self.bound_traces(trace_seconds);
+    }
+
+    /// Adds a torque (T1, T2 in N m) for `duration` seconds.
+    pub fn poke(&mut self, torque: [f64; 2], duration: f64) -> Result<(), Error> {
+        self.sim.apply_disturbance(torque, duration)
+    }
+
+    fn bound_traces(&mut self, seconds: f64) {
+        let keep = (seconds / self.sim.config().output_interval).ceil() as usize + 1;
+        let traces = self.sim.traces_mut();
+        // Trim in chunks so the cost is amortised rather than paid every frame.
+        if traces.len() > keep + keep / 8 {
+            traces.truncate_front(keep);
+        }
+    }
+}

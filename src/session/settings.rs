@@ -1,0 +1,484 @@
+//! What a user has set, as typed values keyed by the [`crate::schema`] keys, and the *state string*
+//! that carries it everywhere: the page's URL query, `flexarm … --state`, the CSV and SVG headers.
+//!
+//! A state string is `key=value` pairs joined by `&` (`delta=0.01&alpha=2&pf=off&repeat=1`), read
+//! over a base (the page's start, or the CLI's defaults). [`Settings::to_query`] writes every run
+//! setting so a shared link means the same thing everywhere; [`Settings::command_line`] writes the
+//! `flexarm simulate …` that reproduces run A.
+
+use crate::control::config::{FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
+use crate::error::{Error, ParseError};
+use crate::schema::{self, Param, Scope, Value};
+
+/// Hold time of the repeating slew at each end, s.
+pub const REPEAT_HOLD: f64 = 1.5;
+
+/// The settings of one run, keyed by the schema's run parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RunSettings {
+    /// δ, s.
+    pub delta: f64,
+    /// α1, α2, 1/s.
+    pub alpha: [f64; 2],
+    pub pf: PreliminaryFeedbackChoice,
+    pub friction: FrictionCompensation,
+    pub inner: InnerLoop,
+    /// The slew repeats there and back (holding [`REPEAT_HOLD`] s) instead of the paper's one slew.
+    pub repeat: bool,
+    /// k, the horizon steps.
+    pub k: usize,
+    /// m = δ/ε.
+    pub eps_ratio: f64,
+}
+
+impl Default for RunSettings {
+    /// The schema's defaults: the paper's controller with its K_pr at δ = 0.01 s, one slew.
+    fn default() -> Self {
+        let number = |p: &Param| p.number().map_or(f64::NAN, |n| n.default);
+        let choice = |p: &Param| p.default_value().choice().unwrap_or("");
+        Self {
+            delta: number(&schema::DELTA),
+            alpha: [number(&schema::ALPHA1), number(&schema::ALPHA2)],
+            pf: PreliminaryFeedbackChoice::from_name(choice(&schema::PF)).unwrap_or_default(),
+            friction: FrictionCompensation::from_name(choice(&schema::FRICTION)).unwrap_or_default(),
+            inner: InnerLoop::from_name(choice(&schema::INNER)).unwrap_or_default(),
+            repeat: schema::REPEAT.default_value().switch().unwrap_or(false),
+            k: number(&schema::K) as usize,
+            eps_ratio: number(&schema::EPS_RATIO),
+        }
+    }
+}
+
+impl RunSettings {
+    /// The configuration of a run with these settings (the paper's plant and slew).
+    pub fn config(&self) -> SimulationConfig {
+        let mut c = SimulationConfig::default();
+        c.controller.sampling_period = self.delta;
+        c.controller.alpha = self.alpha;
+        c.controller.horizon_steps = self.k;
+        c.controller.eps_ratio = self.eps_ratio;
+        c.preliminary_feedback = self.pf;
+        c.friction_compensation = self.friction;
+        c.inner_loop = self.inner;
+        c.reference.repeat_hold = self.repeat.then_some(REPEAT_HOLD);
+        c
+    }
+
+    /// The value of a run parameter (`alpha` reads α1).
+    pub fn get(&self, key: &str) -> Option<Value> {
+        Some(match key {
+            "delta" => Value::Number(self.delta),
+            "alpha" | "alpha1" => Value::Number(self.alpha[0]),
+            "alpha2" => Value::Number(self.alpha[1]),
+            "pf" => Value::Choice(self.pf.name()),
+            "friction" => Value::Choice(self.friction.name()),
+            "inner" => Value::Choice(self.inner.name()),
+            "repeat" => Value::Switch(self.repeat),
+            "k" => Value::Number(self.k as f64),
+            "eps_ratio" => Value::Number(self.eps_ratio),
+            _ => return None,
+        })
+    }
+
+    /// Sets a run parameter from a value of the right kind (checked by the schema already);
+    /// `alpha` sets α1 and α2. False if `key` is not a run parameter.
+    fn set(&mut self, key: &str, v: Value) -> bool {
+        match (key, v) {
+            ("delta", Value::Number(x)) => self.delta = x,
+            ("alpha", Value::Number(x)) => self.alpha = [x, x],
+            ("alpha1", Value::Number(x)) => self.alpha[0] = x,
+            ("alpha2", Value::Number(x)) => self.alpha[1] = x,
+            ("pf", Value::Choice(s)) => self.pf = PreliminaryFeedbackChoice::from_name(s).unwrap_or(self.pf),
+            ("friction", Value::Choice(s)) => {
+                self.friction = FrictionCompensation::from_name(s).unwrap_or(self.friction)
+            }
+            ("inner", Value::Choice(s)) => self.inner = InnerLoop::from_name(s).unwrap_or(self.inner),
+            ("repeat", Value::Switch(b)) => self.repeat = b,
+            ("k", Value::Number(x)) => self.k = x as usize,
+            ("eps_ratio", Value::Number(x)) => self.eps_ratio = x,
+            _ => return false,
+        }
+        true
+    }
+}
+
+/// Run B of a comparison: its own preliminary feedback, δ and α; the rest follows run A.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CompareSettings {
+    pub pf: PreliminaryFeedbackChoice,
+    pub delta: f64,
+    pub alpha: [f64; 2],
+}
+
+impl CompareSettings {
+    /// B's default: A with the preliminary feedback switched (off → the paper's, otherwise off).
+    pub fn switched(a: &RunSettings) -> Self {
+        let pf = match a.pf {
+            PreliminaryFeedbackChoice::Off => PreliminaryFeedbackChoice::Paper,
+            _ => PreliminaryFeedbackChoice::Off,
+        };
+        Self { pf, delta: a.delta, alpha: a.alpha }
+    }
+
+    /// Run B's settings: A's with B's own preliminary feedback, δ and α.
+    pub fn run(&self, a: &RunSettings) -> RunSettings {
+        RunSettings { pf: self.pf, delta: self.delta, alpha: self.alpha, ..*a }
+    }
+}
+
+/// Everything the page's URL holds: run A, run B if compared, and the playback speed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub a: RunSettings,
+    /// Run B, when two runs are compared.
+    pub b: Option<CompareSettings>,
+    /// Simulated seconds per wall-clock second.
+    pub speed: f64,
+}
+
+impl Default for Settings {
+    /// The schema's defaults (what the CLI starts from).
+    fn default() -> Self {
+        Self { a: RunSettings::default(), b: None, speed: schema::SPEED.number().map_or(1.0, |n| n.default) }
+    }
+}
+
+/// A value that was not taken, and why (the page shows these as notices).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Notice {
+    pub key: String,
+    pub text: String,
+}
+
+/// Where a state string comes from: the page checks numbers against its controls' spans, the
+/// command line against the hard limits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Source {
+    Page,
+    CommandLine,
+}
+
+impl Settings {
+    /// What the page opens with when its URL names no settings: the paper's defaults with the
+    /// slew repeating, so there is always something moving.
+    pub fn page_start() -> Self {
+        let mut s = Self::default();
+        s.a.repeat = true;
+        s
+    }
+
+    /// The value of any parameter (run A's, run B's `b_*`, `speed`, `compare`).
+    pub fn get(&self, key: &str) -> Option<Value> {
+        match key {
+            "speed" => Some(Value::Number(self.speed)),
+            "compare" => Some(Value::Switch(self.b.is_some())),
+            "b_pf" => self.b.map(|b| Value::Choice(b.pf.name())),
+            "b_delta" => self.b.map(|b| Value::Number(b.delta)),
+            "b_alpha" => self.b.map(|b| Value::Number(b.alpha[0])),
+            _ => self.a.get(key),
+        }
+    }
+
+    /// Sets a parameter from a checked value. Run B's keys switch the comparison on.
+    pub fn set(&mut self, key: &str, v: Value) -> Result<(), Error> {
+        match (key, v) {
+            ("speed", Value::Number(x)) => self.speed = x,
+            ("compare", Value::Switch(on)) => {
+                self.b = if on { Some(self.b.unwrap_or_else(|| CompareSettings::switched(&self.a))) } else { None }
+            }
+            ("b_pf", Value::Choice(s)) => self.b_mut().pf = PreliminaryFeedbackChoice::from_name(s).unwrap_or_default(),
+            ("b_delta", Value::Number(x)) => self.b_mut().delta = x,
+            ("b_alpha", Value::Number(x)) => self.b_mut().alpha = [x, x],
+            _ => {
+                if !self.a.set(key, v) {
+                    return Err(unknown(key));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn b_mut(&mut self) -> &mut CompareSettings {
+        let a = self.a;
+        self.b.get_or_insert_with(|| CompareSettings::switched(&a))
+    }
+
+    /// Reads `key=text` as the schema says and sets it.
+    pub fn set_text(&mut self, key: &str, text: &str, source: Source) -> Result<(), Error> {
+        let p = schema::param(key).ok_or_else(|| unknown(key))?;
+        let v = p.parse(text, source == Source::Page)?;
+        self.set(key, v)
+    }
+
+    /// Reads a state string over `self`. The page ([`Source::Page`]) is lenient: a bad value is
+    /// skipped with a [`Notice`]; the command line is strict: the first bad value is the error.
+    /// `preset=ID` is applied first, `alpha` before `alpha1`/`alpha2`; run B's keys count only
+    /// with `compare=1`; the command line ignores the page's own keys (speed, comparison).
+    pub fn read(&mut self, state: &str, source: Source) -> Result<Vec<Notice>, Error> {
+        let pairs = split_query(state);
+        let mut notices = Vec::new();
+        let mut fail = |key: &str, e: Error| -> Result<(), Error> {
+            match source {
+                Source::CommandLine => Err(e),
+                Source::Page => {
+                    notices.push(Notice { key: key.to_string(), text: e.to_string() });
+                    Ok(())
+                }
+            }
+        };
+        if let Some((_, id)) = pairs.iter().find(|(k, _)| k == "preset") {
+            match super::presets::preset(id) {
+                Some(p) => p.apply(self)?,
+                None => fail("preset", preset_error(id))?,
+            }
+        }
+        let compare = pairs.iter().rev().find(|(k, _)| k == "compare").map(|(_, v)| v.as_str());
+        for (key, _) in &pairs {
+            if key != "preset" && schema::param(key).is_none() {
+                fail(key, unknown(key))?;
+            }
+        }
+        for p in schema::PARAMS {
+            // The last occurrence of a key wins, as in URLSearchParams.get of a rewritten URL.
+            let Some((_, text)) = pairs.iter().rev().find(|(k, _)| k == p.key) else { continue };
+            let page_only = matches!(p.scope, Scope::Page | Scope::Compare);
+            if source == Source::CommandLine && page_only {
+                continue;
+            }
+            if p.scope == Scope::Cli {
+                fail(
+                    p.key,
+                    Error::Parse(ParseError {
+                        key: p.key.into(),
+                        text: text.clone(),
+                        expected: format!("no {} in a state string: use {}", p.key, p.flag()),
+                    }),
+                )?;
+                continue;
+            }
+            if p.scope == Scope::Compare && !matches!(compare, Some("1" | "true" | "on" | "yes")) {
+                continue;
+            }
+            if let Err(e) = self.set_text(p.key, text, source) {
+                fail(p.key, e)?;
+            }
+        }
+        Ok(notices)
+    }
+
+    /// The state string of everything set: every run setting of A, then the page's own keys.
+    pub fn to_query(&self) -> String {
+        let mut pairs = run_pairs(&self.a, false);
+        pairs.push(("speed", Value::Number(self.speed).text()));
+        if let Some(b) = &self.b {
+            pairs.push(("compare", "1".into()));
+            pairs.push(("b_pf", b.pf.name().into()));
+            pairs.push(("b_delta", Value::Number(b.delta).text()));
+            pairs.push(("b_alpha", Value::Number(b.alpha[0]).text()));
+        }
+        join_query(&pairs)
+    }
+
+    /// The state string of run A alone (what the CLI's `--state` reproduces).
+    pub fn run_query(&self) -> String {
+        join_query(&run_pairs(&self.a, false))
+    }
+
+    /// `flexarm simulate …` reproducing run A: every setting that differs from the CLI's
+    /// defaults, and δ, α and the preliminary feedback always; `duration` if given (s).
+    pub fn command_line(&self, duration: Option<f64>) -> String {
+        let mut words = vec!["flexarm".to_string(), "simulate".to_string()];
+        for (key, text) in run_pairs(&self.a, true) {
+            let p = schema::param(key).expect("run keys are schema keys");
+            match p.kind {
+                schema::Kind::Switch { .. } => {
+                    if text == "1" {
+                        words.push(p.flag());
+                    }
+                }
+                _ => {
+                    words.push(p.flag());
+                    words.push(text);
+                }
+            }
+        }
+        if let Some(d) = duration.filter(|d| d.is_finite() && *d > 0.0) {
+            words.push("--duration".into());
+            words.push(schema::format_number(schema::round_significant(d, 4)));
+        }
+        words.join(" ")
+    }
+}
+
+/// Run A's pairs in schema order: `alpha` when α1 = α2, else `alpha1` and `alpha2`. With
+/// `changed_only`, settings at their CLI default are left out (except δ, α and K_pr).
+fn run_pairs(a: &RunSettings, changed_only: bool) -> Vec<(&'static str, String)> {
+    let defaults = RunSettings::default();
+    let mut out = Vec::new();
+    for p in schema::PARAMS.iter().filter(|p| p.scope == Scope::Run) {
+        let same_alpha = a.alpha[0] == a.alpha[1];
+        let skip = match p.key {
+            "alpha" => !same_alpha,
+            "alpha1" | "alpha2" => same_alpha,
+            _ => false,
+        };
+        if skip {
+            continue;
+        }
+        let v = a.get(p.key).expect("run keys have values");
+        let headline = matches!(p.key, "delta" | "alpha" | "alpha1" | "alpha2" | "pf");
+        if changed_only && !headline && defaults.get(p.key) == Some(v) {
+            continue;
+        }
+        out.push((p.key, v.text()));
+    }
+    out
+}
+
+fn join_query(pairs: &[(&str, String)]) -> String {
+    pairs.iter().map(|(k, v)| format!("{k}={}", encode(v))).collect::<Vec<_>>().join("&")
+}
+
+/// Splits `a=1&b=2` (with or without a leading `?`) into decoded pairs.
+pub fn split_query(query: &str) -> Vec<(String, String)> {
+    query
+        .trim()
+        .trim_start_matches('?')
+        .split('&')
+        .filter(|part| !part.is_empty())
+        .map(|part| {
+            let (k, v) = part.split_once('=').unwrap_or((part, ""));
+            (decode(k), decode(v))
+        })
+        .collect()
+}
+
+/// Percent-decoding with `+` as a space; invalid escapes stay as they are.
+fn decode(s: &str) -> String {
+    let bytes = s.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'+' => out.push(b' '),
+            b'%' => match (hex(bytes.get(i + 1)), hex(bytes.get(i + 2))) {
+                (Some(h), Some(l)) => {
+                    out.push(h * 16 + l);
+                    i += 2;
+                }
+                _ => out.push(b'%'),
+            },
+            b => out.push(b),
+        }
+        i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+fn hex(b: Option<&u8>) -> Option<u8> {
+    let b = *b?;
+    (b as char).to_digit(16).map(|d| d as u8)
+}
+
+/// Percent-encodes what a query value must not contain raw.
+fn encode(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for b in s.bytes() {
+        if b.is_ascii_alphanumeric() || b"-._~".contains(&b) {
+            out.push(b as char);
+        } else {
+            out.push_str(&format!("%{b:02X}"));
+        }
+    }
+    out
+}
+
+fn unknown(key: &str) -> Error {
+    let known: Vec<&str> = schema::PARAMS.iter().map(|p| p.key).collect();
+    Error::Parse(ParseError {
+        key: key.into(),
+        text: String::new(),
+        expected: format!("a known setting: preset, {}", known.join(", ")),
+    })
+}
+
+fn preset_error(id: &str) -> Error {
+    let ids: Vec<&str> = super::presets::PRESETS.iter().map(|p| p.id).collect();
+    Error::Parse(ParseError { key: "preset".into(), text: id.into(), expected: format!("one of {}", ids.join(" | ")) })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_the_papers_configuration() {
+        assert_eq!(RunSettings::default().config(), SimulationConfig::default());
+        assert_eq!(schema::K.number().unwrap().min as usize, crate::control::config::DAE_INDEX + 1);
+    }
+
+    #[test]
+    fn a_query_round_trips() {
+        let mut s = Settings::page_start();
+        s.read("delta=0.04&alpha1=1&alpha2=3&pf=off&friction=held&inner=sampled&k=10&eps_ratio=6", Source::Page)
+            .unwrap();
+        s.b = Some(CompareSettings { pf: PreliminaryFeedbackChoice::Lq, delta: 0.02, alpha: [0.5, 0.5] });
+        let q = s.to_query();
+        let mut back = Settings::default();
+        assert!(back.read(&q, Source::Page).unwrap().is_empty(), "{q}");
+        assert_eq!(back, s, "{q}");
+    }
+
+    #[test]
+    fn the_page_skips_bad_values_with_notices_the_cli_refuses_them() {
+        let mut s = Settings::page_start();
+        let notices = s.read("?delta=abc&pf=maybe&alpha=0.5&bogus=1", Source::Page).unwrap();
+        let keys: Vec<&str> = notices.iter().map(|n| n.key.as_str()).collect();
+        assert_eq!(keys, ["bogus", "delta", "pf"]);
+        assert_eq!(s.a.alpha, [0.5, 0.5]);
+        assert_eq!(s.a.delta, 0.01);
+        assert!(Settings::default().read("delta=abc", Source::CommandLine).is_err());
+        assert!(Settings::default().read("delta=5", Source::Page).unwrap().len() == 1, "outside the slider");
+        assert!(Settings::default().read("delta=5", Source::CommandLine).unwrap().is_empty(), "inside the limits");
+        // The page's own keys mean nothing to the CLI.
+        let mut c = Settings::default();
+        assert!(c.read("speed=2&compare=1&b_pf=off", Source::CommandLine).unwrap().is_empty());
+        assert_eq!(c, Settings::default());
+    }
+
+    #[test]
+    fn presets_apply_first_and_run_b_needs_compare() {
+        let mut s = Settings::page_start();
+        s.read("preset=fig5.3&delta=0.02&b_pf=lq", Source::Page).unwrap();
+        assert_eq!((s.a.delta, s.a.pf, s.b), (0.02, PreliminaryFeedbackChoice::Off, None));
+        s.read("compare=1&b_pf=lq", Source::Page).unwrap();
+        assert_eq!(s.b.unwrap().pf, PreliminaryFeedbackChoice::Lq);
+    }
+
+    #[test]
+    fn the_command_line_names_what_differs() {
+        let mut s = Settings::page_start();
+        s.read("delta=0.01&pf=off", Source::Page).unwrap();
+        assert_eq!(
+            s.command_line(Some(4.25)),
+            "flexarm simulate --delta 0.01 --alpha 2 --pf off --repeat --duration 4.25"
+        );
+        s.a.alpha = [1.0, 2.0];
+        s.a.friction = FrictionCompensation::Held;
+        s.a.repeat = false;
+        assert_eq!(
+            s.command_line(None),
+            "flexarm simulate --delta 0.01 --alpha1 1 --alpha2 2 --pf off --friction held"
+        );
+    }
+
+    #[test]
+    fn queries_decode_and_encode() {
+        assert_eq!(
+            split_query("?a=1+2&b=%3Cx%3E&c"),
+            [("a".into(), "1 2".into()), ("b".into(), "<x>".into()), ("c".into(), "".into())]
+        );
+        assert_eq!(encode("<script>"), "%3Cscript%3E");
+        assert_eq!(decode("%zz%4"), "%zz%4");
+    }
+}

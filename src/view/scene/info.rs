@@ -1,0 +1,367 @@
+//! The frame as the page reads it: each panel's rectangle, axis ranges, ticks and their labels
+//! (formatted here, so the page only places text), the pole plot's markers, how each run is drawn
+//! (the legend), and what lies under the pointer (tooltips and map picks).
+
+use serde::Serialize;
+
+use super::{
+    plot_series, plot_ticks, pole_ticks, run_pole_style, y_label, Scene, CURVE_WIDTH, CURVE_WIDTH_B, RUN_NAMES,
+};
+use crate::plot::format::{self, TickFormat};
+use crate::plot::ticks::label_log_ticks;
+use crate::plot::Color;
+use crate::session::maps::{feedback_short, point_text, MapSide};
+use crate::view::arm::ArmFrame;
+use crate::view::autoscale::Autoscale;
+use crate::view::layout::{Panel, PanelKind};
+use crate::view::map::{map_ticks, side_of};
+use crate::view::poles::{describe_poles, PoleFrame, PoleInfo, PoleKind, IM_RANGE, RE_RANGE};
+use crate::view::traces::TimeWindow;
+
+/// Least distance between log-axis labels, CSS px (x: a label's width, y: its height).
+const LOG_LABEL_SPACING: [f64; 2] = [38.0, 17.0];
+
+/// A tick that gets a label, and the label.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TickLabel {
+    pub value: f64,
+    pub text: String,
+}
+
+/// A panel as the page sees it, for placing HTML labels over the canvas (CSS pixels, origin at
+/// the canvas' top-left). For plots the rectangle is the data area: `x_range` maps onto
+/// [x, x + width] and `y_range` onto [y + height, y] — linearly, or logarithmically where
+/// `x_scale`/`y_scale` is "log" (then a fraction f of the width is x = lo·(hi/lo)^f). For the arms
+/// the ranges are the shown region in picture units (link 1 is 1 long) and there are no ticks.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PanelInfo {
+    pub id: &'static str,
+    pub x: f64,
+    pub y: f64,
+    pub width: f64,
+    pub height: f64,
+    pub x_label: &'static str,
+    pub y_label: &'static str,
+    /// A caption for panels without axis titles ("arm, top view").
+    pub title: String,
+    /// A note inside the panel ("ρ without K_pr").
+    pub note: String,
+    pub x_range: [f64; 2],
+    pub y_range: [f64; 2],
+    /// Where the grid lines are.
+    pub x_ticks: Vec<f64>,
+    pub y_ticks: Vec<f64>,
+    /// Which ticks get a label, and the label text.
+    pub x_labels: Vec<TickLabel>,
+    pub y_labels: Vec<TickLabel>,
+    /// "linear" or "log".
+    pub x_scale: &'static str,
+    pub y_scale: &'static str,
+}
+
+/// How one run is drawn, for the page's legend (colours as CSS strings).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SeriesInfo {
+    /// "A" or "B".
+    pub run: &'static str,
+    /// The run's main colour (legend swatch): e1's colour for A, the single hue of B.
+    pub color: String,
+    /// Curve colours in the e1, e2 and torque panels.
+    pub e1: String,
+    pub e2: String,
+    pub torque1: String,
+    pub torque2: String,
+    /// Curve width, CSS pixels.
+    pub line_width: f64,
+    /// "solid" (A) or "thin" (B: a thinner line in its own hue, drawn over A's).
+    pub style: &'static str,
+    /// Loop-pole marker in the pole plot: "cross" (×, A) or "plus" (+, B); unstable poles red.
+    pub pole_marker: &'static str,
+    /// Colour of stable loop poles and of the map marker.
+    pub pole_color: String,
+    /// Colour of unstable loop poles.
+    pub unstable_color: String,
+    /// Colours of the A4 markers: rings without preliminary feedback, diamonds with it.
+    pub a4_open_color: String,
+    pub a4_color: String,
+}
+
+/// One line of a tooltip, with its tone ("good", "bad" or "").
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TipLine {
+    pub text: String,
+    pub tone: &'static str,
+}
+
+impl TipLine {
+    fn plain(text: impl Into<String>) -> Self {
+        Self { text: text.into(), tone: "" }
+    }
+
+    fn toned(text: impl Into<String>, good: bool) -> Self {
+        Self { text: text.into(), tone: if good { "good" } else { "bad" } }
+    }
+}
+
+/// What lies under the pointer: a pole or a point of a map, described for a tooltip.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Probe {
+    /// "pole" or "map".
+    pub kind: &'static str,
+    pub title: String,
+    pub lines: Vec<TipLine>,
+    /// Where the tooltip points, CSS pixels in the canvas.
+    pub x: f64,
+    pub y: f64,
+    /// For a map: which one ("off" or "on") and the (δ, α) under the pointer.
+    pub map: Option<MapSide>,
+    pub delta: Option<f64>,
+    pub alpha: Option<f64>,
+}
+
+/// Text labels for linear ticks.
+fn linear_labels(ticks: &[f64]) -> Vec<TickLabel> {
+    let f = TickFormat::for_ticks(ticks);
+    ticks.iter().map(|&value| TickLabel { value, text: f.format(value) }).collect()
+}
+
+/// Text labels for the log ticks that fit along `length` pixels.
+fn log_labels(ticks: &[f64], range: [f64; 2], length: f64, spacing: f64) -> Vec<TickLabel> {
+    label_log_ticks(ticks, range[0], range[1], length, spacing)
+        .into_iter()
+        .map(|value| TickLabel { value, text: format::log_tick(value) })
+        .collect()
+}
+
+impl Scene {
+    /// The panels with their axis ranges, ticks and labels as of the latest frame.
+    pub fn panel_info(&self) -> Vec<PanelInfo> {
+        let window = self.window();
+        self.layout.panels.iter().map(|panel| self.describe(panel, window)).collect()
+    }
+
+    fn describe(&self, panel: &Panel, window: TimeWindow) -> PanelInfo {
+        let r = panel.rect;
+        let mut info = PanelInfo {
+            id: panel.kind.id(),
+            x: r.x,
+            y: r.y,
+            width: r.w,
+            height: r.h,
+            x_label: "",
+            y_label: "",
+            title: String::new(),
+            note: String::new(),
+            x_range: [0.0, 0.0],
+            y_range: [0.0, 0.0],
+            x_ticks: Vec::new(),
+            y_ticks: Vec::new(),
+            x_labels: Vec::new(),
+            y_labels: Vec::new(),
+            x_scale: "linear",
+            y_scale: "linear",
+        };
+        match panel.kind {
+            PanelKind::Arm | PanelKind::ArmB => {
+                let rect_px = self.layout.to_physical(r);
+                let (x_range, y_range) = ArmFrame::fit(rect_px, self.layout.device_pixel_ratio).world_range(rect_px);
+                info.x_range = x_range;
+                info.y_range = y_range;
+                info.title = match (panel.kind, self.pair) {
+                    (PanelKind::Arm, false) => "arm, top view".into(),
+                    (PanelKind::Arm, true) => "A: arm, top view".into(),
+                    _ => "B: arm, top view".into(),
+                };
+            }
+            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
+                let y = self.scale(panel.kind).map_or(0.0, Autoscale::limit);
+                let (x_ticks, y_ticks) = plot_ticks(r, window, y);
+                info.x_label = "t [s]";
+                info.y_label = y_label(panel.kind);
+                info.x_range = [window.start, window.end];
+                info.y_range = [-y, y];
+                info.x_ticks = x_ticks.collect();
+                info.y_ticks = y_ticks.collect();
+            }
+            PanelKind::Poles => {
+                let (x_ticks, y_ticks) = pole_ticks(r);
+                info.x_label = "Re s [1/s]";
+                info.y_label = "Im s [rad/s]";
+                info.x_range = RE_RANGE;
+                info.y_range = IM_RANGE;
+                info.x_ticks = x_ticks.collect();
+                info.y_ticks = y_ticks.collect();
+            }
+            PanelKind::MapOff | PanelKind::MapOn => {
+                let side = side_of(panel.kind).unwrap_or(MapSide::Off);
+                let grid = &self.maps[side.index()];
+                let (x_ticks, y_ticks) = map_ticks(r, grid);
+                info.x_label = "δ [s]";
+                info.y_label = "α [1/s]";
+                info.x_range = grid.delta_range();
+                info.y_range = grid.alpha_range();
+                info.x_labels = log_labels(&x_ticks, info.x_range, r.w, LOG_LABEL_SPACING[0]);
+                info.y_labels = log_labels(&y_ticks, info.y_range, r.h, LOG_LABEL_SPACING[1]);
+                info.x_ticks = x_ticks;
+                info.y_ticks = y_ticks;
+                info.x_scale = "log";
+                info.y_scale = "log";
+                let pf = self.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
+                info.note = side.caption(pf);
+            }
+        }
+        if info.x_scale == "linear" {
+            info.x_labels = linear_labels(&info.x_ticks);
+        }
+        if info.y_scale == "linear" {
+            info.y_labels = linear_labels(&info.y_ticks);
+        }
+        info
+    }
+
+    /// Every marker of the pole plot (both runs in pair mode) with its position in CSS pixels,
+    /// for hover readouts. Positions are null when the pole plot is hidden.
+    pub fn pole_info(&self) -> Vec<PoleInfo> {
+        let frame = self.layout.panel(PanelKind::Poles).map(|p| PoleFrame::new(p.rect));
+        let mut out = Vec::new();
+        for (memory, name) in self.runs.iter().zip(RUN_NAMES).take(self.run_count()) {
+            if let Some(report) = &memory.report {
+                describe_poles(report, name, frame.as_ref(), &mut out);
+            }
+        }
+        out
+    }
+
+    /// How each shown run is drawn (one entry, or two in pair mode), for the page's legend.
+    pub fn series_info(&self) -> Vec<SeriesInfo> {
+        use crate::control::Traces;
+        (0..self.run_count())
+            .map(|run| {
+                let style = run_pole_style(run);
+                let empty = Traces::default();
+                let [t1, t2] = plot_series(PanelKind::Torque, &empty, run).map(|s| s.map(|(_, c)| c));
+                let e1 = plot_series(PanelKind::Error1, &empty, run)[0].map(|(_, c)| c);
+                let e2 = plot_series(PanelKind::Error2, &empty, run)[0].map(|(_, c)| c);
+                let css = |c: Option<Color>| c.map(Color::css).unwrap_or_default();
+                SeriesInfo {
+                    run: RUN_NAMES[run],
+                    color: css(e1),
+                    e1: css(e1),
+                    e2: css(e2),
+                    torque1: css(t1),
+                    torque2: css(t2),
+                    line_width: if run == 0 { CURVE_WIDTH } else { CURVE_WIDTH_B },
+                    style: if run == 0 { "solid" } else { "thin" },
+                    pole_marker: if style.plus { "plus" } else { "cross" },
+                    pole_color: style.stable.css(),
+                    unstable_color: style.unstable.css(),
+                    a4_open_color: style.a4_open.css(),
+                    a4_color: style.a4.css(),
+                }
+            })
+            .collect()
+    }
+
+    /// What lies at (x, y) (CSS pixels in the canvas): the nearest pole within `reach` pixels,
+    /// else the point of a map under the pointer; `None` elsewhere.
+    pub fn probe(&self, x: f64, y: f64, reach: f64) -> Option<Probe> {
+        self.probe_pole(x, y, reach).or_else(|| self.probe_map(x, y))
+    }
+
+    fn probe_pole(&self, x: f64, y: f64, reach: f64) -> Option<Probe> {
+        let panel = self.layout.panel(PanelKind::Poles)?.rect;
+        let near_panel = |px: f64, py: f64, m: f64| {
+            px >= panel.x - m && px <= panel.right() + m && py >= panel.y - m && py <= panel.bottom() + m
+        };
+        if !near_panel(x, y, reach / 2.0) {
+            return None;
+        }
+        let poles = self.pole_info();
+        let at = |p: &PoleInfo| Some((p.x?, p.y?)).filter(|(px, py)| near_panel(*px, *py, 12.0));
+        let best = poles
+            .iter()
+            .filter_map(|p| at(p).map(|(px, py)| (p, px, py, (px - x).hypot(py - y))))
+            .filter(|(.., d)| *d <= reach)
+            .min_by(|a, b| a.3.total_cmp(&b.3))?;
+        let (pole, px, py, _) = best;
+        let others = poles
+            .iter()
+            .filter(|p| !std::ptr::eq(*p, pole))
+            .filter_map(at)
+            .filter(|(qx, qy)| (qx - px).hypot(qy - py) < 4.0)
+            .count();
+        let im = pole.im.abs();
+        let s = if im > 1e-9 {
+            format!("s = {} ± {}j 1/s", format::sig(pole.re, 3), format::sig(im, 4))
+        } else {
+            format!("s = {} 1/s", format::sig(pole.re, 3))
+        };
+        let mut lines = vec![TipLine::plain(s)];
+        if let Some(zeta) = pole.zeta {
+            lines.push(TipLine::plain(format!("damping ratio ζ = {}", format::sig(zeta, 3))));
+        }
+        lines.push(TipLine::plain(format!("frequency ω = {} rad/s", format::sig(pole.omega, 3))));
+        lines.push(if pole.unstable {
+            TipLine::toned("unstable: Re s > 0, it grows", false)
+        } else {
+            TipLine::toned("stable: it decays", true)
+        });
+        if !pole.in_view {
+            lines.push(TipLine::plain("outside the shown range (marked at the edge)"));
+        }
+        if others > 0 {
+            lines.push(TipLine::plain(format!(
+                "({others} more pole{} at the same spot)",
+                if others > 1 { "s" } else { "" }
+            )));
+        }
+        let mut title = match pole.kind {
+            PoleKind::Loop => "loop pole (sampled loop, s = ln λ / δ)",
+            PoleKind::A4Open => "A4 without PF (δ → 0 limit)",
+            PoleKind::A4 => "A4 with PF (δ → 0 limit)",
+        }
+        .to_string();
+        if self.pair {
+            title += &format!(" — run {}", pole.run);
+        }
+        Some(Probe { kind: "pole", title, lines, x: px, y: py, map: None, delta: None, alpha: None })
+    }
+
+    /// The map and (δ, α) at (x, y), if (x, y) lies on a map.
+    pub fn map_point(&self, x: f64, y: f64) -> Option<(MapSide, f64, f64)> {
+        let panel = self
+            .layout
+            .panels
+            .iter()
+            .find(|p| side_of(p.kind).is_some() && p.rect.w > 0.0 && p.rect.h > 0.0 && contains(p, x, y))?;
+        let side = side_of(panel.kind)?;
+        let grid = &self.maps[side.index()];
+        let r = panel.rect;
+        let fx = ((x - r.x) / r.w).clamp(0.0, 1.0);
+        let fy = (1.0 - (y - r.y) / r.h).clamp(0.0, 1.0);
+        let along = |f: f64, [lo, hi]: [f64; 2]| lo * (hi / lo).powf(f);
+        Some((side, along(fx, grid.delta_range()), along(fy, grid.alpha_range())))
+    }
+
+    fn probe_map(&self, x: f64, y: f64) -> Option<Probe> {
+        let (side, delta, alpha) = self.map_point(x, y)?;
+        let rho = self.maps[side.index()].rho_near(delta, alpha);
+        let mut lines = vec![TipLine::plain(point_text(delta, alpha))];
+        lines.push(if rho.is_finite() {
+            TipLine::toned(format!("ρ = {rho:.3}: {}", if rho < 1.0 { "stable" } else { "unstable" }), rho < 1.0)
+        } else {
+            TipLine::plain("ρ not computed yet")
+        });
+        lines.push(TipLine::plain("click to run here"));
+        let pf = self.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
+        let title = match side.feedback(pf) {
+            crate::control::config::PreliminaryFeedbackChoice::Off => "without preliminary feedback".to_string(),
+            f => format!("with {}", feedback_short(f)),
+        };
+        Some(Probe { kind: "map", title, lines, x, y, map: Some(side), delta: Some(delta), alpha: Some(alpha) })
+    }
+}
+
+fn contains(p: &Panel, x: f64, y: f64) -> bool {
+    x >= p.rect.x && x <= p.rect.right() && y >= p.rect.y && y <= p.rect.bottom()
+}

@@ -1,0 +1,64 @@
+//! The plotting foundation the canvas, its labels and the SVG share: ticks, labels, the ρ colour
+//! ramp.
+
+use flexarm::plot::color::{ramp_color, rho_color, rho_position};
+use flexarm::plot::format::{self, TickFormat};
+use flexarm::plot::palette;
+use flexarm::plot::ticks::{label_log_ticks, log_minor_ticks, log_ticks, Ticks};
+
+#[test]
+fn ticks_are_nice() {
+    assert_eq!(log_ticks(0.002, 0.25, 9), vec![0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2]);
+    let minor = log_minor_ticks(0.002, 0.25, &log_ticks(0.002, 0.25, 9));
+    assert!(minor.contains(&0.003) && minor.contains(&0.09) && !minor.contains(&0.002));
+    assert_eq!(log_ticks(1e-6, 1e3, 9).len(), 10, "powers of ten only");
+    assert_eq!(log_ticks(0.03, 0.045, 9).len(), 2);
+    // Every tick an exact decimal: 0.6, not 0.6000000000000001.
+    assert_eq!(Ticks::new(-0.3, 0.7, 5).collect::<Vec<_>>(), vec![-0.2, 0.0, 0.2, 0.4, 0.6]);
+    assert_eq!(Ticks::new(0.0, 0.7, 7).collect::<Vec<_>>(), vec![0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7]);
+    assert_eq!(format::number(0.002), "0.002");
+    assert_eq!(format::number(-1.5), "−1.5");
+    assert_eq!(format::number(2e-7), "2e−7");
+    assert_eq!(format::number(250.0), "250");
+}
+
+#[test]
+fn crowded_log_labels_keep_decades_first_and_their_spacing() {
+    let grid = log_ticks(0.002, 0.25, 3);
+    // A short axis: labels at least 38 px apart, the grid's decades kept first.
+    let kept = label_log_ticks(&grid, 0.002, 0.25, 120.0, 38.0);
+    let pos = |v: f64| (v / 0.002f64).ln() / (0.25f64 / 0.002).ln() * 120.0;
+    for w in kept.windows(2) {
+        assert!(pos(w[1]) - pos(w[0]) >= 38.0 - 1e-9, "{kept:?}");
+    }
+    for decade in [0.01, 0.1] {
+        assert!(grid.contains(&decade) && kept.contains(&decade), "the grid's decades come first: {kept:?}");
+    }
+    // A long axis: every 1-2-5 value.
+    assert_eq!(label_log_ticks(&grid, 0.002, 0.25, 2000.0, 38.0), log_ticks(0.002, 0.25, 100));
+}
+
+#[test]
+fn tick_labels_name_each_tick() {
+    let labels = |t: &[f64]| t.iter().map(|&v| TickFormat::for_ticks(t).format(v)).collect::<Vec<_>>();
+    assert_eq!(labels(&[-0.4, -0.2, 0.0, 0.2, 0.4]), ["−0.4", "−0.2", "0", "0.2", "0.4"]);
+    assert_eq!(labels(&[-1e-3, -5e-4, 0.0, 5e-4, 1e-3]), ["−1e−3", "−5e−4", "0", "5e−4", "1e−3"]);
+    assert_eq!(labels(&[0.0, 2.0, 4.0, 6.0]), ["0", "2", "4", "6"]);
+}
+
+#[test]
+fn the_map_colours_diverge_around_rho_1() {
+    assert_eq!(rho_color(1.0), palette::MAP_NEUTRAL);
+    let blue = rho_color(0.5).0;
+    let red = rho_color(2.0).0;
+    assert!(blue[2] > blue[0] && red[0] > red[2]);
+    assert_eq!(rho_color(0.8), rho_color(0.1), "saturates at ρ = 0.8");
+    assert_eq!(rho_color(1.2), rho_color(3.0), "saturates at ρ = 1.2");
+    assert_eq!(rho_color(f64::NAN), palette::MAP_PENDING);
+    // The ramp is what the colour bar draws: position ½ at ρ = 1, monotone on each side.
+    assert_eq!(rho_position(1.0), 0.5);
+    assert_eq!(ramp_color(rho_position(0.9)), rho_color(0.9));
+    assert!(rho_position(0.98) < rho_position(0.99) && rho_position(1.01) < rho_position(1.02));
+    // ρ = 0.98 and 1.02 are visibly coloured (the square-root ramp): a fifth of the way out.
+    assert!((rho_position(1.02) - 0.5) > 0.15);
+}
