@@ -10,8 +10,8 @@ use std::process::Command;
 use std::time::Instant;
 
 use flexarm::analysis::spectral_radius;
-use flexarm::predictive::{Predictor, StateVector};
-use flexarm::reference::Reference;
+use flexarm::control::predictive::{Predictor, StateVector};
+use flexarm::model::reference::Reference;
 use flexarm::*;
 use nalgebra::Vector2;
 

@@ -11,13 +11,19 @@ ensure_rust
 step "native tests (cargo test)"
 cargo test --locked
 
+ensure_node
+step "unit tests of the page's modules (node --test www/js/)"
+node --test www/js/
+
 ensure_wasm_toolchain
 ensure_browser
 step "wasm tests in headless Chromium (wasm-pack test)"
 wasm-pack test --headless --chrome --chromedriver "$(command -v chromedriver)" wasm-tests
 
 build_wasm
-ensure_node
-step "end-to-end tests of the page (Playwright + Chromium)"
+step "type-checking the page's modules against the wasm-bindgen declarations (tsc --checkJs)"
 (cd tests/e2e && npm ci --no-audit --no-fund --loglevel=error)
+tests/e2e/node_modules/.bin/tsc -p www/jsconfig.json
+
+step "end-to-end tests of the page (Playwright + Chromium)"
 node --test tests/e2e/

@@ -352,3 +352,34 @@ fn help_describes_map_and_svg() {
     }
     assert!(!map_help.contains("--output-interval"), "map --help is map's alone");
 }
+
+// ------------------------------------------------------------------ the page's state string
+
+#[test]
+fn the_pages_command_line_and_state_string_run_the_same_settings() {
+    use flexarm::session::{Settings, Source};
+    let mut settings = Settings::page_start();
+    settings
+        .read("delta=0.04&alpha1=1&alpha2=1.5&pf=lq&friction=held&inner=sampled&k=10&eps_ratio=6", Source::Page)
+        .unwrap();
+    // "Copy as command line" gives these words; the CLI runs exactly these settings.
+    let command = settings.command_line(Some(1.0));
+    let words: Vec<&str> = command.split(' ').skip(1).chain(["--json"]).collect();
+    let v = json_of(&words);
+    assert_eq!(v["state"], settings.run_query(), "{command}");
+    assert_eq!((num(&v, "delta"), num(&v, "alpha1"), num(&v, "alpha2"), num(&v, "duration")), (0.04, 1.0, 1.5, 1.0));
+    assert_eq!(
+        (v["pf"].as_str(), v["friction"].as_str(), v["inner"].as_str()),
+        (Some("lq"), Some("held"), Some("sampled"))
+    );
+    assert_eq!(v["repeat"], true);
+    // The page's URL query works as --state; flags given as well override it.
+    let query = settings.to_query();
+    let v = json_of(&["simulate", "--state", &query, "--duration", "1", "--json"]);
+    assert_eq!(v["state"], settings.run_query());
+    let v = json_of(&["simulate", "--state", &query, "--delta", "0.02", "--duration", "0.5", "--json"]);
+    assert_eq!(num(&v, "delta"), 0.02);
+    // A bad state string is one line naming the problem, status 2.
+    assert_usage_error(&["simulate", "--state", "delta=oops"], &["--state", "delta", "oops"]);
+    assert_usage_error(&["analyze", "--state", "bogus=1"], &["--state", "bogus"]);
+}

@@ -123,8 +123,9 @@ impl MapJob {
         self.rho.len() / self.deltas.len().max(1)
     }
 
+    /// True when every row is computed (at once for an empty grid).
     pub fn is_done(&self) -> bool {
-        self.rows_done() >= self.alphas.len()
+        self.deltas.is_empty() || self.rows_done() >= self.alphas.len()
     }
 
     /// Fraction of rows computed, 0–1.
@@ -148,7 +149,9 @@ impl MapJob {
             return Ok(());
         }
         let alpha = self.alphas[self.rows_done()];
-        let row_settings = self.settings.at(self.settings.controller.sampling_period, [alpha, alpha]);
+        // The model of a row is built at the row's first δ (any δ of the grid would do: it only
+        // fixes α), so a key whose own δ was normalized away still validates.
+        let row_settings = self.settings.at(self.deltas[0], [alpha, alpha]);
         let before = self.rho.len();
         let row = LoopModel::new(&row_settings).and_then(|model| {
             for &delta in &self.deltas {

@@ -119,7 +119,7 @@ impl Session {
 
     /// The preset the settings match, if any.
     pub fn preset(&self) -> Option<&'static Preset> {
-        PRESETS.iter().find(|p| p.matches(&self.settings))
+        PRESETS.iter().find(|p| self.settings.matches(p))
     }
 
     /// What the last change did to the runs ("" if nothing to say).
@@ -134,10 +134,11 @@ impl Session {
 
     // ------------------------------------------------------------------------------- changes
 
-    /// Sets one parameter from its text as a control gives it (numbers within the control's span).
+    /// Sets one parameter from its text (a selector's value, a number typed): within the
+    /// parameter's limits, which may reach beyond its slider's span.
     pub fn set(&mut self, key: &str, text: &str) -> Result<(), Error> {
         let p = schema::param(key).ok_or_else(|| not_a_setting(key))?;
-        let v = p.parse(text, true)?;
+        let v = p.parse(text, false)?;
         self.set_value(key, v)
     }
 
@@ -168,7 +169,7 @@ impl Session {
             })
         })?;
         let mut next = self.settings;
-        p.apply(&mut next)?;
+        next.apply_preset(p)?;
         self.apply(next, true, &format!("Preset applied; the run restarted: {}.", p.title))
     }
 

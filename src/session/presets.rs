@@ -1,8 +1,6 @@
 //! Named starting points that reproduce the paper's figures and its remarks, each a state string
-//! (the same text as a URL query).
-
-use super::settings::{Settings, Source};
-use crate::error::Error;
+//! (the same text as a URL query). Data only: [`super::settings::Settings::apply_preset`] applies
+//! one.
 
 /// A named starting point: the paper's figures and two of its remarks.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
@@ -13,19 +11,6 @@ pub struct Preset {
     pub title: &'static str,
     /// The settings it makes, as a state string.
     pub state: &'static str,
-}
-
-impl Preset {
-    /// Applies the preset's settings over `settings`.
-    pub fn apply(&self, settings: &mut Settings) -> Result<(), Error> {
-        settings.read(self.state, Source::CommandLine).map(|_| ())
-    }
-
-    /// True if `settings` already have every value this preset sets.
-    pub fn matches(&self, settings: &Settings) -> bool {
-        let mut applied = *settings;
-        self.apply(&mut applied).is_ok() && applied.a == settings.a
-    }
 }
 
 /// All presets, in the order a student meets them.
@@ -60,23 +45,4 @@ pub const PRESETS: [Preset; 5] = [
 /// The preset with identifier `id`.
 pub fn preset(id: &str) -> Option<&'static Preset> {
     PRESETS.iter().find(|p| p.id == id)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn every_preset_applies_and_matches_afterwards() {
-        for p in &PRESETS {
-            let mut s = Settings::page_start();
-            p.apply(&mut s).unwrap();
-            assert!(p.matches(&s), "{}", p.id);
-            assert!(s.a.repeat, "{}: a preset leaves the slew as it was", p.id);
-        }
-        let mut s = Settings::default();
-        preset("fig5.3").unwrap().apply(&mut s).unwrap();
-        s.a.delta = 0.02;
-        assert!(!preset("fig5.3").unwrap().matches(&s));
-    }
 }

@@ -6,6 +6,7 @@
 //! setting so a shared link means the same thing everywhere; [`Settings::command_line`] writes the
 //! `flexarm simulate …` that reproduces run A.
 
+use super::presets::{preset, Preset, PRESETS};
 use crate::control::config::{FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
 use crate::error::{Error, ParseError};
 use crate::schema::{self, Param, Scope, Value};
@@ -227,8 +228,8 @@ impl Settings {
             }
         };
         if let Some((_, id)) = pairs.iter().find(|(k, _)| k == "preset") {
-            match super::presets::preset(id) {
-                Some(p) => p.apply(self)?,
+            match preset(id) {
+                Some(p) => self.apply_preset(p)?,
                 None => fail("preset", preset_error(id))?,
             }
         }
@@ -264,6 +265,17 @@ impl Settings {
             }
         }
         Ok(notices)
+    }
+
+    /// Applies a preset's settings over these.
+    pub fn apply_preset(&mut self, p: &Preset) -> Result<(), Error> {
+        self.read(p.state, Source::CommandLine).map(|_| ())
+    }
+
+    /// True if these settings already have every value `p` sets.
+    pub fn matches(&self, p: &Preset) -> bool {
+        let mut applied = *self;
+        applied.apply_preset(p).is_ok() && applied.a == self.a
     }
 
     /// The state string of everything set: every run setting of A, then the page's own keys.
@@ -403,7 +415,7 @@ fn unknown(key: &str) -> Error {
 }
 
 fn preset_error(id: &str) -> Error {
-    let ids: Vec<&str> = super::presets::PRESETS.iter().map(|p| p.id).collect();
+    let ids: Vec<&str> = PRESETS.iter().map(|p| p.id).collect();
     Error::Parse(ParseError { key: "preset".into(), text: id.into(), expected: format!("one of {}", ids.join(" | ")) })
 }
 
@@ -453,6 +465,20 @@ mod tests {
         assert_eq!((s.a.delta, s.a.pf, s.b), (0.02, PreliminaryFeedbackChoice::Off, None));
         s.read("compare=1&b_pf=lq", Source::Page).unwrap();
         assert_eq!(s.b.unwrap().pf, PreliminaryFeedbackChoice::Lq);
+    }
+
+    #[test]
+    fn every_preset_applies_and_matches_afterwards() {
+        for p in &PRESETS {
+            let mut s = Settings::page_start();
+            s.apply_preset(p).unwrap();
+            assert!(s.matches(p), "{}", p.id);
+            assert!(s.a.repeat, "{}: a preset leaves the slew as it was", p.id);
+        }
+        let mut s = Settings::default();
+        s.apply_preset(preset("fig5.3").unwrap()).unwrap();
+        s.a.delta = 0.02;
+        assert!(!s.matches(preset("fig5.3").unwrap()));
     }
 
     #[test]

@@ -22,6 +22,7 @@ pub mod arm;
 pub mod autoscale;
 pub mod layout;
 pub mod map;
+pub mod options;
 pub mod painter;
 pub mod poles;
 pub mod scene;

@@ -14,7 +14,7 @@ pub type Point = [f64; 2];
 ///
 /// `#[repr(C)]` with six `f32` and no padding: 24 bytes, position at offset 0, colour at 8.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct Vertex {
     /// Physical pixels, origin top-left.
     pub position: [f32; 2],
@@ -71,10 +71,7 @@ impl Painter {
 
     /// The triangle list as raw bytes for the GPU vertex buffer.
     pub fn vertex_bytes(&self) -> &[u8] {
-        let len = self.vertices.len() * Vertex::SIZE;
-        // SAFETY: `Vertex` is `#[repr(C)]` and made only of `f32`, so it has no padding and every
-        // byte is initialised; u8 has alignment 1 and the length covers exactly the vertices.
-        unsafe { core::slice::from_raw_parts(self.vertices.as_ptr().cast::<u8>(), len) }
+        bytemuck::cast_slice(&self.vertices)
     }
 
     /// Number of vertices written this frame.

@@ -218,12 +218,11 @@ test('performance figures (printed for the README)', async () => {
   assert.ok(perf.map_ms === null || perf.map_ms > 0, `map_ms ${perf.map_ms}`);
   // How fast the wasm build simulates when nothing else runs: 10 s of the paper's loop.
   const throughput = await page.evaluate(() => {
-    const Sim = window.flexarm.wasm.Simulation;
-    const sim = new Sim({ controller: { sampling_period: 0.01 }, preliminary_feedback: 'paper' });
+    const session = new window.flexarm.wasm.Session('delta=0.01&pf=paper&repeat=0');
     const t0 = performance.now();
-    while (sim.time() < 10 - 1e-9) sim.advance(0.25, 1);
+    while (session.time() < 10 - 1e-9) session.advance(0.25);
     const wall = (performance.now() - t0) / 1000;
-    sim.free();
+    session.free();
     return 10 / wall;
   });
   console.log(`# wasm ${(wasm.length / 1e6).toFixed(2)} MB raw, ${(gzip / 1e6).toFixed(2)} MB gzip`);
@@ -323,6 +322,24 @@ test('side by side: two arms, both runs, two verdicts', async () => {
   assert.match(legend, /A:.*no K_pr/);
   assert.match(legend, /B:.*paper K_pr/);
   await page.screenshot({ path: path.join(shots, 'side-by-side.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('copy as command line gives the flexarm command of what is on screen', async () => {
+  const { page, problems } = await open('?preset=fig5.3&speed=4');
+  await page.waitForTimeout(1000);
+  await page.click('#copy-command');
+  await page.waitForSelector('#command-line:not([hidden])', { timeout: 5000 });
+  const command = await page.textContent('#command-line');
+  assert.match(command, /^flexarm simulate --delta 0\.01 --alpha 2 --pf off --repeat --duration \d/);
+  // The same settings as the URL's state string.
+  const url = new URL(page.url()).searchParams;
+  assert.equal(url.get('delta'), '0.01');
+  assert.equal(url.get('pf'), 'off');
+  // The CSV export carries the state string too.
+  const csv = await page.evaluate(() => window.flexarm.session.csv());
+  assert.ok(csv.startsWith('# flexarm state: delta=0.01&alpha=2&pf=off'), csv.slice(0, 80));
   assert.deepEqual(problems, []);
   await page.close();
 });

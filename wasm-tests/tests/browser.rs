@@ -1,7 +1,8 @@
-//! Stability outcomes computed by the wasm build, in headless Chromium.
+//! Stability outcomes computed by the wasm build, in headless Chromium, through the same session
+//! handle the page uses.
 //! Run: `wasm-pack test --headless --chrome wasm-tests` (scripts/test.sh does).
 
-use flexarm::web::{spectral_radius, Simulation};
+use flexarm::web::{spectral_radius, WebSession};
 use js_sys::Reflect;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
@@ -10,11 +11,9 @@ wasm_bindgen_test_configure!(run_in_browser);
 
 include!(concat!(env!("OUT_DIR"), "/native_rho.rs"));
 
-fn config(delta: f64, alpha: f64, pf: &str) -> JsValue {
-    let js = js_sys::eval(&format!(
-        "({{ controller: {{ sampling_period: {delta}, alpha: [{alpha}, {alpha}] }}, preliminary_feedback: '{pf}' }})"
-    ));
-    js.expect("a literal object")
+/// The state string of a single-slew run (the paper's reference) at δ, α and a preliminary feedback.
+fn state(delta: f64, alpha: f64, pf: &str) -> String {
+    format!("delta={delta}&alpha={alpha}&pf={pf}&repeat=0")
 }
 
 fn get(obj: &JsValue, key: &str) -> JsValue {
@@ -30,13 +29,13 @@ fn pair(obj: &JsValue, key: &str) -> [f64; 2] {
     [number(&a, "0"), number(&a, "1")]
 }
 
-/// Runs `seconds` of simulated time in browser-sized frames and returns the metrics object.
+/// Runs `seconds` of simulated time in browser-sized frames and returns run A's metrics.
 fn run(delta: f64, pf: &str, seconds: f64) -> JsValue {
-    let mut sim = Simulation::new(config(delta, 2.0, pf)).map_err(JsValue::from).unwrap();
-    while sim.time() < seconds - 1e-9 && !sim.is_finished() {
-        sim.advance(0.1, 1.0).map_err(JsValue::from).unwrap();
+    let mut session = WebSession::new(&state(delta, 2.0, pf));
+    while session.time() < seconds - 1e-9 && !session.is_finished() {
+        session.advance(0.1).map_err(JsValue::from).unwrap();
     }
-    sim.metrics().map_err(JsValue::from).unwrap()
+    session.metrics(0).map_err(JsValue::from).unwrap()
 }
 
 fn verdict(m: &JsValue) -> String {
@@ -70,14 +69,14 @@ fn errors_shrink_with_delta() {
 #[wasm_bindgen_test]
 fn spectral_radius_matches_the_native_core() {
     for &(delta, alpha, pf, native) in NATIVE_RHO {
-        let wasm = spectral_radius(config(delta, alpha, pf)).map_err(JsValue::from).unwrap();
+        let wasm = spectral_radius(&state(delta, alpha, pf)).map_err(JsValue::from).unwrap();
         assert!(
             (wasm - native).abs() <= 1e-9 * native,
             "δ = {delta}, α = {alpha}, {pf}: wasm {wasm} vs native {native}"
         );
-        // The handle's analysis reports the same ρ.
-        let mut sim = Simulation::new(config(delta, alpha, pf)).map_err(JsValue::from).unwrap();
-        let report = sim.analysis().map_err(JsValue::from).unwrap();
+        // The session's analysis reports the same ρ.
+        let session = WebSession::new(&state(delta, alpha, pf));
+        let report = session.analysis(0).map_err(JsValue::from).unwrap();
         assert!((number(&report, "spectral_radius") - native).abs() <= 1e-9 * native);
     }
 }
@@ -88,65 +87,76 @@ fn error_message(e: wasm_bindgen::JsError) -> String {
     String::from(err.message())
 }
 
-/// A bad configuration throws a JS `Error` with a readable message instead of panicking.
+/// A bad setting throws a JS `Error` with a readable message instead of panicking, and changes
+/// nothing.
 #[wasm_bindgen_test]
-fn bad_configuration_throws_a_readable_error() {
-    let msg = error_message(Simulation::new(config(-0.01, 2.0, "off")).err().expect("δ < 0 is rejected"));
+fn bad_settings_throw_a_readable_error() {
+    let mut session = WebSession::new(&state(0.01, 2.0, "paper"));
+    let msg = error_message(session.set("delta", "-0.01").err().expect("δ < 0 is rejected"));
     assert!(msg.contains("sampling_period") && msg.contains("> 0"), "{msg}");
-    let msg = error_message(Simulation::new(config(0.01, 2.0, "maybe")).err().expect("unknown PF is rejected"));
-    assert!(msg.contains("invalid configuration") && msg.contains("maybe"), "{msg}");
-    let bad_k = js_sys::eval("({ controller: { horizon_steps: 2, eps_ratio: 2 } })").unwrap();
-    let msg = error_message(Simulation::new(bad_k).err().expect("k ≤ 3 is rejected"));
+    let msg = error_message(session.set("pf", "maybe").err().expect("unknown PF is rejected"));
+    assert!(msg.contains("pf") && msg.contains("maybe") && msg.contains("off | paper | lq"), "{msg}");
+    let msg = error_message(session.set("k", "2").err().expect("k ≤ 3 is rejected"));
     assert!(msg.contains("DAE index"), "{msg}");
-    // A live change to an invalid value is rejected and the simulation goes on.
-    let mut sim = Simulation::new(config(0.01, 2.0, "paper")).map_err(JsValue::from).unwrap();
-    let msg = error_message(sim.set_config(config(0.01, -2.0, "paper")).err().expect("α < 0 is rejected"));
+    let msg = error_message(session.set("alpha1", "-2").err().expect("α < 0 is rejected"));
     assert!(msg.contains("alpha1"), "{msg}");
-    sim.advance(0.1, 1.0).map_err(JsValue::from).unwrap();
-    assert!(sim.time() > 0.09);
-    assert!(sim.advance(f64::NAN, 1.0).is_err());
-    assert!(sim.trace("nope").is_err());
+    // A combination that cannot run (kε outside [δ, 2δ]) is rejected too.
+    let msg = error_message(session.set("eps_ratio", "30").err().expect("m > k is rejected"));
+    assert!(msg.contains("δ ≤ kε ≤ 2δ"), "{msg}");
+    // The session goes on with its settings.
+    assert!(session.state_string().contains("delta=0.01&alpha=2&pf=paper"), "{}", session.state_string());
+    session.advance(0.1).map_err(JsValue::from).unwrap();
+    assert!(session.time() > 0.09);
+    assert!(session.advance(f64::NAN).is_err());
+    assert!(session.trace(0, "nope").is_err());
+    assert!(session.trace(1, "t").is_err(), "no run B without a comparison");
+    // A bad URL value becomes a notice, not an exception.
+    let s = WebSession::new("delta=abc&pf=maybe");
+    let notices = s.notices().map_err(JsValue::from).unwrap();
+    assert_eq!(js_sys::Array::from(&notices).length(), 2);
 }
 
-/// Traces come out as typed arrays of equal length.
+/// Traces come out as typed arrays of equal length; the CSV is headed by the state string.
 #[wasm_bindgen_test]
 fn traces_are_typed_arrays() {
-    let mut sim = Simulation::new(JsValue::UNDEFINED).map_err(JsValue::from).unwrap();
-    sim.advance(0.2, 1.0).map_err(JsValue::from).unwrap();
-    let t = sim.trace("t").map_err(JsValue::from).unwrap();
-    let e1 = sim.trace("e1").map_err(JsValue::from).unwrap();
+    let mut session = WebSession::new("");
+    session.advance(0.2).map_err(JsValue::from).unwrap();
+    let t = session.trace(0, "t").map_err(JsValue::from).unwrap();
+    let e1 = session.trace(0, "e1").map_err(JsValue::from).unwrap();
     assert_eq!(t.length(), e1.length());
     assert!(t.length() > 50);
-    assert!(sim.traces_csv().starts_with("t [s],"));
+    let csv = session.csv();
+    assert!(csv.starts_with("# flexarm state: delta=0.01&"), "{}", &csv[..60]);
+    assert!(csv.lines().nth(1).unwrap().starts_with("t [s],"));
 }
 
-/// The map computed in chunks by the wasm build: ρ agrees with single-point evaluations, and
-/// without preliminary feedback the stable window of δ (section 4) shows at α = 2.
+/// The maps computed in chunks by the wasm build: ρ agrees with single-point evaluations, and
+/// without preliminary feedback the stable window of δ (section 4) shows at α ≈ 2.
 #[wasm_bindgen_test]
 fn stability_map_in_chunks() {
-    use flexarm::web::StabilityMapJob;
-    let mut job =
-        StabilityMapJob::new(config(0.01, 2.0, "off"), 0.005, 0.15, 12, 1.0, 2.0, 3).map_err(JsValue::from).unwrap();
+    let mut session = WebSession::new(&state(0.01, 2.0, "off"));
+    let deltas = session.map_deltas().to_vec();
+    let alphas = session.map_alphas().to_vec();
     let mut steps = 0;
-    while !job.is_done() {
-        let progress = job.step(0.0).map_err(JsValue::from).unwrap();
+    while session.work_maps(0.0) {
         steps += 1;
-        assert!(progress > 0.0 && progress <= 1.0);
     }
-    assert_eq!(steps, 3, "a zero budget computes one row per step");
-    let values = job.values().to_vec();
-    let deltas = job.sampling_periods().to_vec();
-    let alphas = job.alphas().to_vec();
-    assert_eq!((values.len(), deltas.len(), alphas.len()), (36, 12, 3));
-    for (i, a) in alphas.iter().enumerate() {
-        for (j, d) in deltas.iter().enumerate() {
-            let single = spectral_radius(config(*d, *a, "off")).map_err(JsValue::from).unwrap();
-            assert!((values[i * 12 + j] - single).abs() < 1e-12);
+    assert_eq!(steps + 1, 2 * alphas.len(), "a zero budget computes one row per call");
+    let values = session.map_values("off").map_err(JsValue::from).unwrap().to_vec();
+    assert_eq!(values.len(), deltas.len() * alphas.len());
+    // A sample of cells against single-point ρ.
+    for (i, a) in alphas.iter().enumerate().step_by(7) {
+        for (j, d) in deltas.iter().enumerate().step_by(9) {
+            let single = spectral_radius(&state(*d, *a, "off")).map_err(JsValue::from).unwrap();
+            assert!((values[i * deltas.len() + j] - single).abs() < 1e-12, "δ = {d}, α = {a}");
         }
     }
-    // α = 2 row: unstable at the smallest δ, stable somewhere in between, unstable at the largest.
-    let row = &values[24..36];
-    assert!(row[0] > 1.0 && row[11] > 1.0, "{row:?}");
+    // The α row nearest 2: unstable at the smallest δ, stable somewhere in between.
+    let row = (0..alphas.len())
+        .min_by(|&a, &b| (alphas[a].ln() - 2f64.ln()).abs().total_cmp(&(alphas[b].ln() - 2f64.ln()).abs()))
+        .unwrap();
+    let row = &values[row * deltas.len()..(row + 1) * deltas.len()];
+    assert!(row[0] > 1.0, "{row:?}");
     assert!(row.iter().any(|r| *r < 1.0), "{row:?}");
-    assert!(StabilityMapJob::new(config(0.01, 2.0, "off"), 0.1, 0.01, 10, 1.0, 2.0, 3).is_err());
+    assert!(session.set_from_map("sideways", 0.01, 2.0).is_err());
 }

@@ -57,6 +57,9 @@ pub struct PanelInfo {
     /// "linear" or "log".
     pub x_scale: &'static str,
     pub y_scale: &'static str,
+    /// The x axis is the scrolling time window: between descriptions its range moves with
+    /// `Renderer.windowStart()` and `windowEnd()`.
+    pub scrolls: bool,
 }
 
 /// How one run is drawn, for the page's legend (colours as CSS strings).
@@ -160,6 +163,7 @@ impl Scene {
             y_labels: Vec::new(),
             x_scale: "linear",
             y_scale: "linear",
+            scrolls: panel.kind.is_time_plot(),
         };
         match panel.kind {
             PanelKind::Arm | PanelKind::ArmB => {

@@ -10,122 +10,29 @@
 //! a copy of the latest for its descriptions, updated only when it changes.
 
 pub mod info;
+mod plots;
 
-use serde::{Deserialize, Serialize};
+use plots::{plot_series, plot_tick_counts, plot_ticks, pole_tick_counts, pole_ticks, y_label};
 
-use super::arm::{draw_arm_panel, ArmPose, DEFAULT_SPRING_MAGNIFICATION, VERTEX_BUDGET as ARM_VERTEX_BUDGET};
+use super::arm::{draw_arm_panel, ArmPose, VERTEX_BUDGET as ARM_VERTEX_BUDGET};
 use super::autoscale::{Autoscale, AutoscaleSettings};
-use super::layout::{Layout, LayoutOptions, Panel, PanelKind, Rect};
+use super::layout::{Layout, Panel, PanelKind};
 use super::map::{draw_map_marker, draw_map_static, map_ticks, side_of, LogFrame, StabilityGrid, MARKER_VERTEX_BUDGET};
 use super::painter::{Painter, Vertex};
 use super::poles::{
-    draw_a4, draw_flexible_halo, draw_pole_background, draw_poles, PoleFrame, PoleStyle, IM_RANGE, RE_RANGE,
+    draw_a4, draw_flexible_halo, draw_pole_background, draw_poles, PoleFrame, PoleStyle,
     RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET,
 };
-use super::traces::{
-    draw_background, draw_frame, draw_series, max_abs, vertex_budget, PlotFrame, TimeWindow, DEFAULT_TIME_WINDOW,
-};
+use super::traces::{draw_background, draw_frame, draw_series, max_abs, vertex_budget, PlotFrame, TimeWindow};
 use crate::analysis::StabilityReport;
 use crate::control::config::SimulationConfig;
 use crate::control::{ClosedLoop, Snapshot, Traces};
 use crate::model::reference::Reference;
-use crate::plot::{palette, Color, Ticks};
+use crate::plot::{palette, Color};
 use crate::session::{MapSide, Run, Session};
 
+pub use super::options::{OptionsUpdate, ViewOptions, MAX_SPRING_MAGNIFICATION, MAX_TIME_WINDOW};
 pub use info::{PanelInfo, Probe, SeriesInfo, TickLabel, TipLine};
-
-/// Longest time window accepted, s.
-pub const MAX_TIME_WINDOW: f64 = 3600.0;
-/// Largest spring magnification accepted.
-pub const MAX_SPRING_MAGNIFICATION: f64 = 1000.0;
-
-/// What the page can change about the picture.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct ViewOptions {
-    /// Show the torque panel (T1, T2) below the error panels.
-    pub show_torque: bool,
-    /// Width W of the scrolling time window, s.
-    pub time_window: f64,
-    /// Magnification M of the spring twist θ − q1 in the arm picture.
-    pub spring_magnification: f64,
-    /// Show the pole plot.
-    pub show_poles: bool,
-    /// Show the two stability maps.
-    pub show_map: bool,
-}
-
-impl Default for ViewOptions {
-    fn default() -> Self {
-        Self {
-            show_torque: false,
-            time_window: DEFAULT_TIME_WINDOW,
-            spring_magnification: DEFAULT_SPRING_MAGNIFICATION,
-            show_poles: true,
-            show_map: true,
-        }
-    }
-}
-
-/// A partial update of [`ViewOptions`] as the page sends it; missing fields stay unchanged.
-/// Unknown fields are rejected so that a misspelt option does not silently do nothing.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct OptionsUpdate {
-    pub show_torque: Option<bool>,
-    pub time_window: Option<f64>,
-    pub spring_magnification: Option<f64>,
-    pub show_poles: Option<bool>,
-    pub show_map: Option<bool>,
-}
-
-impl OptionsUpdate {
-    /// The accepted field names (for checking objects whose deserializer ignores unknown keys).
-    pub const FIELDS: [&'static str; 5] =
-        ["show_torque", "time_window", "spring_magnification", "show_poles", "show_map"];
-
-    /// An error message if `name` is not one of [`OptionsUpdate::FIELDS`].
-    pub fn check_field(name: &str) -> Result<(), String> {
-        if Self::FIELDS.contains(&name) {
-            Ok(())
-        } else {
-            Err(format!("unknown option '{name}' (known: {})", Self::FIELDS.join(", ")))
-        }
-    }
-}
-
-impl ViewOptions {
-    /// Applies `update` if every given field is valid; otherwise changes nothing and explains.
-    pub fn apply(&mut self, update: &OptionsUpdate) -> Result<(), String> {
-        let mut next = *self;
-        if let Some(v) = update.show_torque {
-            next.show_torque = v;
-        }
-        if let Some(w) = update.time_window {
-            if !(w.is_finite() && w > 0.0 && w <= MAX_TIME_WINDOW) {
-                return Err(format!("time_window = {w}: must be a number of seconds in (0, {MAX_TIME_WINDOW}]"));
-            }
-            next.time_window = w;
-        }
-        if let Some(m) = update.spring_magnification {
-            if !(m.is_finite() && m > 0.0 && m <= MAX_SPRING_MAGNIFICATION) {
-                return Err(format!("spring_magnification = {m}: must be a number in (0, {MAX_SPRING_MAGNIFICATION}]"));
-            }
-            next.spring_magnification = m;
-        }
-        if let Some(v) = update.show_poles {
-            next.show_poles = v;
-        }
-        if let Some(v) = update.show_map {
-            next.show_map = v;
-        }
-        *self = next;
-        Ok(())
-    }
-
-    fn layout_options(&self, pair: bool) -> LayoutOptions {
-        LayoutOptions { show_torque: self.show_torque, show_poles: self.show_poles, show_map: self.show_map, pair }
-    }
-}
 
 /// The state of one run that the scene draws.
 #[derive(Clone, Copy, Debug)]
@@ -169,12 +76,6 @@ impl RunMemory {
 /// Plot curve widths, CSS pixels: run A, and run B drawn thinner over it.
 const CURVE_WIDTH: f64 = 1.75;
 const CURVE_WIDTH_B: f64 = 1.25;
-/// About one time tick per this many CSS pixels of plot width.
-const X_TICK_SPACING: f64 = 80.0;
-/// About one value tick per this many CSS pixels of plot height (±Y gets an even split).
-const Y_TICK_SPACING: f64 = 32.0;
-/// About one Re s tick per this many CSS pixels of pole-plot width.
-const POLE_X_TICK_SPACING: f64 = 30.0;
 
 /// Run names, as the page sees them.
 const RUN_NAMES: [&str; 2] = ["A", "B"];
@@ -667,57 +568,4 @@ fn run_pole_style(run: usize) -> PoleStyle {
     } else {
         PoleStyle::RUN_B
     }
-}
-
-/// The y-axis label of a plot, with its unit.
-fn y_label(kind: PanelKind) -> &'static str {
-    match kind {
-        PanelKind::Error1 => "e1 [rad]",
-        PanelKind::Error2 => "e2 [rad]",
-        PanelKind::Torque => "T1, T2 [N m]",
-        _ => "",
-    }
-}
-
-/// The curves of a time plot and their colours (at most two per plot) for run A (0) or B (1).
-/// Run A keeps the usual colours; run B draws everything in its own hue (T2 lighter).
-fn plot_series(kind: PanelKind, traces: &Traces, run: usize) -> [Option<(&[f64], Color)>; 2] {
-    let b = run != 0;
-    let pick = |a: Color, b_color: Color| if b { b_color } else { a };
-    match kind {
-        PanelKind::Error1 => [Some((traces.e1(), pick(palette::ERROR1, palette::RUN_B))), None],
-        PanelKind::Error2 => [Some((traces.e2(), pick(palette::ERROR2, palette::RUN_B))), None],
-        PanelKind::Torque => [
-            Some((traces.torque1(), pick(palette::TORQUE1, palette::RUN_B))),
-            Some((traces.torque2(), pick(palette::TORQUE2, palette::RUN_B_LIGHT))),
-        ],
-        _ => [None, None],
-    }
-}
-
-/// How many time and value intervals a plot whose data area is `rect_css` (CSS pixels) gets at
-/// most; an even value count keeps 0 and ±Y/2 as ticks of the symmetric range.
-fn plot_tick_counts(rect_css: Rect) -> (usize, usize) {
-    let x_count = (rect_css.w / X_TICK_SPACING).floor().clamp(2.0, 12.0) as usize;
-    let y_count = ((rect_css.h / Y_TICK_SPACING / 2.0).floor() * 2.0).clamp(2.0, 8.0) as usize;
-    (x_count, y_count)
-}
-
-/// Time and value ticks for a plot whose data area is `rect_css` (CSS pixels).
-fn plot_ticks(rect_css: Rect, window: TimeWindow, y: f64) -> (Ticks, Ticks) {
-    let (x_count, y_count) = plot_tick_counts(rect_css);
-    (Ticks::new(window.start, window.end, x_count), Ticks::new(-y, y, y_count))
-}
-
-/// How many Re s and Im s intervals the pole plot gets at most.
-fn pole_tick_counts(rect_css: Rect) -> (usize, usize) {
-    let x_count = (rect_css.w / POLE_X_TICK_SPACING).floor().clamp(2.0, 14.0) as usize;
-    let y_count = (rect_css.h / Y_TICK_SPACING).floor().clamp(2.0, 16.0) as usize;
-    (x_count, y_count)
-}
-
-/// Re s and Im s ticks of the pole plot whose data area is `rect_css` (CSS pixels).
-fn pole_ticks(rect_css: Rect) -> (Ticks, Ticks) {
-    let (x_count, y_count) = pole_tick_counts(rect_css);
-    (Ticks::new(RE_RANGE[0], RE_RANGE[1], x_count), Ticks::new(IM_RANGE[0], IM_RANGE[1], y_count))
 }

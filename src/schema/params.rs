@@ -1,0 +1,325 @@
+//! The table: every parameter, once.
+
+use super::{Choice, Kind, NumberSpec, Param, Scale, Scope};
+
+/// The numbers of δ (also the default map and window range).
+pub const DELTA_SPEC: NumberSpec = NumberSpec {
+    min: 0.0,
+    min_inclusive: false,
+    max: 10.0,
+    allowed: None,
+    control: [0.002, 0.25],
+    scale: Scale::Log,
+    digits: 3,
+    integer: false,
+    default: 0.01,
+};
+
+/// The numbers of α1, α2 (also the default map range).
+pub const ALPHA_SPEC: NumberSpec = NumberSpec {
+    min: 0.0,
+    min_inclusive: false,
+    max: 1000.0,
+    allowed: None,
+    control: [0.1, 5.0],
+    scale: Scale::Log,
+    digits: 3,
+    integer: false,
+    default: 2.0,
+};
+
+const PF_OPTIONS: &[Choice] = &[
+    Choice { value: "off", label: "off (original controller)" },
+    Choice { value: "paper", label: "paper K_pr" },
+    Choice { value: "lq", label: "LQ design" },
+];
+
+/// δ, the sampling period.
+pub const DELTA: Param = Param {
+    key: "delta",
+    label: "Sampling period δ",
+    symbol: "δ",
+    unit: "s",
+    name: "sampling_period (δ)",
+    kind: Kind::Number(DELTA_SPEC),
+    scope: Scope::Run,
+    help: "The controller measures the arm every δ seconds and applies the torque it predicted one period later, \
+           held for δ.",
+};
+
+/// α1 = α2 at once (a shorthand on the command line and in URLs).
+pub const ALPHA: Param = Param {
+    key: "alpha",
+    label: "Error decay rate α (both links)",
+    symbol: "α",
+    unit: "1/s",
+    name: "alpha (α1 = α2)",
+    kind: Kind::Number(ALPHA_SPEC),
+    scope: Scope::Run,
+    help: "Sets α1 = α2: each link error is asked to obey (d/dt + α)³ e = 0, three poles at −α.",
+};
+
+/// α1, the error decay rate of link 1.
+pub const ALPHA1: Param = Param {
+    key: "alpha1",
+    label: "Error decay rate α1 (link 1)",
+    symbol: "α1",
+    unit: "1/s",
+    name: "alpha1 (α1)",
+    kind: Kind::Number(ALPHA_SPEC),
+    scope: Scope::Run,
+    help: "The stabilizing polynomial p(s) = (s + α1)³ of link 1's error, eq. (4.3).",
+};
+
+/// α2, the error decay rate of link 2.
+pub const ALPHA2: Param = Param {
+    key: "alpha2",
+    label: "Error decay rate α2 (link 2)",
+    symbol: "α2",
+    unit: "1/s",
+    name: "alpha2 (α2)",
+    kind: Kind::Number(ALPHA_SPEC),
+    scope: Scope::Run,
+    help: "The stabilizing polynomial p(s) = (s + α2)³ of link 2's error, eq. (4.3).",
+};
+
+/// The preliminary feedback u = K_pr x + v.
+pub const PF: Param = Param {
+    key: "pf",
+    label: "Preliminary feedback K_pr",
+    symbol: "K_pr",
+    unit: "",
+    name: "preliminary feedback (pf)",
+    kind: Kind::Choice { options: PF_OPTIONS, default: "paper" },
+    scope: Scope::Run,
+    help: "A fixed linear state feedback under the predictive controller: off (Jankowski–Van Brussel), the \
+           paper's K_pr, or this program's LQ design.",
+};
+
+/// The friction compensation T = v + x̂f, eq. (4.4).
+pub const FRICTION: Param = Param {
+    key: "friction",
+    label: "Friction compensation x̂f",
+    symbol: "x̂f",
+    unit: "",
+    name: "friction compensation (friction)",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "continuous", label: "continuous (paper)" },
+            Choice { value: "held", label: "held over δ" },
+            Choice { value: "off", label: "off" },
+        ],
+        default: "continuous",
+    },
+    scope: Scope::Run,
+    help: "How the observed Dahl friction is fed forward: continuously (cancels it), held over each period, or \
+           not at all.",
+};
+
+/// Continuous or sampled inner loop.
+pub const INNER: Param = Param {
+    key: "inner",
+    label: "Inner loop u = K_pr x + v",
+    symbol: "",
+    unit: "",
+    name: "inner loop (inner)",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "continuous", label: "continuous" },
+            Choice { value: "sampled", label: "sampled at δ" },
+        ],
+        default: "continuous",
+    },
+    scope: Scope::Run,
+    help: "Whether the preliminary feedback acts continuously (analog) or is sampled and held at δ.",
+};
+
+/// The repeating there-and-back slew.
+pub const REPEAT: Param = Param {
+    key: "repeat",
+    label: "Repeat the slew (there and back, hold 1.5 s)",
+    symbol: "",
+    unit: "",
+    name: "repeat",
+    kind: Kind::Switch { default: false },
+    scope: Scope::Run,
+    help: "Slew there and back again and again (holding 1.5 s at each end) instead of the paper's single slew.",
+};
+
+/// k, the horizon steps.
+pub const K: Param = Param {
+    key: "k",
+    label: "Horizon steps k",
+    symbol: "k",
+    unit: "",
+    name: "k (horizon steps)",
+    kind: Kind::Number(NumberSpec {
+        min: 4.0,
+        min_inclusive: true,
+        max: 1000.0,
+        allowed: Some("must be an integer greater than the DAE index 3 (and at most 1000)"),
+        control: [4.0, 24.0],
+        scale: Scale::Linear,
+        digits: 2,
+        integer: true,
+        default: 12.0,
+    }),
+    scope: Scope::Run,
+    help: "The predictor takes k backward-Euler steps of ε = δ/m; δ ≤ kε ≤ 2δ, i.e. k/2 ≤ m ≤ k.",
+};
+
+/// m, so that ε = δ/m.
+pub const EPS_RATIO: Param = Param {
+    key: "eps_ratio",
+    label: "Step ratio m = δ/ε",
+    symbol: "m",
+    unit: "",
+    name: "eps_ratio (m = δ/ε)",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: false,
+        max: 1000.0,
+        allowed: None,
+        control: [2.0, 24.0],
+        scale: Scale::Linear,
+        digits: 3,
+        integer: false,
+        default: 8.0,
+    }),
+    scope: Scope::Run,
+    help: "The predictor's step is ε = δ/m; with k steps the horizon kε must lie between δ and 2δ.",
+};
+
+/// Simulated time of a command-line run.
+pub const DURATION: Param = Param {
+    key: "duration",
+    label: "Duration",
+    symbol: "",
+    unit: "s",
+    name: "duration",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: true,
+        max: 1e6,
+        allowed: Some("must be a finite number ≥ 0 s (at most 1e6 s)"),
+        control: [1.0, 60.0],
+        scale: Scale::Log,
+        digits: 3,
+        integer: false,
+        default: 4.0,
+    }),
+    scope: Scope::Cli,
+    help: "Simulated time: by default the 1-s slew and 3 s after it.",
+};
+
+/// Spacing of the recorded traces.
+pub const OUTPUT_INTERVAL: Param = Param {
+    key: "output_interval",
+    label: "Trace spacing",
+    symbol: "",
+    unit: "s",
+    name: "output_interval",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: false,
+        max: 10.0,
+        allowed: None,
+        control: [0.001, 0.1],
+        scale: Scale::Log,
+        digits: 3,
+        integer: false,
+        default: 0.002,
+    }),
+    scope: Scope::Cli,
+    help: "Spacing of the recorded time series, s (rounded to whole plant steps).",
+};
+
+/// The link-2 angle of the rest point of the analysis.
+pub const Q2: Param = Param {
+    key: "q2",
+    label: "Rest angle q2",
+    symbol: "q2",
+    unit: "rad",
+    name: "q2",
+    kind: Kind::Number(NumberSpec {
+        min: -1e3,
+        min_inclusive: true,
+        max: 1e3,
+        allowed: Some("must be a finite angle in rad"),
+        control: [-3.2, 3.2],
+        scale: Scale::Linear,
+        digits: 4,
+        integer: false,
+        default: 0.0,
+    }),
+    scope: Scope::Cli,
+    help: "Link-2 angle of the rest point the loop is linearized at, rad (default: the end of the slew, 0).",
+};
+
+/// Playback speed of the page.
+pub const SPEED: Param = Param {
+    key: "speed",
+    label: "Playback speed",
+    symbol: "",
+    unit: "×",
+    name: "speed",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: false,
+        max: 100.0,
+        allowed: None,
+        control: [0.1, 4.0],
+        scale: Scale::Log,
+        digits: 2,
+        integer: false,
+        default: 1.0,
+    }),
+    scope: Scope::Page,
+    help: "Simulated seconds per wall-clock second.",
+};
+
+/// Two runs side by side.
+pub const COMPARE: Param = Param {
+    key: "compare",
+    label: "Compare two runs side by side",
+    symbol: "",
+    unit: "",
+    name: "compare",
+    kind: Kind::Switch { default: false },
+    scope: Scope::Page,
+    help: "Run B beside run A: B shares the slew, friction compensation and inner loop, with its own K_pr, δ and α.",
+};
+
+/// Run B's preliminary feedback.
+pub const B_PF: Param =
+    Param { key: "b_pf", label: "B: preliminary feedback", scope: Scope::Compare, name: "b_pf", ..PF };
+
+/// Run B's sampling period.
+pub const B_DELTA: Param =
+    Param { key: "b_delta", label: "B: sampling period δ", scope: Scope::Compare, name: "b_delta", ..DELTA };
+
+/// Run B's α1 = α2.
+pub const B_ALPHA: Param =
+    Param { key: "b_alpha", label: "B: error decay rate α1 = α2", scope: Scope::Compare, name: "b_alpha", ..ALPHA };
+
+/// Every parameter, in the order the page shows them and `--help` lists them.
+pub const PARAMS: &[&Param] = &[
+    &DELTA,
+    &ALPHA,
+    &ALPHA1,
+    &ALPHA2,
+    &PF,
+    &FRICTION,
+    &INNER,
+    &REPEAT,
+    &K,
+    &EPS_RATIO,
+    &DURATION,
+    &OUTPUT_INTERVAL,
+    &Q2,
+    &SPEED,
+    &COMPARE,
+    &B_PF,
+    &B_DELTA,
+    &B_ALPHA,
+];

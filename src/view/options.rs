@@ -1,0 +1,101 @@
+//! What the page can change about the picture: which panels, the time window, the spring's
+//! magnification.
+
+use serde::{Deserialize, Serialize};
+
+use super::arm::DEFAULT_SPRING_MAGNIFICATION;
+use super::layout::LayoutOptions;
+use super::traces::DEFAULT_TIME_WINDOW;
+
+/// Longest time window accepted, s.
+pub const MAX_TIME_WINDOW: f64 = 3600.0;
+/// Largest spring magnification accepted.
+pub const MAX_SPRING_MAGNIFICATION: f64 = 1000.0;
+
+/// What the page can change about the picture.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ViewOptions {
+    /// Show the torque panel (T1, T2) below the error panels.
+    pub show_torque: bool,
+    /// Width W of the scrolling time window, s.
+    pub time_window: f64,
+    /// Magnification M of the spring twist θ − q1 in the arm picture.
+    pub spring_magnification: f64,
+    /// Show the pole plot.
+    pub show_poles: bool,
+    /// Show the two stability maps.
+    pub show_map: bool,
+}
+
+impl Default for ViewOptions {
+    fn default() -> Self {
+        Self {
+            show_torque: false,
+            time_window: DEFAULT_TIME_WINDOW,
+            spring_magnification: DEFAULT_SPRING_MAGNIFICATION,
+            show_poles: true,
+            show_map: true,
+        }
+    }
+}
+
+/// A partial update of [`ViewOptions`] as the page sends it; missing fields stay unchanged.
+/// Unknown fields are rejected so that a misspelt option does not silently do nothing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OptionsUpdate {
+    pub show_torque: Option<bool>,
+    pub time_window: Option<f64>,
+    pub spring_magnification: Option<f64>,
+    pub show_poles: Option<bool>,
+    pub show_map: Option<bool>,
+}
+
+impl OptionsUpdate {
+    /// The accepted field names (for checking objects whose deserializer ignores unknown keys).
+    pub const FIELDS: [&'static str; 5] =
+        ["show_torque", "time_window", "spring_magnification", "show_poles", "show_map"];
+
+    /// An error message if `name` is not one of [`OptionsUpdate::FIELDS`].
+    pub fn check_field(name: &str) -> Result<(), String> {
+        if Self::FIELDS.contains(&name) {
+            Ok(())
+        } else {
+            Err(format!("unknown option '{name}' (known: {})", Self::FIELDS.join(", ")))
+        }
+    }
+}
+
+impl ViewOptions {
+    /// Applies `update` if every given field is valid; otherwise changes nothing and explains.
+    pub fn apply(&mut self, update: &OptionsUpdate) -> Result<(), String> {
+        let mut next = *self;
+        if let Some(v) = update.show_torque {
+            next.show_torque = v;
+        }
+        if let Some(w) = update.time_window {
+            if !(w.is_finite() && w > 0.0 && w <= MAX_TIME_WINDOW) {
+                return Err(format!("time_window = {w}: must be a number of seconds in (0, {MAX_TIME_WINDOW}]"));
+            }
+            next.time_window = w;
+        }
+        if let Some(m) = update.spring_magnification {
+            if !(m.is_finite() && m > 0.0 && m <= MAX_SPRING_MAGNIFICATION) {
+                return Err(format!("spring_magnification = {m}: must be a number in (0, {MAX_SPRING_MAGNIFICATION}]"));
+            }
+            next.spring_magnification = m;
+        }
+        if let Some(v) = update.show_poles {
+            next.show_poles = v;
+        }
+        if let Some(v) = update.show_map {
+            next.show_map = v;
+        }
+        *self = next;
+        Ok(())
+    }
+
+    pub(crate) fn layout_options(&self, pair: bool) -> LayoutOptions {
+        LayoutOptions { show_torque: self.show_torque, show_poles: self.show_poles, show_map: self.show_map, pair }
+    }
+}

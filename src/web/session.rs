@@ -1,0 +1,317 @@
+//! The session as JavaScript sees it: a thin wrapper over [`crate::session::Session`] that
+//! converts arguments and results. Every decision (what a change does, which map is needed, what
+//! the verdict says) is the session's.
+
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+use super::{js_error, now_ms, to_js};
+use crate::control::{Column, Verdict};
+use crate::schema::{Kind, Param, Scale, Scope, PARAMS};
+use crate::session::{MapSide, Session, Settings, Source, PRESETS};
+
+/// A parameter of the schema, flattened for the page's controls.
+#[derive(Serialize)]
+struct ParamView {
+    key: &'static str,
+    label: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+    help: &'static str,
+    scope: Scope,
+    /// "number", "choice" or "switch".
+    kind: &'static str,
+    scale: Option<Scale>,
+    /// The control's span and its hard limits.
+    control: Option<[f64; 2]>,
+    limits: Option<[f64; 2]>,
+    integer: bool,
+    /// Choices: value and label.
+    options: Vec<[&'static str; 2]>,
+    /// The default as the state string writes it.
+    default: String,
+    /// The allowed values in words.
+    allowed: String,
+}
+
+impl ParamView {
+    fn of(p: &'static Param) -> Self {
+        let (kind, scale, control, limits, integer, options) = match &p.kind {
+            Kind::Number(n) => ("number", Some(n.scale), Some(n.control), Some([n.min, n.max]), n.integer, vec![]),
+            Kind::Choice { options, .. } => {
+                ("choice", None, None, None, false, options.iter().map(|o| [o.value, o.label]).collect())
+            }
+            Kind::Switch { .. } => ("switch", None, None, None, false, vec![]),
+        };
+        Self {
+            key: p.key,
+            label: p.label,
+            symbol: p.symbol,
+            unit: p.unit,
+            help: p.help,
+            scope: p.scope,
+            kind,
+            scale,
+            control,
+            limits,
+            integer,
+            options,
+            default: p.default_value().text(),
+            allowed: p.allowed(true),
+        }
+    }
+}
+
+/// Every user-settable parameter: key, label, unit, kind, ranges, default, help.
+#[wasm_bindgen]
+pub fn schema() -> Result<JsValue, JsError> {
+    to_js(&PARAMS.iter().map(|p| ParamView::of(p)).collect::<Vec<_>>())
+}
+
+/// `[{id, title, state}]` of every preset.
+#[wasm_bindgen]
+pub fn presets() -> Result<JsValue, JsError> {
+    to_js(&PRESETS)
+}
+
+/// ρ of the settings in a state string (over the CLI's defaults), without a session.
+#[wasm_bindgen(js_name = spectralRadius)]
+pub fn spectral_radius(state: &str) -> Result<f64, JsError> {
+    let mut settings = Settings::default();
+    settings.read(state, Source::CommandLine).map_err(js_error)?;
+    crate::analysis::spectral_radius(&settings.a.config(), None).map_err(js_error)
+}
+
+/// A run's metrics, flattened.
+#[derive(Serialize)]
+struct MetricsView {
+    time: f64,
+    verdict: &'static str,
+    growth_rate: Option<f64>,
+    diverged_at: Option<f64>,
+    max_error_slew: [f64; 2],
+    max_error_after: [f64; 2],
+    rms_error: [f64; 2],
+    max_torque: [f64; 2],
+}
+
+/// What a session has open, for the page: create it from the URL's query with `new Session(q)`.
+#[wasm_bindgen(js_name = Session)]
+pub struct WebSession {
+    inner: Session,
+    notices: Vec<crate::session::Notice>,
+}
+
+impl WebSession {
+    /// The core session (for the renderer).
+    pub fn session(&self) -> &Session {
+        &self.inner
+    }
+
+    fn run(&self, index: usize) -> Result<&crate::session::Run, JsError> {
+        self.inner.run(index).ok_or_else(|| JsError::new(&format!("no run {index}: 0 is A, 1 is B when comparing")))
+    }
+}
+
+#[wasm_bindgen(js_class = Session)]
+impl WebSession {
+    /// The page's session for a URL query (`?delta=0.01&pf=off`, or ""): the page's start with the
+    /// query over it. Values it could not take are in `notices()`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(query: &str) -> WebSession {
+        let (inner, notices) = Session::open(query);
+        WebSession { inner, notices }
+    }
+
+    /// `[{key, text}]`: the values the last query read could not take, and why.
+    pub fn notices(&self) -> Result<JsValue, JsError> {
+        to_js(&self.notices)
+    }
+
+    /// Sets a parameter from its text (a selector's value, a number typed): throws with a
+    /// readable message if invalid, and nothing changes then.
+    pub fn set(&mut self, key: &str, text: &str) -> Result<(), JsError> {
+        self.inner.set(key, text).map_err(js_error)
+    }
+
+    /// Sets a numeric parameter from its slider's position in [0, 1].
+    #[wasm_bindgen(js_name = setPosition)]
+    pub fn set_position(&mut self, key: &str, position: f64) -> Result<(), JsError> {
+        self.inner.set_position(key, position).map_err(js_error)
+    }
+
+    /// Applies a preset and restarts from rest.
+    #[wasm_bindgen(js_name = applyPreset)]
+    pub fn apply_preset(&mut self, id: &str) -> Result<(), JsError> {
+        self.inner.apply_preset(id).map_err(js_error)
+    }
+
+    /// Reads a state string over the current settings (restarting); returns the notices.
+    #[wasm_bindgen(js_name = readState)]
+    pub fn read_state(&mut self, state: &str) -> Result<JsValue, JsError> {
+        let notices = self.inner.read_state(state).map_err(js_error)?;
+        to_js(&notices)
+    }
+
+    /// Runs A at a point picked on a map ("off" or "on").
+    #[wasm_bindgen(js_name = setFromMap)]
+    pub fn set_from_map(&mut self, side: &str, delta: f64, alpha: f64) -> Result<(), JsError> {
+        let side = MapSide::parse(side).map_err(|e| JsError::new(&e))?;
+        self.inner.set_from_map(side, delta, alpha).map_err(js_error)
+    }
+
+    /// `[{key, value, position, text}]`: what each control shows.
+    pub fn controls(&self) -> Result<JsValue, JsError> {
+        to_js(&self.inner.controls())
+    }
+
+    /// Advances by `wall_seconds × speed` of simulated time (at most 0.25 s per call); returns
+    /// the simulated time run A covered.
+    pub fn advance(&mut self, wall_seconds: f64) -> Result<f64, JsError> {
+        self.inner.advance(wall_seconds).map_err(js_error)
+    }
+
+    /// Advances to the next sampling instant.
+    #[wasm_bindgen(js_name = stepPeriod)]
+    pub fn step_period(&mut self) {
+        self.inner.step_period();
+    }
+
+    /// Both runs back to rest.
+    pub fn reset(&mut self) -> Result<(), JsError> {
+        self.inner.reset().map_err(js_error)
+    }
+
+    /// A short torque kick on both runs.
+    pub fn poke(&mut self) -> Result<(), JsError> {
+        self.inner.poke().map_err(js_error)
+    }
+
+    /// Sets the note under the verdict.
+    #[wasm_bindgen(js_name = setNote)]
+    pub fn set_note(&mut self, note: &str) {
+        self.inner.set_note(note);
+    }
+
+    /// Simulated time of run A, s.
+    pub fn time(&self) -> f64 {
+        self.inner.run(0).map_or(0.0, |r| r.closed_loop().time())
+    }
+
+    /// True once run A has diverged (it no longer advances until a reset or a change).
+    #[wasm_bindgen(js_name = isFinished)]
+    pub fn is_finished(&self) -> bool {
+        self.inner.run(0).is_some_and(|r| r.closed_loop().is_finished())
+    }
+
+    /// `{runs: [{run, verdict, observing, finished, detail, growth, rho, spectral_radius,
+    /// readouts: {time, error, max_slew, max_after, torque, a4}, settings}], note, preset,
+    /// maps: {percent, done, text, points}}`.
+    pub fn status(&self) -> Result<JsValue, JsError> {
+        to_js(&self.inner.status())
+    }
+
+    /// A run's metrics: `{time, verdict, growth_rate, diverged_at, max_error_slew,
+    /// max_error_after, rms_error, max_torque}`.
+    pub fn metrics(&self, run: usize) -> Result<JsValue, JsError> {
+        let m = self.run(run)?.closed_loop().metrics();
+        let diverged_at = match m.verdict {
+            Verdict::Diverged { at, .. } => Some(at),
+            _ => None,
+        };
+        to_js(&MetricsView {
+            time: m.time,
+            verdict: m.verdict.label(),
+            growth_rate: m.growth_rate,
+            diverged_at,
+            max_error_slew: m.max_error_slew,
+            max_error_after: m.max_error_after,
+            rms_error: m.rms_error,
+            max_torque: m.max_torque,
+        })
+    }
+
+    /// The linear analysis of a run's settings: `{sampling_period, rest, spectral_radius,
+    /// growth_rate, poles: [{discrete, continuous}], limit_pair_open, limit_pair}` (null if it
+    /// failed).
+    pub fn analysis(&self, run: usize) -> Result<JsValue, JsError> {
+        to_js(&self.run(run)?.analysis().report())
+    }
+
+    /// One recorded column of a run as a typed array (`t`, `e1`, `torque2`, …).
+    pub fn trace(&self, run: usize, key: &str) -> Result<js_sys::Float64Array, JsError> {
+        let column = Column::from_key(key).ok_or_else(|| {
+            let keys: Vec<&str> = Column::ALL.iter().map(|c| c.key()).collect();
+            JsError::new(&format!("unknown trace '{key}': one of {}", keys.join(", ")))
+        })?;
+        Ok(js_sys::Float64Array::from(self.run(run)?.closed_loop().traces().column(column)))
+    }
+
+    /// Run A's traces as CSV, headed by the state string.
+    pub fn csv(&self) -> String {
+        self.inner.csv()
+    }
+
+    /// The state string (the URL query) of everything set.
+    #[wasm_bindgen(js_name = stateString)]
+    pub fn state_string(&self) -> String {
+        self.inner.state_string()
+    }
+
+    /// `flexarm simulate …` reproducing run A up to now.
+    #[wasm_bindgen(js_name = commandLine)]
+    pub fn command_line(&self) -> String {
+        self.inner.command_line()
+    }
+
+    /// Computes map rows for about `budget_ms` (at least one row); returns true if work remains.
+    #[wasm_bindgen(js_name = workMaps)]
+    pub fn work_maps(&mut self, budget_ms: f64) -> bool {
+        let mut clock = now_ms;
+        self.inner.maps_mut().work(&mut clock, budget_ms)
+    }
+
+    /// True while a shown map is unfinished (and the maps are enabled).
+    #[wasm_bindgen(js_name = mapsPending)]
+    pub fn maps_pending(&self) -> bool {
+        self.inner.maps().pending()
+    }
+
+    /// Pauses (false) or resumes (true) the maps' work.
+    #[wasm_bindgen(js_name = setMapsEnabled)]
+    pub fn set_maps_enabled(&mut self, enabled: bool) {
+        self.inner.maps_mut().enabled = enabled;
+    }
+
+    /// `[{pf, ms, compute_ms}]`: how long each finished map took.
+    #[wasm_bindgen(js_name = mapTimes)]
+    pub fn map_times(&self) -> Result<JsValue, JsError> {
+        to_js(self.inner.maps().times())
+    }
+
+    /// ρ of a side's map so far, row-major by α (rows not computed yet are missing).
+    #[wasm_bindgen(js_name = mapValues)]
+    pub fn map_values(&self, side: &str) -> Result<js_sys::Float64Array, JsError> {
+        let side = MapSide::parse(side).map_err(|e| JsError::new(&e))?;
+        let values = self.inner.maps().shown(side).map_or(&[][..], |e| e.job().values());
+        Ok(js_sys::Float64Array::from(values))
+    }
+
+    /// The maps' δ values (columns), s.
+    #[wasm_bindgen(js_name = mapDeltas)]
+    pub fn map_deltas(&self) -> js_sys::Float64Array {
+        js_sys::Float64Array::from(self.inner.maps().grid().deltas().as_slice())
+    }
+
+    /// The maps' α values (rows), 1/s.
+    #[wasm_bindgen(js_name = mapAlphas)]
+    pub fn map_alphas(&self) -> js_sys::Float64Array {
+        js_sys::Float64Array::from(self.inner.maps().grid().alphas().as_slice())
+    }
+
+    /// The stable windows of δ for run A's settings: `{range, windows: [[from, to]], tolerance}`.
+    pub fn windows(&mut self) -> Result<JsValue, JsError> {
+        let w = self.inner.windows().map_err(js_error)?.clone();
+        to_js(&w)
+    }
+}

@@ -1,0 +1,97 @@
+// The controls, built from the schema the wasm gives (labels, units, ranges, help), wired to the
+// session through `onSet` / `onPosition`. The page decides where a control goes (a placeholder
+// `[data-param=key]`); the schema decides what it is.
+
+import { make, setText } from './dom.js';
+
+/** Slider resolution: positions 0…STEPS map onto the control's span. */
+export const STEPS = 1000;
+
+/** The element id of a parameter's input: `b_pf` → `b-pf`. @param {string} key */
+export const inputId = (key) => key.replace(/_/g, '-');
+
+/**
+ * @typedef {{ key: string, label: string, unit: string, help: string, kind: string,
+ *   scale?: string | null, control?: number[] | null, integer: boolean,
+ *   options: string[][], default: string, allowed: string }} Param
+ * @typedef {{ key: string, value: string, position?: number | null, text: string }} ControlValue
+ */
+
+/** The label's HTML-free text with "K_pr" as it is. @param {Param} p */
+function labelText(p) {
+  return p.label;
+}
+
+/**
+ * Builds the field for one parameter inside `slot`.
+ * @param {Param} p @param {HTMLElement} slot
+ * @param {{ onSet: (key: string, text: string) => void, onPosition: (key: string, f: number) => void }} on
+ */
+function buildField(p, slot, on) {
+  const id = inputId(p.key);
+  slot.classList.add('field');
+  if (p.kind === 'switch') {
+    slot.classList.add('check');
+    const input = /** @type {HTMLInputElement} */ (make('input', { type: 'checkbox', id }));
+    input.addEventListener('change', () => on.onSet(p.key, input.checked ? '1' : '0'));
+    slot.append(input, make('label', { for: id, text: labelText(p), title: p.help }));
+    return { input, output: null };
+  }
+  const label = make('label', { for: id, text: labelText(p), title: p.help });
+  if (p.kind === 'choice') {
+    const select = /** @type {HTMLSelectElement} */ (make('select', { id }));
+    for (const [value, text] of p.options) select.append(make('option', { value, text }));
+    select.addEventListener('change', () => on.onSet(p.key, select.value));
+    slot.append(label, select);
+    return { input: select, output: null };
+  }
+  const helpId = `${id}-help`;
+  const output = make('output', { id: `${id}-value`, for: id, class: 'value' });
+  const input = make('input', {
+    type: 'range', id, min: '0', max: String(STEPS), step: '1', 'aria-describedby': helpId,
+  });
+  input.addEventListener('input', () => on.onPosition(p.key, Number(/** @type {HTMLInputElement} */ (input).value) / STEPS));
+  const span = p.control ? `${p.allowed}${p.scale === 'log' ? ', logarithmic scale' : ''}` : p.allowed;
+  slot.append(label, output, input, make('small', { id: helpId, class: 'help', text: span }));
+  return { input, output };
+}
+
+/**
+ * Builds every control whose placeholder the page has.
+ * @param {Param[]} schema
+ * @param {{ onSet: (key: string, text: string) => void, onPosition: (key: string, f: number) => void }} on
+ */
+export function buildControls(schema, on) {
+  /** @type {Map<string, { input: HTMLElement, output: HTMLElement | null }>} */
+  const fields = new Map();
+  for (const p of schema) {
+    const slot = /** @type {HTMLElement | null} */ (document.querySelector(`[data-param="${p.key}"]`));
+    if (slot && !fields.has(p.key)) fields.set(p.key, buildField(p, slot, on));
+  }
+  return {
+    /** Shows the session's values. @param {ControlValue[]} values */
+    sync(values) {
+      for (const v of values) {
+        const f = fields.get(v.key);
+        if (!f) continue;
+        const input = /** @type {HTMLInputElement} */ (f.input);
+        if (input.type === 'checkbox') {
+          input.checked = v.value === '1';
+        } else if (input.type === 'range') {
+          const pos = String(Math.round((v.position ?? 0) * STEPS));
+          if (input.value !== pos) input.value = pos;
+          if (f.output) setText(f.output, v.text);
+          if (input.getAttribute('aria-valuetext') !== v.text) input.setAttribute('aria-valuetext', v.text);
+        } else if (input.value !== v.value) {
+          input.value = v.value;
+        }
+      }
+    },
+    /** @param {boolean} enabled */
+    setEnabled(enabled) {
+      for (const f of fields.values()) /** @type {HTMLInputElement} */ (f.input).disabled = !enabled;
+    },
+    /** @param {string} key */
+    input: (key) => fields.get(key)?.input ?? null,
+  };
+}

@@ -1,0 +1,47 @@
+// The explanation's "Try:" buttons: each names an action as `kind:args` (data-try), e.g.
+// `preset:fig5.3`, `pf:paper`, `delta:0.04`, `map:off:0.05:2`, `compare:on`.
+
+/**
+ * The action a button's spec names (pure).
+ * @param {string} spec
+ * @returns {{ kind: 'preset', id: string } | { kind: 'set', key: string, value: string }
+ *   | { kind: 'map', side: string, delta: number, alpha: number } | null}
+ */
+export function parseTry(spec) {
+  const [kind, a, b, c] = String(spec).split(':');
+  switch (kind) {
+    case 'preset':
+      return a ? { kind: 'preset', id: a } : null;
+    case 'pf':
+    case 'delta':
+      return a ? { kind: 'set', key: kind, value: a } : null;
+    case 'alpha':
+      return a ? { kind: 'set', key: 'alpha', value: a } : null;
+    case 'compare':
+      return { kind: 'set', key: 'compare', value: a === 'off' ? '0' : '1' };
+    case 'map': {
+      const [delta, alpha] = [Number(b), Number(c)];
+      return (a === 'off' || a === 'on') && delta > 0 && alpha > 0 ? { kind: 'map', side: a, delta, alpha } : null;
+    }
+    default:
+      return null;
+  }
+}
+
+/**
+ * Wires every `button.try`.
+ * @param {{ preset: (id: string) => void, set: (key: string, value: string) => void,
+ *   map: (side: string, delta: number, alpha: number) => void, after: () => void }} on
+ */
+export function wireTryButtons(on) {
+  for (const button of document.querySelectorAll('button.try')) {
+    button.addEventListener('click', () => {
+      const action = parseTry(/** @type {HTMLElement} */ (button).dataset.try ?? '');
+      if (!action) return;
+      if (action.kind === 'preset') on.preset(action.id);
+      else if (action.kind === 'set') on.set(action.key, action.value);
+      else on.map(action.side, action.delta, action.alpha);
+      on.after();
+    });
+  }
+}

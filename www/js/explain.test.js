@@ -1,0 +1,15 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { parseTry } from './explain.js';
+
+test('every kind of Try button', () => {
+  assert.deepEqual(parseTry('preset:fig5.3'), { kind: 'preset', id: 'fig5.3' });
+  assert.deepEqual(parseTry('pf:paper'), { kind: 'set', key: 'pf', value: 'paper' });
+  assert.deepEqual(parseTry('alpha:0.5'), { kind: 'set', key: 'alpha', value: '0.5' });
+  assert.deepEqual(parseTry('compare:on'), { kind: 'set', key: 'compare', value: '1' });
+  assert.deepEqual(parseTry('map:off:0.05:2'), { kind: 'map', side: 'off', delta: 0.05, alpha: 2 });
+});
+
+test('malformed specs do nothing', () => {
+  for (const bad of ['', 'preset', 'map:left:1:2', 'map:off:x:2', 'frobnicate:1']) assert.equal(parseTry(bad), null, bad);
+});

@@ -1,0 +1,25 @@
+// Keyboard shortcuts: Space plays or pauses, → steps one sampling period, R resets — unless the
+// focus is somewhere that needs the key itself.
+
+/** True if the key belongs to the focused element (typing, a select, a button's own Space). */
+export function keyBelongsTo(/** @type {{ tagName?: string, type?: string, isContentEditable?: boolean }} */ t, /** @type {string} */ key) {
+  const tag = t.tagName ?? '';
+  if (t.isContentEditable || tag === 'TEXTAREA' || tag === 'SELECT') return true;
+  if (tag === 'INPUT' && !['range', 'checkbox', 'radio', 'button', 'submit', 'reset'].includes(t.type ?? '')) return true;
+  if (key === ' ' && (tag === 'BUTTON' || t.type === 'checkbox' || t.type === 'radio')) return true;
+  if (key === 'ArrowRight' && t.type === 'range') return true;
+  return false;
+}
+
+/** @param {{ togglePlay: () => void, step: () => void, reset: () => void }} on */
+export function wireKeys(on) {
+  document.addEventListener('keydown', (ev) => {
+    if (ev.defaultPrevented || ev.ctrlKey || ev.metaKey || ev.altKey) return;
+    const key = ev.code === 'Space' ? ' ' : ev.key;
+    if (!['', ' ', 'ArrowRight', 'r', 'R'].includes(key) || keyBelongsTo(/** @type {any} */ (ev.target ?? {}), key)) return;
+    ev.preventDefault();
+    if (key === ' ') on.togglePlay();
+    else if (key === 'ArrowRight') on.step();
+    else on.reset();
+  });
+}

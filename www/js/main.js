@@ -1,0 +1,294 @@
+// flexarm's page: loads the simulation, opens a session from the URL, builds the controls from the
+// schema, and wires controls, canvas, keyboard and frame loop to the session and the renderer.
+// Every decision about the physics is the session's (Rust); this file only connects.
+
+import { byId, make, messageOf, setText } from './dom.js';
+import { createErrors } from './errors.js';
+import { createStore, VIEW_OPTIONS } from './store.js';
+import { loadWasm } from './wasm.js';
+import { buildControls } from './controls.js';
+import { createStatus } from './status.js';
+import { createOverlays } from './overlays.js';
+import { createPointer } from './pointer.js';
+import { createLoop } from './loop.js';
+import { wireTryButtons } from './explain.js';
+import { wireKeys } from './keys.js';
+import { writeUrl } from './url.js';
+
+const store = createStore();
+const errors = createErrors(store);
+const { guard } = errors;
+
+/** The note shown when a setting changes while the run is paused. */
+const PAUSED_NOTE = 'Paused: the change takes effect at the next sampling instant (press Step or Play).';
+
+main().catch((e) => errors.report('Starting the page failed', e));
+
+async function main() {
+  performance.mark('flexarm:main-start');
+  const transport = ['play', 'step', 'reset', 'poke', 'export-csv', 'copy-command'].map(byId);
+  transport.forEach((b) => (/** @type {HTMLButtonElement} */ (b).disabled = true));
+  let wasm;
+  try {
+    wasm = await loadWasm();
+  } catch (e) {
+    setText(byId('loading-text'), 'Could not load the simulation.');
+    byId('loading').querySelector('.spinner')?.remove();
+    errors.show(`Loading ./pkg/flexarm.js failed: ${messageOf(e)}. Build it with "bash scripts/serve.sh".`);
+    return;
+  }
+  // The GPU starts up (mostly waiting on the browser) while the page builds its controls.
+  performance.mark('flexarm:renderer-start');
+  const rendererReady = wasm.Renderer.create(/** @type {HTMLCanvasElement} */ (byId('canvas')));
+  rendererReady.catch(() => {}); // handled where it is awaited
+  const session = new wasm.Session(window.location.search);
+  performance.mark('flexarm:session-ready');
+  showNotices(session.notices());
+  const status = createStatus();
+  const overlays = createOverlays();
+  /** @type {import('../pkg/flexarm.js').Renderer | null} */
+  let renderer = null;
+  /** @type {any} */
+  let layout = null;
+  let layoutGeneration = -1;
+
+  // ---------------------------------------------------------------- changes go to the session
+  const controls = buildControls(wasm.schema(), {
+    onSet: (key, text) => change(() => session.set(key, text)),
+    onPosition: (key, f) => change(() => session.setPosition(linked(key), f)),
+  });
+  /** With α linked, either α slider moves both. @param {string} key */
+  const linked = (key) => (store.get().linkAlpha && (key === 'alpha1' || key === 'alpha2') ? 'alpha' : key);
+
+  /** Runs a change; the controls, the URL and the picture follow the session whatever happened. */
+  function change(/** @type {() => void} */ fn) {
+    const ok = guard('Applying the settings failed', () => (fn(), true), false);
+    if (ok && !store.get().playing && session.status().note === '') session.setNote(PAUSED_NOTE);
+    controls.sync(session.controls());
+    writeUrl(session.stateString());
+    loop.touch();
+    loop.resync();
+    pointer.hide();
+    loop.scheduleMaps();
+  }
+
+  const presetSelect = /** @type {HTMLSelectElement} */ (byId('preset'));
+  for (const p of wasm.presets()) presetSelect.append(make('option', { value: p.id, text: p.title }));
+  presetSelect.addEventListener('change', () => {
+    if (presetSelect.value) change(() => session.applyPreset(presetSelect.value));
+    store.dispatch({ type: 'play' });
+  });
+
+  const link = /** @type {HTMLInputElement} */ (byId('link-alpha'));
+  link.addEventListener('change', () => {
+    store.dispatch({ type: 'link-alpha', value: link.checked });
+    const a1 = session.controls().find((c) => c.key === 'alpha1');
+    if (link.checked && a1) change(() => session.set('alpha', a1.value));
+  });
+
+  // ---------------------------------------------------------------- transport and view
+  const play = byId('play');
+  store.subscribe((s, prev) => {
+    if (s.playing !== prev.playing) {
+      setText(play, s.playing ? '❚❚ Pause' : '▶ Play');
+      play.setAttribute('aria-pressed', String(s.playing));
+      play.setAttribute('aria-label', s.playing ? 'Pause the simulation' : 'Play the simulation');
+      if (s.playing && session.status().note === PAUSED_NOTE) session.setNote('');
+      loop.resync();
+      loop.touch();
+    }
+  });
+  play.addEventListener('click', () => store.dispatch({ type: 'toggle-play' }));
+  const step = () => {
+    store.dispatch({ type: 'pause' });
+    guard('Step failed', () => session.stepPeriod());
+    loop.touch();
+  };
+  const reset = () => change(() => session.reset());
+  byId('step').addEventListener('click', step);
+  byId('reset').addEventListener('click', reset);
+  byId('poke').addEventListener('click', () => change(() => session.poke()));
+  byId('export-csv').addEventListener('click', () => download('flexarm-traces.csv', guard('Export failed', () => session.csv(), null)));
+  byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
+  wireKeys({ togglePlay: () => store.dispatch({ type: 'toggle-play' }), step, reset });
+  wireTryButtons({
+    preset: (id) => change(() => session.applyPreset(id)),
+    set: (key, value) => change(() => session.set(key, value)),
+    map: (side, delta, alpha) => {
+      setView('showMap', true);
+      change(() => session.setFromMap(side, delta, alpha));
+    },
+    after: () => store.dispatch({ type: 'play' }),
+  });
+
+  /** Shows or hides a view and tells the renderer (and the maps' work). */
+  function setView(/** @type {keyof typeof VIEW_OPTIONS} */ name, /** @type {boolean} */ value) {
+    store.dispatch({ type: 'view', name, value });
+    /** @type {HTMLInputElement} */ (byId({ showTorque: 'show-torque', showPoles: 'show-poles', showMap: 'show-map' }[name])).checked = value;
+    if (name === 'showMap') {
+      session.setMapsEnabled(value);
+      byId('map-row').classList.toggle('maps-hidden', !value);
+      loop.scheduleMaps();
+    }
+    if (renderer) guard('Renderer options', () => renderer?.setOptions({ [VIEW_OPTIONS[name]]: value }));
+    pointer.hide();
+    loop.touch();
+  }
+  for (const [name, id] of /** @type {const} */ ([['showTorque', 'show-torque'], ['showPoles', 'show-poles'], ['showMap', 'show-map']])) {
+    const box = /** @type {HTMLInputElement} */ (byId(id));
+    box.addEventListener('change', () => setView(name, box.checked));
+  }
+
+  // ---------------------------------------------------------------- canvas
+  const pointer = createPointer({
+    probe: (x, y, reach) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, reach), null) : null),
+    pick: (map, delta, alpha) => change(() => session.setFromMap(map, delta, alpha)),
+    showTip: overlays.showTip,
+    hideTip: overlays.hideTip,
+  });
+
+  /** Draws a frame; refreshes the labels when the frame's description changed. */
+  function render() {
+    if (!renderer) return false;
+    try {
+      renderer.render(session);
+      store.dispatch({ type: 'render-ok' });
+    } catch (e) {
+      store.dispatch({ type: 'render-failed' });
+      errors.report('Drawing failed', e);
+      if (store.get().renderFailures >= 3) {
+        renderer = null;
+        canvasProblem('Drawing stopped after repeated errors.', messageOf(e));
+      }
+      return false;
+    }
+    const generation = renderer.infoGeneration();
+    if (generation !== layoutGeneration) {
+      layout = guard('Renderer layout', () => renderer?.layout(), null);
+      layoutGeneration = generation;
+      if (layout) overlays.update(layout);
+    }
+    overlays.scroll(renderer.windowStart(), renderer.windowEnd());
+    return true;
+  }
+
+  const loop = createLoop({
+    wasmOk: () => !store.get().dead,
+    playing: () => store.get().playing,
+    finished: () => session.isFinished() && session.status().runs.every((r) => r.finished),
+    advance: (dt) => guard('Simulation step failed', () => session.advance(dt), 0) ?? 0,
+    render,
+    status: () => {
+      const s = guard('Status', () => session.status(), null);
+      if (!s) return;
+      status.render(s, { mapsShown: store.get().showMap }, performance.now());
+      status.renderLegend(s, layout?.series ?? []);
+    },
+    workMaps: (budget) => guard('Stability map', () => session.workMaps(budget), false) ?? false,
+    backend: () => (renderer ? renderer.backend() : null),
+  });
+
+  window.flexarmPanic = (/** @type {unknown} */ msg) => {
+    store.dispatch({ type: 'crash' });
+    errors.show(`The simulation crashed (Rust panic) — reload the page to start again. ${messageOf(msg)}`);
+    canvasProblem('The simulation crashed.', 'See the error message above; reload the page to start again.');
+    status.crashed();
+    controls.setEnabled(false);
+  };
+  // For tests and the console: the live objects, and the performance figures.
+  Object.assign(window, {
+    flexarm: { session, wasm, store, get lastLayout() { return layout; } },
+    flexarmPerf: () => {
+      const times = session.mapTimes();
+      const last = times[times.length - 1];
+      return loop.figures({ map_times: times, map_ms: last ? last.ms : null, map_compute_ms: last ? last.compute_ms : null });
+    },
+  });
+
+  controls.sync(session.controls());
+  writeUrl(session.stateString());
+  byId('loading').hidden = true;
+  transport.forEach((b) => (/** @type {HTMLButtonElement} */ (b).disabled = false));
+  loop.start();
+
+  // ---------------------------------------------------------------- the renderer
+  try {
+    renderer = await rendererReady;
+    performance.mark('flexarm:renderer-ready');
+    const backend = renderer.backend();
+    store.dispatch({ type: 'renderer', backend });
+    const label = byId('backend');
+    setText(label, backend);
+    label.dataset.backend = backend;
+    watchSize(() => renderer);
+  } catch (e) {
+    setText(byId('backend'), 'none');
+    byId('backend').dataset.backend = 'none';
+    canvasProblem('This browser cannot draw the animation (neither WebGPU nor WebGL2 works).', `${messageOf(e)} — the simulation, status and readouts still run.`);
+    errors.show(`Renderer: ${messageOf(e)}`);
+  }
+  loop.touch();
+  // The maps start once the first frame's work is done, so they do not delay it.
+  loop.scheduleMaps();
+
+  /** Keeps the renderer's size that of the canvas' box and the screen's pixel ratio. */
+  function watchSize(/** @type {() => any} */ current) {
+    const wrap = byId('canvas-wrap');
+    const size = { w: 0, h: 0 };
+    const resize = () => {
+      const r = current();
+      if (r && size.w > 0 && size.h > 0) guard('Renderer resize failed', () => r.resize(size.w, size.h, window.devicePixelRatio || 1));
+      loop.touch();
+    };
+    new ResizeObserver((entries) => {
+      for (const entry of entries) Object.assign(size, { w: Math.round(entry.contentRect.width), h: Math.round(entry.contentRect.height) });
+      resize();
+    }).observe(wrap);
+    const watchDpr = () => {
+      matchMedia(`(resolution: ${window.devicePixelRatio || 1}dppx)`).addEventListener('change', () => {
+        watchDpr();
+        resize();
+      }, { once: true });
+    };
+    watchDpr();
+    const rect = wrap.getBoundingClientRect();
+    Object.assign(size, { w: Math.round(rect.width), h: Math.round(rect.height) });
+    resize();
+  }
+}
+
+/** The URL's values that were not taken. @param {{ key: string, text: string }[]} notices */
+function showNotices(notices) {
+  if (notices.length === 0) return;
+  byId('url-notice-list').replaceChildren(...notices.map((n) => make('li', { text: `Ignored URL value — ${n.text}` })));
+  byId('url-notice').hidden = false;
+  byId('url-notice-dismiss').addEventListener('click', () => (byId('url-notice').hidden = true), { once: true });
+}
+
+function canvasProblem(/** @type {string} */ title, /** @type {string} */ detail) {
+  byId('canvas-message').replaceChildren(make('strong', { text: title }), make('span', { text: detail }));
+  byId('canvas-message').hidden = false;
+  byId('canvas').hidden = true;
+}
+
+/** Offers `text` as a file. @param {string} name @param {string | null | undefined} text */
+function download(name, text) {
+  if (text == null) return;
+  const url = URL.createObjectURL(new Blob([text], { type: 'text/csv;charset=utf-8' }));
+  const a = make('a', { href: url, download: name });
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+}
+
+/** Shows the command line and copies it to the clipboard where the browser allows. @param {string} command */
+function copyCommand(command) {
+  const out = byId('command-line');
+  setText(out, command);
+  out.hidden = false;
+  navigator.clipboard?.writeText(command).then(
+    () => setText(out, `${command}  (copied)`),
+    () => {},
+  );
+}

@@ -1,0 +1,73 @@
+// The pointer on the canvas: hovering (mouse) or tapping (touch, pen) a pole shows what it is,
+// hovering a map shows ρ there, clicking a map runs at that point. What lies under the pointer
+// is the renderer's answer; this module only routes events.
+
+import { byId } from './dom.js';
+
+/** How far from a pole the pointer may be and still pick it, CSS px. */
+const REACH = { mouse: 22, touch: 36 };
+
+/**
+ * @param {{ probe: (x: number, y: number, reach: number) => any, pick: (map: string, delta: number, alpha: number) => void,
+ *   showTip: (probe: any) => void, hideTip: () => void }} on
+ */
+export function createPointer(on) {
+  const canvas = byId('canvas');
+  let pinned = false;
+
+  /** @param {PointerEvent | MouseEvent} ev */
+  const at = (ev) => {
+    const r = canvas.getBoundingClientRect();
+    return { x: ev.clientX - r.left, y: ev.clientY - r.top };
+  };
+  const isTouch = (ev) => ev.pointerType === 'touch' || ev.pointerType === 'pen';
+
+  function hide() {
+    pinned = false;
+    on.hideTip();
+    canvas.classList.remove('over-map', 'over-pole');
+  }
+
+  /** @param {any} probe */
+  function show(probe) {
+    on.showTip(probe);
+    canvas.classList.toggle('over-pole', probe.kind === 'pole');
+    canvas.classList.toggle('over-map', probe.kind === 'map');
+  }
+
+  /** @param {PointerEvent} ev */
+  function onPointer(ev) {
+    const touch = isTouch(ev);
+    if (ev.type === 'pointermove' && (touch || pinned)) return;
+    const { x, y } = at(ev);
+    const probe = on.probe(x, y, touch ? REACH.touch : REACH.mouse);
+    if (probe && (probe.kind === 'pole' || !touch)) {
+      show(probe);
+      pinned = touch && ev.type === 'pointerdown' && probe.kind === 'pole';
+    } else {
+      hide();
+    }
+  }
+
+  /** @param {PointerEvent} ev */
+  function onClick(ev) {
+    const { x, y } = at(ev);
+    const probe = on.probe(x, y, 0);
+    if (!probe || probe.kind !== 'map') return;
+    on.pick(probe.map, probe.delta, probe.alpha);
+    const mouse = !ev.pointerType || ev.pointerType === 'mouse';
+    if (mouse) show(on.probe(x, y, 0) ?? probe);
+    else hide();
+  }
+
+  canvas.addEventListener('pointermove', onPointer);
+  canvas.addEventListener('pointerdown', onPointer);
+  canvas.addEventListener('pointerleave', (ev) => {
+    if (ev.pointerType === 'mouse' && !pinned) hide();
+  });
+  canvas.addEventListener('click', onClick);
+  document.addEventListener('pointerdown', (ev) => {
+    if (pinned && ev.target !== canvas) hide();
+  });
+  return { hide };
+}
