@@ -157,7 +157,8 @@ fn repeating_maneuver_keeps_moving() {
 }
 
 /// With a repeating maneuver the errors rise at every slew; a stable loop must still read stable
-/// at every moment (the envelope is compared cycle to cycle), and an unstable one unstable.
+/// at every moment (the envelope is fitted between slews, where the loop moves freely), and an
+/// unstable one unstable.
 #[test]
 fn repeating_maneuver_verdict_does_not_flicker() {
     let mut c = SimulationConfig::default();
@@ -167,7 +168,11 @@ fn repeating_maneuver_verdict_does_not_flicker() {
         sim.advance(0.1).unwrap();
         assert_eq!(sim.metrics().verdict, Verdict::Stable, "t = {}: {:?}", sim.time(), sim.metrics());
     }
-    assert!(sim.metrics().growth_rate.unwrap().abs() < 0.05);
+    // Between slews the free motion decays, as ρ < 1 says (issue 9: the growth is fitted within
+    // the rest phases, so a stable loop shows a decay rate, not zero).
+    let growth = sim.metrics().growth_rate.unwrap();
+    let predicted = flexarm::analysis::analyze(&c, None).unwrap().growth_rate;
+    assert!(growth < -0.05 && predicted < 0.0, "observed {growth}, ln ρ/δ = {predicted}");
     // Without preliminary feedback at δ = 0.04 s (stable, ρ < 1) as well; at α = 0.5, δ = 0.01 s
     // (slowly unstable, ρ > 1) the growth shows cycle to cycle.
     c.preliminary_feedback = PreliminaryFeedbackChoice::Off;

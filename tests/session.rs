@@ -204,3 +204,133 @@ fn the_state_string_the_command_line_and_the_csv_say_the_same() {
     let csv = s.csv();
     assert!(csv.starts_with(&format!("# flexarm state: {}", s.settings().run_query())), "{}", &csv[..100]);
 }
+
+// ------------------------------------------------------------ issue 9: an honest verdict
+
+/// The words of a status, for checking what a student reads.
+fn words(s: &flexarm::session::RunStatus) -> String {
+    format!("{} {} {} {}", s.headline, s.detail, s.observed, s.rho)
+}
+
+fn has_word(text: &str, word: &str) -> bool {
+    text.split(|c: char| !c.is_alphanumeric()).any(|w| w.eq_ignore_ascii_case(word))
+}
+
+#[test]
+fn fig_5_3_is_called_unstable_from_the_first_frame_and_the_simulation_confirms_it_within_2_s() {
+    let mut s = session("preset=fig5.3");
+    assert!(s.settings().a.repeat, "the page's repeating slew");
+    let first = s.status().runs[0].clone();
+    assert_eq!((first.verdict, first.headline), ("unstable", "Unstable"));
+    assert!(first.detail.starts_with("ρ = 1.024 > 1 — the error grows ×e every 0.42 s"), "{}", first.detail);
+    let mut confirmed_at = None;
+    while s.run(0).unwrap().closed_loop().time() < 6.0 && !s.run(0).unwrap().closed_loop().is_finished() {
+        s.advance(0.05).unwrap();
+        let st = &s.status().runs[0];
+        assert!(!has_word(&words(st), "stable"), "t = {}: {}", st.readouts.time, words(st));
+        assert!(matches!(st.verdict, "unstable" | "diverged"));
+        if confirmed_at.is_none() && st.measured {
+            confirmed_at = Some(s.run(0).unwrap().closed_loop().time());
+            assert!(st.observed.contains("matches ln ρ/δ = 2.36 1/s"), "{}", st.observed);
+        }
+    }
+    let t = confirmed_at.expect("the observation came");
+    assert!(t <= 2.0, "observed growth shown at t = {t} s, before the divergence (≈ 4 s)");
+}
+
+#[test]
+fn every_presets_verdict_agrees_with_rho_from_the_first_frame() {
+    for p in flexarm::session::PRESETS {
+        let s = session(&format!("preset={}", p.id));
+        let st = &s.status().runs[0];
+        let rho = st.spectral_radius.unwrap();
+        let want = if rho < 1.0 { "stable" } else { "unstable" };
+        assert_eq!(st.verdict, want, "{}: ρ = {rho}", p.id);
+        assert!(has_word(&st.headline, want), "{}: {}", p.id, st.headline);
+        assert!(p.title.to_lowercase().contains("unstable") == (want == "unstable") || p.id != "fig5.3");
+    }
+}
+
+#[test]
+fn a_stable_run_is_confirmed_and_a_borderline_one_is_called_so() {
+    let mut s = session("delta=0.01&pf=paper");
+    while !s.status().runs[0].measured {
+        s.advance(0.05).unwrap();
+    }
+    let st = &s.status().runs[0];
+    assert_eq!(st.verdict, "stable");
+    assert!(st.detail.contains("shrink ×e every"), "{}", st.detail);
+    assert!(st.observed.contains("1/s —") && !st.observed.contains("but"), "{}", st.observed);
+    // ρ within a hair of 1: neither word. (At α = 2 without K_pr, near the window's edge.)
+    let mut s = session("delta=0.03501&pf=off&alpha=2");
+    let st = &s.status().runs[0];
+    assert_eq!(st.verdict, "borderline", "{}", st.detail);
+    assert!(st.detail.contains("≈ 1"), "{}", st.detail);
+    s.set("delta", "0.05").unwrap();
+    assert_eq!(s.status().runs[0].verdict, "stable");
+}
+
+#[test]
+fn a_change_after_divergence_restarts_and_keeps_the_old_run_as_a_ghost() {
+    let mut s = session("preset=fig5.3");
+    play(&mut s, 6.0);
+    assert_eq!(s.status().runs[0].verdict, "diverged");
+    assert!(s.status().runs[0].observed.contains("as ρ > 1 predicted"), "{}", s.status().runs[0].observed);
+    s.set("pf", "paper").unwrap();
+    let st = s.status();
+    assert_eq!(st.runs[0].verdict, "stable", "the verdict belongs to the settings on screen");
+    assert_eq!(s.run(0).unwrap().closed_loop().time(), 0.0);
+    let ghost = s.ghost().expect("the diverged run stays as a ghost");
+    assert!(ghost.settings.starts_with("no K_pr, δ = 0.01 s"), "{}", ghost.settings);
+    assert!(ghost.traces.t().last().unwrap() > &4.0 && ghost.traces.e2().len() == ghost.traces.t().len());
+    assert!(st.ghost.contains("previous run"), "{}", st.ghost);
+    // A preset no longer erases the previous run either.
+    play(&mut s, 1.0);
+    s.apply_preset("fig5.1").unwrap();
+    assert!(s.ghost().unwrap().settings.starts_with("paper K_pr, δ = 0.01 s"));
+}
+
+#[test]
+fn a_live_change_starts_the_numbers_afresh() {
+    let mut s = session("delta=0.04&pf=paper&repeat=0");
+    play(&mut s, 1.5);
+    let slew = s.run(0).unwrap().closed_loop().metrics().max_error_slew;
+    assert!(slew[0] > 1e-3, "the slew's errors at δ = 0.04 s: {slew:?}");
+    s.set("delta", "0.01").unwrap();
+    play(&mut s, 0.2);
+    let m = s.run(0).unwrap().closed_loop().metrics();
+    assert_eq!(m.max_error_slew, [0.0, 0.0], "no slew since the change: the old maxima are not shown as the new");
+    assert!(m.max_error_after[0] < slew[0]);
+}
+
+#[test]
+fn the_windows_status_says_them_in_words_and_as_slider_bands() {
+    let mut s = session("delta=0.01&alpha=2&pf=off");
+    assert!(s.status().windows.is_none(), "computed on demand");
+    s.refresh();
+    let w = s.status().windows.unwrap();
+    assert!(
+        w.text.starts_with(
+            "Without preliminary feedback (α = 2 1/s) the loop is stable only for 0.0350 s < δ < 0.1007 s, 0.1068 s < δ < 0.1161 s and 0.1627 s < δ < 0.2236 s"
+        ),
+        "{}",
+        w.text
+    );
+    assert_eq!(w.bands.len(), 3);
+    for ([lo, hi], [p0, p1]) in w.windows.iter().zip(&w.bands) {
+        let spec = flexarm::schema::DELTA.number().unwrap();
+        assert!((spec.position(*lo) - p0).abs() < 1e-12 && (spec.position(*hi) - p1).abs() < 1e-12 && p0 < p1);
+    }
+    s.set("pf", "paper").unwrap();
+    assert!(s.status().windows.is_none(), "stale after a change that matters");
+    s.refresh();
+    assert!(s
+        .status()
+        .windows
+        .unwrap()
+        .text
+        .starts_with("With paper K_pr (α = 2 1/s) the loop is stable only for δ < 0.2240 s"));
+    // δ does not matter to the windows.
+    s.set("delta", "0.02").unwrap();
+    assert!(s.status().windows.is_some());
+}

@@ -184,11 +184,13 @@ const SIZES: [(f64, f64); 8] = [
 
 /// Every combination of the panel options.
 fn all_options() -> impl Iterator<Item = LayoutOptions> {
-    (0..16u8).map(|bits| LayoutOptions {
+    (0..64u8).map(|bits| LayoutOptions {
         show_torque: bits & 1 != 0,
         show_poles: bits & 2 != 0,
         show_map: bits & 4 != 0,
         pair: bits & 8 != 0,
+        z_plane: bits & 16 != 0,
+        show_rho: bits & 32 != 0,
     })
 }
 
@@ -229,10 +231,18 @@ fn panels_lie_inside_the_canvas_and_do_not_overlap() {
             want.push(PanelKind::Torque);
         }
         if options.show_poles {
-            want.push(PanelKind::Poles);
+            want.push(if options.z_plane { PanelKind::ZPlane } else { PanelKind::Poles });
+        }
+        if options.show_rho {
+            want.push(PanelKind::RhoCurve);
         }
         if options.show_map {
             want.extend([PanelKind::MapOff, PanelKind::MapOn]);
+        }
+        // ρ(δ) shows the slice of a map at the current α: it is left out where there is no room.
+        if !kinds.contains(&PanelKind::RhoCurve) {
+            want.retain(|k| *k != PanelKind::RhoCurve);
+            assert!(!options.show_rho || w < 1280.0 || h < 700.0 || options.pair, "{w}×{h} {options:?}: ρ(δ) left out");
         }
         assert_eq!(kinds, want, "{options:?}");
         for (i, a) in layout.panels.iter().enumerate() {
@@ -327,7 +337,14 @@ fn two_arms_share_the_stage() {
 fn wide_canvases_put_the_arm_left_narrow_ones_on_top() {
     assert_eq!(
         LayoutOptions::default(),
-        LayoutOptions { show_torque: false, show_poles: true, show_map: true, pair: false },
+        LayoutOptions {
+            show_torque: false,
+            show_poles: true,
+            z_plane: false,
+            show_rho: true,
+            show_map: true,
+            pair: false
+        },
         "by default the pole plot and the maps are shown"
     );
     let wide = Layout::compute(1280.0, 720.0, 1.0, &LayoutOptions::default());
@@ -453,6 +470,7 @@ fn ten_thousand_samples_cost_two_points_per_pixel_column_and_keep_spikes() {
     let mut v: Vec<f64> = t.iter().map(|t| (40.0 * t).sin() * 1e-4).collect();
     v[5_123] = 9e-4; // a one-sample spike
     let frame = PlotFrame {
+        log: false,
         rect: Rect::new(100.0, 50.0, 400.0, 200.0),
         window: TimeWindow { start: 0.0, end: 10.0 },
         y_lo: -1e-3,
@@ -473,6 +491,7 @@ fn sparse_samples_are_drawn_as_they_are() {
     let t = [0.0, 1.0, 2.0, 3.0];
     let v = [0.0, 1.0, -1.0, 0.5];
     let frame = PlotFrame {
+        log: false,
         rect: Rect::new(0.0, 0.0, 300.0, 100.0),
         window: TimeWindow { start: 0.0, end: 10.0 },
         y_lo: -2.0,
@@ -594,7 +613,7 @@ fn scene_scrolls_resets_and_reports_panels() {
     scene.draw(&sim);
     let panels = scene.panel_info();
     let ids: Vec<&str> = panels.iter().map(|p| p.id).collect();
-    assert_eq!(ids, ["arm", "e1", "e2", "torque", "poles", "map-off", "map-on"]);
+    assert_eq!(ids, ["arm", "e1", "e2", "torque", "poles", "rho-curve", "map-off", "map-on"]);
     let e2 = info(&panels, "e2");
     assert!((e2.x_range[0] - 2.5).abs() < 1e-9 && (e2.x_range[1] - 12.5).abs() < 1e-9, "{:?}", e2.x_range);
     assert!(e2.x_ticks.iter().all(|t| *t >= 2.5 && *t <= 12.5));
@@ -895,15 +914,19 @@ fn maps_go_to_the_static_layer_and_change_only_on_set_map() {
         scene.draw(&sim);
     }
     assert_eq!(scene.static_generation(), g2, "drawing frames does not rebuild the maps");
-    // Everything stays inside the map panels.
+    // Everything stays inside the map panels (and ρ(δ), the other static panel).
     let off = scene.layout().to_physical(scene.layout().panel(PanelKind::MapOff).unwrap().rect);
     let on = scene.layout().to_physical(scene.layout().panel(PanelKind::MapOn).unwrap().rect);
+    let rho = scene.layout().to_physical(scene.layout().panel(PanelKind::RhoCurve).unwrap().rect);
     for v in scene.static_vertices() {
         let [x, y] = [v.position[0] as f64, v.position[1] as f64];
         let inside = |r: Rect| x >= r.x - 0.01 && x <= r.right() + 0.01 && y >= r.y - 0.01 && y <= r.bottom() + 0.01;
         // The contour's halo may poke out by half its width.
         let near = |r: Rect| x >= r.x - 5.0 && x <= r.right() + 5.0 && y >= r.y - 5.0 && y <= r.bottom() + 5.0;
-        assert!(inside(off) || inside(on) || near(off) || near(on), "static vertex {x},{y} outside the maps");
+        assert!(
+            inside(off) || inside(on) || near(off) || near(on) || inside(rho),
+            "static vertex {x},{y} outside the maps"
+        );
     }
     let panels = scene.panel_info();
     let map = info(&panels, "map-off");
@@ -912,11 +935,14 @@ fn maps_go_to_the_static_layer_and_change_only_on_set_map() {
     assert_eq!(map.x_range, [deltas[0], deltas[23]]);
     assert_eq!(map.y_range, [alphas[0], alphas[9]]);
     assert!(map.x_ticks.contains(&0.01) && map.y_ticks.contains(&1.0), "{:?} {:?}", map.x_ticks, map.y_ticks);
-    assert!(panels.iter().filter(|p| !p.id.starts_with("map")).all(|p| p.x_scale == "linear" && p.y_scale == "linear"));
-    scene.set_options(&OptionsUpdate { show_map: Some(false), ..Default::default() }).unwrap();
+    assert!(panels
+        .iter()
+        .filter(|p| !p.id.starts_with("map") && p.id != "rho-curve")
+        .all(|p| p.x_scale == "linear" && p.y_scale == "linear"));
+    scene.set_options(&OptionsUpdate { show_map: Some(false), show_rho: Some(false), ..Default::default() }).unwrap();
     assert!(scene.static_vertices().is_empty(), "hidden maps draw nothing");
     assert!(scene.layout().panel(PanelKind::MapOff).is_none());
-    scene.set_options(&OptionsUpdate { show_map: Some(true), ..Default::default() }).unwrap();
+    scene.set_options(&OptionsUpdate { show_map: Some(true), show_rho: Some(true), ..Default::default() }).unwrap();
     assert_eq!(scene.static_vertices().len(), whole, "the map survives hiding");
     scene.clear_maps();
     assert!(scene.map(MapSide::Off).is_empty());
@@ -1051,7 +1077,7 @@ fn a_pair_shows_two_arms_both_errors_and_both_runs_poles() {
     assert!(scene.is_pair());
     let panels = scene.panel_info();
     let ids: Vec<&str> = panels.iter().map(|p| p.id).collect();
-    assert_eq!(ids, ["arm", "arm-b", "e1", "e2", "poles", "map-off", "map-on"]);
+    assert_eq!(ids, ["arm", "arm-b", "e1", "e2", "poles", "rho-curve", "map-off", "map-on"]);
     // The scale covers both runs: A diverges, B stays small.
     let e1 = info(&panels, "e1").y_range[1];
     assert!(e1 >= max_abs(&a.traces().e1()) && e1 >= max_abs(&b.traces().e1()));

@@ -22,12 +22,41 @@ pub struct StableWindows {
     pub windows: Vec<[f64; 2]>,
     /// Each edge inside the range lies within this of the true crossing of ρ = 1, s.
     pub tolerance: f64,
+    /// The scan the edges were bracketed on: (δ, ρ), logarithmic in δ; ρ is NaN where the
+    /// analysis failed. The ρ(δ) curve of the page.
+    pub scan: Vec<[f64; 2]>,
 }
 
 impl StableWindows {
     /// True if δ lies in one of the windows.
     pub fn contains(&self, delta: f64) -> bool {
         self.windows.iter().any(|w| delta >= w[0] && delta <= w[1])
+    }
+
+    /// The windows in words: "stable only for 0.0350 s < δ < 0.1007 s and 0.1069 s < δ < …",
+    /// "stable for every δ from 0.002 s to 0.25 s", "unstable for every δ from … to … s".
+    pub fn describe(&self) -> String {
+        let [lo, hi] = self.range;
+        let edge = |v: f64| format!("{v:.4}");
+        match self.windows.as_slice() {
+            [] => format!("unstable for every δ from {} s to {} s", lo, hi),
+            [[a, b]] if *a <= lo && *b >= hi => format!("stable for every δ from {lo} s to {hi} s"),
+            windows => {
+                let parts: Vec<String> = windows
+                    .iter()
+                    .map(|[a, b]| match (*a <= lo, *b >= hi) {
+                        (true, false) => format!("δ < {} s", edge(*b)),
+                        (false, true) => format!("δ > {} s", edge(*a)),
+                        _ => format!("{} s < δ < {} s", edge(*a), edge(*b)),
+                    })
+                    .collect();
+                let list = match parts.split_last() {
+                    Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+                    _ => parts.join(""),
+                };
+                format!("stable only for {list} (between {lo} s and {hi} s)")
+            }
+        }
     }
 }
 
@@ -40,12 +69,15 @@ pub fn stable_windows(settings: &LinearSettings, range: [f64; 2]) -> Result<Stab
     // A cell whose linear algebra fails counts as not stable.
     let stable = |d: f64| model.spectral_radius(d).map(|r| r < 1.0);
     let mut flags = Vec::with_capacity(deltas.len());
+    let mut scan = Vec::with_capacity(deltas.len());
     for &d in &deltas {
-        flags.push(match stable(d) {
-            Ok(s) => s,
-            Err(Error::Analysis(_)) => false,
+        let rho = match model.spectral_radius(d) {
+            Ok(r) => r,
+            Err(Error::Analysis(_)) => f64::NAN,
             Err(e) => return Err(e),
-        });
+        };
+        flags.push(rho < 1.0);
+        scan.push([d, rho]);
     }
     // The crossing between a (stability `sa`) and b, by bisection.
     let edge = |mut a: f64, mut b: f64, sa: bool| -> f64 {
@@ -74,7 +106,7 @@ pub fn stable_windows(settings: &LinearSettings, range: [f64; 2]) -> Result<Stab
     if let Some(s) = start {
         windows.push([s, deltas[deltas.len() - 1]]);
     }
-    Ok(StableWindows { range, windows, tolerance: EDGE_TOLERANCE })
+    Ok(StableWindows { range, windows, tolerance: EDGE_TOLERANCE, scan })
 }
 
 /// The δ intervals of one grid row where ρ < 1: runs of stable cells whose ends are moved to the

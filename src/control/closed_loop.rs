@@ -247,7 +247,7 @@ impl ClosedLoop {
                 self.periods_since_origin = 0;
             }
             if config != self.config {
-                self.stats.fit_from = self.time;
+                self.stats.restart(self.time);
             }
             self.config = config;
             self.derived = derived;
@@ -319,8 +319,7 @@ impl ClosedLoop {
         } else if e.amax() > self.config.divergence_bound {
             self.divergence = Some((self.time, DivergenceReason::ErrorBound));
         } else {
-            let cycle = self.config.reference.repeat_hold.map(|hold| 2.0 * (self.config.reference.slew_time + hold));
-            self.stats.record(self.time, &e, &self.applied_torque, d.reference.is_moving(self.time), cycle);
+            self.stats.record(self.time, &e, &self.applied_torque, d.reference.is_moving(self.time));
         }
         if self.steps_taken.is_multiple_of(d.output_every as u64) || self.divergence.is_some() {
             self.record_trace();
@@ -366,7 +365,7 @@ impl ClosedLoop {
 
     /// Metrics and verdict so far.
     pub fn metrics(&self) -> Metrics {
-        self.stats.metrics(self.time, self.config.reference.slew_time, self.divergence)
+        self.stats.metrics(self.time, self.divergence)
     }
 }
 

@@ -59,14 +59,25 @@ pub struct Metrics {
     pub max_error_after: [f64; 2],
     /// RMS of e_i over the whole run, rad.
     pub rms_error: [f64; 2],
-    /// Slope of ln max(|e1|, |e2|) over the last windows after the first slew, 1/s.
+    /// Slope of ln max(|e1|, |e2|) over the last windows between slews, 1/s (see
+    /// [`ErrorStats::growth_rate`]).
     pub growth_rate: Option<f64>,
     /// max |T_i| applied, N m.
     pub max_torque: [f64; 2],
     pub verdict: Verdict,
 }
 
-/// Running statistics of the errors.
+/// One window of the error envelope: its end time, max(|e1|, |e2|) in it, and the rest phase it
+/// belongs to (windows with motion in them are not kept).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Window {
+    end: f64,
+    max: f64,
+    rest_phase: u64,
+}
+
+/// Running statistics of the errors: maxima, RMS, torque, and the envelope windows of the last
+/// [`GROWTH_FIT_SPAN`] seconds (bounded: the memory does not grow with the run).
 #[derive(Clone, Debug, Default)]
 pub(crate) struct ErrorStats {
     max_slew: [f64; 2],
@@ -74,39 +85,21 @@ pub(crate) struct ErrorStats {
     sum_sq: [f64; 2],
     samples: u64,
     max_torque: [f64; 2],
-    /// (window end time, max(|e1|, |e2|) in the window).
-    windows: Vec<(f64, f64)>,
+    windows: std::collections::VecDeque<Window>,
     window_start: f64,
     window_max: f64,
-    /// The growth rate is fitted only after this time (the last change of configuration), so a
-    /// live change shows its own growth, not a mix with the previous setting.
-    pub(crate) fit_from: f64,
-    /// For a repeating maneuver: its period and the error maximum of each cycle (cycle index, max).
-    cycle_period: Option<f64>,
-    cycle_max: Vec<(u64, f64)>,
+    /// The current window has samples where the reference moves.
+    window_moving: bool,
+    /// Counts the rest phases (between slews); the reference moved at the last sample.
+    rest_phase: u64,
+    was_moving: bool,
+    /// The statistics describe the run since this time (the last change of configuration), so a
+    /// live change shows its own numbers, not a mix with the previous setting.
+    pub(crate) since: f64,
 }
 
 impl ErrorStats {
-    pub(crate) fn record(
-        &mut self,
-        t: f64,
-        e: &Vector2<f64>,
-        torque: &Vector2<f64>,
-        moving: bool,
-        cycle_period: Option<f64>,
-    ) {
-        if cycle_period != self.cycle_period {
-            self.cycle_period = cycle_period;
-            self.cycle_max.clear();
-        }
-        if let Some(period) = cycle_period {
-            let index = (t / period).floor() as u64;
-            let m = e[0].abs().max(e[1].abs());
-            match self.cycle_max.last_mut() {
-                Some((i, max)) if *i == index => *max = max.max(m),
-                _ => self.cycle_max.push((index, m)),
-            }
-        }
+    pub(crate) fn record(&mut self, t: f64, e: &Vector2<f64>, torque: &Vector2<f64>, moving: bool) {
         for i in 0..2 {
             let a = e[i].abs();
             let slot = if moving { &mut self.max_slew[i] } else { &mut self.max_after[i] };
@@ -115,49 +108,69 @@ impl ErrorStats {
             self.max_torque[i] = self.max_torque[i].max(torque[i].abs());
         }
         self.samples += 1;
+        if self.was_moving && !moving {
+            self.rest_phase += 1;
+        }
+        self.was_moving = moving;
+        self.window_moving |= moving;
         self.window_max = self.window_max.max(e[0].abs().max(e[1].abs()));
         if t - self.window_start >= GROWTH_WINDOW - 1e-12 {
-            self.windows.push((t, self.window_max));
+            if !self.window_moving && self.window_start >= self.since - 1e-9 {
+                self.windows.push_back(Window { end: t, max: self.window_max, rest_phase: self.rest_phase });
+            }
+            while self.windows.front().is_some_and(|w| w.end < t - GROWTH_FIT_SPAN - 1e-9) {
+                self.windows.pop_front();
+            }
             self.window_start = t;
             self.window_max = 0.0;
+            self.window_moving = false;
         }
     }
 
-    /// The growth rate of the error envelope, 1/s. For a single slew: the least-squares slope of
-    /// ln(window max) over the windows after `from` (the end of the slew). For a repeating
-    /// maneuver the errors rise with every slew even when the loop is stable, so the envelope is
-    /// compared cycle to cycle instead: ln(max of the last full cycle / max of the one before) / period.
-    pub(crate) fn growth_rate(&self, from: f64) -> Option<f64> {
-        if let Some(period) = self.cycle_period {
-            let current = self.cycle_max.last()?.0;
-            let mut complete =
-                self.cycle_max.iter().filter(|(i, _)| *i < current && *i as f64 * period >= self.fit_from - 1e-9).rev();
-            let (_, last) = complete.next()?;
-            let (_, previous) = complete.next()?;
-            return (*last > 0.0 && *previous > 0.0).then(|| (last / previous).ln() / period);
-        }
-        let end = self.windows.last()?.0;
-        let start = from.max(self.fit_from).max(end - GROWTH_FIT_SPAN);
-        let pts: Vec<(f64, f64)> =
-            self.windows.iter().filter(|(t, m)| *t > start + 1e-9 && *m > 0.0).map(|(t, m)| (*t, m.ln())).collect();
+    /// Starts the statistics afresh at time `t` (a new configuration took effect).
+    pub(crate) fn restart(&mut self, t: f64) {
+        *self = ErrorStats {
+            since: t,
+            window_start: t,
+            rest_phase: self.rest_phase,
+            was_moving: self.was_moving,
+            ..Default::default()
+        };
+    }
+
+    /// The growth rate of the error envelope, 1/s: the least-squares slope of ln(window max)
+    /// against time over the windows of the last [`GROWTH_FIT_SPAN`] seconds in which the
+    /// reference rests, each rest phase with its own level (a pooled, within-phase slope). Every
+    /// slew excites the loop anew, so only the phases between slews show how its free motion
+    /// grows or decays; with a repeating slew that is known after the first rest phase (about
+    /// 0.75 s of it), not after whole cycles. `None` until three windows are in.
+    pub(crate) fn growth_rate(&self) -> Option<f64> {
+        let pts: Vec<&Window> = self.windows.iter().filter(|w| w.max > 0.0).collect();
         if pts.len() < 3 {
             return None;
         }
-        let n = pts.len() as f64;
-        let (st, sy) = pts.iter().fold((0.0, 0.0), |(a, b), (t, y)| (a + t, b + y));
-        let (mt, my) = (st / n, sy / n);
-        let (num, den) =
-            pts.iter().fold((0.0, 0.0), |(a, b), (t, y)| (a + (t - mt) * (y - my), b + (t - mt) * (t - mt)));
+        let (mut num, mut den) = (0.0, 0.0);
+        let mut i = 0;
+        while i < pts.len() {
+            let phase = pts[i].rest_phase;
+            let group: Vec<&&Window> = pts[i..].iter().take_while(|w| w.rest_phase == phase).collect();
+            i += group.len();
+            let n = group.len() as f64;
+            let mt = group.iter().map(|w| w.end).sum::<f64>() / n;
+            let my = group.iter().map(|w| w.max.ln()).sum::<f64>() / n;
+            for w in group {
+                num += (w.end - mt) * (w.max.ln() - my);
+                den += (w.end - mt) * (w.end - mt);
+            }
+        }
         (den > 0.0).then(|| num / den)
     }
-}
 
-impl ErrorStats {
-    /// The metrics and verdict at time `time` of a run whose first slew ends at `slew_end`.
-    pub(crate) fn metrics(&self, time: f64, slew_end: f64, divergence: Option<(f64, DivergenceReason)>) -> Metrics {
+    /// The metrics and verdict at time `time`.
+    pub(crate) fn metrics(&self, time: f64, divergence: Option<(f64, DivergenceReason)>) -> Metrics {
         let n = self.samples.max(1) as f64;
-        let growth_rate = self.growth_rate(slew_end);
-        let last_window = self.windows.last().map(|w| w.1).unwrap_or(0.0).max(self.window_max);
+        let growth_rate = self.growth_rate();
+        let last_window = self.windows.back().map(|w| w.max).unwrap_or(0.0).max(self.window_max);
         let verdict = match divergence {
             Some((at, reason)) => Verdict::Diverged { at, reason },
             None => match growth_rate {

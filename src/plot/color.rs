@@ -124,6 +124,18 @@ pub mod palette {
     /// Run A's marker on the maps, and the white halo that keeps markers readable on dark cells.
     pub const MAP_MARKER: Color = Color::hex(0x101014);
     pub const MARKER_HALO: Color = Color::hex(0xffffff).with_alpha(0.9);
+
+    /// The previous run's errors, kept faint after a restart.
+    pub const GHOST_TRACE: Color = Color::hex(0x8a877f).with_alpha(0.55);
+    /// The slope the linear analysis predicts, ln ρ / δ, over the log |e| plot.
+    pub const PREDICTED: Color = Color::hex(0x111116);
+    /// The stable windows of δ: bands on the ρ(δ) plot, marks on the map.
+    pub const WINDOW_BAND: Color = Color::hex(0xd9ecf7);
+    pub const WINDOW_MARK: Color = Color::hex(0x0b6e3a);
+    /// The Nyquist frequency ±π/δ in the s-plane.
+    pub const NYQUIST: Color = Color::hex(0x8c5a00);
+    /// The unit circle of the z-plane.
+    pub const UNIT_CIRCLE: Color = Color::hex(0x3b3b44);
 }
 
 /// ρ is shown between these bounds; beyond them the colour saturates.

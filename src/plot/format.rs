@@ -127,8 +127,18 @@ impl TickFormat {
     }
 }
 
-/// A log-axis label: three significant digits, no exponent, no trailing zeros ("0.002", "5").
+/// A log-axis label: three significant digits, no trailing zeros ("0.002", "5"); exponent
+/// notation for tiny or huge values ("1e−6", "5e−4").
 pub fn log_tick(v: f64) -> String {
+    if v != 0.0 && !(1e-3..1e5).contains(&v.abs()) {
+        for d in 0..=2 {
+            let text = format!("{v:.d$e}");
+            if text.parse::<f64>().is_ok_and(|back| (back / v - 1.0).abs() < 1e-9) {
+                return minus(&text);
+            }
+        }
+        return sci(v, 3);
+    }
     sig_trim(v, 3)
 }
 
@@ -150,6 +160,9 @@ mod tests {
         assert_eq!(sig_trim(0.1, 3), "0.1");
         assert_eq!(log_tick(0.002), "0.002");
         assert_eq!(log_tick(5.0), "5");
+        assert_eq!(log_tick(1e-9), "1e−9");
+        assert_eq!(log_tick(5e-4), "5e−4");
+        assert_eq!(log_tick(0.001), "0.001");
     }
 
     #[test]

@@ -212,3 +212,31 @@ pub fn label_log_ticks(ticks: &[f64], lo: f64, hi: f64, length: f64, min_spacing
     kept.sort_by(|a, b| a.0.total_cmp(&b.0));
     kept.into_iter().map(|(v, _)| v).collect()
 }
+
+/// The powers of ten in [lo, hi] (lo > 0), without allocating: the grid of a log |e| plot.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Decades {
+    next: i32,
+    last: i32,
+}
+
+impl Decades {
+    pub fn new(lo: f64, hi: f64) -> Decades {
+        if !(lo > 0.0 && hi > lo && hi.is_finite()) {
+            return Decades { next: 1, last: 0 };
+        }
+        Decades { next: (lo.log10() - 1e-9).ceil() as i32, last: (hi.log10() + 1e-9).floor() as i32 }
+    }
+}
+
+impl Iterator for Decades {
+    type Item = f64;
+
+    fn next(&mut self) -> Option<f64> {
+        if self.next > self.last {
+            return None;
+        }
+        self.next += 1;
+        Some(power_of_ten_times(1.0, self.next - 1))
+    }
+}

@@ -16,6 +16,7 @@ use serde::Serialize;
 
 use crate::analysis::{stable_windows, LinearSettings, StableWindows};
 use crate::control::config::PreliminaryFeedbackChoice;
+use crate::control::config::PreliminaryFeedbackChoice as Pf;
 use crate::error::{Error, ParseError};
 use crate::schema::{self, Kind, Scope, Value};
 
@@ -42,6 +43,30 @@ pub struct Status {
     /// The preset the settings match ("" if none).
     pub preset: String,
     pub maps: maps::MapStatus,
+    /// Run A's stable windows of δ (null until computed: `Session::refresh`).
+    pub windows: Option<WindowsStatus>,
+    /// What the faint ghost traces are ("" if there are none).
+    pub ghost: String,
+}
+
+/// The stable windows of δ for run A's settings, as the page shows them.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct WindowsStatus {
+    /// "Without preliminary feedback (α = 2 1/s) the loop is stable only for …".
+    pub text: String,
+    /// The windows, s.
+    pub windows: Vec<[f64; 2]>,
+    /// The same as positions [from, to] along the δ slider (0–1).
+    pub bands: Vec<[f64; 2]>,
+}
+
+/// The previous run of A, kept faint for comparison after a restart.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Ghost {
+    /// Its t, e1, e2 (the other columns empty).
+    pub traces: crate::control::Traces,
+    /// Which settings it had.
+    pub settings: String,
 }
 
 /// The stable windows of δ for one set of linear settings (δ itself ignored), cached.
@@ -59,6 +84,7 @@ pub struct Session {
     b: Option<Run>,
     maps: Maps,
     windows: WindowsCache,
+    ghost: Option<Ghost>,
     note: String,
     trace_seconds: f64,
 }
@@ -74,6 +100,7 @@ impl Session {
             b,
             maps: Maps::default(),
             windows: WindowsCache::default(),
+            ghost: None,
             note: String::new(),
             trace_seconds: DEFAULT_TRACE_SECONDS,
         };
@@ -201,6 +228,14 @@ impl Session {
         self.apply(next, false, "")
     }
 
+    /// Runs A at a sampling period picked on ρ(δ): rounded to the δ control's precision and kept
+    /// within its span.
+    pub fn pick_delta(&mut self, delta: f64) -> Result<(), Error> {
+        let spec = schema::DELTA.number().expect("δ is a number");
+        let d = spec.value_at(spec.position(schema::round_significant(delta, spec.digits)));
+        self.set_value(schema::DELTA.key, Value::Number(d))
+    }
+
     /// Makes `next` the settings: run A (and B) take it live, or restart when `restart` or when
     /// they had diverged; the comparison starts and stops here. Invalid settings change nothing.
     fn apply(&mut self, next: Settings, restart: bool, why: &str) -> Result<(), Error> {
@@ -210,6 +245,9 @@ impl Session {
             b.run(&next.a).config().validate()?;
         }
         let was_comparing = self.b.is_some();
+        if restart || self.a.closed_loop().is_finished() || (next.b.is_some() && !was_comparing) {
+            self.keep_ghost();
+        }
         let a_restarted = self.a.change(next.a, restart)?;
         let mut notes = Vec::new();
         match (next.b, self.b.as_mut()) {
@@ -271,8 +309,26 @@ impl Session {
         }
     }
 
+    /// Keeps run A's traces (t, e1, e2) as the ghost, if it has run for a while.
+    fn keep_ghost(&mut self) {
+        use crate::control::{Column, Traces};
+        let sim = self.a.closed_loop();
+        if sim.time() < 0.5 {
+            return;
+        }
+        let t = sim.traces();
+        let traces = Traces::from_columns([Column::T, Column::E1, Column::E2].map(|c| (c, t.column(c).to_vec())));
+        self.ghost = Some(Ghost { traces, settings: status::describe(&self.a) });
+    }
+
+    /// The previous run of A, drawn faint (None until a run restarted).
+    pub fn ghost(&self) -> Option<&Ghost> {
+        self.ghost.as_ref()
+    }
+
     /// Both runs back to rest.
     pub fn reset(&mut self) -> Result<(), Error> {
+        self.keep_ghost();
         for run in self.runs_mut() {
             run.reset()?;
         }
@@ -329,6 +385,45 @@ impl Session {
         }
     }
 
+    /// Brings what is computed on demand up to date: the stable windows of δ (about 240 ρ, a few
+    /// milliseconds; call it a few times a second, not per slider event).
+    pub fn refresh(&mut self) {
+        let _ = self.windows();
+    }
+
+    /// The stable windows as last computed for the current settings (None if stale or failed).
+    pub fn cached_windows(&self) -> Option<&StableWindows> {
+        let key = self.linear_settings().at(0.0, self.settings.a.alpha);
+        match (&self.windows.key, &self.windows.result) {
+            (Some(k), Some(Ok(w))) if *k == key => Some(w),
+            _ => None,
+        }
+    }
+
+    fn windows_status(&self) -> Option<WindowsStatus> {
+        let w = self.cached_windows()?;
+        let a = self.settings.a;
+        let who = match a.pf {
+            Pf::Off => "Without preliminary feedback".to_string(),
+            pf => format!("With {}", maps::feedback_short(pf)),
+        };
+        let alpha = if a.alpha[0] == a.alpha[1] {
+            format!("α = {} 1/s", crate::plot::format::sig_trim(a.alpha[0], 3))
+        } else {
+            format!(
+                "α1 = {}, α2 = {} 1/s",
+                crate::plot::format::sig_trim(a.alpha[0], 3),
+                crate::plot::format::sig_trim(a.alpha[1], 3)
+            )
+        };
+        let spec = schema::DELTA.number().expect("δ is a number");
+        Some(WindowsStatus {
+            text: format!("{who} ({alpha}) the loop is {}.", w.describe()),
+            windows: w.windows.clone(),
+            bands: w.windows.iter().map(|[lo, hi]| [spec.position(*lo), spec.position(*hi)]).collect(),
+        })
+    }
+
     /// The status of both runs, in words.
     pub fn status(&self) -> Status {
         let mut runs = vec![run_status("A", &self.a)];
@@ -340,6 +435,11 @@ impl Session {
             note: self.note.clone(),
             preset: self.preset().map_or(String::new(), |p| p.id.to_string()),
             maps: self.maps.status(),
+            windows: self.windows_status(),
+            ghost: self
+                .ghost
+                .as_ref()
+                .map_or(String::new(), |g| format!("faint grey: the previous run ({})", g.settings)),
         }
     }
 

@@ -1,13 +1,15 @@
-//! What the page says about a run, in words: the verdict, the observed growth, the linear
-//! analysis, the readouts. Written here so that every number shown for one setting comes from
-//! one place and cannot contradict another.
+//! What the page says about a run, in words. The headline is the linear analysis — ρ of the
+//! settings on screen, known from the first frame — stated plainly; the simulation's own
+//! observation confirms it (or says why it cannot) as soon as it can. Written here so that every
+//! number shown for one setting comes from one place and cannot contradict another.
 
 use serde::Serialize;
 
 use super::maps::feedback_short;
 use super::run::Run;
-use crate::control::metrics::{DivergenceReason, Verdict};
-use crate::plot::format::{sci, sig};
+use crate::control::config::FrictionCompensation;
+use crate::control::metrics::{DivergenceReason, Metrics, Verdict, UNSTABLE_GROWTH_RATE};
+use crate::plot::format::{minus, sci, sig, sig_trim};
 
 /// The readouts under the canvas.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -17,8 +19,33 @@ pub struct Readouts {
     pub max_slew: String,
     pub max_after: String,
     pub torque: String,
+    /// The observed growth rate of the errors' free motion.
+    pub growth: String,
     /// The δ → 0 pair A4 with the run's preliminary feedback.
     pub a4: String,
+}
+
+/// What the linear analysis says about a loop: ρ against 1, with a borderline band where the
+/// errors would change too slowly to tell (|ln ρ|/δ below the rate the simulation can resolve).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Prediction {
+    Stable,
+    Borderline,
+    Unstable,
+}
+
+impl Prediction {
+    /// The prediction for a growth rate ln ρ/δ (1/s).
+    pub fn of_rate(rate: f64) -> Prediction {
+        if rate > UNSTABLE_GROWTH_RATE {
+            Prediction::Unstable
+        } else if rate < -UNSTABLE_GROWTH_RATE {
+            Prediction::Stable
+        } else {
+            Prediction::Borderline
+        }
+    }
 }
 
 /// One run's status, in words and flags.
@@ -26,22 +53,97 @@ pub struct Readouts {
 pub struct RunStatus {
     /// "A" or "B".
     pub run: &'static str,
-    /// "stable", "unstable" or "diverged".
+    /// "stable", "unstable", "borderline" (from ρ), or "diverged" once the run has.
     pub verdict: &'static str,
-    /// True while "stable" only means that nothing has grown yet (no growth rate fitted).
-    pub observing: bool,
+    /// The verdict as the headline says it: "Unstable", "Stable", "Borderline", "Diverged".
+    pub headline: &'static str,
+    /// The prediction in a sentence: "ρ = 1.024 > 1 — the error grows ×e every 0.42 s".
+    pub detail: String,
+    /// What the simulation has observed, and whether it agrees.
+    pub observed: String,
+    /// True once the simulation has measured a growth rate (or diverged).
+    pub measured: bool,
     /// The run has diverged and does not advance until a reset or a change.
     pub finished: bool,
-    pub detail: String,
-    /// "observed growth rate: 2.27 1/s".
-    pub growth: String,
     /// "linear analysis: ρ = 1.0239 ≥ 1 ⇒ unstable (ln ρ/δ = 2.37 1/s)".
     pub rho: String,
-    /// The spectral radius (null if the analysis failed).
+    /// The spectral radius and ln ρ/δ (null if the analysis failed).
     pub spectral_radius: Option<f64>,
+    pub growth_rate: Option<f64>,
+    /// What a screen reader hears when the verdict changes.
+    pub announce: String,
     pub readouts: Readouts,
     /// "no K_pr, δ = 0.01 s, α = 2 1/s": which settings this run has.
     pub settings: String,
+}
+
+/// "×e every 0.42 s" for a rate (1/s).
+fn e_folding(rate: f64) -> String {
+    format!("×e every {} s", sig_trim(1.0 / rate.abs(), 2))
+}
+
+/// The prediction's sentence.
+fn prediction_text(rho: f64, rate: f64) -> (Prediction, String) {
+    let p = Prediction::of_rate(rate);
+    let text = match p {
+        Prediction::Unstable => format!("ρ = {} > 1 — the error grows {}", sig_trim(rho, 4), e_folding(rate)),
+        Prediction::Stable => format!("ρ = {} < 1 — the errors shrink {}", sig_trim(rho, 4), e_folding(rate)),
+        Prediction::Borderline => {
+            format!("ρ = {} ≈ 1 — the errors change too slowly to see ({})", sig_trim(rho, 5), e_folding(rate))
+        }
+    };
+    (p, text)
+}
+
+/// Why the simulation may not follow the linear analysis.
+fn caveat(run: &Run) -> &'static str {
+    match run.settings().friction {
+        FrictionCompensation::Continuous => "the analysis is linearized at rest; far from rest the arm is nonlinear",
+        FrictionCompensation::Held => {
+            "the analysis takes the friction as cancelled, and held compensation does not cancel it"
+        }
+        FrictionCompensation::Off => "the analysis takes the friction as cancelled, and here it is not compensated",
+    }
+}
+
+/// The observation, compared with the prediction.
+fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) -> (String, bool) {
+    if let Verdict::Diverged { at, reason } = m.verdict {
+        let why = match reason {
+            DivergenceReason::ErrorBound => "an error passed π rad",
+            DivergenceReason::NonFinite => "the state became non-finite",
+            DivergenceReason::NewtonFailure => "the predictor's Newton iteration failed",
+        };
+        let agrees = match prediction {
+            Some((Prediction::Unstable, _)) => "as ρ > 1 predicted".to_string(),
+            _ => format!("not what ρ predicts: {}", caveat(run)),
+        };
+        return (format!("observed: diverged at t = {at:.2} s ({why}) — {agrees}"), true);
+    }
+    let Some(g) = m.growth_rate else {
+        return ("observed: measuring how the errors move between slews…".into(), false);
+    };
+    let rate = format!("observed growth rate {} 1/s", minus(&format!("{g:.2}")));
+    let Some((p, predicted)) = prediction else { return (rate, true) };
+    let seen = Prediction::of_rate(g);
+    let text = if seen == p {
+        let close = (g - predicted).abs() <= 0.25 * predicted.abs().max(0.2);
+        let predicted = minus(&format!("{predicted:.2}"));
+        match (close, p) {
+            (true, _) => format!("{rate} — matches ln ρ/δ = {predicted} 1/s"),
+            (false, Prediction::Unstable) => format!("{rate} — it grows, as ln ρ/δ = {predicted} 1/s predicts"),
+            (false, Prediction::Stable) => format!("{rate} — it decays, as ln ρ/δ = {predicted} 1/s predicts"),
+            (false, Prediction::Borderline) => format!("{rate} — about flat, as ln ρ/δ = {predicted} 1/s predicts"),
+        }
+    } else {
+        let expected = match p {
+            Prediction::Unstable => "growth",
+            Prediction::Stable => "decay",
+            Prediction::Borderline => "neither",
+        };
+        format!("{rate} — but ln ρ/δ = {} 1/s predicts {expected}: {}", minus(&format!("{predicted:.2}")), caveat(run))
+    };
+    (text, true)
 }
 
 /// The status of `run`, named `name`.
@@ -50,35 +152,30 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     let m = sim.metrics();
     let s = sim.snapshot();
     let report = run.analysis().report();
-    let rho = report.map(|r| r.spectral_radius);
-    let detail = match m.verdict {
-        Verdict::Diverged { at, reason } => {
-            let why = match reason {
-                DivergenceReason::ErrorBound => "an error exceeded the bound",
-                DivergenceReason::NonFinite => "the state became non-finite",
-                DivergenceReason::NewtonFailure => "the predictor's Newton iteration failed",
-            };
-            format!("diverged at t = {at:.2} s ({why}) — change a parameter or press reset")
+    let predicted = report.map(|r| (r.spectral_radius, r.growth_rate)).filter(|(r, g)| r.is_finite() && g.is_finite());
+    let (prediction, detail) = match predicted {
+        Some((rho, rate)) => {
+            let (p, text) = prediction_text(rho, rate);
+            (Some((p, rate)), text)
         }
-        // With a repeating slew the growth is measured cycle to cycle (two full cycles are
-        // needed), so say what the linear analysis expects meanwhile.
-        _ if m.growth_rate.is_none() => match rho {
-            Some(r) if r >= 1.0 => "so far — no growth measured yet, but ρ ≥ 1 predicts the errors will grow".into(),
-            _ => "so far — no growth measured yet".into(),
-        },
-        Verdict::Unstable { .. } => "the errors grow exponentially".into(),
-        Verdict::Stable => "the errors stay bounded".into(),
+        None => (None, format!("the linear analysis failed: {}", run.analysis().error().unwrap_or("no report"))),
     };
-    let growth = match m.growth_rate {
-        None => "observed growth rate: observing…".into(),
-        Some(g) => format!("observed growth rate: {} 1/s", sig_fixed(g, 2)),
+    let (observed, measured) = observation(&m, prediction, run);
+    let diverged = matches!(m.verdict, Verdict::Diverged { .. });
+    let (verdict, headline) = match (diverged, prediction.map(|p| p.0)) {
+        (true, _) => ("diverged", "Diverged"),
+        (false, Some(Prediction::Unstable)) => ("unstable", "Unstable"),
+        (false, Some(Prediction::Stable)) => ("stable", "Stable"),
+        (false, Some(Prediction::Borderline)) => ("borderline", "Borderline"),
+        // Without an analysis only the simulation can say.
+        (false, None) => (m.verdict.label(), if m.verdict.label() == "unstable" { "Unstable" } else { "Observing" }),
     };
     let rho_line = match report {
         None => "linear analysis: ρ = —".into(),
         Some(r) => {
             let verdict = if r.spectral_radius < 1.0 { "< 1 ⇒ stable" } else { "≥ 1 ⇒ unstable" };
             let growth = if r.growth_rate.is_finite() {
-                format!(" (ln ρ/δ = {} 1/s)", sig_fixed(r.growth_rate, 2))
+                format!(" (ln ρ/δ = {} 1/s)", minus(&format!("{:.2}", r.growth_rate)))
             } else {
                 String::new()
             };
@@ -92,6 +189,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         max_slew: pair(m.max_error_slew, "rad"),
         max_after: pair(m.max_error_after, "rad"),
         torque: format!("{}, {} N m", sig(m.max_torque[0], 3), sig(m.max_torque[1], 3)),
+        growth: m.growth_rate.map_or("measuring…".into(), |g| format!("{} 1/s", minus(&format!("{g:.2}")))),
         a4: report.map_or("—".into(), |r| {
             let [re, im] = r.limit_pair[0];
             format!("{} ± {}j 1/s", sig(re, 3), sig(im.abs(), 4))
@@ -99,13 +197,16 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     };
     RunStatus {
         run: name,
-        verdict: m.verdict.label(),
-        observing: matches!(m.verdict, Verdict::Stable) && m.growth_rate.is_none(),
-        finished: sim.is_finished(),
+        verdict,
+        headline,
+        announce: format!("Run {name}: {headline}. {detail}."),
         detail,
-        growth,
+        observed,
+        measured,
+        finished: sim.is_finished(),
         rho: rho_line,
-        spectral_radius: rho,
+        spectral_radius: report.map(|r| r.spectral_radius),
+        growth_rate: report.map(|r| r.growth_rate),
         readouts,
         settings: describe(run),
     }
@@ -115,18 +216,9 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
 pub fn describe(run: &Run) -> String {
     let s = run.settings();
     let alpha = if s.alpha[0] == s.alpha[1] {
-        format!("α = {}", crate::plot::format::sig_trim(s.alpha[0], 3))
+        format!("α = {}", sig_trim(s.alpha[0], 3))
     } else {
-        format!(
-            "α = {}, {}",
-            crate::plot::format::sig_trim(s.alpha[0], 3),
-            crate::plot::format::sig_trim(s.alpha[1], 3)
-        )
+        format!("α = {}, {}", sig_trim(s.alpha[0], 3), sig_trim(s.alpha[1], 3))
     };
-    format!("{}, δ = {} s, {alpha} 1/s", feedback_short(s.pf), crate::plot::format::sig_trim(s.delta, 3))
-}
-
-/// Two decimals with a real minus sign ("2.27", "−0.35").
-fn sig_fixed(v: f64, decimals: usize) -> String {
-    crate::plot::format::minus(&format!("{v:.decimals$}"))
+    format!("{}, δ = {} s, {alpha} 1/s", feedback_short(s.pf), sig_trim(s.delta, 3))
 }

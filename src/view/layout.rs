@@ -82,6 +82,10 @@ pub enum PanelKind {
     Torque,
     /// The sampled loop's eigenvalues as s = ln λ / δ, with the δ → 0 pair A4.
     Poles,
+    /// The sampled loop's eigenvalues λ themselves, with the unit circle.
+    ZPlane,
+    /// ρ over δ at the current α, with the stable windows.
+    RhoCurve,
     /// ρ over (δ, α) without preliminary feedback.
     MapOff,
     /// ρ over (δ, α) with preliminary feedback.
@@ -98,6 +102,8 @@ impl PanelKind {
             PanelKind::Error2 => "e2",
             PanelKind::Torque => "torque",
             PanelKind::Poles => "poles",
+            PanelKind::ZPlane => "z-plane",
+            PanelKind::RhoCurve => "rho-curve",
             PanelKind::MapOff => "map-off",
             PanelKind::MapOn => "map-on",
         }
@@ -118,9 +124,17 @@ impl PanelKind {
         matches!(self, PanelKind::MapOff | PanelKind::MapOn)
     }
 
-    /// True for the panels of the analysis row: pole plot and maps.
+    /// True for the panels of the analysis row: pole plot (s or z), ρ(δ) and maps.
     pub fn is_analysis(self) -> bool {
-        matches!(self, PanelKind::Poles | PanelKind::MapOff | PanelKind::MapOn)
+        matches!(
+            self,
+            PanelKind::Poles | PanelKind::ZPlane | PanelKind::RhoCurve | PanelKind::MapOff | PanelKind::MapOn
+        )
+    }
+
+    /// True for the two pictures of the loop's eigenvalues.
+    pub fn is_pole_plot(self) -> bool {
+        matches!(self, PanelKind::Poles | PanelKind::ZPlane)
     }
 }
 
@@ -139,6 +153,10 @@ pub struct LayoutOptions {
     pub show_torque: bool,
     /// Adds the pole plot to the analysis row.
     pub show_poles: bool,
+    /// The pole plot shows λ in the z-plane instead of s = ln λ / δ.
+    pub z_plane: bool,
+    /// Adds ρ(δ) at the current α to the analysis row.
+    pub show_rho: bool,
     /// Adds the two stability maps to the analysis row.
     pub show_map: bool,
     /// Two runs side by side: a second arm on the stage.
@@ -146,9 +164,9 @@ pub struct LayoutOptions {
 }
 
 impl Default for LayoutOptions {
-    /// What the page shows by default: one run, no torque, pole plot and maps.
+    /// What the page shows by default: one run, no torque, the s-plane pole plot, ρ(δ), the maps.
     fn default() -> Self {
-        Self { show_torque: false, show_poles: true, show_map: true, pair: false }
+        Self { show_torque: false, show_poles: true, z_plane: false, show_rho: true, show_map: true, pair: false }
     }
 }
 
@@ -176,7 +194,10 @@ impl LayoutOptions {
         }
         let mut analysis = Vec::new();
         if self.show_poles {
-            analysis.push(PanelKind::Poles);
+            analysis.push(if self.z_plane { PanelKind::ZPlane } else { PanelKind::Poles });
+        }
+        if self.show_rho {
+            analysis.push(PanelKind::RhoCurve);
         }
         if self.show_map {
             analysis.extend([PanelKind::MapOff, PanelKind::MapOn]);
@@ -257,12 +278,34 @@ impl Layout {
         let dpr = if device_pixel_ratio.is_finite() && device_pixel_ratio > 0.0 { device_pixel_ratio } else { 1.0 };
         let arrangement =
             if w < NARROW_WIDTH || w < PORTRAIT_ASPECT * h { Arrangement::Stacked } else { Arrangement::SideBySide };
-        let lists = options.panels();
+        let mut lists = options.panels();
         let inner = Rect::new(0.0, 0.0, w, h).inset(margins::OUTER, margins::OUTER, margins::OUTER, margins::OUTER);
-        let (stage_area, plot_area) = split(inner, arrangement, !lists.analysis.is_empty());
+        let (mut stage_area, plot_area) = split(inner, arrangement, !lists.analysis.is_empty());
         let mut panels = Vec::with_capacity(lists.stage.len() + lists.plots.len() + lists.analysis.len());
+        // A single arm in a tall stage column leaves room under its square: ρ(δ) goes there.
+        let under_arm = arrangement == Arrangement::SideBySide
+            && lists.stage.len() == 1
+            && stage_area.h - (stage_area.w + margins::STAGE_TOP) >= UNDER_ARM_MIN_HEIGHT;
+        if under_arm {
+            if let Some(i) = lists.analysis.iter().position(|k| *k == PanelKind::RhoCurve) {
+                lists.analysis.remove(i);
+                let arm_h = (stage_area.w + margins::STAGE_TOP)
+                    .max(stage_area.h * 0.55)
+                    .min(stage_area.h - UNDER_ARM_MIN_HEIGHT);
+                let below = stage_area.inset(0.0, arm_h + margins::GAP, 0.0, 0.0);
+                stage_area.h = arm_h;
+                panels_push_analysis(below, PanelKind::RhoCurve, &mut panels);
+            }
+        }
+        // Elsewhere it joins the analysis row only where that has room for one more panel: it shows
+        // a slice of the map, which stays.
+        if !under_arm && plot_area.h < ROOMY_PLOT_COLUMN {
+            lists.analysis.retain(|k| *k != PanelKind::RhoCurve);
+        }
         stage_panels(stage_area, &lists.stage, &mut panels);
         plot_column(plot_area, &lists.plots, &lists.analysis, &mut panels);
+        // Panels in reading order: the stage first, then the plots, then the analysis row.
+        panels.sort_by_key(|p| panel_order(p.kind));
         Layout { css_width: w, css_height: h, device_pixel_ratio: dpr, arrangement, panels }
     }
 
@@ -280,6 +323,35 @@ impl Layout {
     /// A CSS-pixel rectangle in physical pixels.
     pub fn to_physical(&self, r: Rect) -> Rect {
         r.scaled(self.device_pixel_ratio)
+    }
+}
+
+/// A plot column at least this tall (CSS px) takes ρ(δ) into its analysis row.
+pub const ROOMY_PLOT_COLUMN: f64 = 640.0;
+
+/// Height a panel under the arm needs at least (with its label gutters), CSS px.
+pub const UNDER_ARM_MIN_HEIGHT: f64 = 150.0;
+
+/// An analysis panel filling `cell` (less its label gutters).
+fn panels_push_analysis(cell: Rect, kind: PanelKind, out: &mut Vec<Panel>) {
+    out.push(Panel {
+        kind,
+        rect: cell.inset(margins::ANALYSIS_LEFT, margins::PLOT_TOP, margins::PLOT_RIGHT, margins::PLOT_BOTTOM),
+    });
+}
+
+/// Where a panel kind comes in the list of panels.
+fn panel_order(kind: PanelKind) -> u8 {
+    match kind {
+        PanelKind::Arm => 0,
+        PanelKind::ArmB => 1,
+        PanelKind::Error1 => 2,
+        PanelKind::Error2 => 3,
+        PanelKind::Torque => 4,
+        PanelKind::Poles | PanelKind::ZPlane => 5,
+        PanelKind::RhoCurve => 6,
+        PanelKind::MapOff => 7,
+        PanelKind::MapOn => 8,
     }
 }
 

@@ -10,6 +10,8 @@
 //! | [`arm`] | the arm, motor, magnified spring twist and reference arm |
 //! | [`traces`] | scrolling time plots with min/max decimation |
 //! | [`poles`] | the pole plot: s = ln λ / δ, the imaginary axis, the δ → 0 pair A4 |
+//! | [`zplane`] | the loop's eigenvalues λ against the unit circle |
+//! | [`rho_curve`] | ρ(δ) at the current α with the stable windows |
 //! | [`map`] | stability maps ρ(δ, α) on log axes with the ρ = 1 contour, and their markers |
 //! | [`scene`] | [`Scene`]: one frame from a session's runs, and its description for the page |
 //!
@@ -25,8 +27,10 @@ pub mod map;
 pub mod options;
 pub mod painter;
 pub mod poles;
+pub mod rho_curve;
 pub mod scene;
 pub mod traces;
+pub mod zplane;
 
 pub use crate::plot::{palette, Color};
 pub use layout::{Layout, LayoutOptions, Panel, PanelKind, Rect};

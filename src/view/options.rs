@@ -23,8 +23,14 @@ pub struct ViewOptions {
     pub spring_magnification: f64,
     /// Show the pole plot.
     pub show_poles: bool,
+    /// The pole plot shows λ with the unit circle (z-plane) instead of s = ln λ / δ.
+    pub z_plane: bool,
+    /// Show ρ(δ) at the current α with the stable windows.
+    pub show_rho: bool,
     /// Show the two stability maps.
     pub show_map: bool,
+    /// The error plots show log |e|, with the slope ln ρ / δ the analysis predicts.
+    pub log_errors: bool,
 }
 
 impl Default for ViewOptions {
@@ -34,7 +40,10 @@ impl Default for ViewOptions {
             time_window: DEFAULT_TIME_WINDOW,
             spring_magnification: DEFAULT_SPRING_MAGNIFICATION,
             show_poles: true,
+            z_plane: false,
+            show_rho: true,
             show_map: true,
+            log_errors: false,
         }
     }
 }
@@ -48,13 +57,24 @@ pub struct OptionsUpdate {
     pub time_window: Option<f64>,
     pub spring_magnification: Option<f64>,
     pub show_poles: Option<bool>,
+    pub z_plane: Option<bool>,
+    pub show_rho: Option<bool>,
     pub show_map: Option<bool>,
+    pub log_errors: Option<bool>,
 }
 
 impl OptionsUpdate {
     /// The accepted field names (for checking objects whose deserializer ignores unknown keys).
-    pub const FIELDS: [&'static str; 5] =
-        ["show_torque", "time_window", "spring_magnification", "show_poles", "show_map"];
+    pub const FIELDS: [&'static str; 8] = [
+        "show_torque",
+        "time_window",
+        "spring_magnification",
+        "show_poles",
+        "z_plane",
+        "show_rho",
+        "show_map",
+        "log_errors",
+    ];
 
     /// An error message if `name` is not one of [`OptionsUpdate::FIELDS`].
     pub fn check_field(name: &str) -> Result<(), String> {
@@ -91,11 +111,27 @@ impl ViewOptions {
         if let Some(v) = update.show_map {
             next.show_map = v;
         }
+        for (field, value) in [
+            (&mut next.z_plane, update.z_plane),
+            (&mut next.show_rho, update.show_rho),
+            (&mut next.log_errors, update.log_errors),
+        ] {
+            if let Some(v) = value {
+                *field = v;
+            }
+        }
         *self = next;
         Ok(())
     }
 
     pub(crate) fn layout_options(&self, pair: bool) -> LayoutOptions {
-        LayoutOptions { show_torque: self.show_torque, show_poles: self.show_poles, show_map: self.show_map, pair }
+        LayoutOptions {
+            show_torque: self.show_torque,
+            show_poles: self.show_poles,
+            z_plane: self.z_plane,
+            show_rho: self.show_rho,
+            show_map: self.show_map,
+            pair,
+        }
     }
 }

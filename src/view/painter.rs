@@ -137,6 +137,26 @@ impl Painter {
         Stroke { painter: self, half: width / 2.0, color, joins, last: None, last_normal: None }
     }
 
+    /// A dashed straight line: `dash` pixels drawn, `gap` pixels left out, from `a` to `b`.
+    pub fn dashed_line(&mut self, a: Point, b: Point, width: f64, dash: f64, gap: f64, color: Color) {
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let length = dx.hypot(dy);
+        if !(length.is_finite() && length > 0.0 && dash > 0.0) {
+            return;
+        }
+        let (ux, uy) = (dx / length, dy / length);
+        let mut s = 0.0;
+        // At most this many dashes, so a degenerate call cannot flood the frame.
+        for _ in 0..512 {
+            if s >= length {
+                break;
+            }
+            let e = (s + dash).min(length);
+            self.line([a[0] + ux * s, a[1] + uy * s], [a[0] + ux * e, a[1] + uy * e], width, color);
+            s = e + gap;
+        }
+    }
+
     /// A polyline through `points` with bevelled corners.
     pub fn polyline(&mut self, points: impl IntoIterator<Item = Point>, width: f64, color: Color) {
         let mut stroke = self.stroke(width, color, true);

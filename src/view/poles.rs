@@ -9,6 +9,7 @@ use serde::Serialize;
 
 use super::layout::Rect;
 use super::painter::{Painter, Point};
+use super::zplane::{exp_delta, marker_css, ZFrame};
 use crate::analysis::StabilityReport;
 use crate::plot::{palette, Color};
 
@@ -49,8 +50,17 @@ pub struct PoleInfo {
     pub unstable: bool,
     /// One of the flexible pair (the loop's complex pair with the largest |Im s|).
     pub flexible: bool,
-    /// The marker's centre in CSS pixels (canvas top-left origin); for a pole outside the shown
-    /// range, the chevron at the panel's edge. Null when the pole plot is hidden.
+    /// λ: the loop's eigenvalue; for A4, exp(A4 δ), where the limit pair would sit at this δ.
+    pub lambda: [f64; 2],
+    /// |λ| and its angle, rad (per sampling period).
+    pub modulus: f64,
+    pub angle: f64,
+    /// The flexible pair when its true frequency (|Im A4|) is above the Nyquist frequency π/δ:
+    /// s = ln λ / δ then shows an alias.
+    pub aliased: bool,
+    /// The marker's centre in CSS pixels (canvas top-left origin) in the pole plot shown (s- or
+    /// z-plane); for a pole outside the shown range, the chevron at the panel's edge. Null when
+    /// the pole plot is hidden.
     pub x: Option<f64>,
     pub y: Option<f64>,
     /// False if the pole lies outside the shown range (drawn as a chevron at the edge).
@@ -257,23 +267,57 @@ pub fn draw_poles(painter: &mut Painter, frame: &PoleFrame, report: &StabilityRe
     }
 }
 
-/// Appends the markers of one run's analysis to `out` for the page; `frame_css` is the pole
-/// plot's data area in CSS pixels (None if the plot is hidden).
-pub fn describe_poles(
-    report: &StabilityReport,
-    run: &'static str,
-    frame_css: Option<&PoleFrame>,
-    out: &mut Vec<PoleInfo>,
-) {
+/// Where the pole plot is shown, in CSS pixels: the s-plane, the z-plane, or not at all.
+#[derive(Clone, Copy, Debug)]
+pub enum PoleView<'a> {
+    S(&'a PoleFrame),
+    Z(&'a ZFrame),
+    Hidden,
+}
+
+/// The Nyquist frequency π/δ, rad/s: s = ln λ / δ cannot show a mode faster than this.
+pub fn nyquist(delta: f64) -> f64 {
+    core::f64::consts::PI / delta
+}
+
+/// The dashed lines Im s = ±π/δ (where they fall inside the view).
+pub fn draw_nyquist(painter: &mut Painter, frame: &PoleFrame, delta: f64, dpr: f64) {
+    let w = nyquist(delta);
+    let r = frame.rect;
+    for im in [w, -w] {
+        if im > frame.im[0] && im < frame.im[1] {
+            let y = frame.y(im);
+            painter.dashed_line([r.x, y], [r.right(), y], 1.5 * dpr, 5.0 * dpr, 4.0 * dpr, palette::NYQUIST);
+        }
+    }
+}
+
+/// True if the flexible mode of `report` is faster than the Nyquist frequency: its loop poles in
+/// the s-plane are aliases.
+pub fn flexible_aliased(report: &StabilityReport) -> bool {
+    report.limit_pair[0][1].abs() > nyquist(report.sampling_period)
+}
+
+/// Appends the markers of one run's analysis to `out` for the page, with their positions in the
+/// pole plot shown.
+pub fn describe_poles(report: &StabilityReport, run: &'static str, view: PoleView<'_>, out: &mut Vec<PoleInfo>) {
     let flexible = flexible_pair(report);
-    let mut push = |kind: PoleKind, s: [f64; 2], flexible: bool| {
+    let aliased = flexible_aliased(report);
+    let delta = report.sampling_period;
+    let mut push = |kind: PoleKind, s: [f64; 2], lambda: [f64; 2], flexible: bool| {
         let omega = s[0].hypot(s[1]);
-        let (pos, in_view) = match frame_css {
-            Some(f) => {
+        let (pos, in_view) = match view {
+            PoleView::S(f) => {
                 let (p, off) = f.marker(s, size::EDGE);
                 (Some(p), off.is_none())
             }
-            None => (None, s[0] >= RE_RANGE[0] && s[0] <= RE_RANGE[1] && s[1] >= IM_RANGE[0] && s[1] <= IM_RANGE[1]),
+            PoleView::Z(f) => {
+                let (p, in_view) = marker_css(f, lambda);
+                (Some(p), in_view)
+            }
+            PoleView::Hidden => {
+                (None, s[0] >= RE_RANGE[0] && s[0] <= RE_RANGE[1] && s[1] >= IM_RANGE[0] && s[1] <= IM_RANGE[1])
+            }
         };
         out.push(PoleInfo {
             run,
@@ -284,6 +328,10 @@ pub fn describe_poles(
             omega,
             unstable: s[0] > 0.0,
             flexible,
+            lambda,
+            modulus: lambda[0].hypot(lambda[1]),
+            angle: lambda[1].atan2(lambda[0]),
+            aliased: flexible && aliased,
             x: pos.map(|p| p[0]),
             y: pos.map(|p| p[1]),
             in_view,
@@ -292,14 +340,14 @@ pub fn describe_poles(
     for (i, pole) in report.poles.iter().enumerate() {
         if let Some(s) = pole.continuous {
             if s[0].is_finite() && s[1].is_finite() {
-                push(PoleKind::Loop, s, flexible.contains(&Some(i)));
+                push(PoleKind::Loop, s, pole.discrete, flexible.contains(&Some(i)));
             }
         }
     }
     for s in report.limit_pair_open {
-        push(PoleKind::A4Open, s, false);
+        push(PoleKind::A4Open, s, exp_delta(s, delta), false);
     }
     for s in report.limit_pair {
-        push(PoleKind::A4, s, false);
+        push(PoleKind::A4, s, exp_delta(s, delta), false);
     }
 }

@@ -66,6 +66,8 @@ pub struct PlotFrame {
     /// Values from y_lo (bottom edge) to y_hi (top edge).
     pub y_lo: f64,
     pub y_hi: f64,
+    /// The plot shows log |v| (then 0 < y_lo < y_hi).
+    pub log: bool,
 }
 
 impl PlotFrame {
@@ -74,10 +76,20 @@ impl PlotFrame {
         self.rect.x + self.rect.w * (t - self.window.start) / self.window.width()
     }
 
-    /// Vertical pixel of value `v`, clamped to the data area.
+    /// Vertical pixel of value `v`, clamped to the data area (of |v| on a log plot; 0 sits at
+    /// the bottom edge).
     pub fn y(&self, v: f64) -> f64 {
-        let f = (v - self.y_lo) / (self.y_hi - self.y_lo);
-        (self.rect.bottom() - self.rect.h * f).clamp(self.rect.y, self.rect.bottom())
+        let f = if self.log {
+            (v.abs() / self.y_lo).ln() / (self.y_hi / self.y_lo).ln()
+        } else {
+            (v - self.y_lo) / (self.y_hi - self.y_lo)
+        };
+        let y = self.rect.bottom() - self.rect.h * f;
+        if y.is_nan() {
+            self.rect.bottom()
+        } else {
+            y.clamp(self.rect.y, self.rect.bottom())
+        }
     }
 
     /// Time at horizontal pixel `x`.
@@ -92,7 +104,7 @@ pub fn draw_background(
     painter: &mut Painter,
     frame: &PlotFrame,
     x_ticks: Ticks,
-    y_ticks: Ticks,
+    y_ticks: impl Iterator<Item = f64>,
     reference: Option<&Reference>,
     dpr: f64,
 ) {
@@ -110,7 +122,7 @@ pub fn draw_background(
         let y = frame.y(v);
         painter.line([r.x, y], [r.right(), y], grid, palette::GRID);
     }
-    if frame.y_lo < 0.0 && frame.y_hi > 0.0 {
+    if !frame.log && frame.y_lo < 0.0 && frame.y_hi > 0.0 {
         let y = frame.y(0.0);
         painter.line([r.x, y], [r.right(), y], 1.5 * grid, palette::AXIS);
     }
@@ -159,7 +171,8 @@ pub fn draw_series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], valu
     }
     let mut column: Option<ColumnExtremes> = None;
     for i in range {
-        let (t, v) = (times[i], values[i]);
+        // A log plot shows |v|: the extremes of a column are those of |v|.
+        let (t, v) = (times[i], if frame.log { values[i].abs() } else { values[i] });
         if !v.is_finite() {
             if let Some(c) = column.take() {
                 c.emit(frame, &mut |p| stroke.to(p));

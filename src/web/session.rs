@@ -204,11 +204,20 @@ impl WebSession {
         self.inner.run(0).is_some_and(|r| r.closed_loop().is_finished())
     }
 
-    /// `{runs: [{run, verdict, observing, finished, detail, growth, rho, spectral_radius,
-    /// readouts: {time, error, max_slew, max_after, torque, a4}, settings}], note, preset,
-    /// maps: {percent, done, text, points}}`.
-    pub fn status(&self) -> Result<JsValue, JsError> {
+    /// `{runs: [{run, verdict, headline, detail, observed, measured, finished, rho,
+    /// spectral_radius, growth_rate, announce, readouts: {time, error, max_slew, max_after, torque,
+    /// growth, a4}, settings}], note, preset, maps: {percent, done, text, points},
+    /// windows: {text, windows, bands} | null, ghost}`. Brings the stable windows up to date first
+    /// (a few ms after a change of α or the feedback), so call it a few times a second.
+    pub fn status(&mut self) -> Result<JsValue, JsError> {
+        self.inner.refresh();
         to_js(&self.inner.status())
+    }
+
+    /// Runs A at a sampling period picked on ρ(δ).
+    #[wasm_bindgen(js_name = pickDelta)]
+    pub fn pick_delta(&mut self, delta: f64) -> Result<(), JsError> {
+        self.inner.pick_delta(delta).map_err(js_error)
     }
 
     /// A run's metrics: `{time, verdict, growth_rate, diverged_at, max_error_slew,

@@ -24,6 +24,9 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let config = settings.a.config();
     let q2 = m.get_one::<String>(schema::Q2.key).map(|_| cli::number(m, &schema::Q2)).transpose()?;
     let report = analysis::analyze(&config, q2).map_err(lib_error)?;
+    // The stable windows of δ for these settings (δ itself aside), over the page's δ range.
+    let range = schema::DELTA.number().expect("δ is a number").control;
+    let windows = analysis::stable_windows(&analysis::LinearSettings::of(&config, q2), range).map_err(lib_error)?;
     if m.get_flag("json") {
         // Non-finite floats (e.g. ln 0) become null in serde_json's Value.
         let mut v = serde_json::to_value(&report).map_err(|e| Failure(format!("JSON encoding failed: {e}"), 1))?;
@@ -36,9 +39,14 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         v["inner"] = json!(config.inner_loop.name());
         v["preliminary_feedback"] = json!(config.preliminary_feedback.name());
         v["inner_loop"] = json!(config.inner_loop.name());
+        v["stable_windows"] =
+            json!({ "range": windows.range, "windows": windows.windows, "tolerance": windows.tolerance });
         return Ok(v.to_string() + "\n");
     }
-    Ok(analysis_text(&config, &report))
+    let mut text = analysis_text(&config, &report);
+    text +=
+        &format!("stable windows of δ at these α (edges within {:.0e} s): {}\n", windows.tolerance, windows.describe());
+    Ok(text)
 }
 
 fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {

@@ -9,14 +9,19 @@ use super::{
 };
 use crate::plot::format::{self, TickFormat};
 use crate::plot::ticks::label_log_ticks;
+use crate::plot::ticks::Decades;
 use crate::plot::Color;
 use crate::session::maps::{feedback_short, point_text, MapSide};
 use crate::view::arm::ArmFrame;
 use crate::view::autoscale::Autoscale;
 use crate::view::layout::{Panel, PanelKind};
 use crate::view::map::{map_ticks, side_of};
-use crate::view::poles::{describe_poles, PoleFrame, PoleInfo, PoleKind, IM_RANGE, RE_RANGE};
+use crate::view::poles::{
+    describe_poles, flexible_aliased, nyquist, PoleFrame, PoleInfo, PoleKind, PoleView, IM_RANGE, RE_RANGE,
+};
+use crate::view::rho_curve::rho_ticks;
 use crate::view::traces::TimeWindow;
+use crate::view::zplane::ZFrame;
 
 /// Least distance between log-axis labels, CSS px (x: a label's width, y: its height).
 const LOG_LABEL_SPACING: [f64; 2] = [38.0, 17.0];
@@ -60,6 +65,16 @@ pub struct PanelInfo {
     /// The x axis is the scrolling time window: between descriptions its range moves with
     /// `Renderer.windowStart()` and `windowEnd()`.
     pub scrolls: bool,
+    /// Text placed at points of the panel (CSS pixels of the canvas), e.g. the flexible pair.
+    pub marks: Vec<Mark>,
+}
+
+/// A short text at a point of a panel.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Mark {
+    pub x: f64,
+    pub y: f64,
+    pub text: String,
 }
 
 /// How one run is drawn, for the page's legend (colours as CSS strings).
@@ -164,6 +179,7 @@ impl Scene {
             x_scale: "linear",
             y_scale: "linear",
             scrolls: panel.kind.is_time_plot(),
+            marks: Vec::new(),
         };
         match panel.kind {
             PanelKind::Arm | PanelKind::ArmB => {
@@ -183,9 +199,19 @@ impl Scene {
                 info.x_label = "t [s]";
                 info.y_label = y_label(panel.kind);
                 info.x_range = [window.start, window.end];
-                info.y_range = [-y, y];
+                info.y_range = self.plot_range(panel.kind, y);
                 info.x_ticks = x_ticks.collect();
-                info.y_ticks = y_ticks.collect();
+                if self.log_plot(panel.kind) {
+                    info.y_label = if panel.kind == PanelKind::Error1 { "|e1| [rad], log" } else { "|e2| [rad], log" };
+                    info.y_scale = "log";
+                    info.y_ticks = Decades::new(info.y_range[0], info.y_range[1]).collect();
+                    info.y_labels = log_labels(&info.y_ticks, info.y_range, r.h, LOG_LABEL_SPACING[1]);
+                    if panel.kind == PanelKind::Error1 {
+                        info.note = "dashed: the slope ln ρ/δ predicts".into();
+                    }
+                } else {
+                    info.y_ticks = y_ticks.collect();
+                }
             }
             PanelKind::Poles => {
                 let (x_ticks, y_ticks) = pole_ticks(r);
@@ -195,6 +221,43 @@ impl Scene {
                 info.y_range = IM_RANGE;
                 info.x_ticks = x_ticks.collect();
                 info.y_ticks = y_ticks.collect();
+                if let Some(report) = &self.runs[0].report {
+                    let w = nyquist(report.sampling_period);
+                    if w < IM_RANGE[1] {
+                        info.note = format!("dashed: π/δ = {} rad/s", format::sig(w, 3));
+                        if flexible_aliased(report) {
+                            info.note += " — the flexible mode is faster: aliased";
+                        }
+                    }
+                }
+                info.marks = self.flexible_mark(PanelKind::Poles);
+            }
+            PanelKind::ZPlane => {
+                let frame = ZFrame::new(r);
+                let [x0, y1] = frame.value_at([r.x, r.y]);
+                let [x1, y0] = frame.value_at([r.right(), r.bottom()]);
+                info.x_label = "Re λ";
+                info.y_label = "Im λ";
+                info.x_range = [x0, x1];
+                info.y_range = [y0, y1];
+                info.x_ticks = vec![-1.0, 0.0, 1.0];
+                info.y_ticks = vec![-1.0, 0.0, 1.0];
+                info.note = "outside |λ| = 1: grows".into();
+                info.marks = self.flexible_mark(PanelKind::ZPlane);
+            }
+            PanelKind::RhoCurve => {
+                let frame = self.rho_frame(panel, false);
+                let (x_ticks, y_ticks) = rho_ticks(r, &frame);
+                info.x_label = "δ [s]";
+                info.y_label = "ρ";
+                info.x_range = frame.x_range;
+                info.y_range = frame.y_range;
+                info.x_labels = log_labels(&x_ticks, info.x_range, r.w, LOG_LABEL_SPACING[0]);
+                info.x_ticks = x_ticks;
+                info.y_ticks = y_ticks;
+                info.x_scale = "log";
+                let alpha = self.runs[0].config.map_or(f64::NAN, |c| c.controller.alpha[0]);
+                info.note = format!("ρ(δ) at α = {} 1/s; shaded: ρ < 1", format::sig_trim(alpha, 3));
             }
             PanelKind::MapOff | PanelKind::MapOn => {
                 let side = side_of(panel.kind).unwrap_or(MapSide::Off);
@@ -223,17 +286,35 @@ impl Scene {
         info
     }
 
-    /// Every marker of the pole plot (both runs in pair mode) with its position in CSS pixels,
-    /// for hover readouts. Positions are null when the pole plot is hidden.
+    /// Every marker of the pole plot (both runs in pair mode) with its position in CSS pixels
+    /// in the plot shown (s- or z-plane), for hover readouts. Positions are null when the pole
+    /// plot is hidden.
     pub fn pole_info(&self) -> Vec<PoleInfo> {
-        let frame = self.layout.panel(PanelKind::Poles).map(|p| PoleFrame::new(p.rect));
+        let s_frame = self.layout.panel(PanelKind::Poles).map(|p| PoleFrame::new(p.rect));
+        let z_frame = self.layout.panel(PanelKind::ZPlane).map(|p| ZFrame::new(p.rect));
+        let view = match (&s_frame, &z_frame) {
+            (Some(f), _) => PoleView::S(f),
+            (None, Some(f)) => PoleView::Z(f),
+            _ => PoleView::Hidden,
+        };
         let mut out = Vec::new();
         for (memory, name) in self.runs.iter().zip(RUN_NAMES).take(self.run_count()) {
             if let Some(report) = &memory.report {
-                describe_poles(report, name, frame.as_ref(), &mut out);
+                describe_poles(report, name, view, &mut out);
             }
         }
         out
+    }
+
+    /// "flexible pair" beside run A's upper flexible loop pole, if the plot `kind` shows it.
+    fn flexible_mark(&self, kind: PanelKind) -> Vec<Mark> {
+        let poles = self.pole_info();
+        let Some(p) = poles.iter().find(|p| p.run == "A" && p.flexible && p.im > 0.0 && p.in_view) else {
+            return Vec::new();
+        };
+        let (Some(x), Some(y)) = (p.x, p.y) else { return Vec::new() };
+        let text = if kind == PanelKind::ZPlane { "flexible pair (A4 as δ → 0)" } else { "flexible pair" };
+        vec![Mark { x, y, text: text.into() }]
     }
 
     /// How each shown run is drawn (one entry, or two in pair mode), for the page's legend.
@@ -267,13 +348,44 @@ impl Scene {
     }
 
     /// What lies at (x, y) (CSS pixels in the canvas): the nearest pole within `reach` pixels,
-    /// else the point of a map under the pointer; `None` elsewhere.
+    /// else the point of a map or of ρ(δ) under the pointer; `None` elsewhere.
     pub fn probe(&self, x: f64, y: f64, reach: f64) -> Option<Probe> {
-        self.probe_pole(x, y, reach).or_else(|| self.probe_map(x, y))
+        self.probe_pole(x, y, reach).or_else(|| self.probe_map(x, y)).or_else(|| self.probe_rho(x, y))
+    }
+
+    /// The δ under (x, y) on ρ(δ), with ρ there.
+    fn probe_rho(&self, x: f64, y: f64) -> Option<Probe> {
+        let panel = self.layout.panel(PanelKind::RhoCurve)?;
+        if !contains(panel, x, y) {
+            return None;
+        }
+        let frame = self.rho_frame(panel, false);
+        let delta = frame.delta_at(x);
+        let rho = self.windows.as_ref().and_then(|w| {
+            w.scan.iter().min_by(|a, b| (a[0] / delta).ln().abs().total_cmp(&(b[0] / delta).ln().abs())).map(|p| p[1])
+        });
+        let mut lines = vec![TipLine::plain(format!("δ = {} s", format::sig(delta, 3)))];
+        lines.push(match rho {
+            Some(r) if r.is_finite() => {
+                TipLine::toned(format!("ρ = {r:.3}: {}", if r < 1.0 { "stable" } else { "unstable" }), r < 1.0)
+            }
+            _ => TipLine::plain("ρ not computed yet"),
+        });
+        lines.push(TipLine::plain("click or drag to run at this δ"));
+        Some(Probe {
+            kind: "rho",
+            title: "ρ(δ) at this α".into(),
+            lines,
+            x,
+            y,
+            map: None,
+            delta: Some(delta),
+            alpha: None,
+        })
     }
 
     fn probe_pole(&self, x: f64, y: f64, reach: f64) -> Option<Probe> {
-        let panel = self.layout.panel(PanelKind::Poles)?.rect;
+        let panel = self.layout.panels.iter().find(|p| p.kind.is_pole_plot())?.rect;
         let near_panel = |px: f64, py: f64, m: f64| {
             px >= panel.x - m && px <= panel.right() + m && py >= panel.y - m && py <= panel.bottom() + m
         };
@@ -305,11 +417,28 @@ impl Scene {
             lines.push(TipLine::plain(format!("damping ratio ζ = {}", format::sig(zeta, 3))));
         }
         lines.push(TipLine::plain(format!("frequency ω = {} rad/s", format::sig(pole.omega, 3))));
-        lines.push(if pole.unstable {
-            TipLine::toned("unstable: Re s > 0, it grows", false)
+        let [lr, li] = pole.lambda;
+        let lambda = if li.abs() > 1e-12 {
+            format!("λ = {} ± {}j", format::sig(lr, 3), format::sig(li.abs(), 3))
         } else {
-            TipLine::toned("stable: it decays", true)
+            format!("λ = {}", format::sig(lr, 4))
+        };
+        lines.push(TipLine::plain(format!(
+            "{lambda}: |λ| = {}, angle {} rad per period",
+            format::sig(pole.modulus, 4),
+            format::sig(pole.angle.abs(), 3)
+        )));
+        lines.push(if pole.unstable {
+            TipLine::toned("unstable: |λ| > 1 (Re s > 0), it grows", false)
+        } else {
+            TipLine::toned("stable: |λ| < 1 (Re s < 0), it decays", true)
         });
+        if pole.aliased {
+            lines.push(TipLine::plain(format!(
+                "aliased: the mode itself is faster than the Nyquist frequency π/δ = {} rad/s",
+                format::sig(core::f64::consts::PI / self.runs[0].report.as_ref().map_or(1.0, |r| r.sampling_period), 3)
+            )));
+        }
         if !pole.in_view {
             lines.push(TipLine::plain("outside the shown range (marked at the edge)"));
         }

@@ -9,22 +9,24 @@
 //! The analyses come with the runs (the session computes them once per change); the scene keeps
 //! a copy of the latest for its descriptions, updated only when it changes.
 
+mod draw;
 pub mod info;
 mod plots;
 
 use plots::{plot_series, plot_tick_counts, plot_ticks, pole_tick_counts, pole_ticks, y_label};
 
-use super::arm::{draw_arm_panel, ArmPose, VERTEX_BUDGET as ARM_VERTEX_BUDGET};
+use super::arm::VERTEX_BUDGET as ARM_VERTEX_BUDGET;
 use super::autoscale::{Autoscale, AutoscaleSettings};
 use super::layout::{Layout, Panel, PanelKind};
-use super::map::{draw_map_marker, draw_map_static, map_ticks, side_of, LogFrame, StabilityGrid, MARKER_VERTEX_BUDGET};
+use super::map::{draw_map_static, map_ticks, side_of, LogFrame, StabilityGrid, MARKER_VERTEX_BUDGET};
 use super::painter::{Painter, Vertex};
-use super::poles::{
-    draw_a4, draw_flexible_halo, draw_pole_background, draw_poles, PoleFrame, PoleStyle,
-    RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET,
+use super::poles::{PoleStyle, RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET};
+use super::rho_curve::{
+    draw_rho_static, rho_range, rho_ticks, RhoFrame, MARKER_VERTEX_BUDGET as RHO_MARKER_VERTEX_BUDGET,
 };
-use super::traces::{draw_background, draw_frame, draw_series, max_abs, vertex_budget, PlotFrame, TimeWindow};
-use crate::analysis::StabilityReport;
+use super::traces::{vertex_budget, TimeWindow};
+use super::zplane::RUN_VERTEX_BUDGET as ZPLANE_RUN_VERTEX_BUDGET;
+use crate::analysis::{StabilityReport, StableWindows};
 use crate::control::config::SimulationConfig;
 use crate::control::{ClosedLoop, Snapshot, Traces};
 use crate::model::reference::Reference;
@@ -45,6 +47,10 @@ pub struct RunState<'a> {
     pub config: Option<&'a SimulationConfig>,
     /// The linear analysis of the run's settings: the pole plot. None draws no poles.
     pub analysis: Option<&'a StabilityReport>,
+    /// The stable windows of δ at the run's α: ρ(δ) and the marks on the map (run A's only).
+    pub windows: Option<&'a StableWindows>,
+    /// The previous run's traces, drawn faint in the error plots (run A's only).
+    pub ghost: Option<&'a Traces>,
 }
 
 /// What the scene remembers of a run between frames, for its descriptions.
@@ -73,9 +79,13 @@ impl RunMemory {
     }
 }
 
-/// Plot curve widths, CSS pixels: run A, and run B drawn thinner over it.
+/// Plot curve widths, CSS pixels: run A, and run B drawn a little thinner over it.
 const CURVE_WIDTH: f64 = 1.75;
-const CURVE_WIDTH_B: f64 = 1.25;
+const CURVE_WIDTH_B: f64 = 1.5;
+/// Decades a log |e| plot spans below its top.
+const LOG_DECADES: i32 = 6;
+/// Vertices of one dashed predicted-slope line at most (512 dashes).
+const DASHED_LINE_BUDGET: usize = 512 * 6;
 
 /// Run names, as the page sees them.
 const RUN_NAMES: [&str; 2] = ["A", "B"];
@@ -102,6 +112,8 @@ pub struct Scene {
     maps: [StabilityGrid; 2],
     /// Which session map (and how many rows of it) each grid holds.
     map_sources: [Option<(u64, usize)>; 2],
+    /// Run A's stable windows of δ as of the latest frame (ρ(δ) and the marks on the maps).
+    windows: Option<StableWindows>,
     /// Increases whenever [`Scene::panel_info`] would describe the frame differently.
     info_generation: u64,
     info_signature: [f64; 6],
@@ -124,6 +136,7 @@ impl Scene {
             runs: Default::default(),
             maps: Default::default(),
             map_sources: [None; 2],
+            windows: None,
             info_generation: 0,
             info_signature: [f64::NAN; 6],
         };
@@ -174,16 +187,24 @@ impl Scene {
         match panel.kind {
             PanelKind::Arm | PanelKind::ArmB => ARM_VERTEX_BUDGET,
             PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
-                let series = plot_series(panel.kind, &Traces::default(), 0).iter().flatten().count() * runs;
+                // Each run's curves, the ghost's, and a predicted slope per run.
+                let per_run = plot_series(panel.kind, &Traces::default(), 0).iter().flatten().count();
+                let series = per_run * (runs + 1);
                 let (x_ticks, y_ticks) = plot_tick_counts(panel.rect);
-                vertex_budget(self.layout.to_physical(panel.rect).w, series, x_ticks + y_ticks + 2)
+                vertex_budget(
+                    self.layout.to_physical(panel.rect).w,
+                    series,
+                    x_ticks + y_ticks + LOG_DECADES as usize + 4,
+                ) + runs * DASHED_LINE_BUDGET
             }
             PanelKind::Poles => {
                 let (x_ticks, y_ticks) = pole_tick_counts(panel.rect);
-                let background = 6 * (x_ticks + y_ticks + 8) + 2 * 6 + 24;
+                let background = 6 * (x_ticks + y_ticks + 8) + 2 * 6 + 24 + 2 * DASHED_LINE_BUDGET;
                 background + runs * POLE_RUN_VERTEX_BUDGET
             }
-            PanelKind::MapOff | PanelKind::MapOn => 24 + runs * MARKER_VERTEX_BUDGET,
+            PanelKind::ZPlane => 3 * 128 * 6 + 6 * 14 + 24 + runs * ZPLANE_RUN_VERTEX_BUDGET,
+            PanelKind::RhoCurve => 24 + runs * RHO_MARKER_VERTEX_BUDGET,
+            PanelKind::MapOff | PanelKind::MapOn => 24 + 2 * 6 * 8 + runs * MARKER_VERTEX_BUDGET,
         }
     }
 
@@ -267,6 +288,12 @@ impl Scene {
         self.static_painter.clear();
         let dpr = self.layout.device_pixel_ratio;
         for panel in &self.layout.panels {
+            if panel.kind == PanelKind::RhoCurve {
+                let frame = self.rho_frame(panel, true);
+                let (x_ticks, y_ticks) = rho_ticks(panel.rect, &frame);
+                draw_rho_static(&mut self.static_painter, &frame, self.windows.as_ref(), (&x_ticks, &y_ticks), dpr);
+                continue;
+            }
             let Some(side) = side_of(panel.kind) else { continue };
             let grid = &self.maps[side.index()];
             let frame = LogFrame {
@@ -278,6 +305,26 @@ impl Scene {
             draw_map_static(&mut self.static_painter, &frame, grid, (&x_ticks, &y_ticks), dpr);
         }
         self.static_generation += 1;
+    }
+
+    /// The ρ(δ) panel's frame, in physical pixels or (for descriptions) CSS pixels.
+    fn rho_frame(&self, panel: &Panel, physical: bool) -> RhoFrame {
+        let rect = if physical { self.layout.to_physical(panel.rect) } else { panel.rect };
+        let x_range = self.windows.as_ref().map_or(crate::schema::DELTA_SPEC.control, |w| w.range);
+        RhoFrame { rect, x_range, y_range: rho_range(self.windows.as_ref()) }
+    }
+
+    /// Takes run A's stable windows, rebuilding ρ(δ) when they changed.
+    fn update_windows(&mut self, windows: Option<&StableWindows>) {
+        if self.windows.as_ref() == windows {
+            return;
+        }
+        match (&mut self.windows, windows) {
+            (Some(mine), Some(w)) => mine.clone_from(w),
+            (mine, w) => *mine = w.cloned(),
+        }
+        self.rebuild_static();
+        self.info_generation += 1;
     }
 
     /// Copies the rows of the session's maps that the scene does not have yet.
@@ -303,7 +350,9 @@ impl Scene {
         self.sync_maps(session);
         let a = session.run(0).expect("a session always has run A");
         let (sa, ra) = (a.closed_loop().snapshot(), Reference::new(a.closed_loop().config().reference));
-        let run_a = run_state(a, &sa, Some(&ra));
+        let mut run_a = run_state(a, &sa, Some(&ra));
+        run_a.windows = session.cached_windows();
+        run_a.ghost = session.ghost().map(|g| &g.traces);
         match session.run(1) {
             Some(b) => {
                 let sb = b.closed_loop().snapshot();
@@ -336,6 +385,8 @@ impl Scene {
             reference: Some(&reference),
             config: Some(a.config()),
             analysis,
+            windows: None,
+            ghost: None,
         };
         match b {
             Some((b, analysis_b)) => {
@@ -346,6 +397,8 @@ impl Scene {
                     reference: None,
                     config: Some(b.config()),
                     analysis: analysis_b,
+                    windows: None,
+                    ghost: None,
                 };
                 self.draw_runs(run_a, Some(run_b))
             }
@@ -356,7 +409,10 @@ impl Scene {
     /// Builds the frame from a snapshot and traces without a configuration (no poles, no map
     /// markers); `reference` (if given) shades the slews.
     pub fn draw_state(&mut self, snapshot: &Snapshot, traces: &Traces, reference: Option<&Reference>) -> &[Vertex] {
-        self.draw_runs(RunState { snapshot, traces, reference, config: None, analysis: None }, None)
+        self.draw_runs(
+            RunState { snapshot, traces, reference, config: None, analysis: None, windows: None, ghost: None },
+            None,
+        )
     }
 
     /// Builds the frame for run A, and run B beside it if given. Allocates nothing once the
@@ -376,6 +432,7 @@ impl Scene {
         if changed {
             self.info_generation += 1;
         }
+        self.update_windows(a.windows);
         let time_of = |r: &RunState<'_>| if r.snapshot.time.is_finite() { r.snapshot.time } else { f64::NAN };
         let now = match &b {
             Some(b) => time_of(&a).max(time_of(b)),
@@ -403,6 +460,8 @@ impl Scene {
                     self.draw_plot(panel, window, &a, b.as_ref())
                 }
                 PanelKind::Poles => self.draw_pole_plot(panel),
+                PanelKind::ZPlane => self.draw_zplane(panel),
+                PanelKind::RhoCurve => self.draw_rho_markers(panel),
                 PanelKind::MapOff | PanelKind::MapOn => self.draw_map_overlay(panel),
             }
         }
@@ -447,90 +506,6 @@ impl Scene {
         }
     }
 
-    fn draw_arm(&mut self, panel: Panel, snapshot: &Snapshot) {
-        let [q1, q2, theta] = snapshot.q;
-        let actual = ArmPose { q1, q2, theta };
-        let [qd1, qd2] = snapshot.qd;
-        let reference = ArmPose { q1: qd1, q2: qd2, theta: qd1 };
-        let rect = self.layout.to_physical(panel.rect);
-        let dpr = self.layout.device_pixel_ratio;
-        draw_arm_panel(&mut self.painter, rect, dpr, &actual, &reference, self.options.spring_magnification);
-    }
-
-    fn draw_plot(&mut self, panel: Panel, window: TimeWindow, a: &RunState<'_>, b: Option<&RunState<'_>>) {
-        let runs = [Some(a), b];
-        let mut data_max: f64 = 0.0;
-        for (run, state) in runs.iter().enumerate() {
-            let Some(state) = state else { continue };
-            let range = window.indices(state.traces.t());
-            for (values, _) in plot_series(panel.kind, state.traces, run).iter().flatten() {
-                data_max = data_max.max(values.get(range.clone()).map_or(0.0, max_abs));
-            }
-        }
-        let time = self.time;
-        let Some(scale) = self.scale_mut(panel.kind) else { return };
-        let y = scale.update(data_max, time);
-        let dpr = self.layout.device_pixel_ratio;
-        let frame = PlotFrame { rect: self.layout.to_physical(panel.rect), window, y_lo: -y, y_hi: y };
-        let (x_ticks, y_ticks) = plot_ticks(panel.rect, window, y);
-        draw_background(&mut self.painter, &frame, x_ticks, y_ticks, a.reference, dpr);
-        for (run, state) in runs.iter().enumerate() {
-            let Some(state) = state else { continue };
-            let traces = state.traces;
-            let t = traces.t();
-            let width = if run == 0 { CURVE_WIDTH } else { CURVE_WIDTH_B };
-            for (values, color) in plot_series(panel.kind, traces, run).iter().flatten() {
-                let m = t.len().min(values.len());
-                draw_series(&mut self.painter, &frame, &t[..m], &values[..m], width * dpr, *color);
-            }
-        }
-        draw_frame(&mut self.painter, &frame, dpr);
-    }
-
-    fn draw_pole_plot(&mut self, panel: Panel) {
-        let dpr = self.layout.device_pixel_ratio;
-        let frame = PoleFrame::new(self.layout.to_physical(panel.rect));
-        let (x_ticks, y_ticks) = pole_ticks(panel.rect);
-        draw_pole_background(&mut self.painter, &frame, x_ticks, y_ticks, dpr);
-        let runs = self.run_count();
-        for memory in &self.runs[..runs] {
-            if let Some(report) = &memory.report {
-                draw_flexible_halo(&mut self.painter, &frame, report, dpr);
-            }
-        }
-        // B first, so run A's markers stay on top.
-        for run in (0..runs).rev() {
-            if let Some(report) = &self.runs[run].report {
-                draw_a4(&mut self.painter, &frame, report, &run_pole_style(run), dpr);
-            }
-        }
-        for run in (0..runs).rev() {
-            if let Some(report) = &self.runs[run].report {
-                draw_poles(&mut self.painter, &frame, report, &run_pole_style(run), dpr);
-            }
-        }
-        self.painter.rect_outline(frame.rect, dpr.max(1.0), palette::FRAME);
-    }
-
-    fn draw_map_overlay(&mut self, panel: Panel) {
-        let Some(side) = side_of(panel.kind) else { return };
-        let dpr = self.layout.device_pixel_ratio;
-        let grid = &self.maps[side.index()];
-        let frame = LogFrame {
-            rect: self.layout.to_physical(panel.rect),
-            x_range: grid.delta_range(),
-            y_range: grid.alpha_range(),
-        };
-        for run in (0..self.run_count()).rev() {
-            let Some(config) = &self.runs[run].config else { continue };
-            let filled = MapSide::for_feedback(config.preliminary_feedback) == side;
-            let color = if run == 0 { palette::MAP_MARKER } else { palette::RUN_B };
-            let (delta, alpha) = (config.controller.sampling_period, config.controller.alpha[0]);
-            draw_map_marker(&mut self.painter, &frame, delta, alpha, filled, color, dpr);
-        }
-        self.painter.rect_outline(frame.rect, dpr.max(1.0), palette::FRAME);
-    }
-
     fn scale_mut(&mut self, kind: PanelKind) -> Option<&mut Autoscale> {
         match kind {
             PanelKind::Error1 => Some(&mut self.scale_e1),
@@ -558,6 +533,8 @@ fn run_state<'a>(run: &'a Run, snapshot: &'a Snapshot, reference: Option<&'a Ref
         reference,
         config: Some(run.closed_loop().config()),
         analysis: run.analysis().report(),
+        windows: None,
+        ghost: None,
     }
 }
 

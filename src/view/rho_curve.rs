@@ -1,0 +1,118 @@
+//! ρ(δ) at the current α: the spectral radius against the sampling period, with the stable
+//! windows (ρ < 1) shaded and the current δ marked — the horizontal slice of the stability map,
+//! readable as a curve. Clicking or dragging on it picks δ.
+
+use super::layout::Rect;
+use super::painter::{Painter, Point};
+use crate::analysis::StableWindows;
+use crate::plot::ticks::log_ticks;
+use crate::plot::{palette, Color, Ticks};
+
+/// ρ shown at least over this range; widened to the data (within [0, 2]).
+pub const RHO_RANGE_MIN: [f64; 2] = [0.9, 1.1];
+
+/// The ρ(δ) panel's data area with a logarithmic δ axis and a linear ρ axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RhoFrame {
+    pub rect: Rect,
+    /// δ at the left and right edges, s.
+    pub x_range: [f64; 2],
+    /// ρ at the bottom and top edges.
+    pub y_range: [f64; 2],
+}
+
+impl RhoFrame {
+    /// Horizontal pixel of δ (not clamped).
+    pub fn x(&self, delta: f64) -> f64 {
+        let [a, b] = self.x_range;
+        self.rect.x + self.rect.w * (delta / a).ln() / (b / a).ln()
+    }
+
+    /// Vertical pixel of ρ, clamped to the data area.
+    pub fn y(&self, rho: f64) -> f64 {
+        let [a, b] = self.y_range;
+        (self.rect.bottom() - self.rect.h * (rho - a) / (b - a)).clamp(self.rect.y, self.rect.bottom())
+    }
+
+    /// δ at horizontal pixel `x`, within the range.
+    pub fn delta_at(&self, x: f64) -> f64 {
+        let [a, b] = self.x_range;
+        let f = ((x - self.rect.x) / self.rect.w).clamp(0.0, 1.0);
+        a * (b / a).powf(f)
+    }
+}
+
+/// The ρ range to show for a scan: at least [`RHO_RANGE_MIN`], out to the data in steps of 0.1,
+/// never beyond [0, 2].
+pub fn rho_range(windows: Option<&StableWindows>) -> [f64; 2] {
+    let [mut lo, mut hi] = RHO_RANGE_MIN;
+    for [_, r] in windows.map_or(&[][..], |w| &w.scan[..]) {
+        if r.is_finite() {
+            lo = lo.min((r * 10.0).floor() / 10.0);
+            hi = hi.max((r * 10.0).ceil() / 10.0);
+        }
+    }
+    [lo.max(0.0), hi.min(2.0)]
+}
+
+/// The δ and ρ ticks of a panel whose data area is `rect_css` (CSS pixels).
+pub fn rho_ticks(rect_css: Rect, frame: &RhoFrame) -> (Vec<f64>, Vec<f64>) {
+    let nx = (rect_css.w / 46.0).floor().clamp(1.0, 20.0) as usize;
+    let ny = (rect_css.h / 26.0).floor().clamp(2.0, 10.0) as usize;
+    (log_ticks(frame.x_range[0], frame.x_range[1], nx), Ticks::new(frame.y_range[0], frame.y_range[1], ny).collect())
+}
+
+/// The static part: background, the windows shaded, grid lines, ρ = 1, and the curve. Allocates
+/// nothing itself, but is drawn only when the windows or the layout change.
+pub fn draw_rho_static(
+    painter: &mut Painter,
+    frame: &RhoFrame,
+    windows: Option<&StableWindows>,
+    ticks: (&[f64], &[f64]),
+    dpr: f64,
+) {
+    let r = frame.rect;
+    painter.rect(r, palette::PANEL);
+    let Some(w) = windows else { return };
+    for [lo, hi] in &w.windows {
+        let (x0, x1) = (frame.x(*lo).max(r.x), frame.x(*hi).min(r.right()));
+        if x1 > x0 {
+            painter.rect(Rect::new(x0, r.y, x1 - x0, r.h), palette::WINDOW_BAND);
+        }
+    }
+    let grid = dpr.max(1.0);
+    for &d in ticks.0 {
+        let x = frame.x(d);
+        if x > r.x + grid && x < r.right() - grid {
+            painter.line([x, r.y], [x, r.bottom()], grid, palette::GRID);
+        }
+    }
+    for &v in ticks.1 {
+        let y = frame.y(v);
+        painter.line([r.x, y], [r.right(), y], grid, palette::GRID);
+    }
+    let y1 = frame.y(1.0);
+    painter.line([r.x, y1], [r.right(), y1], 1.5 * dpr, palette::CONTOUR);
+    let mut stroke = painter.stroke(2.0 * dpr, palette::ERROR1, true);
+    for [d, rho] in &w.scan {
+        stroke.to(if rho.is_finite() { [frame.x(*d), frame.y(*rho)] } else { [f64::NAN, f64::NAN] });
+    }
+}
+
+/// An upper bound on the vertices [`draw_rho_marker`] writes.
+pub const MARKER_VERTEX_BUDGET: usize = 3 * 6 + 2 * 128 * 3;
+
+/// A run's δ: a vertical line and a dot at (δ, ρ); at the edge if δ lies outside the range.
+pub fn draw_rho_marker(painter: &mut Painter, frame: &RhoFrame, delta: f64, rho: f64, color: Color, dpr: f64) {
+    if !(delta > 0.0 && delta.is_finite()) {
+        return;
+    }
+    let r = frame.rect;
+    let x = frame.x(delta).clamp(r.x, r.right());
+    painter.line([x, r.y], [x, r.bottom()], 1.5 * dpr, color.with_alpha(0.6));
+    if rho.is_finite() {
+        let p: Point = [x, frame.y(rho)];
+        painter.circle(p, 5.5 * dpr, palette::MARKER_HALO);
+        painter.circle(p, 4.0 * dpr, color);
+    }
+}
