@@ -343,3 +343,104 @@ test('copy as command line gives the flexarm command of what is on screen', asyn
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+// --------------------------------------------------------------- issue 9: honest and visible
+
+/** The verdict block's text. */
+const verdictText = (page) => page.$eval('#verdict', (el) => el.textContent.replace(/\s+/g, ' ').trim());
+
+test('Fig. 5.3 is called unstable from the first second and never "stable"; the growth is observed before it diverges', async () => {
+  const { page, problems } = await open('?preset=fig5.3&speed=1');
+  const opened = Date.now();
+  await page.waitForFunction(() => document.querySelector('#verdict')?.dataset.verdict === 'unstable', null, { timeout: 20000 });
+  const first = await verdictText(page);
+  const wall = Date.now() - opened;
+  console.log(`# Fig. 5.3 called unstable ${wall} ms after the page's controls were up: "${first}"`);
+  assert.match(first, /Unstable ρ = 1\.024 > 1 — the error grows ×e every 0\.42 s/);
+  assert.ok(!/\bstable\b/i.test(first), first);
+  // Screenshots at 0.5 s and 3 s of simulated time; the status never says "stable".
+  const shots9 = { 0.5: 'fig5.3-at-0.5s.png', 3: 'fig5.3-at-3s.png' };
+  let observedBefore = null;
+  for (;;) {
+    const t = await page.evaluate(() => window.flexarm.session.time());
+    const text = await verdictText(page);
+    assert.ok(!/\bstable\b/i.test(text), `t = ${t}: ${text}`);
+    const verdict = await verdictOf(page);
+    if (verdict === 'unstable' && /observed growth rate \d/.test(text) && observedBefore === null) observedBefore = { t, text };
+    for (const [at, file] of Object.entries(shots9)) {
+      if (t >= Number(at)) {
+        await page.screenshot({ path: path.join(shots, file) });
+        delete shots9[at];
+      }
+    }
+    if (verdict === 'diverged' || t > 8) break;
+    await page.waitForTimeout(150);
+  }
+  assert.ok(observedBefore, 'the growth was observed before the divergence');
+  assert.ok(observedBefore.t < 3, `observed at t = ${observedBefore.t}: ${observedBefore.text}`);
+  assert.match(observedBefore.text, /matches ln ρ\/δ = 2\.36 1\/s/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the stable windows of δ are stated and drawn on the slider as the session computes them', async () => {
+  const { page, problems } = await open('?delta=0.05&pf=off&alpha=2');
+  await page.waitForFunction(() => (document.querySelector('#delta')?.dataset.bands || '').length > 0, null, { timeout: 20000 });
+  const text = await page.textContent('#delta-windows');
+  assert.match(text, /Without preliminary feedback \(α = 2 1\/s\) the loop is stable only for 0\.0350 s < δ < 0\.1007 s, 0\.1068 s < δ < 0\.1161 s and 0\.1627 s < δ < 0\.2236 s/);
+  const { bands, windows } = await page.evaluate(() => ({
+    bands: document.querySelector('#delta').dataset.bands,
+    windows: window.flexarm.session.status().windows,
+  }));
+  assert.equal(bands, windows.bands.map(([a, b]) => `${a.toFixed(4)}-${b.toFixed(4)}`).join(' '));
+  assert.equal(windows.windows.length, 3);
+  // The band edges sit where the slider puts those δ.
+  const pos = await page.evaluate((d) => {
+    const s = window.flexarm.session;
+    s.set('delta', String(d));
+    return s.controls().find((c) => c.key === 'delta').position;
+  }, 0.035008);
+  assert.ok(Math.abs(pos - windows.bands[0][0]) < 2e-3, `${pos} vs ${windows.bands[0][0]}`);
+  // With the preliminary feedback the words change.
+  await page.selectOption('#pf', 'paper');
+  await page.waitForFunction(() => /^With paper K_pr/.test(document.querySelector('#delta-windows').textContent), null, { timeout: 10000 });
+  await page.screenshot({ path: path.join(shots, 'windows-on-the-slider.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the z-plane shows the flexible pair crossing the unit circle as δ crosses a window edge', async () => {
+  const { page, problems } = await open('?delta=0.0345&pf=off&alpha=2&speed=0.1');
+  await page.selectOption('#pole-plane', 'z');
+  await waitForPanels(page, ['z-plane']);
+  const modulus = () => page.evaluate(() => Math.max(...window.flexarm.lastLayout.poles.filter((p) => p.kind === 'loop').map((p) => p.modulus)));
+  await page.waitForFunction(() => (window.flexarm.lastLayout?.poles || []).some((p) => p.modulus > 1), null, { timeout: 10000 });
+  assert.ok((await modulus()) > 1);
+  await page.screenshot({ path: path.join(shots, 'z-plane-before-the-edge.png') });
+  await page.evaluate(() => window.flexarm.session.set('delta', '0.0355'));
+  await page.waitForFunction(() => window.flexarm.lastLayout.poles.filter((p) => p.kind === 'loop').every((p) => p.modulus < 1), null, { timeout: 10000 });
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: path.join(shots, 'z-plane-after-the-edge.png') });
+  assert.equal(await verdictOf(page), 'stable');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('log |e| with the predicted slope, and two runs compared side by side in numbers', async () => {
+  const { page, problems } = await open('?preset=fig5.1&speed=2&compare=1&b_pf=paper&b_delta=0.01&b_alpha=2');
+  await page.check('#log-errors');
+  await page.waitForFunction(() => window.flexarm.lastLayout?.panels.find((p) => p.id === 'e1')?.y_scale === 'log', null, { timeout: 10000 });
+  await page.waitForTimeout(3000);
+  const layout = await layoutOf(page);
+  const e1 = layout.panels.find((p) => p.id === 'e1');
+  assert.match(e1.note, /ln ρ\/δ/);
+  assert.ok(await page.isVisible('#ro-b-max-slew'), "run B's numbers beside A's");
+  const [a, b] = await page.evaluate(() => [document.querySelector('#ro-max-slew').textContent, document.querySelector('#ro-b-max-slew').textContent]);
+  const first = (s) => Number(s.split(',')[0].replace('−', '-'));
+  assert.ok(first(a) > 5 * first(b), `Fig. 5.1 vs 5.2: ${a} vs ${b}`);
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await page.screenshot({ path: path.join(shots, 'log-view-compare.png') });
+  await page.locator('#readouts').screenshot({ path: path.join(shots, 'compare-readouts.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});

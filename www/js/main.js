@@ -54,7 +54,11 @@ async function main() {
 
   // ---------------------------------------------------------------- changes go to the session
   const controls = buildControls(wasm.schema(), {
-    onSet: (key, text) => change(() => session.set(key, text)),
+    onSet: (key, text) => {
+      change(() => session.set(key, text));
+      // Two runs' errors differ by orders of magnitude: a log scale shows both.
+      if (key === 'compare' && text === '1' && !store.get().logErrors) setView('logErrors', true);
+    },
     onPosition: (key, f) => change(() => session.setPosition(linked(key), f)),
   });
   /** With α linked, either α slider moves both. @param {string} key */
@@ -121,10 +125,16 @@ async function main() {
     after: () => store.dispatch({ type: 'play' }),
   });
 
+  /** The control of each view: a check box, or the pole plot's plane selector. */
+  const viewInputs = {
+    showTorque: 'show-torque', showPoles: 'show-poles', zPlane: 'pole-plane', showRho: 'show-rho', showMap: 'show-map', logErrors: 'log-errors',
+  };
   /** Shows or hides a view and tells the renderer (and the maps' work). */
   function setView(/** @type {keyof typeof VIEW_OPTIONS} */ name, /** @type {boolean} */ value) {
     store.dispatch({ type: 'view', name, value });
-    /** @type {HTMLInputElement} */ (byId({ showTorque: 'show-torque', showPoles: 'show-poles', showMap: 'show-map' }[name])).checked = value;
+    const input = /** @type {HTMLInputElement} */ (byId(viewInputs[name]));
+    if (input.type === 'checkbox') input.checked = value;
+    else input.value = value ? 'z' : 's';
     if (name === 'showMap') {
       session.setMapsEnabled(value);
       byId('map-row').classList.toggle('maps-hidden', !value);
@@ -134,15 +144,16 @@ async function main() {
     pointer.hide();
     loop.touch();
   }
-  for (const [name, id] of /** @type {const} */ ([['showTorque', 'show-torque'], ['showPoles', 'show-poles'], ['showMap', 'show-map']])) {
-    const box = /** @type {HTMLInputElement} */ (byId(id));
-    box.addEventListener('change', () => setView(name, box.checked));
+  for (const [name, id] of Object.entries(viewInputs)) {
+    const input = /** @type {HTMLInputElement} */ (byId(id));
+    input.addEventListener('change', () => setView(/** @type {keyof typeof VIEW_OPTIONS} */ (name), input.type === 'checkbox' ? input.checked : input.value === 'z'));
   }
 
   // ---------------------------------------------------------------- canvas
   const pointer = createPointer({
     probe: (x, y, reach) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, reach), null) : null),
     pick: (map, delta, alpha) => change(() => session.setFromMap(map, delta, alpha)),
+    pickDelta: (delta) => change(() => session.pickDelta(delta)),
     showTip: overlays.showTip,
     hideTip: overlays.hideTip,
   });
@@ -220,6 +231,8 @@ async function main() {
     const label = byId('backend');
     setText(label, backend);
     label.dataset.backend = backend;
+    const views = store.get();
+    guard('Renderer options', () => renderer?.setOptions(Object.fromEntries(Object.entries(VIEW_OPTIONS).map(([k, o]) => [o, views[k]]))));
     watchSize(() => renderer);
   } catch (e) {
     setText(byId('backend'), 'none');

@@ -13,7 +13,7 @@ const TICK_ROW_PX = 19;
  * @typedef {{ id: string, x: number, y: number, width: number, height: number, x_label: string,
  *   y_label: string, title: string, note: string, x_range: number[], y_range: number[],
  *   x_labels: TickLabel[], y_labels: TickLabel[], x_scale: string, y_scale: string,
- *   scrolls: boolean }} Panel
+ *   scrolls: boolean, marks: { x: number, y: number, text: string }[] }} Panel
  * @typedef {{ generation: number, panels: Panel[], mode: string, series: any[], poles: any[],
  *   spring_magnification: number, backend: string }} Layout
  */
@@ -34,7 +34,7 @@ export function createOverlays() {
   /** @param {string} id */
   function entry(id) {
     if (!entries.has(id)) {
-      entries.set(id, { yTitle: label('axis-title y-title'), xTitle: label('axis-title x-title'), note: label('panel-note'), x: [], y: [] });
+      entries.set(id, { yTitle: label('axis-title y-title'), xTitle: label('axis-title x-title'), note: label('panel-note'), x: [], y: [], marks: [] });
     }
     return entries.get(id);
   }
@@ -69,10 +69,20 @@ export function createOverlays() {
       // Bottom centre: the smallest α, where little happens on the maps.
       e.note.style.transform = `translate(${(p.x + p.width / 2).toFixed(1)}px, ${(p.y + p.height - 2).toFixed(1)}px) translate(-50%, -100%)`;
       titles(e, p, roomAbove(layout.panels, i, TICK_ROW_PX) >= TITLE_ROW_PX);
+      // Texts at points of the panel: beside the point, up and to the right.
+      while (e.marks.length < p.marks.length) e.marks.push(label('panel-mark'));
+      e.marks.forEach((span, k) => {
+        const m = p.marks[k];
+        span.hidden = !m;
+        if (m) {
+          setText(span, m.text);
+          span.style.transform = `translate(${(m.x + 9).toFixed(1)}px, ${(m.y - 9).toFixed(1)}px) translateY(-100%)`;
+        }
+      });
     });
     for (const [id, e] of entries) {
       if (seen.has(id)) continue;
-      for (const span of [e.xTitle, e.yTitle, e.note, ...e.x, ...e.y]) span.hidden = true;
+      for (const span of [e.xTitle, e.yTitle, e.note, ...e.x, ...e.y, ...e.marks]) span.hidden = true;
     }
     setText(spring, `spring twist ×${Number(layout.spring_magnification.toPrecision(3))}`);
   }

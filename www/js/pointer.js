@@ -9,7 +9,7 @@ const REACH = { mouse: 22, touch: 36 };
 
 /**
  * @param {{ probe: (x: number, y: number, reach: number) => any, pick: (map: string, delta: number, alpha: number) => void,
- *   showTip: (probe: any) => void, hideTip: () => void }} on
+ *   pickDelta: (delta: number) => void, showTip: (probe: any) => void, hideTip: () => void }} on
  */
 export function createPointer(on) {
   const canvas = byId('canvas');
@@ -32,14 +32,23 @@ export function createPointer(on) {
   function show(probe) {
     on.showTip(probe);
     canvas.classList.toggle('over-pole', probe.kind === 'pole');
-    canvas.classList.toggle('over-map', probe.kind === 'map');
+    canvas.classList.toggle('over-map', probe.kind === 'map' || probe.kind === 'rho');
   }
 
   /** @param {PointerEvent} ev */
   function onPointer(ev) {
     const touch = isTouch(ev);
-    if (ev.type === 'pointermove' && (touch || pinned)) return;
     const { x, y } = at(ev);
+    // Dragging on ρ(δ) picks δ as the pointer moves.
+    if (ev.type === 'pointermove' && ev.buttons === 1) {
+      const drag = on.probe(x, y, 0);
+      if (drag && drag.kind === 'rho') {
+        on.pickDelta(drag.delta);
+        show(on.probe(x, y, 0) ?? drag);
+        return;
+      }
+    }
+    if (ev.type === 'pointermove' && (touch || pinned)) return;
     const probe = on.probe(x, y, touch ? REACH.touch : REACH.mouse);
     if (probe && (probe.kind === 'pole' || !touch)) {
       show(probe);
@@ -53,8 +62,9 @@ export function createPointer(on) {
   function onClick(ev) {
     const { x, y } = at(ev);
     const probe = on.probe(x, y, 0);
-    if (!probe || probe.kind !== 'map') return;
-    on.pick(probe.map, probe.delta, probe.alpha);
+    if (!probe || (probe.kind !== 'map' && probe.kind !== 'rho')) return;
+    if (probe.kind === 'map') on.pick(probe.map, probe.delta, probe.alpha);
+    else on.pickDelta(probe.delta);
     const mouse = !ev.pointerType || ev.pointerType === 'mouse';
     if (mouse) show(on.probe(x, y, 0) ?? probe);
     else hide();

@@ -6,17 +6,37 @@ import { createRunView } from './run.js';
 
 /**
  * @typedef {import('./run.js').RunStatus} RunStatus
- * @typedef {{ runs: RunStatus[], note: string, preset: string,
- *   maps: { percent: number, done: boolean, text: string, points: number } }} Status
+ * @typedef {{ runs: RunStatus[], note: string, preset: string, ghost: string,
+ *   maps: { percent: number, done: boolean, text: string, points: number },
+ *   windows: { text: string, windows: number[][], bands: number[][] } | null }} Status
  * @typedef {{ run: string, color: string, style: string, pole_marker: string }} Series
  */
 
+/** A CSS gradient for a slider track with `bands` (positions 0–1) in `band`, elsewhere `rest` (pure). */
+export function bandGradient(bands, band, rest) {
+  const stops = [`${rest} 0%`];
+  for (const [a, b] of bands) {
+    const [pa, pb] = [(100 * a).toFixed(2), (100 * b).toFixed(2)];
+    stops.push(`${rest} ${pa}%`, `${band} ${pa}%`, `${band} ${pb}%`, `${rest} ${pb}%`);
+  }
+  stops.push(`${rest} 100%`);
+  return `linear-gradient(to right, ${stops.join(', ')})`;
+}
+
+/** Colours of the δ slider's track: the stable windows, and the rest. */
+const TRACK = { band: '#7cc49a', rest: '#e4c9c3' };
+
 export function createStatus() {
   const runs = [createRunView('verdict'), createRunView('verdict-b')];
-  const ro = {
-    time: byId('ro-time'), error: byId('ro-error'), max_slew: byId('ro-max-slew'),
-    max_after: byId('ro-max-after'), torque: byId('ro-torque'), a4: byId('ro-a4'),
-  };
+  const keys = /** @type {const} */ (['time', 'error', 'max_slew', 'max_after', 'growth', 'torque', 'a4']);
+  const cell = (/** @type {string} */ run, /** @type {string} */ k) => byId(`ro-${run}${k.replace('_', '-')}`);
+  const ro = [Object.fromEntries(keys.map((k) => [k, cell('', k)])), Object.fromEntries(keys.map((k) => [k, cell('b-', k)]))];
+  const readouts = byId('readouts');
+  const announce = byId('verdict-announce');
+  const windowsText = byId('delta-windows');
+  const ghost = byId('ghost-caption');
+  let announced = '';
+  let bandsKey = '';
   const note = byId('run-note');
   const preset = /** @type {HTMLSelectElement} */ (byId('preset'));
   const bControls = byId('b-controls');
@@ -29,9 +49,19 @@ export function createStatus() {
   function render(s, ui, now) {
     const [a, b] = s.runs;
     runs[0].render(a, now);
-    for (const k of /** @type {(keyof typeof ro)[]} */ (Object.keys(ro))) setText(ro[k], a.readouts[k]);
     bControls.hidden = !b;
     if (b) runs[1].render(b, now);
+    readouts.classList.toggle('pair', Boolean(b));
+    s.runs.forEach((r, i) => keys.forEach((k) => setText(ro[i][k], r.readouts[k])));
+    // Screen readers hear a verdict once, when it changes.
+    const verdicts = s.runs.map((r) => `${r.run}:${r.verdict}`).join(' ');
+    if (verdicts !== announced) {
+      announced = verdicts;
+      setText(announce, s.runs.map((r) => r.announce).join(' '));
+    }
+    setText(ghost, s.ghost);
+    ghost.hidden = !s.ghost;
+    renderWindows(s.windows);
     setText(note, s.note);
     note.hidden = s.note === '';
     if (preset.value !== s.preset) preset.value = s.preset;
@@ -43,6 +73,19 @@ export function createStatus() {
     progress.setAttribute('aria-valuetext', s.maps.done ? 'done' : `${pct} %`);
     progress.dataset.done = s.maps.done ? 'true' : 'false';
     setText(mapTime, !ui.mapsShown && !s.maps.done ? `paused at ${pct} % (maps hidden)` : s.maps.text);
+  }
+
+  /** The stable windows of δ: in words under the slider, and as bands on its track. */
+  function renderWindows(/** @type {Status['windows']} */ w) {
+    if (!w) return;
+    setText(windowsText, w.text);
+    const slider = /** @type {HTMLInputElement | null} */ (document.getElementById('delta'));
+    const key = JSON.stringify(w.bands);
+    if (!slider || key === bandsKey) return;
+    bandsKey = key;
+    slider.classList.add('banded');
+    slider.style.setProperty('--bands', bandGradient(w.bands, TRACK.band, TRACK.rest));
+    slider.dataset.bands = w.bands.map(([a, b]) => `${a.toFixed(4)}-${b.toFixed(4)}`).join(' ');
   }
 
   /** Which line is which when two runs are compared. @param {Status} s @param {Series[]} series */

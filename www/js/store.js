@@ -3,7 +3,8 @@
 // plays, what it shows, whether the wasm can still be used.
 
 /** @typedef {{ playing: boolean, dead: boolean, linkAlpha: boolean, showTorque: boolean,
- *   showPoles: boolean, showMap: boolean, backend: string, renderFailures: number }} PageState */
+ *   showPoles: boolean, zPlane: boolean, showRho: boolean, showMap: boolean, logErrors: boolean,
+ *   backend: string, renderFailures: number }} PageState */
 
 /** @type {PageState} */
 export const initialState = Object.freeze({
@@ -12,13 +13,23 @@ export const initialState = Object.freeze({
   linkAlpha: true,
   showTorque: false,
   showPoles: true,
+  zPlane: false,
+  showRho: true,
   showMap: true,
+  logErrors: false,
   backend: '',
   renderFailures: 0,
 });
 
 /** Views the page can show or hide: the renderer option each one sets. */
-export const VIEW_OPTIONS = Object.freeze({ showTorque: 'show_torque', showPoles: 'show_poles', showMap: 'show_map' });
+export const VIEW_OPTIONS = Object.freeze({
+  showTorque: 'show_torque',
+  showPoles: 'show_poles',
+  zPlane: 'z_plane',
+  showRho: 'show_rho',
+  showMap: 'show_map',
+  logErrors: 'log_errors',
+});
 
 /**
  * `state` with `patch` applied, or `state` itself when the patch changes nothing.
