@@ -246,7 +246,7 @@ fn every_presets_verdict_agrees_with_rho_from_the_first_frame() {
         let rho = st.spectral_radius.unwrap();
         let want = if rho < 1.0 { "stable" } else { "unstable" };
         assert_eq!(st.verdict, want, "{}: ρ = {rho}", p.id);
-        assert!(has_word(&st.headline, want), "{}: {}", p.id, st.headline);
+        assert!(has_word(st.headline, want), "{}: {}", p.id, st.headline);
         assert!(p.title.to_lowercase().contains("unstable") == (want == "unstable") || p.id != "fig5.3");
     }
 }

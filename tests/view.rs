@@ -584,7 +584,7 @@ fn scene_autoscale_reads_both_a_stable_and_a_diverging_run() {
     scene.draw(&stable);
     let panels = scene.panel_info();
     let e1 = info(&panels, "e1");
-    let max_e1 = max_abs(&stable.traces().e1());
+    let max_e1 = max_abs(stable.traces().e1());
     assert!(max_e1 < 1e-3, "the stable run's e1 is small: {max_e1}");
     assert!(e1.y_range[1] >= max_e1 && e1.y_range[1] <= 5.0 * max_e1, "{:?} for max {max_e1}", e1.y_range);
     assert_eq!(e1.y_range[0], -e1.y_range[1]);
@@ -1080,7 +1080,7 @@ fn a_pair_shows_two_arms_both_errors_and_both_runs_poles() {
     assert_eq!(ids, ["arm", "arm-b", "e1", "e2", "poles", "rho-curve", "map-off", "map-on"]);
     // The scale covers both runs: A diverges, B stays small.
     let e1 = info(&panels, "e1").y_range[1];
-    assert!(e1 >= max_abs(&a.traces().e1()) && e1 >= max_abs(&b.traces().e1()));
+    assert!(e1 >= max_abs(a.traces().e1()) && e1 >= max_abs(b.traces().e1()));
     assert!(e1 > 10.0 * single_e1, "pair scale {e1} vs B alone {single_e1}");
     let poles = scene.pole_info();
     assert_eq!(loop_poles(&poles).iter().filter(|p| p.run == "A").count(), 10);

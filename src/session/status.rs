@@ -65,7 +65,7 @@ pub struct RunStatus {
     pub measured: bool,
     /// The run has diverged and does not advance until a reset or a change.
     pub finished: bool,
-    /// "linear analysis: ρ = 1.0239 ≥ 1 ⇒ unstable (ln ρ/δ = 2.37 1/s)".
+    /// "linear analysis: ρ = 1.0239 ≥ 1 ⇒ unstable (ln ρ/δ = 2.36 1/s)".
     pub rho: String,
     /// The spectral radius and ln ρ/δ (null if the analysis failed).
     pub spectral_radius: Option<f64>,

@@ -81,10 +81,13 @@ fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
     }
     let pair = |p: [[f64; 2]; 2]| format!("{:.4} ± {:.4}j 1/s", p[0][0], p[0][1].abs());
     s += &format!("δ → 0 pair A4 without preliminary feedback: {}\n", pair(r.limit_pair_open));
-    s += &format!(
-        "δ → 0 pair A4 with preliminary feedback ({}): {}\n",
-        c.preliminary_feedback.name(),
-        pair(r.limit_pair)
-    );
+    // With the feedback off the two lines would repeat one pair under a misleading label.
+    if r.limit_pair != r.limit_pair_open {
+        s += &format!(
+            "δ → 0 pair A4 with preliminary feedback ({}): {}\n",
+            c.preliminary_feedback.name(),
+            pair(r.limit_pair)
+        );
+    }
     s
 }

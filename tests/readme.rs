@@ -1,0 +1,111 @@
+//! The README's table "What it reproduces" says what flexarm computes; each figure there is
+//! formatted here from the code and must appear in its row, so the README cannot drift from the
+//! program (a changed model fails this test, and the message gives the number to write).
+
+use flexarm::analysis::analyze;
+use flexarm::session::Session;
+use flexarm::*;
+
+const README: &str = include_str!("../README.md");
+
+/// The table row whose first cell starts with `paper`.
+fn row(paper: &str) -> &'static str {
+    README
+        .lines()
+        .find(|l| l.starts_with(&format!("| {paper}")))
+        .unwrap_or_else(|| panic!("README has no row for {paper:?}"))
+}
+
+fn assert_says(paper: &str, figure: &str) {
+    let r = row(paper);
+    assert!(r.contains(figure), "README row {paper:?} should say {figure:?}:\n{r}");
+}
+
+fn config(delta: f64, alpha: f64, pf: PreliminaryFeedbackChoice) -> SimulationConfig {
+    let mut c = SimulationConfig { preliminary_feedback: pf, ..Default::default() };
+    c.controller.sampling_period = delta;
+    c.controller.alpha = [alpha, alpha];
+    c
+}
+
+/// "−2.478" with the typographic minus the README uses.
+fn fixed(v: f64, digits: usize) -> String {
+    format!("{v:.digits$}").replace('-', "−")
+}
+
+fn pair(p: [[f64; 2]; 2], digits: usize) -> String {
+    format!("{} ± {}j", fixed(p[0][0], digits), fixed(p[0][1].abs(), digits))
+}
+
+#[test]
+fn the_flexible_pair_and_its_feedback_are_as_printed() {
+    let off = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Off), None).unwrap();
+    assert_says("A4 ≈", &pair(off.limit_pair_open, 4));
+    let paper = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Paper), None).unwrap();
+    assert_says("K_pr moves A4", &format!("printed (rounded) K_pr: {}", pair(paper.limit_pair, 3)));
+    let lq = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Lq), None).unwrap();
+    assert_says("K_pr moves A4", &format!("our LQ gain: {}", pair(lq.limit_pair, 3)));
+}
+
+#[test]
+fn fig_5_3_grows_as_rho_says_and_diverges_when_printed() {
+    let c = config(0.01, 2.0, PreliminaryFeedbackChoice::Off);
+    let r = analyze(&c, None).unwrap();
+    assert!(r.spectral_radius > 1.0);
+    assert_says("without K_pr unstable", &format!("ρ = {:.4} > 1", r.spectral_radius));
+    assert_says("without K_pr unstable", &format!("e^{{{:.2} t}} (ln ρ/δ)", r.growth_rate));
+    let sim = simulate(&c, 6.0).unwrap();
+    let fitted = sim.metrics.growth_rate.expect("a growth rate before divergence");
+    assert_says("without K_pr unstable", &format!("the simulation fits {fitted:.2} 1/s"));
+    let Verdict::Diverged { at, .. } = sim.metrics.verdict else { panic!("{:?}", sim.metrics.verdict) };
+    assert_says("without K_pr unstable", &format!("t = {at:.2} s"));
+}
+
+#[test]
+fn the_stable_windows_are_the_ones_the_page_and_analyze_print() {
+    // The same words the page's status and `flexarm analyze` use.
+    for (query, paper) in [
+        ("delta=0.01&alpha=2&pf=off", "without K_pr stable for larger"),
+        ("delta=0.01&alpha=2&pf=paper", "with K_pr stable"),
+    ] {
+        let (mut s, _) = Session::open(query);
+        let words = s.windows().unwrap().describe();
+        assert_says(paper, &format!("at α = 2: {words}"));
+    }
+}
+
+#[test]
+fn the_figures_errors_and_their_ratio_are_as_printed() {
+    let max_slew = |delta: f64| {
+        let sim = simulate(&config(delta, 2.0, PreliminaryFeedbackChoice::Paper), 3.0).unwrap();
+        assert_eq!(sim.metrics.verdict, Verdict::Stable);
+        sim.metrics.max_error_slew
+    };
+    let (fig51, fig52) = (max_slew(0.04), max_slew(0.01));
+    let says = |e: [f64; 2]| format!("max \\|e1\\| = {:.2e} rad, \\|e2\\| = {:.2e} rad", e[0], e[1]);
+    assert_says("Fig. 5.1", &says(fig51));
+    assert_says("Fig. 5.2", &says(fig52));
+    let ratio = |i: usize| (fig51[i] / fig52[i]).round();
+    assert_says("Fig. 5.2", &format!("({}× and {}× smaller)", ratio(0), ratio(1)));
+}
+
+#[test]
+fn smaller_alpha_slows_the_growth_as_printed() {
+    let growth = |alpha: f64| analyze(&config(0.01, alpha, PreliminaryFeedbackChoice::Off), None).unwrap().growth_rate;
+    let (g2, g1, g05) = (growth(2.0), growth(1.0), growth(0.5));
+    assert!(g2 > g1 && g1 > g05 && g05 > 0.0);
+    assert_says("smaller α", &format!("{g2:.2} (α = 2), {g1:.2} (α = 1), {g05:.2} (α = 0.5)"));
+}
+
+#[test]
+fn the_verdicts_quoted_in_the_readme_are_the_pages() {
+    let web = README.split("## The web demo").nth(1).expect("a web demo section");
+    for (preset, headline) in [("fig5.3", "Unstable"), ("fig5.2", "Stable")] {
+        let (s, _) = Session::open(&format!("preset={preset}"));
+        let status = &s.status().runs[0];
+        assert_eq!(status.headline, headline);
+        let quoted = format!("**{}**, \"{}\"", status.headline, status.detail);
+        let flat = |t: &str| t.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(flat(web).contains(&flat(&quoted)), "README's web demo section should quote {quoted:?}");
+    }
+}
