@@ -3,10 +3,11 @@
 //! Nyquist frequency in the s-plane. All drawn from a session, as the page draws them.
 
 use flexarm::session::Session;
-use flexarm::view::{OptionsUpdate, PanelInfo, PanelKind, PoleKind, Scene, ViewOptions};
+use flexarm::view::{PanelInfo, PanelKind, PoleKind, Scene, ViewOptions};
 
+/// A session in the full view (every figure), as the page opens `?mode=full&…`.
 fn session(query: &str) -> Session {
-    let (s, notices) = Session::open(query);
+    let (s, notices) = Session::open(&format!("mode=full&{query}"));
     assert!(notices.is_empty(), "{notices:?}");
     s
 }
@@ -34,8 +35,8 @@ fn all_finite(scene: &Scene) -> bool {
 #[test]
 fn the_z_plane_shows_the_flexible_pair_outside_the_unit_circle_without_feedback() {
     for (pf, outside) in [("off", true), ("paper", false)] {
-        let s = session(&format!("delta=0.01&pf={pf}"));
-        let mut scene = Scene::new(ViewOptions { z_plane: true, ..Default::default() }, 1400.0, 900.0, 1.0);
+        let s = session(&format!("delta=0.01&pf={pf}&plane=z"));
+        let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
         scene.draw_session(&s);
         let panels = scene.panel_info();
         let z = info(&panels, "z-plane");
@@ -65,8 +66,8 @@ fn the_z_plane_shows_the_flexible_pair_outside_the_unit_circle_without_feedback(
 fn moving_delta_across_a_window_edge_moves_the_pair_across_the_circle() {
     // The window without feedback opens at δ ≈ 0.0350 s.
     let modulus = |delta: f64| {
-        let s = session(&format!("delta={delta}&pf=off"));
-        let mut scene = Scene::new(ViewOptions { z_plane: true, ..Default::default() }, 1400.0, 900.0, 1.0);
+        let s = session(&format!("delta={delta}&pf=off&plane=z"));
+        let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
         scene.draw_session(&s);
         scene.pole_info().iter().filter(|p| p.kind == PoleKind::Loop).map(|p| p.modulus).fold(0.0, f64::max)
     };
@@ -133,7 +134,8 @@ fn log_errors_show_decades_and_the_predicted_slope_and_the_ghost() {
     let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
     scene.draw_session(&s);
     let linear = scene.vertices().len();
-    scene.set_options(&OptionsUpdate { log_errors: Some(true), ..Default::default() }).unwrap();
+    // The view is a setting of the session, like any other.
+    s.set("log", "1").unwrap();
     scene.draw_session(&s);
     let panels = scene.panel_info();
     let e1 = info(&panels, "e1");

@@ -21,15 +21,18 @@ fn play(s: &mut Session, seconds: f64) {
 }
 
 #[test]
-fn the_page_opens_on_the_papers_settings_with_a_repeating_slew() {
+fn the_page_opens_on_fig_5_3_named_in_the_intro_with_a_repeating_slew() {
+    // Issue 10: the cold open is the case the page is about, and says which figure it is.
     let s = session("");
     let a = s.settings().a;
-    assert_eq!((a.delta, a.alpha, a.pf, a.repeat), (0.01, [2.0, 2.0], Pf::Paper, true));
+    assert_eq!((a.delta, a.alpha, a.pf, a.repeat), (0.01, [2.0, 2.0], Pf::Off, true));
+    assert_eq!(s.status().preset, "fig5.3");
+    assert!(!s.settings().view.full, "beginners first");
     assert!(s.run(1).is_none());
-    let (s, notices) = Session::open("?delta=abc&pf=off");
+    let (s, notices) = Session::open("?delta=abc&pf=paper");
     assert_eq!(notices.len(), 1, "{notices:?}");
     assert!(notices[0].text.contains("delta") && notices[0].text.contains("abc"));
-    assert_eq!(s.settings().a.pf, Pf::Off);
+    assert_eq!(s.settings().a.pf, Pf::Paper);
 }
 
 #[test]
@@ -122,7 +125,7 @@ fn the_analysis_follows_what_changes_rho_only() {
 
 #[test]
 fn the_maps_fill_in_and_are_reused() {
-    let mut s = session("delta=0.01&pf=off");
+    let mut s = session("delta=0.01&pf=off&mode=full");
     let mut clock = 0.0;
     let mut tick = || {
         clock += 1.0;
@@ -153,8 +156,11 @@ fn the_maps_fill_in_and_are_reused() {
     s.set("pf", "lq").unwrap();
     assert!(s.maps().pending());
     assert_eq!(s.maps().shown(MapSide::On).unwrap().feedback(), Pf::Lq);
-    // Hidden maps do no work.
-    s.maps_mut().enabled = false;
+    // Hidden maps do no work: the intro view hides them.
+    s.set("mode", "intro").unwrap();
+    assert!(!s.maps().pending());
+    s.set("mode", "full").unwrap();
+    s.set("map", "0").unwrap();
     assert!(!s.maps_mut().work(&mut tick, 5.0));
 }
 

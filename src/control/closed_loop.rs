@@ -17,6 +17,7 @@ use nalgebra::{Vector2, Vector3};
 
 use super::config::{FrictionCompensation, InnerLoop, SimulationConfig};
 use super::feedback::{resolve_gain, FeedbackGain};
+use super::history::{History, LoopState};
 use super::metrics::{DivergenceReason, ErrorStats, Metrics};
 use super::predictive::{Predictor, StateVector};
 use super::traces::{Snapshot, Traces};
@@ -108,6 +109,8 @@ pub struct ClosedLoop {
     traces: Traces,
     stats: ErrorStats,
     divergence: Option<(f64, DivergenceReason)>,
+    /// The state at every sampling instant of the last few seconds (none unless asked for).
+    history: History,
 }
 
 impl ClosedLoop {
@@ -138,17 +141,95 @@ impl ClosedLoop {
             traces: Traces::default(),
             stats: ErrorStats::default(),
             divergence: None,
+            history: History::default(),
         };
         sim.applied_torque = sim.torque_at(&sim.controller_state());
         sim.record_trace();
         Ok(sim)
     }
 
-    /// Starts over from rest with the current (and any pending) configuration.
+    /// Starts over from rest with the current (and any pending) configuration, keeping as much
+    /// history as before (none of the old run's).
     pub fn reset(&mut self) -> Result<(), Error> {
         let config = self.pending.take().map(|(c, _)| c).unwrap_or(self.config);
+        let seconds = self.history.seconds();
         *self = Self::new(config)?;
+        self.keep_history(seconds);
         Ok(())
+    }
+
+    /// Keeps the state at every sampling instant of the last `seconds` (0: none), from now on.
+    pub fn keep_history(&mut self, seconds: f64) {
+        self.history = History::new(seconds);
+    }
+
+    /// The kept states of the recent past.
+    pub fn history(&self) -> &History {
+        &self.history
+    }
+
+    /// The newest state as it was at the kept sampling instant at or before `t`.
+    pub fn snapshot_at(&self, t: f64) -> Option<Snapshot> {
+        let (state, config) = self.history.at(t)?;
+        let reference = Reference::new(config.reference);
+        Some(snapshot_of(state, &reference))
+    }
+
+    /// Goes back to the kept sampling instant at or before `t` and continues from there: the same
+    /// state, configuration and schedule as then, so that without a change it does exactly what
+    /// it did (the traces and history after that instant are dropped; the statistics start afresh
+    /// there). Returns the instant.
+    pub fn branch_at(&mut self, t: f64) -> Result<f64, Error> {
+        let Some((state, config)) = self.history.at(t) else {
+            return Err(Error::InvalidDuration(t));
+        };
+        let (state, config) = (*state, *config);
+        self.derived = Derived::new(&config)?;
+        self.config = config;
+        self.pending = None;
+        self.time = state.time;
+        self.period_origin = state.period_origin;
+        self.periods_since_origin = state.periods_since_origin;
+        self.period_start = state.time;
+        self.step_in_period = 0;
+        self.steps_taken = state.steps_taken;
+        self.plant_state = state.plant;
+        self.integrators = state.integrators;
+        self.observer = state.observer;
+        self.v_applied = state.v_applied;
+        self.v_next = state.v_next;
+        self.torque_guess = state.torque_guess;
+        self.held_compensation = state.held_compensation;
+        self.held_feedback = state.held_feedback;
+        self.applied_torque = state.applied_torque;
+        self.disturbance = state.disturbance;
+        self.divergence = None;
+        self.traces.truncate_after(state.time);
+        self.history.truncate_from(state.time);
+        self.stats.restart(state.time);
+        self.stats.continue_phase(self.derived.reference.is_moving(state.time));
+        Ok(state.time)
+    }
+
+    /// The state carried from this sampling instant to the next.
+    fn loop_state(&self) -> LoopState {
+        LoopState {
+            time: self.time,
+            period_origin: self.period_origin,
+            periods_since_origin: self.periods_since_origin,
+            steps_taken: self.steps_taken,
+            plant: self.plant_state,
+            integrators: self.integrators,
+            observer: self.observer,
+            v_applied: self.v_applied,
+            v_next: self.v_next,
+            torque_guess: self.torque_guess,
+            held_compensation: self.held_compensation,
+            held_feedback: self.held_feedback,
+            applied_torque: self.applied_torque,
+            disturbance: self.disturbance,
+            config: 0,
+        }
     }
 
     /// The configuration in force.
@@ -252,6 +333,9 @@ impl ClosedLoop {
             self.config = config;
             self.derived = derived;
         }
+        // Kept before this instant's work, so that continuing from here repeats it.
+        let state = self.loop_state();
+        self.history.record(state, &self.config);
         let x = self.controller_state();
         self.v_applied = self.v_next.take().unwrap_or_else(Vector2::zeros);
         self.held_compensation = self.observer.estimate;
@@ -333,19 +417,7 @@ impl ClosedLoop {
 
     /// The newest state.
     pub fn snapshot(&self) -> Snapshot {
-        let r = self.derived.reference.sample(self.time);
-        let s = &self.plant_state;
-        Snapshot {
-            time: self.time,
-            q: [s.q[0], s.q[1], s.q[2]],
-            qdot: [s.qdot[0], s.qdot[1], s.qdot[2]],
-            qd: [r.q[0], r.q[1]],
-            error: [s.q[0] - r.q[0], s.q[1] - r.q[1]],
-            torque: [self.applied_torque[0], self.applied_torque[1]],
-            v: [self.v_applied[0], self.v_applied[1]],
-            xf_hat: [self.observer.estimate[0], self.observer.estimate[1]],
-            w: [self.integrators[0], self.integrators[1]],
-        }
+        snapshot_of(&self.loop_state(), &self.derived.reference)
     }
 
     /// The plant's full physical state (including the true friction torques).
@@ -366,6 +438,23 @@ impl ClosedLoop {
     /// Metrics and verdict so far.
     pub fn metrics(&self) -> Metrics {
         self.stats.metrics(self.time, self.divergence)
+    }
+}
+
+/// What is drawn and recorded of a state.
+fn snapshot_of(state: &LoopState, reference: &Reference) -> Snapshot {
+    let r = reference.sample(state.time);
+    let s = &state.plant;
+    Snapshot {
+        time: state.time,
+        q: [s.q[0], s.q[1], s.q[2]],
+        qdot: [s.qdot[0], s.qdot[1], s.qdot[2]],
+        qd: [r.q[0], r.q[1]],
+        error: [s.q[0] - r.q[0], s.q[1] - r.q[1]],
+        torque: [state.applied_torque[0], state.applied_torque[1]],
+        v: [state.v_applied[0], state.v_applied[1]],
+        xf_hat: [state.observer.estimate[0], state.observer.estimate[1]],
+        w: [state.integrators[0], state.integrators[1]],
     }
 }
 

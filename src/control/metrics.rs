@@ -138,6 +138,11 @@ impl ErrorStats {
         };
     }
 
+    /// After a jump back in time: whether the reference moved at the instant continued from.
+    pub(crate) fn continue_phase(&mut self, moving: bool) {
+        self.was_moving = moving;
+    }
+
     /// The growth rate of the error envelope, 1/s: the least-squares slope of ln(window max)
     /// against time over the windows of the last [`GROWTH_FIT_SPAN`] seconds in which the
     /// reference rests, each rest phase with its own level (a pooled, within-phase slope). Every

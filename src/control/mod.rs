@@ -9,12 +9,14 @@
 pub mod closed_loop;
 pub mod config;
 pub mod feedback;
+pub mod history;
 pub mod linear;
 pub mod metrics;
 pub mod predictive;
 pub mod traces;
 
 pub use closed_loop::{simulate, ClosedLoop, RunReport};
+pub use history::{History, LoopState};
 pub use config::{ControllerParameters, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
 pub use metrics::{DivergenceReason, Metrics, Verdict};
 pub use traces::{Column, Snapshot, Traces};

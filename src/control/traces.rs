@@ -144,6 +144,14 @@ impl Traces {
         }
     }
 
+    /// Drops the samples after time `t` (a run going back in time).
+    pub fn truncate_after(&mut self, t: f64) {
+        let keep = self.columns[Column::T.index()].partition_point(|&s| s <= t + 1e-9);
+        for col in &mut self.columns {
+            col.truncate(keep);
+        }
+    }
+
     /// The CSV header row: each column's name and unit.
     pub fn csv_header() -> String {
         Column::ALL.map(Column::header).join(",")

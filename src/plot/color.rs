@@ -136,6 +136,8 @@ pub mod palette {
     pub const NYQUIST: Color = Color::hex(0x8c5a00);
     /// The unit circle of the z-plane.
     pub const UNIT_CIRCLE: Color = Color::hex(0x3b3b44);
+    /// The instant looked back at, across the time plots.
+    pub const CURSOR: Color = Color::hex(0x2b2b33).with_alpha(0.8);
 }
 
 /// ρ is shown between these bounds; beyond them the colour saturates.

@@ -333,8 +333,10 @@ impl Param {
 }
 
 mod params;
+mod view;
 
 pub use params::*;
+pub use view::*;
 
 /// The parameter with this key.
 pub fn param(key: &str) -> Option<&'static Param> {

@@ -322,4 +322,11 @@ pub const PARAMS: &[&Param] = &[
     &B_PF,
     &B_DELTA,
     &B_ALPHA,
+    &super::MODE,
+    &super::POLES,
+    &super::PLANE,
+    &super::RHO,
+    &super::MAP,
+    &super::TORQUE,
+    &super::LOG,
 ];

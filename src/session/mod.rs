@@ -11,6 +11,7 @@ pub mod presets;
 pub mod run;
 pub mod settings;
 pub mod status;
+pub mod timeline;
 
 use serde::Serialize;
 
@@ -22,9 +23,10 @@ use crate::schema::{self, Kind, Scope, Value};
 
 pub use maps::{MapSide, Maps};
 pub use presets::{preset, Preset, PRESETS};
-pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS};
-pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source};
+pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS, HISTORY_SECONDS};
+pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source, ViewSettings};
 pub use status::{run_status, RunStatus};
+pub use timeline::TimelineStatus;
 
 /// The longest simulated time one `advance` call may cover, s: after a stalled tab the
 /// simulation skips ahead instead of freezing the page to catch up.
@@ -47,6 +49,8 @@ pub struct Status {
     pub windows: Option<WindowsStatus>,
     /// What the faint ghost traces are ("" if there are none).
     pub ghost: String,
+    /// The instant shown and the span that can be looked back at.
+    pub timeline: TimelineStatus,
 }
 
 /// The stable windows of δ for run A's settings, as the page shows them.
@@ -87,6 +91,8 @@ pub struct Session {
     ghost: Option<Ghost>,
     note: String,
     trace_seconds: f64,
+    /// The kept instant looked at (None: the newest state).
+    viewing: Option<f64>,
 }
 
 impl Session {
@@ -103,8 +109,10 @@ impl Session {
             ghost: None,
             note: String::new(),
             trace_seconds: DEFAULT_TRACE_SECONDS,
+            viewing: None,
         };
         session.maps.show(&session.linear_settings());
+        session.maps.enabled = settings.view.shown().map;
         Ok(session)
     }
 
@@ -178,6 +186,10 @@ impl Session {
 
     /// Sets one parameter to a checked value and carries the change to the runs.
     pub fn set_value(&mut self, key: &str, value: Value) -> Result<(), Error> {
+        if schema::param(key).is_some_and(|p| matches!(p.scope, Scope::Run | Scope::Compare)) {
+            // A change while looking back changes the run from that moment on.
+            self.continue_from_here()?;
+        }
         let mut next = self.settings;
         next.set(key, value)?;
         // The reference jumping under a moving arm would be a kick, not the setting: start over.
@@ -212,6 +224,7 @@ impl Session {
     /// kept within their spans, with the map's preliminary feedback (none on the left; on the
     /// right A's own if it has one, else the paper's).
     pub fn set_from_map(&mut self, side: MapSide, delta: f64, alpha: f64) -> Result<(), Error> {
+        self.continue_from_here()?;
         let spec = |p: &schema::Param| *p.number().expect("δ and α are numbers");
         let (ds, al) = (spec(&schema::DELTA), spec(&schema::ALPHA));
         let d = ds.value_at(ds.position(schema::round_significant(delta, ds.digits)));
@@ -244,6 +257,16 @@ impl Session {
         if let Some(b) = next.b {
             b.run(&next.a).config().validate()?;
         }
+        // Hidden maps do no work.
+        self.maps.enabled = next.view.shown().map;
+        if !restart && next.a == self.settings.a && next.b == self.settings.b {
+            // The view or the speed: the runs go on as they were (even a diverged one).
+            self.settings = next;
+            return Ok(());
+        }
+        if restart {
+            self.viewing = None;
+        }
         let was_comparing = self.b.is_some();
         if restart || self.a.closed_loop().is_finished() || (next.b.is_some() && !was_comparing) {
             self.keep_ghost();
@@ -258,6 +281,7 @@ impl Session {
             }
             (Some(b), None) => {
                 self.b = Some(Run::new(b.run(&next.a))?);
+                self.viewing = None;
                 // A fresh B beside a running A would compare different moments: restart A too.
                 self.a.reset()?;
                 notes.push("Comparing two runs: both restarted from rest together.");
@@ -282,6 +306,9 @@ impl Session {
             return Err(Error::InvalidDuration(wall_seconds));
         }
         let dt = (wall_seconds * self.settings.speed).min(MAX_ADVANCE_PER_CALL);
+        if let Some(covered) = self.replay(dt) {
+            return Ok(covered);
+        }
         let before = self.a.closed_loop().time();
         let keep = self.trace_seconds;
         for run in self.runs_mut() {
@@ -292,6 +319,9 @@ impl Session {
 
     /// Advances to A's next sampling instant; B follows A's clock (or its own period if A stopped).
     pub fn step_period(&mut self) {
+        if self.step_forward_in_history() {
+            return;
+        }
         let keep = self.trace_seconds;
         self.a.step_period(keep);
         let t = self.a.closed_loop().time();
@@ -328,6 +358,7 @@ impl Session {
 
     /// Both runs back to rest.
     pub fn reset(&mut self) -> Result<(), Error> {
+        self.viewing = None;
         self.keep_ghost();
         for run in self.runs_mut() {
             run.reset()?;
@@ -338,6 +369,7 @@ impl Session {
 
     /// A short torque kick on both runs ([`POKE`]).
     pub fn poke(&mut self) -> Result<(), Error> {
+        self.continue_from_here()?;
         let (torque, duration) = POKE;
         for run in self.runs_mut() {
             run.poke(torque, duration)?;
@@ -430,6 +462,15 @@ impl Session {
         if let Some(b) = &self.b {
             runs.push(run_status("B", b));
         }
+        if self.viewing.is_some() {
+            // The readouts of the moment looked at; the verdict and the maxima are the run's.
+            for (i, r) in runs.iter_mut().enumerate() {
+                if let Some(s) = self.shown_snapshot(i) {
+                    r.readouts.time = format!("{:.2} s (looking back)", s.time);
+                    r.readouts.error = status::error_pair(s.error);
+                }
+            }
+        }
         Status {
             runs,
             note: self.note.clone(),
@@ -440,6 +481,7 @@ impl Session {
                 .ghost
                 .as_ref()
                 .map_or(String::new(), |g| format!("faint grey: the previous run ({})", g.settings)),
+            timeline: self.timeline(),
         }
     }
 

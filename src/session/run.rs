@@ -41,6 +41,9 @@ impl AnalysisCache {
 /// Seconds of traces a page run keeps for drawing and export.
 pub const DEFAULT_TRACE_SECONDS: f64 = 60.0;
 
+/// Seconds of the past a page run can be looked at and continued from (every sampling instant).
+pub const HISTORY_SECONDS: f64 = 30.0;
+
 /// A run: the loop, the settings it runs with, their analysis.
 #[derive(Clone, Debug)]
 pub struct Run {
@@ -52,7 +55,8 @@ pub struct Run {
 impl Run {
     /// A run at rest on the reference.
     pub fn new(settings: RunSettings) -> Result<Self, Error> {
-        let sim = ClosedLoop::new(settings.config())?;
+        let mut sim = ClosedLoop::new(settings.config())?;
+        sim.keep_history(HISTORY_SECONDS);
         let mut analysis = AnalysisCache::default();
         analysis.update(sim.config());
         Ok(Self { sim, settings, analysis })
@@ -84,6 +88,15 @@ impl Run {
             self.sim.reset()?;
         }
         Ok(restarted)
+    }
+
+    /// Continues from the kept sampling instant at or before `t`, with the settings in force
+    /// then; returns the instant.
+    pub fn branch_at(&mut self, t: f64) -> Result<f64, Error> {
+        let at = self.sim.branch_at(t)?;
+        self.settings = RunSettings::of_config(self.sim.config());
+        self.analysis.update(self.sim.config());
+        Ok(at)
     }
 
     /// Back to rest with the current settings.

@@ -11,6 +11,9 @@ use crate::control::config::{FrictionCompensation, InnerLoop, PreliminaryFeedbac
 use crate::error::{Error, ParseError};
 use crate::schema::{self, Param, Scope, Value};
 
+/// The preset the page opens with when its URL names none.
+pub const PAGE_START_PRESET: &str = "fig5.3";
+
 /// Hold time of the repeating slew at each end, s.
 pub const REPEAT_HOLD: f64 = 1.5;
 
@@ -63,6 +66,20 @@ impl RunSettings {
         c.inner_loop = self.inner;
         c.reference.repeat_hold = self.repeat.then_some(REPEAT_HOLD);
         c
+    }
+
+    /// The settings that make `config` (the inverse of [`RunSettings::config`]).
+    pub fn of_config(c: &SimulationConfig) -> Self {
+        Self {
+            delta: c.controller.sampling_period,
+            alpha: c.controller.alpha,
+            pf: c.preliminary_feedback,
+            friction: c.friction_compensation,
+            inner: c.inner_loop,
+            repeat: c.reference.repeat_hold.is_some(),
+            k: c.controller.horizon_steps,
+            eps_ratio: c.controller.eps_ratio,
+        }
     }
 
     /// The value of a run parameter (`alpha` reads α1).
@@ -127,7 +144,76 @@ impl CompareSettings {
     }
 }
 
-/// Everything the page's URL holds: run A, run B if compared, and the playback speed.
+/// What the page shows: the schema's view parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ViewSettings {
+    /// The full view (every control and figure) rather than the intro.
+    pub full: bool,
+    pub poles: bool,
+    /// The pole plot draws λ with the unit circle instead of s = ln λ / δ.
+    pub z_plane: bool,
+    pub rho: bool,
+    pub map: bool,
+    pub torque: bool,
+    /// log |e| with the predicted slope.
+    pub log: bool,
+}
+
+/// The view parameters, in the order the state string writes them.
+const VIEW_PARAMS: [&Param; 7] =
+    [&schema::MODE, &schema::POLES, &schema::PLANE, &schema::RHO, &schema::MAP, &schema::TORQUE, &schema::LOG];
+
+impl Default for ViewSettings {
+    fn default() -> Self {
+        let mut v = Self { full: false, poles: false, z_plane: false, rho: false, map: false, torque: false, log: false };
+        for p in VIEW_PARAMS {
+            v.set(p.key, p.default_value());
+        }
+        v
+    }
+}
+
+impl ViewSettings {
+    /// The value of a view parameter.
+    pub fn get(&self, key: &str) -> Option<Value> {
+        Some(match key {
+            "mode" => Value::Choice(if self.full { "full" } else { "intro" }),
+            "plane" => Value::Choice(if self.z_plane { "z" } else { "s" }),
+            "poles" => Value::Switch(self.poles),
+            "rho" => Value::Switch(self.rho),
+            "map" => Value::Switch(self.map),
+            "torque" => Value::Switch(self.torque),
+            "log" => Value::Switch(self.log),
+            _ => return None,
+        })
+    }
+
+    /// Sets a view parameter; false if `key` is not one.
+    fn set(&mut self, key: &str, v: Value) -> bool {
+        match (key, v) {
+            ("mode", Value::Choice(m)) => self.full = m == "full",
+            ("plane", Value::Choice(p)) => self.z_plane = p == "z",
+            ("poles", Value::Switch(b)) => self.poles = b,
+            ("rho", Value::Switch(b)) => self.rho = b,
+            ("map", Value::Switch(b)) => self.map = b,
+            ("torque", Value::Switch(b)) => self.torque = b,
+            ("log", Value::Switch(b)) => self.log = b,
+            _ => return false,
+        }
+        true
+    }
+
+    /// What is drawn: the intro shows the arm and the errors only, whatever the figures' switches say.
+    pub fn shown(&self) -> Self {
+        if self.full {
+            *self
+        } else {
+            Self { poles: false, rho: false, map: false, torque: false, ..*self }
+        }
+    }
+}
+
+/// Everything the page's URL holds: run A, run B if compared, the playback speed and the view.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
     pub a: RunSettings,
@@ -135,12 +221,18 @@ pub struct Settings {
     pub b: Option<CompareSettings>,
     /// Simulated seconds per wall-clock second.
     pub speed: f64,
+    pub view: ViewSettings,
 }
 
 impl Default for Settings {
     /// The schema's defaults (what the CLI starts from).
     fn default() -> Self {
-        Self { a: RunSettings::default(), b: None, speed: schema::SPEED.number().map_or(1.0, |n| n.default) }
+        Self {
+            a: RunSettings::default(),
+            b: None,
+            speed: schema::SPEED.number().map_or(1.0, |n| n.default),
+            view: ViewSettings::default(),
+        }
     }
 }
 
@@ -160,11 +252,13 @@ pub enum Source {
 }
 
 impl Settings {
-    /// What the page opens with when its URL names no settings: the paper's defaults with the
-    /// slew repeating, so there is always something moving.
+    /// What the page opens with when its URL names no settings: the paper's Fig. 5.3 — the
+    /// controller without preliminary feedback at δ = 0.01 s, the case the page is about — with
+    /// the slew repeating, so there is always something moving, in the intro view.
     pub fn page_start() -> Self {
         let mut s = Self::default();
         s.a.repeat = true;
+        s.apply_preset(preset(PAGE_START_PRESET).expect("the start preset exists")).expect("presets are valid");
         s
     }
 
@@ -176,7 +270,7 @@ impl Settings {
             "b_pf" => self.b.map(|b| Value::Choice(b.pf.name())),
             "b_delta" => self.b.map(|b| Value::Number(b.delta)),
             "b_alpha" => self.b.map(|b| Value::Number(b.alpha[0])),
-            _ => self.a.get(key),
+            _ => self.view.get(key).or_else(|| self.a.get(key)),
         }
     }
 
@@ -191,7 +285,7 @@ impl Settings {
             ("b_delta", Value::Number(x)) => self.b_mut().delta = x,
             ("b_alpha", Value::Number(x)) => self.b_mut().alpha = [x, x],
             _ => {
-                if !self.a.set(key, v) {
+                if !self.view.set(key, v) && !self.a.set(key, v) {
                     return Err(unknown(key));
                 }
             }
@@ -287,6 +381,14 @@ impl Settings {
             pairs.push(("b_pf", b.pf.name().into()));
             pairs.push(("b_delta", Value::Number(b.delta).text()));
             pairs.push(("b_alpha", Value::Number(b.alpha[0]).text()));
+        }
+        // The view's keys only where they differ from the defaults: links stay short.
+        let defaults = ViewSettings::default();
+        for p in VIEW_PARAMS {
+            let v = self.view.get(p.key).expect("view keys have values");
+            if defaults.get(p.key) != Some(v) {
+                pairs.push((p.key, v.text()));
+            }
         }
         join_query(&pairs)
     }
@@ -427,6 +529,15 @@ mod tests {
     fn defaults_are_the_papers_configuration() {
         assert_eq!(RunSettings::default().config(), SimulationConfig::default());
         assert_eq!(schema::K.number().unwrap().min as usize, crate::control::config::DAE_INDEX + 1);
+    }
+
+    #[test]
+    fn settings_and_configurations_convert_both_ways() {
+        let mut s = Settings::page_start();
+        s.read("delta=0.04&alpha1=1&alpha2=3&pf=lq&friction=held&inner=sampled&k=10&eps_ratio=6", Source::Page)
+            .unwrap();
+        assert_eq!(RunSettings::of_config(&s.a.config()), s.a);
+        assert_eq!(RunSettings::of_config(&Settings::default().a.config()), Settings::default().a);
     }
 
     #[test]

@@ -185,7 +185,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     let pair = |v: [f64; 2], unit: &str| format!("{}, {} {unit}", sci(v[0], 3), sci(v[1], 3));
     let readouts = Readouts {
         time: format!("{:.2} s", m.time),
-        error: pair(s.error, "rad"),
+        error: error_pair(s.error),
         max_slew: pair(m.max_error_slew, "rad"),
         max_after: pair(m.max_error_after, "rad"),
         torque: format!("{}, {} N m", sig(m.max_torque[0], 3), sig(m.max_torque[1], 3)),
@@ -210,6 +210,11 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         readouts,
         settings: describe(run),
     }
+}
+
+/// "1.23e−3, −4.56e−4 rad".
+pub(super) fn error_pair(e: [f64; 2]) -> String {
+    format!("{}, {} rad", sci(e[0], 3), sci(e[1], 3))
 }
 
 /// "no K_pr, δ = 0.01 s, α = 2 1/s".

@@ -85,6 +85,11 @@ impl Scene {
                 self.draw_predicted_slope(&frame, state, panel.kind, run);
             }
         }
+        if let Some(c) = self.cursor.filter(|c| *c >= window.start && *c <= window.end) {
+            let x = frame.x(c);
+            let r = frame.rect;
+            self.painter.line([x, r.y], [x, r.y + r.h], 2.0 * dpr, palette::CURSOR);
+        }
         draw_frame(&mut self.painter, &frame, dpr);
     }
 

@@ -353,6 +353,15 @@ impl Scene {
         self.probe_pole(x, y, reach).or_else(|| self.probe_map(x, y)).or_else(|| self.probe_rho(x, y))
     }
 
+    /// The simulated time under (x, y) (CSS pixels) on a time plot, within its window; None
+    /// elsewhere. Dragging there looks back at that instant.
+    pub fn time_at(&self, x: f64, y: f64) -> Option<f64> {
+        let panel = self.layout.panels.iter().find(|p| p.kind.is_time_plot() && contains(p, x, y))?;
+        let w = self.window();
+        let f = ((x - panel.rect.x) / panel.rect.w).clamp(0.0, 1.0);
+        Some(w.start + f * w.width())
+    }
+
     /// The δ under (x, y) on ρ(δ), with ρ there.
     fn probe_rho(&self, x: f64, y: f64) -> Option<Probe> {
         let panel = self.layout.panel(PanelKind::RhoCurve)?;

@@ -31,7 +31,7 @@ use crate::control::config::SimulationConfig;
 use crate::control::{ClosedLoop, Snapshot, Traces};
 use crate::model::reference::Reference;
 use crate::plot::{palette, Color};
-use crate::session::{MapSide, Run, Session};
+use crate::session::{MapSide, Run, Session, ViewSettings};
 
 pub use super::options::{OptionsUpdate, ViewOptions, MAX_SPRING_MAGNIFICATION, MAX_TIME_WINDOW};
 pub use info::{PanelInfo, Probe, SeriesInfo, TickLabel, TipLine};
@@ -106,6 +106,8 @@ pub struct Scene {
     scale_torque: Autoscale,
     /// Simulated time of the latest frame, s (the later of the two runs').
     time: f64,
+    /// The instant looked back at (a vertical line in the time plots), or None.
+    cursor: Option<f64>,
     /// Run A's and B's configuration and analysis as of the latest frame.
     runs: [RunMemory; 2],
     /// The maps without ([`MapSide::Off`]) and with ([`MapSide::On`]) preliminary feedback.
@@ -133,6 +135,7 @@ impl Scene {
             scale_e2: Autoscale::new(AutoscaleSettings::ERROR),
             scale_torque: Autoscale::new(AutoscaleSettings::TORQUE),
             time: 0.0,
+            cursor: None,
             runs: Default::default(),
             maps: Default::default(),
             map_sources: [None; 2],
@@ -162,6 +165,25 @@ impl Scene {
         self.options.apply(update)?;
         self.relayout(self.layout.css_width, self.layout.css_height, self.layout.device_pixel_ratio);
         Ok(())
+    }
+
+    /// Shows what the session's view settings say (the intro: the arm and the errors only),
+    /// re-laying out only when that changes.
+    pub fn follow_view(&mut self, view: &ViewSettings) {
+        let v = view.shown();
+        let next = ViewOptions {
+            show_poles: v.poles,
+            z_plane: v.z_plane,
+            show_rho: v.rho,
+            show_map: v.map,
+            show_torque: v.torque,
+            log_errors: v.log,
+            ..self.options
+        };
+        if next != self.options {
+            self.options = next;
+            self.relayout(self.layout.css_width, self.layout.css_height, self.layout.device_pixel_ratio);
+        }
     }
 
     /// Lays the panels out for a new canvas size.
@@ -196,6 +218,7 @@ impl Scene {
                     series,
                     x_ticks + y_ticks + LOG_DECADES as usize + 4,
                 ) + runs * DASHED_LINE_BUDGET
+                    + 6 // the cursor
             }
             PanelKind::Poles => {
                 let (x_ticks, y_ticks) = pole_tick_counts(panel.rect);
@@ -347,15 +370,18 @@ impl Scene {
     /// Builds the frame for a session: run A, and run B beside it when comparing, with their
     /// analyses, and the session's maps (copied only when they have new rows).
     pub fn draw_session(&mut self, session: &Session) -> &[Vertex] {
+        self.follow_view(&session.settings().view);
         self.sync_maps(session);
         let a = session.run(0).expect("a session always has run A");
-        let (sa, ra) = (a.closed_loop().snapshot(), Reference::new(a.closed_loop().config().reference));
+        self.cursor = session.viewing();
+        let sa = session.shown_snapshot(0).unwrap_or_else(|| a.closed_loop().snapshot());
+        let ra = Reference::new(a.closed_loop().config().reference);
         let mut run_a = run_state(a, &sa, Some(&ra));
         run_a.windows = session.cached_windows();
         run_a.ghost = session.ghost().map(|g| &g.traces);
         match session.run(1) {
             Some(b) => {
-                let sb = b.closed_loop().snapshot();
+                let sb = session.shown_snapshot(1).unwrap_or_else(|| b.closed_loop().snapshot());
                 self.draw_runs(run_a, Some(run_state(b, &sb, None)));
             }
             None => {
@@ -377,6 +403,7 @@ impl Scene {
         analysis: Option<&StabilityReport>,
         b: Option<(&ClosedLoop, Option<&StabilityReport>)>,
     ) -> &[Vertex] {
+        self.cursor = None;
         let reference = Reference::new(a.config().reference);
         let snap_a = a.snapshot();
         let run_a = RunState {
@@ -493,8 +520,19 @@ impl Scene {
         }
     }
 
+    /// The time plots' window: the newest W seconds, or, when looking back, W seconds around
+    /// the instant looked at (within what was run).
     fn window(&self) -> TimeWindow {
-        TimeWindow::ending_at(self.time, self.options.time_window)
+        let width = self.options.time_window;
+        match self.cursor {
+            Some(c) if c.is_finite() => TimeWindow::ending_at(self.time.min((c + 0.5 * width).max(width)), width),
+            _ => TimeWindow::ending_at(self.time, width),
+        }
+    }
+
+    /// The instant looked back at, if any.
+    pub fn cursor(&self) -> Option<f64> {
+        self.cursor
     }
 
     /// How many runs the frame shows.

@@ -1,0 +1,101 @@
+//! What the page shows, as parameters like any other: the same key in the URL, the state string
+//! and a lesson step, so a link or a step of the lesson sets the figures as well as the physics.
+//! Page-only ([`Scope::Page`]): the command line ignores them.
+
+use super::{Choice, Kind, Param, Scope};
+
+/// The intro (a first screen for beginners) or the full view.
+pub const MODE: Param = Param {
+    key: "mode",
+    label: "View",
+    symbol: "",
+    unit: "",
+    name: "mode",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "intro", label: "Intro: the arm, δ and the feedback" },
+            Choice { value: "full", label: "Full: every control and figure" },
+        ],
+        default: "intro",
+    },
+    scope: Scope::Page,
+    help: "The intro shows the arm, its errors, δ and the preliminary feedback; the full view every control and figure.",
+};
+
+/// The pole plot.
+pub const POLES: Param = Param {
+    key: "poles",
+    label: "Show the pole plot (hover or tap a pole)",
+    symbol: "",
+    unit: "",
+    name: "poles",
+    kind: Kind::Switch { default: true },
+    scope: Scope::Page,
+    help: "The eigenvalues of the sampled loop, with the δ → 0 pair A4.",
+};
+
+/// Which plane the pole plot draws.
+pub const PLANE: Param = Param {
+    key: "plane",
+    label: "Pole plot shows",
+    symbol: "",
+    unit: "",
+    name: "plane",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "s", label: "s = ln λ / δ (s-plane: stable left of the axis)" },
+            Choice { value: "z", label: "λ (z-plane: stable inside the unit circle)" },
+        ],
+        default: "s",
+    },
+    scope: Scope::Page,
+    help: "s = ln λ / δ against the imaginary axis, or the eigenvalues λ of one period against the unit circle.",
+};
+
+/// ρ(δ) at the current α.
+pub const RHO: Param = Param {
+    key: "rho",
+    label: "Show ρ(δ) at this α, with the stable windows (click to pick δ)",
+    symbol: "",
+    unit: "",
+    name: "rho",
+    kind: Kind::Switch { default: true },
+    scope: Scope::Page,
+    help: "The spectral radius along δ, shaded where it is below 1.",
+};
+
+/// The two stability maps.
+pub const MAP: Param = Param {
+    key: "map",
+    label: "Show the stability maps ρ(δ, α) (click to run there)",
+    symbol: "",
+    unit: "",
+    name: "map",
+    kind: Kind::Switch { default: true },
+    scope: Scope::Page,
+    help: "ρ over δ and α without and with preliminary feedback (computed in the background).",
+};
+
+/// The torque panel.
+pub const TORQUE: Param = Param {
+    key: "torque",
+    label: "Show the torques T1, T2 (N m)",
+    symbol: "",
+    unit: "",
+    name: "torque",
+    kind: Kind::Switch { default: false },
+    scope: Scope::Page,
+    help: "The applied torques under the error plots.",
+};
+
+/// log |e| instead of e.
+pub const LOG: Param = Param {
+    key: "log",
+    label: "Errors on a log scale, with the slope ln ρ/δ the analysis predicts",
+    symbol: "",
+    unit: "",
+    name: "log",
+    kind: Kind::Switch { default: false },
+    scope: Scope::Page,
+    help: "log |e|: an exponential is a straight line, of slope ln ρ/δ.",
+};
