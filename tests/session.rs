@@ -228,7 +228,7 @@ fn fig_5_3_is_called_unstable_from_the_first_frame_and_the_simulation_confirms_i
     assert!(s.settings().a.repeat, "the page's repeating slew");
     let first = s.status().runs[0].clone();
     assert_eq!((first.verdict, first.headline), ("unstable", "Unstable"));
-    assert!(first.detail.starts_with("ρ = 1.024 > 1 — the error grows ×e every 0.42 s"), "{}", first.detail);
+    assert!(first.detail.starts_with("ρ = 1.0239 > 1 — the error grows ×e every 0.42 s"), "{}", first.detail);
     let mut confirmed_at = None;
     while s.run(0).unwrap().closed_loop().time() < 6.0 && !s.run(0).unwrap().closed_loop().is_finished() {
         s.advance(0.05).unwrap();

@@ -240,6 +240,11 @@ impl ClosedLoop {
     /// Validates `config` and schedules it for the next sampling instant.
     pub fn set_config(&mut self, config: SimulationConfig) -> Result<(), Error> {
         let derived = Derived::new(&config)?;
+        if config != self.config {
+            // The statistics belong to the new settings from now on: a growth rate measured under
+            // the old ones must not stand beside the new prediction, even for one period.
+            self.stats.restart(self.time);
+        }
         self.pending = Some((config, derived));
         Ok(())
     }

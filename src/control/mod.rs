@@ -16,7 +16,7 @@ pub mod predictive;
 pub mod traces;
 
 pub use closed_loop::{simulate, ClosedLoop, RunReport};
-pub use history::{History, LoopState};
 pub use config::{ControllerParameters, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
+pub use history::{History, LoopState};
 pub use metrics::{DivergenceReason, Metrics, Verdict};
 pub use traces::{Column, Snapshot, Traces};

@@ -19,7 +19,8 @@ pub const MODE: Param = Param {
         default: "intro",
     },
     scope: Scope::Page,
-    help: "The intro shows the arm, its errors, δ and the preliminary feedback; the full view every control and figure.",
+    help:
+        "The intro shows the arm, its errors, δ and the preliminary feedback; the full view every control and figure.",
 };
 
 /// The pole plot.

@@ -6,6 +6,7 @@
 //! Architecture invariant: no web types; every decision about which change restarts a run, which
 //! settings change ρ or which map is needed is made here, not in the page.
 
+pub mod lesson;
 pub mod maps;
 pub mod presets;
 pub mod run;
@@ -21,6 +22,7 @@ use crate::control::config::PreliminaryFeedbackChoice as Pf;
 use crate::error::{Error, ParseError};
 use crate::schema::{self, Kind, Scope, Value};
 
+pub use lesson::{LessonProgress, LessonStatus, QuestionStatus};
 pub use maps::{MapSide, Maps};
 pub use presets::{preset, Preset, PRESETS};
 pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS, HISTORY_SECONDS};
@@ -51,6 +53,8 @@ pub struct Status {
     pub ghost: String,
     /// The instant shown and the span that can be looked back at.
     pub timeline: TimelineStatus,
+    /// The lesson's step, while the lesson is open.
+    pub lesson: Option<LessonStatus>,
 }
 
 /// The stable windows of δ for run A's settings, as the page shows them.
@@ -93,6 +97,8 @@ pub struct Session {
     trace_seconds: f64,
     /// The kept instant looked at (None: the newest state).
     viewing: Option<f64>,
+    /// The guided lesson, once opened.
+    lesson: Option<LessonProgress>,
 }
 
 impl Session {
@@ -110,6 +116,7 @@ impl Session {
             note: String::new(),
             trace_seconds: DEFAULT_TRACE_SECONDS,
             viewing: None,
+            lesson: None,
         };
         session.maps.show(&session.linear_settings());
         session.maps.enabled = settings.view.shown().map;
@@ -121,13 +128,18 @@ impl Session {
     pub fn open(query: &str) -> (Self, Vec<Notice>) {
         let mut settings = Settings::page_start();
         let mut notices = settings.read(query, Source::Page).unwrap_or_default();
-        match Self::new(settings) {
-            Ok(s) => (s, notices),
+        let mut session = match Self::new(settings) {
+            Ok(s) => s,
             Err(e) => {
                 notices.push(Notice { key: "state".into(), text: format!("{e}; using the defaults") });
-                (Self::new(Settings::page_start()).expect("the page's start settings are valid"), notices)
+                Self::new(Settings::page_start()).expect("the page's start settings are valid")
             }
+        };
+        // `lesson=3` opens the lesson at that step, with the URL's settings over the step's.
+        if let Err(e) = session.open_lesson_from(query) {
+            notices.push(Notice { key: "lesson".into(), text: e.to_string() });
         }
+        (session, notices)
     }
 
     pub fn settings(&self) -> &Settings {
@@ -421,10 +433,15 @@ impl Session {
     /// milliseconds; call it a few times a second, not per slider event).
     pub fn refresh(&mut self) {
         let _ = self.windows();
+        self.check_lesson_goal();
     }
 
-    /// The stable windows as last computed for the current settings (None if stale or failed).
+    /// The stable windows as last computed for the current settings (None if stale or failed,
+    /// or while a lesson step hides them until its answer).
     pub fn cached_windows(&self) -> Option<&StableWindows> {
+        if self.lesson_hides_windows() {
+            return None;
+        }
         let key = self.linear_settings().at(0.0, self.settings.a.alpha);
         match (&self.windows.key, &self.windows.result) {
             (Some(k), Some(Ok(w))) if *k == key => Some(w),
@@ -482,6 +499,7 @@ impl Session {
                 .as_ref()
                 .map_or(String::new(), |g| format!("faint grey: the previous run ({})", g.settings)),
             timeline: self.timeline(),
+            lesson: self.lesson_status(),
         }
     }
 
@@ -489,7 +507,10 @@ impl Session {
 
     /// The state string (the page's URL query).
     pub fn state_string(&self) -> String {
-        self.settings.to_query()
+        match self.lesson_query() {
+            Some(lesson) => format!("{}&{lesson}", self.settings.to_query()),
+            None => self.settings.to_query(),
+        }
     }
 
     /// `flexarm simulate …` reproducing run A up to its current time.

@@ -165,7 +165,8 @@ const VIEW_PARAMS: [&Param; 7] =
 
 impl Default for ViewSettings {
     fn default() -> Self {
-        let mut v = Self { full: false, poles: false, z_plane: false, rho: false, map: false, torque: false, log: false };
+        let mut v =
+            Self { full: false, poles: false, z_plane: false, rho: false, map: false, torque: false, log: false };
         for p in VIEW_PARAMS {
             v.set(p.key, p.default_value());
         }
@@ -243,12 +244,15 @@ pub struct Notice {
     pub text: String,
 }
 
-/// Where a state string comes from: the page checks numbers against its controls' spans, the
-/// command line against the hard limits.
+/// Where a state string comes from: the page checks numbers against its controls' spans and skips
+/// bad values with a notice; the command line checks the hard limits, refuses bad values and
+/// ignores the page's own keys; a lesson step is checked like the page and refused like the
+/// command line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Source {
     Page,
     CommandLine,
+    Lesson,
 }
 
 impl Settings {
@@ -301,7 +305,7 @@ impl Settings {
     /// Reads `key=text` as the schema says and sets it.
     pub fn set_text(&mut self, key: &str, text: &str, source: Source) -> Result<(), Error> {
         let p = schema::param(key).ok_or_else(|| unknown(key))?;
-        let v = p.parse(text, source == Source::Page)?;
+        let v = p.parse(text, source != Source::CommandLine)?;
         self.set(key, v)
     }
 
@@ -314,7 +318,7 @@ impl Settings {
         let mut notices = Vec::new();
         let mut fail = |key: &str, e: Error| -> Result<(), Error> {
             match source {
-                Source::CommandLine => Err(e),
+                Source::CommandLine | Source::Lesson => Err(e),
                 Source::Page => {
                     notices.push(Notice { key: key.to_string(), text: e.to_string() });
                     Ok(())
@@ -329,7 +333,8 @@ impl Settings {
         }
         let compare = pairs.iter().rev().find(|(k, _)| k == "compare").map(|(_, v)| v.as_str());
         for (key, _) in &pairs {
-            if key != "preset" && schema::param(key).is_none() {
+            // `lesson` is the session's (which step of the lesson is open), not a setting.
+            if key != "preset" && key != "lesson" && schema::param(key).is_none() {
                 fail(key, unknown(key))?;
             }
         }

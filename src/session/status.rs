@@ -57,7 +57,7 @@ pub struct RunStatus {
     pub verdict: &'static str,
     /// The verdict as the headline says it: "Unstable", "Stable", "Borderline", "Diverged".
     pub headline: &'static str,
-    /// The prediction in a sentence: "ρ = 1.024 > 1 — the error grows ×e every 0.42 s".
+    /// The prediction in a sentence: "ρ = 1.0239 > 1 — the error grows ×e every 0.42 s".
     pub detail: String,
     /// What the simulation has observed, and whether it agrees.
     pub observed: String,
@@ -86,10 +86,11 @@ fn e_folding(rate: f64) -> String {
 fn prediction_text(rho: f64, rate: f64) -> (Prediction, String) {
     let p = Prediction::of_rate(rate);
     let text = match p {
-        Prediction::Unstable => format!("ρ = {} > 1 — the error grows {}", sig_trim(rho, 4), e_folding(rate)),
-        Prediction::Stable => format!("ρ = {} < 1 — the errors shrink {}", sig_trim(rho, 4), e_folding(rate)),
+        // ρ with four decimals, as the analysis line prints it (five where it is nearly 1).
+        Prediction::Unstable => format!("ρ = {rho:.4} > 1 — the error grows {}", e_folding(rate)),
+        Prediction::Stable => format!("ρ = {rho:.4} < 1 — the errors shrink {}", e_folding(rate)),
         Prediction::Borderline => {
-            format!("ρ = {} ≈ 1 — the errors change too slowly to see ({})", sig_trim(rho, 5), e_folding(rate))
+            format!("ρ = {rho:.5} ≈ 1 — the errors change too slowly to see ({})", e_folding(rate))
         }
     };
     (p, text)
@@ -131,8 +132,13 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         let predicted = minus(&format!("{predicted:.2}"));
         match (close, p) {
             (true, _) => format!("{rate} — matches ln ρ/δ = {predicted} 1/s"),
-            (false, Prediction::Unstable) => format!("{rate} — it grows, as ln ρ/δ = {predicted} 1/s predicts"),
-            (false, Prediction::Stable) => format!("{rate} — it decays, as ln ρ/δ = {predicted} 1/s predicts"),
+            // The sign agrees but not the rate: say so, and why that can be.
+            (false, Prediction::Unstable) => format!(
+                "{rate} — it grows, as ρ > 1 predicts; ln ρ/δ = {predicted} 1/s is the rate once the growing mode dominates"
+            ),
+            (false, Prediction::Stable) => format!(
+                "{rate} — it decays, as ρ < 1 predicts; ln ρ/δ = {predicted} 1/s is the slowest mode's rate, which takes over later"
+            ),
             (false, Prediction::Borderline) => format!("{rate} — about flat, as ln ρ/δ = {predicted} 1/s predicts"),
         }
     } else {
@@ -214,7 +220,9 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
 
 /// "1.23e−3, −4.56e−4 rad".
 pub(super) fn error_pair(e: [f64; 2]) -> String {
-    format!("{}, {} rad", sci(e[0], 3), sci(e[1], 3))
+    // Exponents where errors are small (comparable at a glance), plain numbers near a radian.
+    let f = |v: f64| if v.abs() >= 0.1 { sig(v, 3) } else { sci(v, 3) };
+    format!("{}, {} rad", f(e[0]), f(e[1]))
 }
 
 /// "no K_pr, δ = 0.01 s, α = 2 1/s".

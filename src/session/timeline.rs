@@ -57,7 +57,8 @@ impl Session {
     /// While looking back, one sampling period forward; true if it moved the cursor (false: live).
     pub(super) fn step_forward_in_history(&mut self) -> bool {
         let Some(t) = self.viewing else { return false };
-        self.viewing = self.a.closed_loop().history().after(t).filter(|&next| next < self.a.closed_loop().time() - 1e-9);
+        self.viewing =
+            self.a.closed_loop().history().after(t).filter(|&next| next < self.a.closed_loop().time() - 1e-9);
         true
     }
 

@@ -139,6 +139,13 @@ impl Renderer {
         to_js(&report)
     }
 
+    /// The simulated time under (x, y) (CSS pixels) on an error or torque plot, or undefined:
+    /// dragging there looks back at that instant.
+    #[wasm_bindgen(js_name = timeAt)]
+    pub fn time_at(&self, x: f64, y: f64) -> Option<f64> {
+        self.scene.time_at(x, y)
+    }
+
     /// What lies at (x, y) in CSS pixels of the canvas: the nearest pole within `reach` pixels, or
     /// the point of a map: `{kind: "pole"|"map", title, lines: [{text, tone}], x, y, map, delta,
     /// alpha}`, or null.

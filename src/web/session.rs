@@ -207,11 +207,73 @@ impl WebSession {
     /// `{runs: [{run, verdict, headline, detail, observed, measured, finished, rho,
     /// spectral_radius, growth_rate, announce, readouts: {time, error, max_slew, max_after, torque,
     /// growth, a4}, settings}], note, preset, maps: {percent, done, text, points},
-    /// windows: {text, windows, bands} | null, ghost}`. Brings the stable windows up to date first
-    /// (a few ms after a change of α or the feedback), so call it a few times a second.
+    /// windows: {text, windows, bands} | null, ghost, timeline: {live, time, start, end, text},
+    /// lesson: {lesson_title, steps, index, title, text, terms, task, done, question: {prompt,
+    /// choices, chosen, correct} | null, answer, can_back, can_next} | null}`. Brings the stable
+    /// windows and the lesson's goal up to date first (a few ms after a change of α or the
+    /// feedback), so call it a few times a second.
     pub fn status(&mut self) -> Result<JsValue, JsError> {
         self.inner.refresh();
         to_js(&self.inner.status())
+    }
+
+    // ------------------------------------------------------------------------ the timeline
+
+    /// Looks at the kept sampling instant at or before `t` (s); at or past the newest state,
+    /// shows that again. Advancing then replays the kept past; a change continues from there.
+    #[wasm_bindgen(js_name = viewAt)]
+    pub fn view_at(&mut self, t: f64) {
+        self.inner.view_at(t);
+    }
+
+    /// One sampling period back in the kept past.
+    #[wasm_bindgen(js_name = stepBack)]
+    pub fn step_back(&mut self) {
+        self.inner.step_back();
+    }
+
+    /// Continues from the instant looked at (what followed becomes the ghost).
+    #[wasm_bindgen(js_name = continueFromHere)]
+    pub fn continue_from_here(&mut self) -> Result<(), JsError> {
+        self.inner.continue_from_here().map_err(js_error)
+    }
+
+    // -------------------------------------------------------------------------- the lesson
+
+    /// Opens the guided lesson at `step` (0-based).
+    #[wasm_bindgen(js_name = lessonOpen)]
+    pub fn lesson_open(&mut self, step: usize) -> Result<(), JsError> {
+        self.inner.lesson_open(step).map_err(js_error)
+    }
+
+    /// The next step of the lesson.
+    #[wasm_bindgen(js_name = lessonNext)]
+    pub fn lesson_next(&mut self) -> Result<(), JsError> {
+        self.inner.lesson_next().map_err(js_error)
+    }
+
+    /// The previous step, as it was left.
+    #[wasm_bindgen(js_name = lessonBack)]
+    pub fn lesson_back(&mut self) -> Result<(), JsError> {
+        self.inner.lesson_back().map_err(js_error)
+    }
+
+    /// Answers the step's question (0-based choice).
+    #[wasm_bindgen(js_name = lessonAnswer)]
+    pub fn lesson_answer(&mut self, choice: usize) -> Result<(), JsError> {
+        self.inner.lesson_answer(choice).map_err(js_error)
+    }
+
+    /// Shows the step's result without doing the task.
+    #[wasm_bindgen(js_name = lessonReveal)]
+    pub fn lesson_reveal(&mut self) -> Result<(), JsError> {
+        self.inner.lesson_reveal().map_err(js_error)
+    }
+
+    /// Closes the lesson; the settings stay.
+    #[wasm_bindgen(js_name = lessonLeave)]
+    pub fn lesson_leave(&mut self) {
+        self.inner.lesson_leave();
     }
 
     /// Runs A at a sampling period picked on ρ(δ).
@@ -284,12 +346,6 @@ impl WebSession {
     #[wasm_bindgen(js_name = mapsPending)]
     pub fn maps_pending(&self) -> bool {
         self.inner.maps().pending()
-    }
-
-    /// Pauses (false) or resumes (true) the maps' work.
-    #[wasm_bindgen(js_name = setMapsEnabled)]
-    pub fn set_maps_enabled(&mut self, enabled: bool) {
-        self.inner.maps_mut().enabled = enabled;
     }
 
     /// `[{pf, ms, compute_ms}]`: how long each finished map took.

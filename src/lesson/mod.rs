@@ -1,0 +1,314 @@
+//! The guided lesson: its steps, texts, questions and goals are data, written for teachers in
+//! `lesson.md` (a small Markdown format that file explains), read here into [`Lesson`]. What a
+//! step does to the simulator is a state string, the same text as the page's URL; the session
+//! ([`crate::session`]) walks the steps.
+//!
+//! Architecture invariant: this module knows the format, not the session; whether a step's state
+//! string is valid is checked by the session's tests.
+
+use serde::Serialize;
+
+use crate::error::Error;
+
+/// The lesson as the page ships it.
+pub const LESSON_TEXT: &str = include_str!("lesson.md");
+
+/// A lesson: a title and its steps.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Lesson {
+    pub title: String,
+    pub steps: Vec<Step>,
+}
+
+/// One step: what it sets up, says, asks and expects.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Step {
+    pub title: String,
+    /// The settings the step starts from, as a state string (over the page's defaults).
+    pub state: String,
+    /// Settings applied once the question is answered (the prediction, then the result).
+    pub then: Option<String>,
+    /// What the student should do.
+    pub task: Option<String>,
+    /// When the task is done.
+    pub goal: Option<Goal>,
+    /// The stable windows of δ stay hidden until the question is answered or the goal is met.
+    pub hide_windows: bool,
+    /// Paragraphs.
+    pub text: Vec<String>,
+    pub terms: Vec<Term>,
+    pub question: Option<Question>,
+    /// Paragraphs shown once the student has answered or met the goal.
+    pub answer: Vec<String>,
+}
+
+/// A term and its definition, shown beside the text that uses it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Term {
+    pub term: String,
+    pub definition: String,
+}
+
+/// A question with one right choice.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Question {
+    pub prompt: String,
+    pub choices: Vec<String>,
+    /// The index of the right choice.
+    pub correct: usize,
+}
+
+/// When a task is done: every condition holds.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Goal {
+    /// Run A's verdict: "stable", "unstable", "borderline" or "diverged".
+    pub verdict: Option<String>,
+    /// Run A has run at least this long, s.
+    pub time: Option<f64>,
+    /// Settings that must hold, as (key, value) in state-string form.
+    pub settings: Vec<(String, String)>,
+}
+
+/// The verdicts a goal may ask for.
+pub const GOAL_VERDICTS: [&str; 4] = ["stable", "unstable", "borderline", "diverged"];
+
+/// The built-in lesson ([`LESSON_TEXT`]).
+pub fn builtin() -> Result<Lesson, Error> {
+    parse(LESSON_TEXT)
+}
+
+fn error(line: usize, message: impl Into<String>) -> Error {
+    Error::Lesson { line, message: message.into() }
+}
+
+/// What the last lines were building, so that the next line can continue it.
+#[derive(Clone, Copy, PartialEq)]
+enum Open {
+    Nothing,
+    Text,
+    Answer,
+    Question,
+}
+
+/// Reads a lesson in the format `lesson.md` describes.
+pub fn parse(text: &str) -> Result<Lesson, Error> {
+    let mut title = String::new();
+    let mut steps: Vec<Step> = Vec::new();
+    let mut open = Open::Nothing;
+    let mut in_comment = false;
+    for (i, raw) in text.lines().enumerate() {
+        let n = i + 1;
+        let line = raw.trim();
+        if in_comment {
+            in_comment = !line.contains("-->");
+            continue;
+        }
+        if line.starts_with("<!--") {
+            in_comment = !line.contains("-->");
+            continue;
+        }
+        if line.is_empty() {
+            if open != Open::Question {
+                open = Open::Nothing;
+            }
+            continue;
+        }
+        if let Some(t) = line.strip_prefix("## ") {
+            steps.push(Step { title: t.trim().to_string(), ..Step::default() });
+            open = Open::Nothing;
+            continue;
+        }
+        if let Some(t) = line.strip_prefix("# ") {
+            if !steps.is_empty() || !title.is_empty() {
+                return Err(error(n, "only one '# title', before the first step"));
+            }
+            title = t.trim().to_string();
+            continue;
+        }
+        let Some(step) = steps.last_mut() else {
+            return Err(error(n, "text before the first step ('## title')"));
+        };
+        if let Some((key, value)) = setting_line(line) {
+            let value = value.trim().to_string();
+            match key {
+                "state" => step.state = value,
+                "then" => step.then = Some(value),
+                "task" => step.task = Some(value),
+                "goal" => step.goal = Some(parse_goal(&value).map_err(|m| error(n, m))?),
+                "hide" if value == "windows" => step.hide_windows = true,
+                "hide" => return Err(error(n, format!("'hide: {value}': only 'hide: windows' is known"))),
+                "term" => {
+                    let (term, definition) =
+                        value.split_once(" — ").ok_or_else(|| error(n, "a term reads 'term: symbol — definition'"))?;
+                    step.terms.push(Term { term: term.trim().into(), definition: definition.trim().into() });
+                }
+                _ => unreachable!("setting_line knows its keys"),
+            }
+            open = Open::Nothing;
+            continue;
+        }
+        if let Some(prompt) = line.strip_prefix("? ") {
+            if step.question.is_some() {
+                return Err(error(n, "one question per step"));
+            }
+            step.question = Some(Question { prompt: prompt.trim().into(), choices: Vec::new(), correct: usize::MAX });
+            open = Open::Question;
+            continue;
+        }
+        if let Some((right, choice)) =
+            line.strip_prefix("+ ").map(|c| (true, c)).or(line.strip_prefix("- ").map(|c| (false, c)))
+        {
+            let Some(q) = step.question.as_mut().filter(|_| open == Open::Question) else {
+                return Err(error(n, "a choice ('- ' or '+ ') belongs right under its question ('? ')"));
+            };
+            if right {
+                if q.correct != usize::MAX {
+                    return Err(error(n, "a second right choice: mark exactly one with '+ '"));
+                }
+                q.correct = q.choices.len();
+            }
+            q.choices.push(choice.trim().into());
+            continue;
+        }
+        if let Some(answer) = line.strip_prefix("= ") {
+            step.answer.push(answer.trim().into());
+            open = Open::Answer;
+            continue;
+        }
+        // A paragraph, or the continuation of the one above.
+        match open {
+            Open::Text => append(step.text.last_mut(), line),
+            Open::Answer => append(step.answer.last_mut(), line),
+            Open::Question => return Err(error(n, "after a question come its choices ('- ', '+ ') and a blank line")),
+            Open::Nothing => {
+                step.text.push(line.to_string());
+                open = Open::Text;
+            }
+        }
+    }
+    if in_comment {
+        return Err(error(text.lines().count(), "an unclosed comment ('<!--' without '-->')"));
+    }
+    check(&title, &steps)?;
+    Ok(Lesson { title, steps })
+}
+
+/// `key: value` for the keys a step knows.
+fn setting_line(line: &str) -> Option<(&'static str, &str)> {
+    const KEYS: [&str; 6] = ["state", "then", "task", "goal", "hide", "term"];
+    let (key, value) = line.split_once(':')?;
+    KEYS.iter().find(|k| **k == key.trim()).map(|k| (*k, value))
+}
+
+fn append(paragraph: Option<&mut String>, line: &str) {
+    if let Some(p) = paragraph {
+        p.push(' ');
+        p.push_str(line);
+    }
+}
+
+/// `verdict=stable&pf=off&time=3.5`.
+fn parse_goal(text: &str) -> Result<Goal, String> {
+    let mut goal = Goal::default();
+    for part in text.split('&').map(str::trim).filter(|p| !p.is_empty()) {
+        let (key, value) = part.split_once('=').ok_or_else(|| format!("goal condition '{part}' is not key=value"))?;
+        match key {
+            "verdict" if GOAL_VERDICTS.contains(&value) => goal.verdict = Some(value.into()),
+            "verdict" => return Err(format!("goal verdict '{value}': one of {}", GOAL_VERDICTS.join(", "))),
+            "time" => {
+                let t: f64 = value
+                    .parse()
+                    .ok()
+                    .filter(|t: &f64| t.is_finite() && *t >= 0.0)
+                    .ok_or_else(|| format!("goal time '{value}': a number of seconds ≥ 0"))?;
+                goal.time = Some(t);
+            }
+            _ => goal.settings.push((key.into(), value.into())),
+        }
+    }
+    if goal == Goal::default() {
+        return Err("a goal needs at least one condition".into());
+    }
+    Ok(goal)
+}
+
+/// What every lesson must have.
+fn check(title: &str, steps: &[Step]) -> Result<(), Error> {
+    if title.is_empty() {
+        return Err(error(1, "the lesson starts with '# title'"));
+    }
+    if steps.is_empty() {
+        return Err(error(1, "no steps ('## title')"));
+    }
+    for (i, s) in steps.iter().enumerate() {
+        let at = |m: &str| error(0, format!("step {} ('{}'): {m}", i + 1, s.title));
+        if s.state.is_empty() {
+            return Err(at("no 'state:' line"));
+        }
+        if s.text.is_empty() {
+            return Err(at("no text"));
+        }
+        if let Some(q) = &s.question {
+            if q.choices.len() < 2 {
+                return Err(at("a question needs at least two choices"));
+            }
+            if q.correct == usize::MAX {
+                return Err(at("no right choice: mark it with '+ '"));
+            }
+            if s.answer.is_empty() {
+                return Err(at("a question needs its answer ('= ')"));
+            }
+        } else if s.then.is_some() {
+            return Err(at("'then:' applies after a question, and there is none"));
+        }
+        if s.task.is_some() != s.goal.is_some() {
+            return Err(at("'task:' and 'goal:' go together"));
+        }
+        if s.hide_windows && s.question.is_none() && s.goal.is_none() {
+            return Err(at("'hide: windows' needs a question or a goal to reveal them"));
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_builtin_lesson_reads() {
+        let l = builtin().unwrap();
+        assert!(l.steps.len() >= 6);
+        assert!(l.title.contains("flexible arm"));
+    }
+
+    #[test]
+    fn the_format_is_read_and_mistakes_name_their_line() {
+        let text = "# T\n\n## One\nstate: preset=fig5.1\n\nSome text\ngoes on.\n\nterm: δ — the period.\n\n? Which?\n- a\n+ b\n\n= Because\nof this.\nthen: delta=0.02\n";
+        let l = parse(text).unwrap();
+        let s = &l.steps[0];
+        assert_eq!(s.text, ["Some text goes on."]);
+        assert_eq!(s.answer, ["Because of this."]);
+        assert_eq!(s.terms[0], Term { term: "δ".into(), definition: "the period.".into() });
+        let q = s.question.as_ref().unwrap();
+        assert_eq!((q.choices.len(), q.correct), (2, 1));
+        assert_eq!(s.then.as_deref(), Some("delta=0.02"));
+
+        let bad = |t: &str| parse(t).unwrap_err().to_string();
+        assert_eq!(
+            bad("# T\n## S\nstate: x\ntext\n? Q\n- a\n- b\n= A\n"),
+            "lesson: step 1 ('S'): no right choice: mark it with '+ '"
+        );
+        assert_eq!(
+            bad("# T\n## S\nstate: x\n- a\n"),
+            "lesson, line 4: a choice ('- ' or '+ ') belongs right under its question ('? ')"
+        );
+        assert_eq!(
+            bad("# T\n## S\nstate: x\ngoal: verdict=fine\n"),
+            "lesson, line 4: goal verdict 'fine': one of stable, unstable, borderline, diverged"
+        );
+        assert!(bad("# T\n## S\ntext\n").contains("no 'state:' line"));
+        assert!(bad("# T\n<!-- open\n").contains("unclosed comment"));
+        assert!(bad("# T\n## S\nstate: x\ntext\nthen: y\n").contains("'then:' applies after a question"));
+    }
+}

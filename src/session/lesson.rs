@@ -1,0 +1,277 @@
+//! Walking the guided lesson ([`crate::lesson`]): entering a step sets the simulator up from its
+//! state string, an answer is remembered and may change the settings ("then"), a goal is checked
+//! against the session, "back" restores the previous step as the student left it, and leaving
+//! keeps everything as it is for exploring.
+
+use serde::Serialize;
+
+use super::settings::{split_query, Settings, Source};
+use super::Session;
+use crate::error::Error;
+use crate::lesson::{self, Goal, Lesson, Term};
+use crate::schema;
+
+/// Where the student is in the lesson and what they did.
+#[derive(Clone, Debug)]
+pub struct LessonProgress {
+    lesson: Lesson,
+    /// The step shown (0-based).
+    step: usize,
+    /// The lesson panel is open (false after leaving; the progress stays for coming back).
+    active: bool,
+    /// Each step's chosen answer.
+    answers: Vec<Option<usize>>,
+    /// Each step's goal met (or revealed on request).
+    done: Vec<bool>,
+    /// The settings each step had when the student left it.
+    left: Vec<Option<Settings>>,
+}
+
+/// The question of the step shown, as the page shows it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct QuestionStatus {
+    pub prompt: String,
+    pub choices: Vec<String>,
+    /// The student's answer, remembered.
+    pub chosen: Option<usize>,
+    /// The right answer, once the student has chosen.
+    pub correct: Option<usize>,
+}
+
+/// The step shown, as the page shows it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LessonStatus {
+    pub lesson_title: String,
+    /// Every step's title (for the list of steps).
+    pub steps: Vec<String>,
+    /// 0-based.
+    pub index: usize,
+    pub title: String,
+    pub text: Vec<String>,
+    pub terms: Vec<Term>,
+    pub task: Option<String>,
+    /// The task is done.
+    pub done: bool,
+    pub question: Option<QuestionStatus>,
+    /// The answer and why: shown once answered or done (at once for a step with neither).
+    pub answer: Vec<String>,
+    pub can_back: bool,
+    pub can_next: bool,
+}
+
+impl LessonProgress {
+    fn new(lesson: Lesson) -> Self {
+        let n = lesson.steps.len();
+        Self { lesson, step: 0, active: false, answers: vec![None; n], done: vec![false; n], left: vec![None; n] }
+    }
+
+    /// The answer of step `i` may be shown.
+    fn revealed(&self, i: usize) -> bool {
+        let s = &self.lesson.steps[i];
+        let answered = s.question.is_none() || self.answers[i].is_some();
+        let done = s.goal.is_none() || self.done[i];
+        answered && done
+    }
+}
+
+impl Session {
+    /// The lesson's progress (None until the lesson is first opened).
+    pub fn lesson(&self) -> Option<&LessonProgress> {
+        self.lesson.as_ref()
+    }
+
+    /// True while the lesson panel is open.
+    pub fn lesson_active(&self) -> bool {
+        self.lesson.as_ref().is_some_and(|l| l.active)
+    }
+
+    /// Opens the lesson at `step` (0-based; the last step if beyond): the step's settings, run from rest.
+    pub fn lesson_open(&mut self, step: usize) -> Result<(), Error> {
+        if self.lesson.is_none() {
+            self.lesson = Some(LessonProgress::new(lesson::builtin()?));
+        }
+        let progress = self.lesson.as_mut().expect("just made");
+        progress.active = true;
+        let step = step.min(progress.lesson.steps.len() - 1);
+        self.enter(step)
+    }
+
+    /// Goes on to the next step, remembering how this one was left.
+    pub fn lesson_next(&mut self) -> Result<(), Error> {
+        let (step, count) = self.lesson_position()?;
+        if step + 1 >= count {
+            return Err(lesson_error("this is the last step"));
+        }
+        self.remember_step(step);
+        self.enter(step + 1)
+    }
+
+    /// Goes back to the previous step exactly as the student left it.
+    pub fn lesson_back(&mut self) -> Result<(), Error> {
+        let (step, _) = self.lesson_position()?;
+        if step == 0 {
+            return Err(lesson_error("this is the first step"));
+        }
+        self.remember_step(step);
+        self.enter(step - 1)
+    }
+
+    /// Answers the step's question with choice `choice` (0-based); the answer is remembered and the
+    /// step's "then" settings, if any, are applied (from rest).
+    pub fn lesson_answer(&mut self, choice: usize) -> Result<(), Error> {
+        let (step, _) = self.lesson_position()?;
+        let progress = self.lesson.as_mut().expect("positioned");
+        let s = &progress.lesson.steps[step];
+        let q = s.question.as_ref().ok_or_else(|| lesson_error("this step asks no question"))?;
+        if choice >= q.choices.len() {
+            return Err(lesson_error(&format!("choice {choice} of {}", q.choices.len())));
+        }
+        let first = progress.answers[step].is_none();
+        progress.answers[step] = Some(choice);
+        let then = s.then.clone();
+        match then {
+            Some(state) if first => self.apply_lesson_state(&state),
+            _ => Ok(()),
+        }
+    }
+
+    /// Shows a task's result without the student having done it ("show me").
+    pub fn lesson_reveal(&mut self) -> Result<(), Error> {
+        let (step, _) = self.lesson_position()?;
+        self.lesson.as_mut().expect("positioned").done[step] = true;
+        Ok(())
+    }
+
+    /// Closes the lesson panel; the settings stay as they are, to explore from.
+    pub fn lesson_leave(&mut self) {
+        if let Some(l) = self.lesson.as_mut() {
+            l.active = false;
+        }
+    }
+
+    /// Marks the step's goal met if it is (called with the other periodic work).
+    pub(super) fn check_lesson_goal(&mut self) {
+        let Some(l) = self.lesson.as_ref().filter(|l| l.active) else { return };
+        let step = l.step;
+        if l.done[step] {
+            return;
+        }
+        let met = l.lesson.steps[step].goal.as_ref().is_some_and(|g| self.goal_met(g));
+        if met {
+            self.lesson.as_mut().expect("active").done[step] = true;
+        }
+    }
+
+    /// The stable windows are hidden by the step until its answer is revealed.
+    pub(super) fn lesson_hides_windows(&self) -> bool {
+        self.lesson.as_ref().is_some_and(|l| l.active && l.lesson.steps[l.step].hide_windows && !l.revealed(l.step))
+    }
+
+    /// The step shown, for the page (None when the lesson is not open).
+    pub fn lesson_status(&self) -> Option<LessonStatus> {
+        let l = self.lesson.as_ref().filter(|l| l.active)?;
+        let i = l.step;
+        let s = &l.lesson.steps[i];
+        let revealed = l.revealed(i);
+        Some(LessonStatus {
+            lesson_title: l.lesson.title.clone(),
+            steps: l.lesson.steps.iter().map(|s| s.title.clone()).collect(),
+            index: i,
+            title: s.title.clone(),
+            text: s.text.clone(),
+            terms: s.terms.clone(),
+            task: s.task.clone(),
+            done: l.done[i],
+            question: s.question.as_ref().map(|q| QuestionStatus {
+                prompt: q.prompt.clone(),
+                choices: q.choices.clone(),
+                chosen: l.answers[i],
+                correct: l.answers[i].map(|_| q.correct),
+            }),
+            answer: if revealed { s.answer.clone() } else { Vec::new() },
+            can_back: i > 0,
+            can_next: i + 1 < l.lesson.steps.len(),
+        })
+    }
+
+    /// "lesson=3" while the lesson is open (1-based), for the URL.
+    pub(super) fn lesson_query(&self) -> Option<String> {
+        let l = self.lesson.as_ref().filter(|l| l.active)?;
+        Some(format!("lesson={}", l.step + 1))
+    }
+
+    /// Opens the lesson a URL names (`lesson=3`), then reads the URL's other settings over the
+    /// step's: a link written while in the lesson comes back as it was.
+    pub(super) fn open_lesson_from(&mut self, query: &str) -> Result<bool, Error> {
+        let pairs = split_query(query);
+        let Some((_, n)) = pairs.iter().rev().find(|(k, _)| k == "lesson") else { return Ok(false) };
+        let step: usize = n.trim().parse().ok().filter(|&s| s >= 1).ok_or_else(|| {
+            Error::Parse(crate::error::ParseError {
+                key: "lesson".into(),
+                text: n.clone(),
+                expected: "a step number from 1".into(),
+            })
+        })?;
+        self.lesson_open(step - 1)?;
+        let rest: Vec<String> = pairs.iter().filter(|(k, _)| k != "lesson").map(|(k, v)| format!("{k}={v}")).collect();
+        if !rest.is_empty() {
+            let mut next = self.settings;
+            next.read(&rest.join("&"), Source::Page)?;
+            self.apply(next, true, "")?;
+        }
+        Ok(true)
+    }
+
+    fn lesson_position(&self) -> Result<(usize, usize), Error> {
+        let l = self.lesson.as_ref().filter(|l| l.active).ok_or_else(|| lesson_error("the lesson is not open"))?;
+        Ok((l.step, l.lesson.steps.len()))
+    }
+
+    fn remember_step(&mut self, step: usize) {
+        let settings = self.settings;
+        if let Some(l) = self.lesson.as_mut() {
+            l.left[step] = Some(settings);
+        }
+    }
+
+    /// Shows step `step`: as the student left it, or from its state string.
+    fn enter(&mut self, step: usize) -> Result<(), Error> {
+        let l = self.lesson.as_mut().expect("the lesson is open");
+        l.step = step;
+        let left = l.left[step];
+        let state = l.lesson.steps[step].state.clone();
+        match left {
+            Some(settings) => self.apply(settings, true, ""),
+            None => self.apply_lesson_state(&state),
+        }
+    }
+
+    /// A step's state string over the page's start, in the full view, run from rest.
+    fn apply_lesson_state(&mut self, state: &str) -> Result<(), Error> {
+        let mut next = Settings::page_start();
+        next.view.full = true;
+        next.speed = self.settings.speed;
+        next.read(state, Source::Lesson)?;
+        self.apply(next, true, "")
+    }
+
+    fn goal_met(&self, goal: &Goal) -> bool {
+        let a = self.run(0).expect("run A");
+        if goal.time.is_some_and(|t| a.closed_loop().time() < t - 1e-9) {
+            return false;
+        }
+        if let Some(v) = &goal.verdict {
+            if super::run_status("A", a).verdict != v {
+                return false;
+            }
+        }
+        goal.settings.iter().all(|(key, text)| {
+            let Some(p) = schema::param(key) else { return false };
+            p.parse(text, false).ok().is_some_and(|v| self.settings.get(key) == Some(v))
+        })
+    }
+}
+
+fn lesson_error(message: &str) -> Error {
+    Error::Lesson { line: 0, message: message.into() }
+}
