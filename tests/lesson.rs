@@ -62,6 +62,10 @@ fn the_whole_lesson_can_be_walked_and_back_restores_the_step_as_left() {
             assert_eq!(q.chosen, wrong, "the prediction is remembered");
             assert!(q.correct.is_some() && q.correct != wrong);
             assert!(!after.answer.is_empty(), "the answer is shown with its reason");
+            let settled = *s.settings();
+            s.lesson_answer(q.correct.unwrap()).unwrap();
+            assert_eq!(s.status().lesson.unwrap().question.unwrap().chosen, wrong, "the first prediction stays");
+            assert_eq!(*s.settings(), settled, "and the step is not set up again");
         }
         if status.task.is_some() {
             assert!(!status.done);

@@ -116,8 +116,8 @@ impl Session {
         self.enter(step - 1)
     }
 
-    /// Answers the step's question with choice `choice` (0-based); the answer is remembered and the
-    /// step's "then" settings, if any, are applied (from rest).
+    /// Answers the step's question with choice `choice` (0-based): the first answer is remembered
+    /// (later ones change nothing) and the step's "then" settings, if any, are applied (from rest).
     pub fn lesson_answer(&mut self, choice: usize) -> Result<(), Error> {
         let (step, _) = self.lesson_position()?;
         let progress = self.lesson.as_mut().expect("positioned");
@@ -126,12 +126,14 @@ impl Session {
         if choice >= q.choices.len() {
             return Err(lesson_error(&format!("choice {choice} of {}", q.choices.len())));
         }
-        let first = progress.answers[step].is_none();
+        if progress.answers[step].is_some() {
+            // A prediction is made once: the first answer is the one remembered.
+            return Ok(());
+        }
         progress.answers[step] = Some(choice);
-        let then = s.then.clone();
-        match then {
-            Some(state) if first => self.apply_lesson_state(&state),
-            _ => Ok(()),
+        match s.then.clone() {
+            Some(state) => self.apply_lesson_state(&state),
+            None => Ok(()),
         }
     }
 
@@ -241,9 +243,13 @@ impl Session {
         let left = l.left[step];
         let state = l.lesson.steps[step].state.clone();
         match left {
-            Some(settings) => self.apply(settings, true, ""),
-            None => self.apply_lesson_state(&state),
+            Some(settings) => self.apply(settings, true, "")?,
+            None => self.apply_lesson_state(&state)?,
         }
+        // A new step starts clean: the faint ghost compares within a step (before and after its
+        // answer), not with whatever ran before.
+        self.ghost = None;
+        Ok(())
     }
 
     /// A step's state string over the page's start, in the full view, run from rest.

@@ -130,6 +130,8 @@ pub struct MapStatus {
     pub text: String,
     /// Cells per map.
     pub points: usize,
+    /// The maps are shown (and worked on).
+    pub shown: bool,
 }
 
 /// The maps the page shows and the cache behind them.
@@ -269,7 +271,7 @@ impl Maps {
         let points = self.grid.n_delta * self.grid.n_alpha;
         let entries: Vec<&MapEntry> = MapSide::BOTH.iter().filter_map(|&s| self.shown(s)).collect();
         if entries.is_empty() {
-            return MapStatus { percent: 0, done: false, text: "waiting to start".into(), points };
+            return MapStatus { percent: 0, done: false, text: "waiting to start".into(), points, shown: self.enabled };
         }
         let progress = entries.iter().map(|e| if e.is_done() { 1.0 } else { e.job.progress() }).sum::<f64>()
             / entries.len() as f64;
@@ -295,7 +297,7 @@ impl Maps {
         } else {
             format!("computing {points} points per map… {percent} %")
         };
-        MapStatus { percent, done, text, points }
+        MapStatus { percent, done, text, points, shown: self.enabled }
     }
 
     /// The caption of a side's map for run A's feedback `pf`.

@@ -46,6 +46,8 @@ pub struct Status {
     pub note: String,
     /// The preset the settings match ("" if none).
     pub preset: String,
+    /// What the page shows, in words: the preset's title, or run A's settings.
+    pub showing: String,
     pub maps: maps::MapStatus,
     /// Run A's stable windows of δ (null until computed: `Session::refresh`).
     pub windows: Option<WindowsStatus>,
@@ -204,6 +206,10 @@ impl Session {
         }
         let mut next = self.settings;
         next.set(key, value)?;
+        if key == schema::COMPARE.key && next.b.is_some() && self.settings.b.is_none() {
+            // Two runs' errors differ by orders of magnitude: a log scale shows both.
+            next.view.log = true;
+        }
         // The reference jumping under a moving arm would be a kick, not the setting: start over.
         let restart = key == "repeat" && next.a.repeat != self.settings.a.repeat;
         let why = if restart { "The reference changed, so the run restarted from rest." } else { "" };
@@ -492,6 +498,9 @@ impl Session {
             runs,
             note: self.note.clone(),
             preset: self.preset().map_or(String::new(), |p| p.id.to_string()),
+            showing: self
+                .preset()
+                .map_or_else(|| format!("your settings — {}", status::describe(&self.a)), |p| p.title.to_string()),
             maps: self.maps.status(),
             windows: self.windows_status(),
             ghost: self

@@ -226,6 +226,13 @@ impl WebSession {
         self.inner.view_at(t);
     }
 
+    /// Run `run`'s state as shown (at the instant looked at, or the newest): `{time, q, qdot, qd,
+    /// error, torque, v, xf_hat, w}`.
+    pub fn snapshot(&self, run: usize) -> Result<JsValue, JsError> {
+        let s = self.inner.shown_snapshot(run).ok_or_else(|| JsError::new(&format!("no run {run}")))?;
+        to_js(&s)
+    }
+
     /// One sampling period back in the kept past.
     #[wasm_bindgen(js_name = stepBack)]
     pub fn step_back(&mut self) {

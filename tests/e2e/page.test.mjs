@@ -55,13 +55,17 @@ after(async () => {
   await new Promise((resolve) => (server ? server.close(resolve) : resolve()));
 });
 
-/** Opens the page at `query`, collecting console errors and uncaught exceptions. */
-async function open(query = '') {
-  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+/** Opens the page at `query`, collecting console errors and uncaught exceptions. Most tests drive
+ * the full view: `mode=full` is added unless the query chooses a mode, opens the lesson, or `raw`. */
+async function open(query = '', { raw = false, viewport = { width: 1280, height: 800 } } = {}) {
+  const page = await browser.newPage({ viewport });
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  await page.goto(`${base}/${query}`);
+  const params = new URLSearchParams(query);
+  if (!raw && !params.has('mode') && !params.has('lesson')) params.set('mode', 'full');
+  const q = params.toString();
+  await page.goto(`${base}/${q ? `?${q}` : ''}`);
   await page.waitForFunction(() => document.querySelector('#backend')?.textContent?.trim().length > 0, null, { timeout: 20000 });
   return { page, problems };
 }
@@ -167,7 +171,7 @@ test('the canvas shows the arm and the traces', async () => {
 });
 
 test('Fig. 5.3 preset goes unstable; switching the preliminary feedback on makes it stable', async () => {
-  const { page, problems } = await open('?speed=4');
+  const { page, problems } = await open('?preset=fig5.2&speed=4');
   await page.selectOption('#preset', 'fig5.3');
   const word = await waitForVerdict(page, ['unstable', 'diverged'], 30000);
   await page.screenshot({ path: path.join(shots, 'fig5.3-unstable.png') });
@@ -356,7 +360,7 @@ test('Fig. 5.3 is called unstable from the first second and never "stable"; the 
   const first = await verdictText(page);
   const wall = Date.now() - opened;
   console.log(`# Fig. 5.3 called unstable ${wall} ms after the page's controls were up: "${first}"`);
-  assert.match(first, /Unstable ρ = 1\.024 > 1 — the error grows ×e every 0\.42 s/);
+  assert.match(first, /Unstable ρ = 1\.0239 > 1 — the error grows ×e every 0\.42 s/);
   assert.ok(!/\bstable\b/i.test(first), first);
   // Screenshots at 0.5 s and 3 s of simulated time; the status never says "stable".
   const shots9 = { 0.5: 'fig5.3-at-0.5s.png', 3: 'fig5.3-at-3s.png' };
@@ -411,7 +415,7 @@ test('the stable windows of δ are stated and drawn on the slider as the session
 
 test('the z-plane shows the flexible pair crossing the unit circle as δ crosses a window edge', async () => {
   const { page, problems } = await open('?delta=0.0345&pf=off&alpha=2&speed=0.1');
-  await page.selectOption('#pole-plane', 'z');
+  await page.selectOption('#plane', 'z');
   await waitForPanels(page, ['z-plane']);
   const modulus = () => page.evaluate(() => Math.max(...window.flexarm.lastLayout.poles.filter((p) => p.kind === 'loop').map((p) => p.modulus)));
   await page.waitForFunction(() => (window.flexarm.lastLayout?.poles || []).some((p) => p.modulus > 1), null, { timeout: 10000 });
@@ -428,7 +432,7 @@ test('the z-plane shows the flexible pair crossing the unit circle as δ crosses
 
 test('log |e| with the predicted slope, and two runs compared side by side in numbers', async () => {
   const { page, problems } = await open('?preset=fig5.1&speed=2&compare=1&b_pf=paper&b_delta=0.01&b_alpha=2');
-  await page.check('#log-errors');
+  await page.check('#log');
   await page.waitForFunction(() => window.flexarm.lastLayout?.panels.find((p) => p.id === 'e1')?.y_scale === 'log', null, { timeout: 10000 });
   await page.waitForTimeout(3000);
   const layout = await layoutOf(page);
@@ -441,6 +445,134 @@ test('log |e| with the predicted slope, and two runs compared side by side in nu
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: path.join(shots, 'log-view-compare.png') });
   await page.locator('#readouts').screenshot({ path: path.join(shots, 'compare-readouts.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+// ------------------------------------------------------------------ issue 10: lesson and timeline
+
+/** The session's status as the page has it. */
+const statusOf = (page) => page.evaluate(() => window.flexarm.session.status());
+
+test('the cold open names Fig. 5.3 in the intro: δ, the feedback, play, the lesson and the verdict', async () => {
+  const { page, problems } = await open('', { raw: true });
+  assert.equal(await page.$eval('body', (b) => b.dataset.mode), 'intro');
+  assert.match(await page.textContent('#showing'), /Fig\. 5\.3/);
+  assert.equal(await waitForVerdict(page, ['unstable'], 3000), 'unstable');
+  for (const id of ['#lesson-start', '#delta', '#pf-toggle', '#play', '#verdict']) assert.ok(await page.isVisible(id), `${id} visible`);
+  for (const id of ['#preset', '#alpha1', '#compare', '#readouts', '#explain']) assert.ok(!(await page.isVisible(id)), `${id} one click away`);
+  const layout = await layoutOf(page);
+  assert.deepEqual(layout.panels.map((p) => p.id).sort(), ['arm', 'e1', 'e2'], 'the intro draws the arm and its errors');
+  assert.match(await page.textContent('#verdict'), /ρ, the spectral radius/, 'ρ is defined where it first appears');
+  await page.screenshot({ path: path.join(shots, 'intro.png') });
+  await page.check('#pf-toggle');
+  assert.equal(await waitForVerdict(page, ['stable'], 3000), 'stable');
+  assert.equal(new URL(page.url()).searchParams.get('pf'), 'paper');
+  await page.click('#mode-full');
+  assert.ok(await page.isVisible('#preset'));
+  assert.equal(new URL(page.url()).searchParams.get('mode'), 'full');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the lesson: every step sets the simulator up, every prediction is answered, back restores the step', async () => {
+  const { page, problems } = await open('', { raw: true });
+  await page.click('#lesson-start');
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 5000 });
+  const walked = [];
+  for (let i = 0; ; i++) {
+    const s = (await statusOf(page)).lesson;
+    assert.equal(s.index, i);
+    assert.equal(await page.textContent('#lesson-title'), s.title);
+    assert.equal(new URL(page.url()).searchParams.get('lesson'), String(i + 1), 'the step is in the URL');
+    await page.waitForTimeout(600);
+    await page.screenshot({ path: path.join(shots, `lesson-step-${i + 1}.png`) });
+    const before = new URL(page.url()).search;
+    if (s.question) {
+      assert.equal(await page.textContent('#lesson-answer'), '', 'the answer waits for the prediction');
+      await page.locator('#lesson-choices input').nth(0).check();
+      await page.waitForFunction(() => document.querySelector('#lesson-answer').textContent.length > 20, null, { timeout: 5000 });
+      const q = (await statusOf(page)).lesson.question;
+      assert.equal(q.chosen, 0, 'the prediction is remembered');
+      const marked = await page.locator('#lesson-choices .choice.right').count();
+      assert.equal(marked, 1, 'the right answer is shown');
+    }
+    if (s.task) {
+      assert.match(await page.textContent('#lesson-task-done'), /Not yet/);
+      if (s.title.startsWith('Find where')) {
+        assert.equal(await page.$eval('#delta-windows', (el) => el.hidden), true, 'the windows stay hidden while guessing');
+        // δ = 0.05 s: position ln(0.05/0.002)/ln(125) of the slider.
+        await page.$eval('#delta', (el) => { el.value = '667'; el.dispatchEvent(new Event('input', { bubbles: true })); });
+      } else if (s.title.startsWith('Compare')) {
+        await page.check('#compare');
+      }
+      await page.waitForFunction(() => document.querySelector('#lesson-task-done').textContent.includes('Done'), null, { timeout: 15000 });
+      if (s.title.startsWith('Find where')) assert.equal(await page.$eval('#delta-windows', (el) => el.hidden), false, 'revealed');
+    }
+    const after = new URL(page.url()).search;
+    walked.push({ step: i + 1, title: s.title, changed: before !== after });
+    await page.screenshot({ path: path.join(shots, `lesson-step-${i + 1}-done.png`) });
+    if (!s.can_next) break;
+    // Next, back: the step as it was left; next again.
+    await page.click('#lesson-next');
+    await page.waitForFunction((n) => window.flexarm.session.status().lesson.index === n, i + 1);
+    await page.click('#lesson-back');
+    await page.waitForFunction((n) => window.flexarm.session.status().lesson.index === n, i);
+    assert.equal(new URL(page.url()).search, after, `back restores step ${i + 1} as it was left`);
+    await page.click('#lesson-next');
+    await page.waitForFunction((n) => window.flexarm.session.status().lesson.index === n, i + 1);
+  }
+  assert.ok(walked.length >= 6, `${walked.length} steps`);
+  console.log(`# lesson walked: ${walked.map((w) => `${w.step}. ${w.title}${w.changed ? ' (then: the result)' : ''}`).join(' | ')}`);
+  await page.click('#lesson-leave');
+  assert.ok(await page.isHidden('#lesson'));
+  assert.equal(new URL(page.url()).searchParams.get('lesson'), null);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a lesson link opens its step', async () => {
+  const { page, problems } = await open('?lesson=4');
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 5000 });
+  assert.match(await page.textContent('#lesson-title'), /never touches/);
+  assert.equal(await page.$eval('#plane', (el) => el.value), 'z');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the timeline: look back by dragging on the error plot, step back, continue from exactly that state', async () => {
+  const { page, problems } = await open('?preset=fig5.3&speed=1');
+  await page.waitForFunction(() => window.flexarm.session.time() > 3.0, null, { timeout: 15000 });
+  const layout = await layoutOf(page);
+  const e1 = layout.panels.find((p) => p.id === 'e1');
+  const box = await page.locator('#canvas').boundingBox();
+  // Press at 40 % of the plot's width and drag to 30 %: that instant is shown.
+  await page.mouse.move(box.x + e1.x + 0.4 * e1.width, box.y + e1.y + e1.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + e1.x + 0.3 * e1.width, box.y + e1.y + e1.height / 2, { steps: 4 });
+  await page.mouse.up();
+  let t = (await statusOf(page)).timeline;
+  assert.equal(t.live, false);
+  assert.ok(Math.abs(t.time - 3.0) < 0.05, `looking at ${t.time} s (30 % of the 0–10 s window)`);
+  assert.equal(await page.$eval('#play', (b) => b.getAttribute('aria-pressed')), 'false', 'paused');
+  assert.ok(await page.isVisible('#continue-here'));
+  assert.match(await page.textContent('#ro-time'), /looking back/);
+  await page.click('#step-back');
+  const back = (await statusOf(page)).timeline.time;
+  assert.ok(Math.abs(t.time - back - 0.01) < 1e-9, `one δ back: ${t.time} → ${back}`);
+  await page.screenshot({ path: path.join(shots, 'timeline-looking-back.png') });
+  // The state shown, then continued from: the same numbers.
+  const [shown, continued, timeAfter] = await page.evaluate(() => {
+    const s = window.flexarm.session;
+    const before = s.snapshot(0);
+    document.querySelector('#continue-here').click();
+    return [before, s.snapshot(0), s.time()];
+  });
+  assert.deepEqual(continued, shown, 'continue from here starts from exactly the state shown');
+  assert.ok(Math.abs(timeAfter - back) < 1e-9);
+  t = (await statusOf(page)).timeline;
+  assert.equal(t.live, true);
+  assert.match(await page.textContent('#run-note'), /Continued from t = /);
   assert.deepEqual(problems, []);
   await page.close();
 });

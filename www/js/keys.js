@@ -1,5 +1,5 @@
-// Keyboard shortcuts: Space plays or pauses, → steps one sampling period, R resets — unless the
-// focus is somewhere that needs the key itself.
+// Keyboard shortcuts: Space plays or pauses, → steps one sampling period forward and ← back (in
+// the kept past), R resets — unless the focus is somewhere that needs the key itself.
 
 /** True if the key belongs to the focused element (typing, a select, a button's own Space). */
 export function keyBelongsTo(/** @type {{ tagName?: string, type?: string, isContentEditable?: boolean }} */ t, /** @type {string} */ key) {
@@ -7,19 +7,20 @@ export function keyBelongsTo(/** @type {{ tagName?: string, type?: string, isCon
   if (t.isContentEditable || tag === 'TEXTAREA' || tag === 'SELECT') return true;
   if (tag === 'INPUT' && !['range', 'checkbox', 'radio', 'button', 'submit', 'reset'].includes(t.type ?? '')) return true;
   if (key === ' ' && (tag === 'BUTTON' || t.type === 'checkbox' || t.type === 'radio')) return true;
-  if (key === 'ArrowRight' && t.type === 'range') return true;
+  if ((key === 'ArrowRight' || key === 'ArrowLeft') && (t.type === 'range' || t.type === 'radio')) return true;
   return false;
 }
 
-/** @param {{ togglePlay: () => void, step: () => void, reset: () => void }} on */
+/** @param {{ togglePlay: () => void, step: () => void, stepBack: () => void, reset: () => void }} on */
 export function wireKeys(on) {
   document.addEventListener('keydown', (ev) => {
     if (ev.defaultPrevented || ev.ctrlKey || ev.metaKey || ev.altKey) return;
     const key = ev.code === 'Space' ? ' ' : ev.key;
-    if (!['', ' ', 'ArrowRight', 'r', 'R'].includes(key) || keyBelongsTo(/** @type {any} */ (ev.target ?? {}), key)) return;
+    if (![' ', 'ArrowRight', 'ArrowLeft', 'r', 'R'].includes(key) || keyBelongsTo(/** @type {any} */ (ev.target ?? {}), key)) return;
     ev.preventDefault();
     if (key === ' ') on.togglePlay();
     else if (key === 'ArrowRight') on.step();
+    else if (key === 'ArrowLeft') on.stepBack();
     else on.reset();
   });
 }

@@ -9,4 +9,7 @@ test('shortcuts give way to what the focus needs', () => {
   assert.equal(keyBelongsTo({ tagName: 'BUTTON' }, ' '), true, 'a button presses itself');
   assert.equal(keyBelongsTo({ tagName: 'BODY' }, ' '), false);
   assert.equal(keyBelongsTo({ tagName: 'SELECT' }, 'ArrowRight'), true);
+  assert.equal(keyBelongsTo({ tagName: 'INPUT', type: 'range' }, 'ArrowLeft'), true, 'the slider moves back');
+  assert.equal(keyBelongsTo({ tagName: 'INPUT', type: 'radio' }, 'ArrowLeft'), true, 'the lesson\'s choices');
+  assert.equal(keyBelongsTo({ tagName: 'BODY' }, 'ArrowLeft'), false);
 });

@@ -4,7 +4,7 @@
 
 import { byId, make, messageOf, setText } from './dom.js';
 import { createErrors } from './errors.js';
-import { createStore, VIEW_OPTIONS } from './store.js';
+import { createStore } from './store.js';
 import { loadWasm } from './wasm.js';
 import { buildControls } from './controls.js';
 import { createStatus } from './status.js';
@@ -14,6 +14,8 @@ import { createLoop } from './loop.js';
 import { wireTryButtons } from './explain.js';
 import { wireKeys } from './keys.js';
 import { writeUrl } from './url.js';
+import { createLesson } from './lesson.js';
+import { createTimeline } from './timeline.js';
 
 const store = createStore();
 const errors = createErrors(store);
@@ -54,11 +56,7 @@ async function main() {
 
   // ---------------------------------------------------------------- changes go to the session
   const controls = buildControls(wasm.schema(), {
-    onSet: (key, text) => {
-      change(() => session.set(key, text));
-      // Two runs' errors differ by orders of magnitude: a log scale shows both.
-      if (key === 'compare' && text === '1' && !store.get().logErrors) setView('logErrors', true);
-    },
+    onSet: (key, text) => change(() => session.set(key, text)),
     onPosition: (key, f) => change(() => session.setPosition(linked(key), f)),
   });
   /** With α linked, either α slider moves both. @param {string} key */
@@ -67,14 +65,31 @@ async function main() {
   /** Runs a change; the controls, the URL and the picture follow the session whatever happened. */
   function change(/** @type {() => void} */ fn) {
     const ok = guard('Applying the settings failed', () => (fn(), true), false);
-    if (ok && !store.get().playing && session.status().note === '') session.setNote(PAUSED_NOTE);
-    controls.sync(session.controls());
+    const now = ok && !store.get().playing ? session.status() : null;
+    if (now && now.timeline.live && now.note === '') session.setNote(PAUSED_NOTE);
+    syncControls();
     writeUrl(session.stateString());
     loop.touch();
     loop.resync();
     pointer.hide();
     loop.scheduleMaps();
   }
+
+  /** The controls, the intro's feedback switch and the page's mode show the session's values. */
+  function syncControls() {
+    const values = session.controls();
+    controls.sync(values);
+    const value = (/** @type {string} */ key) => values.find((v) => v.key === key)?.value;
+    const full = value('mode') === 'full';
+    if (document.body.dataset.mode !== (full ? 'full' : 'intro')) document.body.dataset.mode = full ? 'full' : 'intro';
+    byId('mode-intro').setAttribute('aria-pressed', String(!full));
+    byId('mode-full').setAttribute('aria-pressed', String(full));
+    /** @type {HTMLInputElement} */ (byId('pf-toggle')).checked = value('pf') !== 'off';
+  }
+  byId('mode-intro').addEventListener('click', () => change(() => session.set('mode', 'intro')));
+  byId('mode-full').addEventListener('click', () => change(() => session.set('mode', 'full')));
+  const pfToggle = /** @type {HTMLInputElement} */ (byId('pf-toggle'));
+  pfToggle.addEventListener('change', () => change(() => session.set('pf', pfToggle.checked ? 'paper' : 'off')));
 
   const presetSelect = /** @type {HTMLSelectElement} */ (byId('preset'));
   for (const p of wasm.presets()) presetSelect.append(make('option', { value: p.id, text: p.title }));
@@ -108,46 +123,61 @@ async function main() {
     guard('Step failed', () => session.stepPeriod());
     loop.touch();
   };
+  const stepBack = () => {
+    store.dispatch({ type: 'pause' });
+    session.stepBack();
+    loop.touch();
+  };
   const reset = () => change(() => session.reset());
   byId('step').addEventListener('click', step);
   byId('reset').addEventListener('click', reset);
   byId('poke').addEventListener('click', () => change(() => session.poke()));
   byId('export-csv').addEventListener('click', () => download('flexarm-traces.csv', guard('Export failed', () => session.csv(), null)));
   byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
-  wireKeys({ togglePlay: () => store.dispatch({ type: 'toggle-play' }), step, reset });
+  wireKeys({ togglePlay: () => store.dispatch({ type: 'toggle-play' }), step, stepBack, reset });
   wireTryButtons({
     preset: (id) => change(() => session.applyPreset(id)),
     set: (key, value) => change(() => session.set(key, value)),
-    map: (side, delta, alpha) => {
-      setView('showMap', true);
-      change(() => session.setFromMap(side, delta, alpha));
-    },
+    map: (side, delta, alpha) => change(() => {
+      session.set('map', '1');
+      session.setFromMap(side, delta, alpha);
+    }),
     after: () => store.dispatch({ type: 'play' }),
   });
 
-  /** The control of each view: a check box, or the pole plot's plane selector. */
-  const viewInputs = {
-    showTorque: 'show-torque', showPoles: 'show-poles', zPlane: 'pole-plane', showRho: 'show-rho', showMap: 'show-map', logErrors: 'log-errors',
+  // ---------------------------------------------------------------- the lesson and the timeline
+  /** A lesson action: the settings it makes, played from the start. */
+  const lessonDo = (/** @type {() => void} */ fn) => {
+    change(fn);
+    store.dispatch({ type: 'play' });
+    refreshStatus();
   };
-  /** Shows or hides a view and tells the renderer (and the maps' work). */
-  function setView(/** @type {keyof typeof VIEW_OPTIONS} */ name, /** @type {boolean} */ value) {
-    store.dispatch({ type: 'view', name, value });
-    const input = /** @type {HTMLInputElement} */ (byId(viewInputs[name]));
-    if (input.type === 'checkbox') input.checked = value;
-    else input.value = value ? 'z' : 's';
-    if (name === 'showMap') {
-      session.setMapsEnabled(value);
-      byId('map-row').classList.toggle('maps-hidden', !value);
-      loop.scheduleMaps();
-    }
-    if (renderer) guard('Renderer options', () => renderer?.setOptions({ [VIEW_OPTIONS[name]]: value }));
-    pointer.hide();
+  const lesson = createLesson({
+    start: () => lessonDo(() => session.lessonOpen(0)),
+    next: () => lessonDo(() => session.lessonNext()),
+    back: () => lessonDo(() => session.lessonBack()),
+    leave: () => lessonDo(() => session.lessonLeave()),
+    answer: (choice) => lessonDo(() => session.lessonAnswer(choice)),
+    reveal: () => {
+      guard('Lesson', () => session.lessonReveal());
+      refreshStatus();
+    },
+  });
+  /** Looks back at time t (pausing: the picture holds still there). */
+  const scrubTo = (/** @type {number} */ t) => {
+    store.dispatch({ type: 'pause' });
+    session.viewAt(t);
     loop.touch();
-  }
-  for (const [name, id] of Object.entries(viewInputs)) {
-    const input = /** @type {HTMLInputElement} */ (byId(id));
-    input.addEventListener('change', () => setView(/** @type {keyof typeof VIEW_OPTIONS} */ (name), input.type === 'checkbox' ? input.checked : input.value === 'z'));
-  }
+    refreshStatus();
+  };
+  const timeline = createTimeline({
+    viewAt: scrubTo,
+    stepBack,
+    continueHere: () => {
+      change(() => session.continueFromHere());
+      store.dispatch({ type: 'play' });
+    },
+  });
 
   // ---------------------------------------------------------------- canvas
   const pointer = createPointer({
@@ -156,6 +186,8 @@ async function main() {
     pickDelta: (delta) => change(() => session.pickDelta(delta)),
     showTip: overlays.showTip,
     hideTip: overlays.hideTip,
+    timeAt: (x, y) => renderer?.timeAt(x, y),
+    scrubTo,
   });
 
   /** Draws a frame; refreshes the labels when the frame's description changed. */
@@ -183,18 +215,23 @@ async function main() {
     return true;
   }
 
+  /** Everything the page says about the session, from one status. */
+  function refreshStatus() {
+    const s = guard('Status', () => session.status(), null);
+    if (!s) return;
+    status.render(s, performance.now());
+    status.renderLegend(s, layout?.series ?? []);
+    lesson.render(s.lesson);
+    timeline.render(s.timeline);
+  }
+
   const loop = createLoop({
     wasmOk: () => !store.get().dead,
     playing: () => store.get().playing,
     finished: () => session.isFinished() && session.status().runs.every((r) => r.finished),
     advance: (dt) => guard('Simulation step failed', () => session.advance(dt), 0) ?? 0,
     render,
-    status: () => {
-      const s = guard('Status', () => session.status(), null);
-      if (!s) return;
-      status.render(s, { mapsShown: store.get().showMap }, performance.now());
-      status.renderLegend(s, layout?.series ?? []);
-    },
+    status: refreshStatus,
     workMaps: (budget) => guard('Stability map', () => session.workMaps(budget), false) ?? false,
     backend: () => (renderer ? renderer.backend() : null),
   });
@@ -216,7 +253,7 @@ async function main() {
     },
   });
 
-  controls.sync(session.controls());
+  syncControls();
   writeUrl(session.stateString());
   byId('loading').hidden = true;
   transport.forEach((b) => (/** @type {HTMLButtonElement} */ (b).disabled = false));
@@ -231,8 +268,6 @@ async function main() {
     const label = byId('backend');
     setText(label, backend);
     label.dataset.backend = backend;
-    const views = store.get();
-    guard('Renderer options', () => renderer?.setOptions(Object.fromEntries(Object.entries(VIEW_OPTIONS).map(([k, o]) => [o, views[k]]))));
     watchSize(() => renderer);
   } catch (e) {
     setText(byId('backend'), 'none');

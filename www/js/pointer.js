@@ -1,5 +1,6 @@
 // The pointer on the canvas: hovering (mouse) or tapping (touch, pen) a pole shows what it is,
-// hovering a map shows ρ there, clicking a map runs at that point. What lies under the pointer
+// hovering a map shows ρ there, clicking a map runs at that point, dragging on ρ(δ) picks δ, and
+// pressing and dragging on an error plot looks back at that instant. What lies under the pointer
 // is the renderer's answer; this module only routes events.
 
 import { byId } from './dom.js';
@@ -9,11 +10,14 @@ const REACH = { mouse: 22, touch: 36 };
 
 /**
  * @param {{ probe: (x: number, y: number, reach: number) => any, pick: (map: string, delta: number, alpha: number) => void,
- *   pickDelta: (delta: number) => void, showTip: (probe: any) => void, hideTip: () => void }} on
+ *   pickDelta: (delta: number) => void, showTip: (probe: any) => void, hideTip: () => void,
+ *   timeAt: (x: number, y: number) => number | undefined, scrubTo: (t: number) => void }} on
  */
 export function createPointer(on) {
   const canvas = byId('canvas');
   let pinned = false;
+  /** The pointer that is dragging through time on an error plot, if any. */
+  let scrubbing = /** @type {number | null} */ (null);
 
   /** @param {PointerEvent | MouseEvent} ev */
   const at = (ev) => {
@@ -39,6 +43,25 @@ export function createPointer(on) {
   function onPointer(ev) {
     const touch = isTouch(ev);
     const { x, y } = at(ev);
+    // Pressing on an error plot looks back at that instant; dragging moves through time.
+    if (ev.type === 'pointerdown' && ev.button === 0) {
+      const t = on.timeAt(x, y);
+      if (t !== undefined) {
+        scrubbing = ev.pointerId;
+        canvas.setPointerCapture(ev.pointerId);
+        hide();
+        on.scrubTo(t);
+        ev.preventDefault();
+        return;
+      }
+    }
+    if (scrubbing === ev.pointerId) {
+      if (ev.type === 'pointermove') {
+        const t = on.timeAt(x, y);
+        if (t !== undefined) on.scrubTo(t);
+      }
+      return;
+    }
     // Dragging on ρ(δ) picks δ as the pointer moves.
     if (ev.type === 'pointermove' && ev.buttons === 1) {
       const drag = on.probe(x, y, 0);
@@ -72,6 +95,11 @@ export function createPointer(on) {
 
   canvas.addEventListener('pointermove', onPointer);
   canvas.addEventListener('pointerdown', onPointer);
+  const endScrub = (/** @type {PointerEvent} */ ev) => {
+    if (scrubbing === ev.pointerId) scrubbing = null;
+  };
+  canvas.addEventListener('pointerup', endScrub);
+  canvas.addEventListener('pointercancel', endScrub);
   canvas.addEventListener('pointerleave', (ev) => {
     if (ev.pointerType === 'mouse' && !pinned) hide();
   });

@@ -6,9 +6,10 @@ import { createRunView } from './run.js';
 
 /**
  * @typedef {import('./run.js').RunStatus} RunStatus
- * @typedef {{ runs: RunStatus[], note: string, preset: string, ghost: string,
- *   maps: { percent: number, done: boolean, text: string, points: number },
- *   windows: { text: string, windows: number[][], bands: number[][] } | null }} Status
+ * @typedef {{ runs: RunStatus[], note: string, preset: string, showing: string, ghost: string,
+ *   maps: { percent: number, done: boolean, text: string, points: number, shown: boolean },
+ *   windows: { text: string, windows: number[][], bands: number[][] } | null,
+ *   timeline: import('./timeline.js').TimelineStatus, lesson: import('./lesson.js').LessonStatus | null }} Status
  * @typedef {{ run: string, color: string, style: string, pole_marker: string }} Series
  */
 
@@ -43,10 +44,13 @@ export function createStatus() {
   const progress = byId('map-progress');
   const mapTime = byId('map-time');
   const legend = byId('pair-legend');
+  const showing = byId('showing');
+  const mapRow = byId('map-row');
   let legendKey = '';
 
-  /** @param {Status} s @param {{ mapsShown: boolean }} ui @param {number} now */
-  function render(s, ui, now) {
+  /** @param {Status} s @param {number} now */
+  function render(s, now) {
+    setText(showing, s.showing);
     const [a, b] = s.runs;
     runs[0].render(a, now);
     bControls.hidden = !b;
@@ -72,18 +76,24 @@ export function createStatus() {
     }
     progress.setAttribute('aria-valuetext', s.maps.done ? 'done' : `${pct} %`);
     progress.dataset.done = s.maps.done ? 'true' : 'false';
-    setText(mapTime, !ui.mapsShown && !s.maps.done ? `paused at ${pct} % (maps hidden)` : s.maps.text);
+    setText(mapTime, s.maps.text);
+    mapRow.hidden = !s.maps.shown;
   }
 
-  /** The stable windows of δ: in words under the slider, and as bands on its track. */
+  /** The stable windows of δ: in words under the slider, and as bands on its track (none while
+   * they are not known, or while a lesson step keeps them hidden). */
   function renderWindows(/** @type {Status['windows']} */ w) {
-    if (!w) return;
-    setText(windowsText, w.text);
+    windowsText.hidden = !w;
+    if (w) setText(windowsText, w.text);
     const slider = /** @type {HTMLInputElement | null} */ (document.getElementById('delta'));
-    const key = JSON.stringify(w.bands);
+    const key = w ? JSON.stringify(w.bands) : '';
     if (!slider || key === bandsKey) return;
     bandsKey = key;
-    slider.classList.add('banded');
+    slider.classList.toggle('banded', Boolean(w));
+    if (!w) {
+      delete slider.dataset.bands;
+      return;
+    }
     slider.style.setProperty('--bands', bandGradient(w.bands, TRACK.band, TRACK.rest));
     slider.dataset.bands = w.bands.map(([a, b]) => `${a.toFixed(4)}-${b.toFixed(4)}`).join(' ');
   }

@@ -1,9 +1,9 @@
 // The page's one mutable state, changed only through named actions. Everything about the
-// simulation lives in the wasm session; this holds what the page itself decides: whether it
-// plays, what it shows, whether the wasm can still be used.
+// simulation and what the figures show lives in the wasm session (its state string); this holds
+// what the page itself decides: whether it plays, whether α1 and α2 move together, which drawing
+// backend it got, whether the wasm can still be used.
 
-/** @typedef {{ playing: boolean, dead: boolean, linkAlpha: boolean, showTorque: boolean,
- *   showPoles: boolean, zPlane: boolean, showRho: boolean, showMap: boolean, logErrors: boolean,
+/** @typedef {{ playing: boolean, dead: boolean, linkAlpha: boolean,
  *   backend: string, renderFailures: number }} PageState */
 
 /** @type {PageState} */
@@ -11,24 +11,8 @@ export const initialState = Object.freeze({
   playing: true,
   dead: false,
   linkAlpha: true,
-  showTorque: false,
-  showPoles: true,
-  zPlane: false,
-  showRho: true,
-  showMap: true,
-  logErrors: false,
   backend: '',
   renderFailures: 0,
-});
-
-/** Views the page can show or hide: the renderer option each one sets. */
-export const VIEW_OPTIONS = Object.freeze({
-  showTorque: 'show_torque',
-  showPoles: 'show_poles',
-  zPlane: 'z_plane',
-  showRho: 'show_rho',
-  showMap: 'show_map',
-  logErrors: 'log_errors',
 });
 
 /**
@@ -62,9 +46,6 @@ export function reduce(state, action) {
       return patched(state, { dead: true, playing: false });
     case 'link-alpha':
       return patched(state, { linkAlpha: Boolean(action.value) });
-    case 'view':
-      if (!(action.name in VIEW_OPTIONS)) throw new Error(`unknown view option '${action.name}'`);
-      return patched(state, { [action.name]: Boolean(action.value) });
     case 'renderer':
       return patched(state, { backend: String(action.backend), renderFailures: 0 });
     case 'render-failed':

@@ -17,9 +17,9 @@ test('a crash stops everything for good', () => {
   assert.equal(reduce(s, { type: 'toggle-play' }).playing, false);
 });
 
-test('views and unknown actions', () => {
-  assert.equal(reduce(initialState, { type: 'view', name: 'showTorque', value: true }).showTorque, true);
-  assert.throws(() => reduce(initialState, { type: 'view', name: 'showEverything', value: true }), /unknown view/);
+test('α linking and unknown actions', () => {
+  assert.equal(reduce(initialState, { type: 'link-alpha', value: false }).linkAlpha, false);
+  assert.throws(() => reduce(initialState, { type: 'view', name: 'showTorque', value: true }), /unknown action/, 'views are the session\'s');
   assert.throws(() => reduce(initialState, { type: 'frobnicate' }), /unknown action/);
 });
 
