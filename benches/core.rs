@@ -51,6 +51,14 @@ fn main() {
         black_box(simulate(&config, 10.0).unwrap());
     });
 
+    // The page's run keeps 30 s of history (every sampling instant): what does that cost?
+    let (history_med, history_min) = time_it(11, 3, || {
+        let mut sim = ClosedLoop::new(config).unwrap();
+        sim.keep_history(flexarm::session::HISTORY_SECONDS);
+        sim.advance(10.0).unwrap();
+        black_box(sim.snapshot());
+    });
+
     let (rho_med, rho_min) = time_it(21, 200, || {
         black_box(spectral_radius(black_box(&config), None).unwrap());
     });
@@ -68,6 +76,12 @@ fn main() {
         run_med * 1e3,
         10.0 / run_med,
         run_min * 1e3
+    );
+    println!(
+        "| the same run keeping 30 s of history (the page's timeline) | {:.2} ms ({:+.1} % against without) | {:.2} ms |",
+        history_med * 1e3,
+        100.0 * (history_med / run_med - 1.0),
+        history_min * 1e3
     );
     println!(
         "| one spectral radius ρ (10×10 loop, k-step pencil sweep, expm, eig) | {:.1} µs | {:.1} µs |",

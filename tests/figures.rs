@@ -2,22 +2,15 @@
 //! with the stable windows, log |e| with the slope ρ predicts, the ghost of the previous run, the
 //! Nyquist frequency in the s-plane. All drawn from a session, as the page draws them.
 
+mod common;
+use common::play;
+
 use flexarm::session::Session;
 use flexarm::view::{PanelInfo, PanelKind, PoleKind, Scene, ViewOptions};
 
 /// A session in the full view (every figure), as the page opens `?mode=full&…`.
 fn session(query: &str) -> Session {
-    let (s, notices) = Session::open(&format!("mode=full&{query}"));
-    assert!(notices.is_empty(), "{notices:?}");
-    s
-}
-
-fn play(s: &mut Session, seconds: f64) {
-    let t0 = s.run(0).unwrap().closed_loop().time();
-    while s.run(0).unwrap().closed_loop().time() < t0 + seconds - 1e-9 && !s.run(0).unwrap().closed_loop().is_finished()
-    {
-        s.advance(0.1).unwrap();
-    }
+    common::session(&format!("mode=full&{query}"))
 }
 
 fn info<'a>(panels: &'a [PanelInfo], id: &str) -> &'a PanelInfo {

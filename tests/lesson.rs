@@ -3,24 +3,13 @@
 //! restores the previous step as it was left, a link reopens the same step, and the numbers the
 //! lesson quotes are the program's.
 
+mod common;
+use common::{play, session};
+
 use flexarm::analysis::analyze;
 use flexarm::lesson::{builtin, LESSON_TEXT};
 use flexarm::session::Session;
 use flexarm::*;
-
-fn session(query: &str) -> Session {
-    let (s, notices) = Session::open(query);
-    assert!(notices.is_empty(), "{notices:?}");
-    s
-}
-
-fn play(s: &mut Session, seconds: f64) {
-    let t0 = s.run(0).unwrap().closed_loop().time();
-    while s.run(0).unwrap().closed_loop().time() < t0 + seconds - 1e-9 && !s.run(0).unwrap().closed_loop().is_finished()
-    {
-        s.advance(0.05).unwrap();
-    }
-}
 
 /// Run A's verdict as the page states it.
 fn verdict(s: &Session) -> &'static str {

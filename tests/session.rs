@@ -1,24 +1,14 @@
 //! The session behind the page: settings and state strings, what a change does to the runs,
 //! presets, the comparison, map picks, the analyses and maps it keeps, the stable windows.
 
+mod common;
+use common::{play, session};
+
 use flexarm::analysis::spectral_radius;
 use flexarm::session::{MapSide, Session, Settings, Source};
 use flexarm::{FrictionCompensation, PreliminaryFeedbackChoice as Pf};
 
-fn session(query: &str) -> Session {
-    let (s, notices) = Session::open(query);
-    assert!(notices.is_empty(), "{notices:?}");
-    s
-}
-
 /// Runs the session for `seconds` in page-sized steps.
-fn play(s: &mut Session, seconds: f64) {
-    let t0 = s.run(0).unwrap().closed_loop().time();
-    while s.run(0).unwrap().closed_loop().time() < t0 + seconds - 1e-9 && !s.run(0).unwrap().closed_loop().is_finished()
-    {
-        s.advance(0.1).unwrap();
-    }
-}
 
 #[test]
 fn the_page_opens_on_fig_5_3_named_in_the_intro_with_a_repeating_slew() {

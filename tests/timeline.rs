@@ -2,6 +2,9 @@
 //! can be looked at as it was, and continued from any of those instants exactly — the loop is
 //! deterministic, so continuing without a change repeats what happened, to the last bit.
 
+mod common;
+use common::{play, session};
+
 use flexarm::control::{ClosedLoop, PreliminaryFeedbackChoice, SimulationConfig};
 
 fn config(delta: f64, pf: PreliminaryFeedbackChoice) -> SimulationConfig {
@@ -93,22 +96,7 @@ fn without_history_nothing_is_kept() {
 
 // ------------------------------------------------------------------ the session's timeline
 
-use flexarm::session::Session;
 use flexarm::view::{Scene, ViewOptions};
-
-fn session(query: &str) -> Session {
-    let (s, notices) = Session::open(query);
-    assert!(notices.is_empty(), "{notices:?}");
-    s
-}
-
-fn play(s: &mut Session, seconds: f64) {
-    let t0 = s.run(0).unwrap().closed_loop().time();
-    while s.run(0).unwrap().closed_loop().time() < t0 + seconds - 1e-9 && !s.run(0).unwrap().closed_loop().is_finished()
-    {
-        s.advance(0.05).unwrap();
-    }
-}
 
 #[test]
 fn the_page_looks_back_steps_and_replays_without_changing_the_run() {

@@ -24,16 +24,12 @@ pub const MODE: Param = Param {
 };
 
 /// The pole plot.
-pub const POLES: Param = Param {
-    key: "poles",
-    label: "Show the pole plot (hover or tap a pole)",
-    symbol: "",
-    unit: "",
-    name: "poles",
-    kind: Kind::Switch { default: true },
-    scope: Scope::Page,
-    help: "The eigenvalues of the sampled loop, with the δ → 0 pair A4.",
-};
+pub const POLES: Param = switch(
+    "poles",
+    "Show the pole plot (hover or tap a pole)",
+    true,
+    "The eigenvalues of the sampled loop, with the δ → 0 pair A4.",
+);
 
 /// Which plane the pole plot draws.
 pub const PLANE: Param = Param {
@@ -54,49 +50,34 @@ pub const PLANE: Param = Param {
 };
 
 /// ρ(δ) at the current α.
-pub const RHO: Param = Param {
-    key: "rho",
-    label: "Show ρ(δ) at this α, with the stable windows (click to pick δ)",
-    symbol: "",
-    unit: "",
-    name: "rho",
-    kind: Kind::Switch { default: true },
-    scope: Scope::Page,
-    help: "The spectral radius along δ, shaded where it is below 1.",
-};
+pub const RHO: Param = switch(
+    "rho",
+    "Show ρ(δ) at this α, with the stable windows (click to pick δ)",
+    true,
+    "The spectral radius along δ, shaded where it is below 1.",
+);
 
 /// The two stability maps.
-pub const MAP: Param = Param {
-    key: "map",
-    label: "Show the stability maps ρ(δ, α) (click to run there)",
-    symbol: "",
-    unit: "",
-    name: "map",
-    kind: Kind::Switch { default: true },
-    scope: Scope::Page,
-    help: "ρ over δ and α without and with preliminary feedback (computed in the background).",
-};
+pub const MAP: Param = switch(
+    "map",
+    "Show the stability maps ρ(δ, α) (click to run there)",
+    true,
+    "ρ over δ and α without and with preliminary feedback (computed in the background).",
+);
 
 /// The torque panel.
-pub const TORQUE: Param = Param {
-    key: "torque",
-    label: "Show the torques T1, T2 (N m)",
-    symbol: "",
-    unit: "",
-    name: "torque",
-    kind: Kind::Switch { default: false },
-    scope: Scope::Page,
-    help: "The applied torques under the error plots.",
-};
+pub const TORQUE: Param =
+    switch("torque", "Show the torques T1, T2 (N m)", false, "The applied torques under the error plots.");
 
 /// log |e| instead of e.
-pub const LOG: Param = Param {
-    key: "log",
-    label: "Errors on a log scale, with the slope ln ρ/δ the analysis predicts",
-    symbol: "",
-    unit: "",
-    name: "log",
-    kind: Kind::Switch { default: false },
-    scope: Scope::Page,
-    help: "log |e|: an exponential is a straight line, of slope ln ρ/δ.",
-};
+pub const LOG: Param = switch(
+    "log",
+    "Errors on a log scale, with the slope ln ρ/δ the analysis predicts",
+    false,
+    "log |e|: an exponential is a straight line, of slope ln ρ/δ.",
+);
+
+/// A page-only on/off view parameter.
+const fn switch(key: &'static str, label: &'static str, default: bool, help: &'static str) -> Param {
+    Param { key, label, symbol: "", unit: "", name: key, kind: Kind::Switch { default }, scope: Scope::Page, help }
+}

@@ -170,8 +170,8 @@ pub fn flexible_pair(report: &StabilityReport) -> [Option<usize>; 2] {
     [Some(i), partner]
 }
 
-/// Marker sizes, CSS pixels.
-mod size {
+/// Marker sizes, CSS pixels (the z-plane draws the same markers).
+pub(crate) mod size {
     pub const CROSS: f64 = 5.0;
     pub const CROSS_WIDTH: f64 = 2.0;
     pub const HALO: f64 = 10.0;

@@ -4,24 +4,12 @@
 
 use super::layout::Rect;
 use super::painter::{Painter, Point};
-use super::poles::{flexible_pair, PoleStyle, MAX_LOOP_POLES};
+use super::poles::{flexible_pair, size, PoleStyle, MAX_LOOP_POLES};
 use crate::analysis::StabilityReport;
 use crate::plot::palette;
 
 /// The half-width of the square region shown: the unit circle and a margin beyond it.
 pub const Z_RANGE: f64 = 1.3;
-
-/// Marker sizes, CSS pixels.
-mod size {
-    pub const CROSS: f64 = 5.0;
-    pub const CROSS_WIDTH: f64 = 2.0;
-    pub const HALO: f64 = 10.0;
-    pub const A4_RING: f64 = 11.0;
-    pub const A4_WIDTH: f64 = 1.75;
-    pub const A4_DIAMOND: f64 = 7.0;
-    pub const CHEVRON: f64 = 5.0;
-    pub const EDGE: f64 = 8.0;
-}
 
 /// The z-plane's data area: the largest centred square of a rectangle, mapping
 /// [−Z_RANGE, Z_RANGE]² onto it.

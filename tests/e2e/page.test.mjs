@@ -576,3 +576,19 @@ test('the timeline: look back by dragging on the error plot, step back, continue
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('a "Try:" button keeps the figure in sight, on a laptop and on a phone', async () => {
+  for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+    const { page, problems } = await open('?preset=fig5.2', { viewport });
+    await page.click('#explain > summary');
+    const button = page.locator('#explain button.try[data-try="preset:fig5.3"]').first();
+    await button.scrollIntoViewIfNeeded();
+    await button.click();
+    await page.waitForTimeout(1200);
+    const box = await page.locator('#canvas-wrap').boundingBox();
+    assert.ok(box.y + box.height > 80 && box.y < viewport.height - 80, `${viewport.width} px: the figure at y = ${box.y}`);
+    assert.equal(await verdictOf(page), 'unstable', 'and it shows what the button set');
+    assert.deepEqual(problems, []);
+    await page.close();
+  }
+});

@@ -142,7 +142,10 @@ async function main() {
       session.set('map', '1');
       session.setFromMap(side, delta, alpha);
     }),
-    after: () => store.dispatch({ type: 'play' }),
+    after: () => {
+      store.dispatch({ type: 'play' });
+      showFigure();
+    },
   });
 
   // ---------------------------------------------------------------- the lesson and the timeline
@@ -157,7 +160,10 @@ async function main() {
     next: () => lessonDo(() => session.lessonNext()),
     back: () => lessonDo(() => session.lessonBack()),
     leave: () => lessonDo(() => session.lessonLeave()),
-    answer: (choice) => lessonDo(() => session.lessonAnswer(choice)),
+    answer: (choice) => {
+      lessonDo(() => session.lessonAnswer(choice));
+      showFigure();
+    },
     reveal: () => {
       guard('Lesson', () => session.lessonReveal());
       refreshStatus();
@@ -303,6 +309,16 @@ async function main() {
     Object.assign(size, { w: Math.round(rect.width), h: Math.round(rect.height) });
     resize();
   }
+}
+
+/** Brings the figure into view if it is out of sight (narrow screens, where it does not stay
+ * beside the text): what a "Try:" button or an answer changes is seen at once. */
+function showFigure() {
+  const wrap = byId('canvas-wrap');
+  const r = wrap.getBoundingClientRect();
+  if (r.bottom > 80 && r.top < window.innerHeight - 80) return;
+  const smooth = !matchMedia('(prefers-reduced-motion: reduce)').matches;
+  wrap.scrollIntoView({ block: 'start', behavior: smooth ? 'smooth' : 'auto' });
 }
 
 /** The URL's values that were not taken. @param {{ key: string, text: string }[]} notices */
