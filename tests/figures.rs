@@ -51,6 +51,19 @@ fn the_z_plane_shows_the_flexible_pair_outside_the_unit_circle_without_feedback(
         let largest = poles.iter().filter(|p| p.kind == PoleKind::Loop).map(|p| p.modulus).fold(0.0, f64::max);
         assert!((largest - rho).abs() < 1e-12);
         assert!(z.marks.iter().any(|m| m.text.contains("flexible pair")), "{:?}", z.marks);
+        // Pointing at the flexible pair names the loop's pole, not the δ → 0 marker beside it,
+        // even a little nearer the marker.
+        let a4 = poles.iter().find(|q| q.kind == PoleKind::A4Open && q.im > 0.0).unwrap();
+        let p = *flexible.iter().find(|q| q.im > 0.0).unwrap();
+        let (ax, ay, px, py) = (a4.x.unwrap(), a4.y.unwrap(), p.x.unwrap(), p.y.unwrap());
+        let gap = (ax - px).hypot(ay - py);
+        assert!(gap < 40.0, "{pf}: the marker is beside the pole ({gap} px)");
+        let probe = scene.probe(px + 0.6 * (ax - px), py + 0.6 * (ay - py), 22.0).unwrap();
+        assert!(probe.title.starts_with("loop pole"), "{pf}: {}", probe.title);
+        assert!(probe
+            .lines
+            .iter()
+            .any(|l| l.text.contains(&format!("|λ| = {}", flexarm::plot::format::sig(p.modulus, 4)))));
         assert!(all_finite(&scene));
     }
 }

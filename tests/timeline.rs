@@ -175,3 +175,27 @@ fn the_scene_draws_the_instant_looked_at_with_a_cursor_and_maps_pointer_to_time(
     assert!((t - 3.0).abs() < 1e-9, "{t}");
     assert!(scene.time_at(e1.x - 50.0, e1.y - 50.0).is_none());
 }
+
+#[test]
+fn comparing_the_timeline_follows_the_run_that_goes_on() {
+    // A (no K_pr) diverges after about 4 s; B (K_pr) goes on alone.
+    let mut s = session("preset=fig5.3&compare=1");
+    play_both(&mut s, 7.0);
+    let (a, b) = (s.run(0).unwrap().closed_loop().time(), s.run(1).unwrap().closed_loop().time());
+    assert!(s.run(0).unwrap().closed_loop().is_finished() && b > a + 2.0, "A at {a}, B at {b}");
+    let t = s.timeline();
+    assert_eq!(t.end, b, "the timeline ends where B is, not where A stopped");
+    s.view_at(b - 1.0);
+    assert!(s.viewing().is_some());
+    assert_eq!(s.shown_snapshot(0).unwrap().time, s.run(0).unwrap().closed_loop().snapshot().time, "A as it stopped");
+    s.continue_from_here().unwrap();
+    assert!(s.run(0).unwrap().closed_loop().is_finished(), "A had stopped before that instant and stays stopped");
+    assert!((s.run(1).unwrap().closed_loop().time() - (b - 1.0)).abs() < 0.011);
+}
+
+/// Plays until run B has run `seconds` (A may stop first).
+fn play_both(s: &mut flexarm::session::Session, seconds: f64) {
+    while s.run(1).unwrap().closed_loop().time() < seconds {
+        s.advance(0.05).unwrap();
+    }
+}

@@ -114,6 +114,46 @@ impl NumberSpec {
     }
 }
 
+/// The values a logarithmic control steps through with the arrow keys, per decade: 1, 1.2, 1.5,
+/// 2, 2.5, 3, 4, 5, 6, 8 — round numbers a user can type and compare, about 20 % apart.
+pub const LOG_STEPS: [f64; 10] = [1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
+
+impl NumberSpec {
+    /// The value `steps` arrow-key steps from `v` (negative: down), within the control's span: on
+    /// a logarithmic control the next round values of [`LOG_STEPS`], on a linear one whole
+    /// numbers or a fiftieth of the span; a step from between two round values lands on the next
+    /// one, and the span's ends are steps too.
+    pub fn step_from(&self, v: f64, steps: i32) -> f64 {
+        let [lo, hi] = self.control;
+        let mut x = if v.is_finite() { v.clamp(lo, hi) } else { lo };
+        for _ in 0..steps.unsigned_abs() {
+            let up = steps > 0;
+            let next = match self.scale {
+                Scale::Log => next_round(x, up),
+                Scale::Linear => {
+                    let step = if self.integer { 1.0 } else { round_significant((hi - lo) / 50.0, 1) };
+                    let k = x / step + if up { 1e-9 } else { -1e-9 };
+                    (if up { k.floor() + 1.0 } else { k.ceil() - 1.0 }) * step
+                }
+            };
+            x = next.clamp(lo, hi);
+        }
+        x
+    }
+}
+
+/// The next value of the [`LOG_STEPS`] ladder above (or below) `x`.
+fn next_round(x: f64, up: bool) -> f64 {
+    let decade = 10f64.powf(x.log10().floor());
+    let ladder = (-1..=1).flat_map(|d| LOG_STEPS.map(|m| round_significant(m * decade * 10f64.powi(d), 3)));
+    let candidates = ladder.filter(|&c| if up { c > x * (1.0 + 1e-9) } else { c < x * (1.0 - 1e-9) });
+    if up {
+        candidates.fold(f64::INFINITY, f64::min)
+    } else {
+        candidates.fold(0.0, f64::max)
+    }
+}
+
 fn unit_suffix(unit: &str) -> String {
     if unit.is_empty() {
         String::new()
@@ -398,6 +438,26 @@ mod tests {
         let e = PF.parse("maybe", false).unwrap_err().to_string();
         assert!(e.contains("off | paper | lq"), "{e}");
         assert_eq!(REPEAT.parse("1", true).unwrap(), Value::Switch(true));
+    }
+
+    #[test]
+    fn arrow_keys_step_through_round_values() {
+        let d = DELTA.number().unwrap();
+        let mut v = 0.01;
+        let mut seen = vec![v];
+        for _ in 0..6 {
+            v = d.step_from(v, 1);
+            seen.push(v);
+        }
+        assert_eq!(seen, [0.01, 0.012, 0.015, 0.02, 0.025, 0.03, 0.04]);
+        assert_eq!(d.step_from(0.04, -3), 0.02);
+        assert_eq!(d.step_from(0.0347, 1), 0.04, "from between two round values: the next one");
+        assert_eq!(d.step_from(0.0347, -1), 0.03);
+        assert_eq!(d.step_from(0.24, 1), 0.25, "the span's end");
+        assert_eq!(d.step_from(0.25, 1), 0.25);
+        assert_eq!(d.step_from(0.002, -1), 0.002);
+        assert_eq!(K.number().unwrap().step_from(12.0, -2), 10.0);
+        assert_eq!(ALPHA.number().unwrap().step_from(2.0, 1), 2.5);
     }
 
     #[test]

@@ -93,7 +93,9 @@ impl Session {
         let progress = self.lesson.as_mut().expect("just made");
         progress.active = true;
         let step = step.min(progress.lesson.steps.len() - 1);
-        self.enter(step)
+        self.enter(step)?;
+        self.note = "The lesson uses the full view; leave it any time to explore from where it is.".into();
+        Ok(())
     }
 
     /// Goes on to the next step, remembering how this one was left.

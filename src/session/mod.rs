@@ -198,6 +198,16 @@ impl Session {
         self.set_value(key, Value::Number(n.value_at(position)))
     }
 
+    /// Moves a numeric parameter `steps` arrow-key steps from its value (round values on a
+    /// logarithmic control: 0.01 → 0.012 → 0.015 → 0.02 s).
+    pub fn step_value(&mut self, key: &str, steps: i32) -> Result<(), Error> {
+        let p = schema::param(key).ok_or_else(|| not_a_setting(key))?;
+        let (Kind::Number(n), Some(Value::Number(v))) = (p.kind, self.settings.get(key)) else {
+            return Err(not_a_setting(key));
+        };
+        self.set_value(key, Value::Number(n.step_from(v, steps)))
+    }
+
     /// Sets one parameter to a checked value and carries the change to the runs.
     pub fn set_value(&mut self, key: &str, value: Value) -> Result<(), Error> {
         if schema::param(key).is_some_and(|p| matches!(p.scope, Scope::Run | Scope::Compare)) {

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::run::HISTORY_SECONDS;
 use super::{CompareSettings, Session};
-use crate::control::Snapshot;
+use crate::control::{ClosedLoop, Snapshot};
 use crate::error::Error;
 use crate::plot::format::sci;
 
@@ -27,6 +27,12 @@ pub struct TimelineStatus {
 }
 
 impl Session {
+    /// The run whose clock the timeline follows: the one furthest in time (B goes on alone when
+    /// A has diverged in a comparison).
+    fn clock(&self) -> &ClosedLoop {
+        self.runs().map(|r| r.closed_loop()).max_by(|a, b| a.time().total_cmp(&b.time())).expect("run A")
+    }
+
     /// The instant looked at, or None when showing the newest state.
     pub fn viewing(&self) -> Option<f64> {
         self.viewing
@@ -35,8 +41,8 @@ impl Session {
     /// Looks at run A's kept sampling instant at or before `t` (clamped to what is kept); at or
     /// past the newest state, shows that again.
     pub fn view_at(&mut self, t: f64) {
-        let history = self.a.closed_loop().history();
-        let now = self.a.closed_loop().time();
+        let history = self.clock().history();
+        let now = self.clock().time();
         self.viewing = match history.span() {
             Some([first, _]) if t.is_finite() && t < now - 1e-9 => {
                 history.at(t.max(first)).map(|(state, _)| state.time)
@@ -47,8 +53,8 @@ impl Session {
 
     /// One sampling period back (from the newest state: the instant before it).
     pub fn step_back(&mut self) {
-        let history = self.a.closed_loop().history();
-        let from = self.viewing.unwrap_or_else(|| self.a.closed_loop().time());
+        let history = self.clock().history();
+        let from = self.viewing.unwrap_or_else(|| self.clock().time());
         if let Some(t) = history.before(from) {
             self.viewing = Some(t);
         }
@@ -57,8 +63,8 @@ impl Session {
     /// While looking back, one sampling period forward; true if it moved the cursor (false: live).
     pub(super) fn step_forward_in_history(&mut self) -> bool {
         let Some(t) = self.viewing else { return false };
-        self.viewing =
-            self.a.closed_loop().history().after(t).filter(|&next| next < self.a.closed_loop().time() - 1e-9);
+        let clock = self.clock();
+        self.viewing = clock.history().after(t).filter(|&next| next < clock.time() - 1e-9);
         true
     }
 
@@ -66,13 +72,13 @@ impl Session {
     /// state); returns the simulated time covered, or None when live.
     pub(super) fn replay(&mut self, dt: f64) -> Option<f64> {
         let t = self.viewing?;
-        let now = self.a.closed_loop().time();
+        let now = self.clock().time();
         if t + dt >= now - 1e-9 {
             self.viewing = None;
             return Some(now - t);
         }
         // The newest instant not after t + dt (at least the next one, so that slow play moves).
-        let history = self.a.closed_loop().history();
+        let history = self.clock().history();
         let next = history.at(t + dt).map(|(s, _)| s.time).filter(|&s| s > t).or_else(|| history.after(t));
         self.viewing = next;
         Some(next.map_or(now, |n| n) - t)
@@ -83,26 +89,32 @@ impl Session {
     pub fn continue_from_here(&mut self) -> Result<(), Error> {
         let Some(t) = self.viewing.take() else { return Ok(()) };
         self.keep_ghost();
-        let at = self.a.branch_at(t)?;
-        self.settings.a = *self.a.settings();
-        if let Some(b) = self.b.as_mut() {
-            b.branch_at(at)?;
+        // A run that had already stopped before t (diverged) stays as it was.
+        if self.a.closed_loop().time() > t {
+            self.a.branch_at(t)?;
+            self.settings.a = *self.a.settings();
+        }
+        if let Some(b) = self.b.as_mut().filter(|b| b.closed_loop().time() > t) {
+            b.branch_at(t)?;
             let s = *b.settings();
             self.settings.b = Some(CompareSettings { pf: s.pf, delta: s.delta, alpha: s.alpha });
         }
-        self.note = format!("Continued from t = {at:.2} s; what followed is the faint grey ghost.");
+        let what = if self.b.is_some() { "both runs continue" } else { "the run continues" };
+        self.note = format!("Continued from t = {t:.2} s: {what} from there; what followed is the faint grey ghost.");
         Ok(())
     }
 
     /// Run `index`'s state as shown: at the instant looked at, or the newest.
     pub fn shown_snapshot(&self, index: usize) -> Option<Snapshot> {
         let sim = self.run(index)?.closed_loop();
-        Some(self.viewing.and_then(|t| sim.snapshot_at(t)).unwrap_or_else(|| sim.snapshot()))
+        // A run that stopped before the instant looked at is shown as it stopped.
+        let past = self.viewing.filter(|&t| t < sim.time()).and_then(|t| sim.snapshot_at(t));
+        Some(past.unwrap_or_else(|| sim.snapshot()))
     }
 
     /// The scrubber's state.
     pub fn timeline(&self) -> TimelineStatus {
-        let sim = self.a.closed_loop();
+        let sim = self.clock();
         let now = sim.time();
         let start = sim.history().span().map_or(now, |[first, _]| first);
         let time = self.viewing.unwrap_or(now);

@@ -92,6 +92,12 @@ impl PlotFrame {
         }
     }
 
+    /// True if `v` lies within the plot's value range (|v| on a log plot).
+    pub fn contains(&self, v: f64) -> bool {
+        let v = if self.log { v.abs() } else { v };
+        v >= self.y_lo && v <= self.y_hi
+    }
+
     /// Time at horizontal pixel `x`.
     fn time_at(&self, x: f64) -> f64 {
         self.window.start + self.window.width() * (x - self.rect.x) / self.rect.w
@@ -159,20 +165,52 @@ pub fn draw_frame(painter: &mut Painter, frame: &PlotFrame, dpr: f64) {
 /// maximum in the order they occur, so spikes survive and a 10 000-sample window costs no
 /// more than the plot is wide. Non-finite samples leave a gap.
 pub fn draw_series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], values: &[f64], width: f64, color: Color) {
+    series(painter, frame, times, values, width, color, false);
+}
+
+/// Like [`draw_series`], but leaves a gap where the values leave the plot's range instead of
+/// running along its edge: for a faint comparison curve that must not look like data at the limit.
+pub fn draw_series_within(
+    painter: &mut Painter,
+    frame: &PlotFrame,
+    times: &[f64],
+    values: &[f64],
+    width: f64,
+    color: Color,
+) {
+    series(painter, frame, times, values, width, color, true);
+}
+
+fn series(
+    painter: &mut Painter,
+    frame: &PlotFrame,
+    times: &[f64],
+    values: &[f64],
+    width: f64,
+    color: Color,
+    within: bool,
+) {
+    // Outside the range counts as missing when drawing within it.
+    let shown = |v: f64| if within && !frame.contains(v) { f64::NAN } else { v };
     let n = times.len().min(values.len());
     let range = frame.window.indices(&times[..n]);
     let columns = frame.rect.w.ceil().max(1.0) as usize;
     let mut stroke = painter.stroke(width, color, false);
     if range.len() <= 2 * columns {
         for i in range {
-            stroke.to(point(frame, times[i], values[i]));
+            let v = shown(values[i]);
+            if v.is_finite() {
+                stroke.to(point(frame, times[i], v));
+            } else {
+                stroke.lift();
+            }
         }
         return;
     }
     let mut column: Option<ColumnExtremes> = None;
     for i in range {
         // A log plot shows |v|: the extremes of a column are those of |v|.
-        let (t, v) = (times[i], if frame.log { values[i].abs() } else { values[i] });
+        let (t, v) = (times[i], shown(if frame.log { values[i].abs() } else { values[i] }));
         if !v.is_finite() {
             if let Some(c) = column.take() {
                 c.emit(frame, &mut |p| stroke.to(p));

@@ -140,6 +140,12 @@ impl WebSession {
         self.inner.set_position(key, position).map_err(js_error)
     }
 
+    /// Moves a numeric parameter by `steps` arrow-key steps (round values on a log control).
+    #[wasm_bindgen(js_name = stepValue)]
+    pub fn step_value(&mut self, key: &str, steps: i32) -> Result<(), JsError> {
+        self.inner.step_value(key, steps).map_err(js_error)
+    }
+
     /// Applies a preset and restarts from rest.
     #[wasm_bindgen(js_name = applyPreset)]
     pub fn apply_preset(&mut self, id: &str) -> Result<(), JsError> {

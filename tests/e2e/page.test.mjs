@@ -301,7 +301,7 @@ test('the pole plot is drawn and a pole explains itself', async () => {
   await page.mouse.move(box.x + panel.x + fx * panel.width, box.y + panel.y + (1 - fy) * panel.height);
   await page.waitForSelector('#plot-tip:not([hidden])', { timeout: 3000 });
   const tip = await page.textContent('#plot-tip');
-  assert.match(tip, /A4 without PF/);
+  assert.match(tip, /A4 without K_pr/);
   assert.match(tip, /ζ/);
   assert.match(tip, /rad\/s/);
   await page.screenshot({ path: path.join(shots, 'poles.png') });
@@ -501,8 +501,10 @@ test('the lesson: every step sets the simulator up, every prediction is answered
       assert.match(await page.textContent('#lesson-task-done'), /Not yet/);
       if (s.title.startsWith('Find where')) {
         assert.equal(await page.$eval('#delta-windows', (el) => el.hidden), true, 'the windows stay hidden while guessing');
-        // δ = 0.05 s: position ln(0.05/0.002)/ln(125) of the slider.
-        await page.$eval('#delta', (el) => { el.value = '667'; el.dispatchEvent(new Event('input', { bubbles: true })); });
+        // As a student would: the δ slider with the arrow keys, round values 0.01 → 0.012 → … → 0.04 s.
+        await page.focus('#delta');
+        for (let k = 0; k < 6; k++) await page.keyboard.press('ArrowRight');
+        assert.equal(await page.textContent('#delta-value'), '0.0400 s', 'six steps up from 0.01 s');
       } else if (s.title.startsWith('Compare')) {
         await page.check('#compare');
       }

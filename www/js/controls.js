@@ -7,6 +7,9 @@ import { make, setText } from './dom.js';
 /** Slider resolution: positions 0…STEPS map onto the control's span. */
 export const STEPS = 1000;
 
+/** Steps a key moves a slider by (Home and End keep their own meaning: the span's ends). */
+export const KEY_STEPS = Object.freeze({ ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1, PageUp: 3, PageDown: -3 });
+
 /** The element id of a parameter's input: `b_pf` → `b-pf`. @param {string} key */
 export const inputId = (key) => key.replace(/_/g, '-');
 
@@ -25,7 +28,8 @@ function labelText(p) {
 /**
  * Builds the field for one parameter inside `slot`.
  * @param {Param} p @param {HTMLElement} slot
- * @param {{ onSet: (key: string, text: string) => void, onPosition: (key: string, f: number) => void }} on
+ * @param {{ onSet: (key: string, text: string) => void, onPosition: (key: string, f: number) => void,
+ *   onStep: (key: string, steps: number) => void }} on
  */
 function buildField(p, slot, on) {
   const id = inputId(p.key);
@@ -51,6 +55,14 @@ function buildField(p, slot, on) {
     type: 'range', id, min: '0', max: String(STEPS), step: '1', 'aria-describedby': helpId,
   });
   input.addEventListener('input', () => on.onPosition(p.key, Number(/** @type {HTMLInputElement} */ (input).value) / STEPS));
+  // Arrow keys step through round values the session chooses (0.01 → 0.012 → 0.015 s), not
+  // through slider positions that round back to the same value.
+  input.addEventListener('keydown', (ev) => {
+    const steps = KEY_STEPS[/** @type {KeyboardEvent} */ (ev).key];
+    if (!steps) return;
+    ev.preventDefault();
+    on.onStep(p.key, steps);
+  });
   const span = p.control ? `${p.allowed}${p.scale === 'log' ? ', logarithmic scale' : ''}` : p.allowed;
   slot.append(label, output, input, make('small', { id: helpId, class: 'help', text: span }));
   return { input, output };
@@ -59,7 +71,8 @@ function buildField(p, slot, on) {
 /**
  * Builds every control whose placeholder the page has.
  * @param {Param[]} schema
- * @param {{ onSet: (key: string, text: string) => void, onPosition: (key: string, f: number) => void }} on
+ * @param {{ onSet: (key: string, text: string) => void, onPosition: (key: string, f: number) => void,
+ *   onStep: (key: string, steps: number) => void }} on
  */
 export function buildControls(schema, on) {
   /** @type {Map<string, { input: HTMLElement, output: HTMLElement | null }>} */

@@ -58,6 +58,7 @@ async function main() {
   const controls = buildControls(wasm.schema(), {
     onSet: (key, text) => change(() => session.set(key, text)),
     onPosition: (key, f) => change(() => session.setPosition(linked(key), f)),
+    onStep: (key, steps) => change(() => session.stepValue(linked(key), steps)),
   });
   /** With α linked, either α slider moves both. @param {string} key */
   const linked = (key) => (store.get().linkAlpha && (key === 'alpha1' || key === 'alpha2') ? 'alpha' : key);

@@ -13,7 +13,9 @@ use crate::view::layout::{Panel, PanelKind};
 use crate::view::map::{draw_map_marker, side_of, LogFrame};
 use crate::view::poles::{draw_a4, draw_flexible_halo, draw_nyquist, draw_pole_background, draw_poles, PoleFrame};
 use crate::view::rho_curve::draw_rho_marker;
-use crate::view::traces::{draw_background, draw_frame, draw_series, max_abs, PlotFrame, TimeWindow};
+use crate::view::traces::{
+    draw_background, draw_frame, draw_series, draw_series_within, max_abs, PlotFrame, TimeWindow,
+};
 use crate::view::zplane::{draw_zplane_background, draw_zplane_run, ZFrame};
 
 impl Scene {
@@ -69,7 +71,14 @@ impl Scene {
             for (values, _) in plot_series(panel.kind, ghost, 0).iter().flatten() {
                 let t = ghost.t();
                 let m = t.len().min(values.len());
-                draw_series(&mut self.painter, &frame, &t[..m], &values[..m], CURVE_WIDTH * dpr, palette::GHOST_TRACE);
+                draw_series_within(
+                    &mut self.painter,
+                    &frame,
+                    &t[..m],
+                    &values[..m],
+                    CURVE_WIDTH * dpr,
+                    palette::GHOST_TRACE,
+                );
             }
         }
         for (run, state) in runs.iter().enumerate() {

@@ -23,6 +23,19 @@ use crate::view::rho_curve::rho_ticks;
 use crate::view::traces::TimeWindow;
 use crate::view::zplane::ZFrame;
 
+/// CSS pixels a δ → 0 marker must be nearer than a loop pole to be picked instead of it.
+const A4_PICK_PENALTY: f64 = 6.0;
+/// Markers of another kind within this many CSS pixels are named in a pole's tooltip.
+const A4_BESIDE: f64 = 16.0;
+
+/// What a pole-plot marker is, as its tooltip's title says it.
+fn pole_name(kind: PoleKind) -> &'static str {
+    match kind {
+        PoleKind::Loop => "loop pole (sampled loop, s = ln λ / δ)",
+        PoleKind::A4Open => "A4 without K_pr (the δ → 0 limit, not the sampled loop)",
+        PoleKind::A4 => "A4 with K_pr (the δ → 0 limit, not the sampled loop)",
+    }
+}
 /// Least distance between log-axis labels, CSS px (x: a label's width, y: its height).
 const LOG_LABEL_SPACING: [f64; 2] = [38.0, 17.0];
 
@@ -403,11 +416,14 @@ impl Scene {
         }
         let poles = self.pole_info();
         let at = |p: &PoleInfo| Some((p.x?, p.y?)).filter(|(px, py)| near_panel(*px, *py, 12.0));
+        // The sampled loop's own poles win over the δ → 0 markers that sit next to them (the
+        // question is usually "what is this pole?", and A4 marks a limit, not the loop).
+        let penalty = |p: &PoleInfo| if p.kind == PoleKind::Loop { 0.0 } else { A4_PICK_PENALTY };
         let best = poles
             .iter()
             .filter_map(|p| at(p).map(|(px, py)| (p, px, py, (px - x).hypot(py - y))))
             .filter(|(.., d)| *d <= reach)
-            .min_by(|a, b| a.3.total_cmp(&b.3))?;
+            .min_by(|a, b| (a.3 + penalty(a.0)).total_cmp(&(b.3 + penalty(b.0))))?;
         let (pole, px, py, _) = best;
         let others = poles
             .iter()
@@ -457,12 +473,15 @@ impl Scene {
                 if others > 1 { "s" } else { "" }
             )));
         }
-        let mut title = match pole.kind {
-            PoleKind::Loop => "loop pole (sampled loop, s = ln λ / δ)",
-            PoleKind::A4Open => "A4 without PF (δ → 0 limit)",
-            PoleKind::A4 => "A4 with PF (δ → 0 limit)",
+        // A different kind of marker right beside this one is named too, so neither hides the other.
+        for q in poles.iter().filter(|q| q.kind != pole.kind && q.run == pole.run) {
+            let Some((qx, qy)) = at(q) else { continue };
+            if (qx - px).hypot(qy - py) <= A4_BESIDE {
+                let s = format!("{} ± {}j", format::sig(q.re, 3), format::sig(q.im.abs(), 4));
+                lines.push(TipLine::plain(format!("beside it: {} at s = {s} 1/s", pole_name(q.kind))));
+            }
         }
-        .to_string();
+        let mut title = pole_name(pole.kind).to_string();
         if self.pair {
             title += &format!(" — run {}", pole.run);
         }
