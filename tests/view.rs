@@ -8,7 +8,7 @@ use flexarm::plot::ticks::{log_ticks, nice_ceil, Ticks};
 use flexarm::session::{Run, RunSettings};
 use flexarm::view::arm::{drawn_twist, spring_end_angle, ArmFrame, ArmPose, MAX_DRAWN_TWIST, WORLD_HALF_EXTENT};
 use flexarm::view::autoscale::{Autoscale, AutoscaleSettings};
-use flexarm::view::layout::Arrangement;
+use flexarm::view::layout::{gutters, Arrangement, Tab};
 use flexarm::view::map::StabilityGrid;
 use flexarm::view::poles::{draw_a4, draw_flexible_halo, draw_poles, PoleFrame, PoleStyle, RUN_VERTEX_BUDGET};
 use flexarm::view::traces::{draw_series, max_abs, PlotFrame, TimeWindow};
@@ -182,15 +182,16 @@ const SIZES: [(f64, f64); 8] = [
     (320.0, 320.0),
 ];
 
-/// Every combination of the panel options.
+/// Every combination of the panel options, on each tab.
 fn all_options() -> impl Iterator<Item = LayoutOptions> {
-    (0..64u8).map(|bits| LayoutOptions {
+    (0..192u8).map(|bits| LayoutOptions {
         show_torque: bits & 1 != 0,
         show_poles: bits & 2 != 0,
         show_map: bits & 4 != 0,
         pair: bits & 8 != 0,
         z_plane: bits & 16 != 0,
         show_rho: bits & 32 != 0,
+        tab: Tab::ALL[(bits >> 6) as usize % 3],
     })
 }
 
@@ -205,16 +206,10 @@ fn all_layouts() -> impl Iterator<Item = (f64, f64, f64, LayoutOptions, Layout)>
     })
 }
 
-/// The gutters the page needs for its HTML labels: left of, above and below every plot.
-fn gutter(kind: PanelKind) -> (f64, f64, f64) {
-    use flexarm::view::layout::margins;
-    if kind.is_stage() {
-        (0.0, margins::STAGE_TOP, 0.0)
-    } else if kind.is_analysis() {
-        (margins::ANALYSIS_LEFT, margins::PLOT_TOP, margins::PLOT_BOTTOM)
-    } else {
-        (margins::PLOT_LEFT, margins::PLOT_TOP, margins::PLOT_BOTTOM)
-    }
+/// A panel's rectangle with its label gutters.
+fn with_gutters(p: &flexarm::view::layout::Panel) -> Rect {
+    let [l, t, r, b] = gutters(p.kind);
+    Rect::new(p.rect.x - l, p.rect.y - t, p.rect.w + l + r, p.rect.h + t + b)
 }
 
 #[test]
@@ -239,30 +234,39 @@ fn panels_lie_inside_the_canvas_and_do_not_overlap() {
         if options.show_map {
             want.extend([PanelKind::MapOff, PanelKind::MapOn]);
         }
-        // ρ(δ) shows the slice of a map at the current α: it is left out where there is no room.
-        if !kinds.contains(&PanelKind::RhoCurve) {
-            want.retain(|k| *k != PanelKind::RhoCurve);
-            assert!(!options.show_rho || w < 1280.0 || h < 700.0 || options.pair, "{w}×{h} {options:?}: ρ(δ) left out");
+        match layout.tab {
+            // A phone shows the panels of one tab: the one asked for if it has panels.
+            Some(tab) => {
+                assert_eq!(layout.arrangement, Arrangement::Tabbed);
+                assert!(layout.tabs.contains(&tab) && layout.tabs[0] == Tab::Run, "{:?}", layout.tabs);
+                if layout.tabs.contains(&options.tab) {
+                    assert_eq!(tab, options.tab);
+                }
+                let holds = |k: PanelKind| match tab {
+                    Tab::Run => k.is_stage() || k.is_time_plot(),
+                    Tab::Poles => k.is_pole_plot() || k == PanelKind::RhoCurve,
+                    Tab::Maps => k.is_map(),
+                };
+                want.retain(|k| holds(*k));
+            }
+            None => assert!(layout.tabs.is_empty()),
         }
-        assert_eq!(kinds, want, "{options:?}");
+        assert_eq!(kinds, want, "{w}×{h} {options:?}");
         for (i, a) in layout.panels.iter().enumerate() {
             assert!(canvas.contains_rect(&a.rect), "{w}×{h}@{dpr} {options:?}: {:?} outside", a);
             let min_size = if w >= 600.0 && h >= 400.0 { 60.0 } else { 1.0 };
             assert!(a.rect.w >= min_size && a.rect.h >= min_size, "{w}×{h} {options:?}: {:?} too small", a);
             // The label gutters stay free of other panels (and on the canvas), except on a tiny
             // canvas where the rows are thinner than their gutters.
-            let (left, top, bottom) = gutter(a.kind);
-            if w < 360.0 {
+            if h < 360.0 {
                 continue;
             }
-            let with_gutters = Rect::new(a.rect.x - left, a.rect.y - top, a.rect.w + left, a.rect.h + top + bottom);
-            assert!(canvas.contains_rect(&with_gutters), "{w}×{h} {options:?}: gutters of {:?} off canvas", a.kind);
+            let mine = with_gutters(a);
+            assert!(canvas.contains_rect(&mine), "{w}×{h} {options:?}: gutters of {:?} off canvas", a.kind);
             for b in &layout.panels[i + 1..] {
                 assert!(!a.rect.overlaps(&b.rect), "{w}×{h} {options:?}: {:?} overlaps {:?}", a, b);
-                let (bl, bt, bb) = gutter(b.kind);
-                let b_gutters = Rect::new(b.rect.x - bl, b.rect.y - bt, b.rect.w + bl, b.rect.h + bt + bb);
                 assert!(
-                    !with_gutters.overlaps(&b_gutters),
+                    !mine.overlaps(&with_gutters(b)),
                     "{w}×{h} {options:?}: gutters of {:?} and {:?} overlap",
                     a.kind,
                     b.kind
@@ -273,49 +277,59 @@ fn panels_lie_inside_the_canvas_and_do_not_overlap() {
 }
 
 #[test]
-fn the_analysis_row_sits_below_the_time_plots_right_of_the_stage() {
-    for (w, h) in [(1280.0, 800.0), (1400.0, 900.0), (1200.0, 560.0), (2560.0, 1440.0)] {
+fn wide_canvases_show_everything_in_two_bands_at_readable_sizes() {
+    // The page's canvas on a laptop (1280 × 800), a large screen (1920 × 1080) and a projector.
+    for ((w, h), min_side) in [((830.0, 600.0), 125.0), ((1450.0, 900.0), 200.0), ((2500.0, 1300.0), 330.0)] {
         for torque in [false, true] {
             let options = LayoutOptions { show_torque: torque, ..LayoutOptions::default() };
             let l = Layout::compute(w, h, 1.0, &options);
-            assert_eq!(l.arrangement, Arrangement::SideBySide);
+            assert_eq!(l.arrangement, Arrangement::Bands, "{w}×{h}");
             let arm = l.panel(PanelKind::Arm).unwrap().rect;
-            let share = arm.w / w;
-            assert!((0.35..=0.40).contains(&share), "{w}×{h}: stage share {share}");
+            let e1 = l.panel(PanelKind::Error1).unwrap().rect;
             let last_time = l.panel(if torque { PanelKind::Torque } else { PanelKind::Error2 }).unwrap().rect;
-            let poles = l.panel(PanelKind::Poles).unwrap().rect;
-            let off = l.panel(PanelKind::MapOff).unwrap().rect;
-            let on = l.panel(PanelKind::MapOn).unwrap().rect;
-            for r in [poles, off, on] {
-                assert!(r.x > arm.right(), "{w}×{h}: analysis right of the stage");
-                assert!(r.y > last_time.bottom(), "{w}×{h}: analysis below the time plots");
-                assert!(r.w >= 120.0 && r.h >= 120.0, "{w}×{h}: analysis panel {r:?} too small");
+            assert!(arm.right() < e1.x && (arm.y - e1.y).abs() < 1e-9, "{w}×{h}: the arm left of the traces, on top");
+            assert!(arm.w.min(arm.h) >= min_side, "{w}×{h}: the arm {arm:?}");
+            let analysis: Vec<Rect> = [PanelKind::Poles, PanelKind::RhoCurve, PanelKind::MapOff, PanelKind::MapOn]
+                .into_iter()
+                .map(|k| l.panel(k).unwrap().rect)
+                .collect();
+            for r in &analysis {
+                assert!(r.y > arm.bottom() && r.y > last_time.bottom(), "{w}×{h}: the analysis below the top band");
+                // Three time plots take height from the analysis row.
+                let h_share = if torque { 0.75 } else { 0.9 };
+                assert!(r.w >= min_side && r.h >= min_side * h_share, "{w}×{h}: analysis panel {r:?} too small");
             }
-            // One row, left to right: poles, map-off, map-on.
-            assert_eq!(poles.y, off.y);
-            assert_eq!(off.y, on.y);
-            assert!(poles.right() < off.x && off.right() < on.x);
+            // One row across the whole width, in reading order.
+            assert!(analysis.windows(2).all(|p| p[0].y == p[1].y && p[0].right() < p[1].x), "{w}×{h}");
+            assert!(analysis[0].x < arm.right(), "{w}×{h}: the row starts under the arm");
         }
     }
 }
 
 #[test]
-fn narrow_canvases_wrap_the_analysis_panels_below_the_plots() {
-    for (w, h) in [(390.0, 844.0), (600.0, 900.0)] {
-        let l =
-            Layout::compute(w, h, 3.0, &LayoutOptions { show_torque: true, pair: true, ..LayoutOptions::default() });
-        assert_eq!(l.arrangement, Arrangement::Stacked);
-        let arm = l.panel(PanelKind::Arm).unwrap().rect;
-        let arm_b = l.panel(PanelKind::ArmB).unwrap().rect;
-        assert_eq!(arm.y, arm_b.y, "{w}×{h}: the two arms side by side on a wide stage");
-        assert!(arm.right() < arm_b.x);
-        let torque = l.panel(PanelKind::Torque).unwrap().rect;
-        for kind in [PanelKind::Poles, PanelKind::MapOff, PanelKind::MapOn] {
-            let r = l.panel(kind).unwrap().rect;
-            assert!(r.y > torque.bottom() && r.y > arm.bottom(), "{w}×{h}: {kind:?} below the plots");
-            assert!(r.w >= 60.0 && r.h >= 60.0, "{w}×{h}: {kind:?} {r:?}");
-        }
+fn phones_show_one_tab_at_a_time_across_the_whole_width() {
+    // The page's canvas on a 390-px phone.
+    let (w, h) = (372.0, 520.0);
+    let l = Layout::compute(w, h, 3.0, &LayoutOptions::default());
+    assert_eq!((l.arrangement, l.tab), (Arrangement::Tabbed, Some(Tab::Run)));
+    assert_eq!(l.tabs, [Tab::Run, Tab::Poles, Tab::Maps]);
+    let arm = l.panel(PanelKind::Arm).unwrap().rect;
+    let e2 = l.panel(PanelKind::Error2).unwrap().rect;
+    assert!(arm.w >= 0.9 * w && e2.right() > 0.95 * w, "the run fills the width: {arm:?} {e2:?}");
+    let maps = Layout::compute(w, h, 3.0, &LayoutOptions { tab: Tab::Maps, ..LayoutOptions::default() });
+    let kinds: Vec<PanelKind> = maps.panels.iter().map(|p| p.kind).collect();
+    assert_eq!(kinds, [PanelKind::MapOff, PanelKind::MapOn]);
+    for p in &maps.panels {
+        assert!(p.rect.w >= 250.0 && p.rect.h >= 120.0, "{p:?}");
     }
+    // A tab without panels falls back to the run; the intro has no tabs.
+    let none =
+        Layout::compute(w, h, 3.0, &LayoutOptions { tab: Tab::Maps, show_map: false, ..LayoutOptions::default() });
+    assert_eq!(none.tab, Some(Tab::Run));
+    assert_eq!(none.tabs, [Tab::Run, Tab::Poles]);
+    let intro = LayoutOptions { show_poles: false, show_rho: false, show_map: false, ..LayoutOptions::default() };
+    let l = Layout::compute(w, h, 3.0, &intro);
+    assert_eq!((l.arrangement, l.tab), (Arrangement::Stacked, None));
 }
 
 #[test]
@@ -323,31 +337,18 @@ fn two_arms_share_the_stage() {
     let l = Layout::compute(1400.0, 900.0, 2.0, &LayoutOptions { pair: true, ..LayoutOptions::default() });
     let a = l.panel(PanelKind::Arm).unwrap().rect;
     let b = l.panel(PanelKind::ArmB).unwrap().rect;
-    let single = Layout::compute(1400.0, 900.0, 2.0, &LayoutOptions::default());
-    let stage = single.panel(PanelKind::Arm).unwrap().rect;
-    assert!(stage.contains_rect(&a) || (a.x == stage.x && a.w == stage.w), "A inside the stage column");
-    assert!(a.x >= stage.x && b.x >= stage.x && a.right() <= stage.right() + 1e-9 && b.right() <= stage.right() + 1e-9);
     assert!(!a.overlaps(&b));
-    // On this tall stage column one above the other gives each arm the larger square.
-    assert!(a.w.min(a.h) >= 350.0 && b.w.min(b.h) >= 350.0, "{a:?} {b:?}");
+    assert_eq!(a.y, b.y, "side by side in the top band");
+    assert!(a.w.min(a.h) >= 300.0 && b.w.min(b.h) >= 300.0, "{a:?} {b:?}");
+    let e1 = l.panel(PanelKind::Error1).unwrap().rect;
+    assert!(b.right() < e1.x);
     assert_eq!(PanelKind::ArmB.id(), "arm-b");
 }
 
 #[test]
-fn wide_canvases_put_the_arm_left_narrow_ones_on_top() {
-    assert_eq!(
-        LayoutOptions::default(),
-        LayoutOptions {
-            show_torque: false,
-            show_poles: true,
-            z_plane: false,
-            show_rho: true,
-            show_map: true,
-            pair: false
-        },
-        "by default the pole plot and the maps are shown"
-    );
-    let wide = Layout::compute(1280.0, 720.0, 1.0, &LayoutOptions::default());
+fn without_analysis_panels_the_arm_sits_left_on_wide_canvases_and_on_top_on_narrow_ones() {
+    let intro = LayoutOptions { show_poles: false, show_rho: false, show_map: false, ..LayoutOptions::default() };
+    let wide = Layout::compute(1280.0, 720.0, 1.0, &intro);
     assert_eq!(wide.arrangement, Arrangement::SideBySide);
     let arm = wide.panel(PanelKind::Arm).unwrap().rect;
     let e1 = wide.panel(PanelKind::Error1).unwrap().rect;
@@ -356,14 +357,18 @@ fn wide_canvases_put_the_arm_left_narrow_ones_on_top() {
     assert!((arm.w / 1280.0 - 0.4).abs() < 0.05, "arm ≈ 40 % wide: {}", arm.w);
     assert!(e1.bottom() < e2.y, "e1 above e2");
     assert!((e1.w - e2.w).abs() < 1e-9 && (e1.h - e2.h).abs() < 1e-9);
-
     for (w, h) in [(390.0, 844.0), (600.0, 900.0), (500.0, 400.0)] {
-        let narrow = Layout::compute(w, h, 2.0, &LayoutOptions::default());
+        let narrow = Layout::compute(w, h, 2.0, &intro);
         assert_eq!(narrow.arrangement, Arrangement::Stacked, "{w}×{h}");
         let arm = narrow.panel(PanelKind::Arm).unwrap().rect;
         let e1 = narrow.panel(PanelKind::Error1).unwrap().rect;
         assert!(arm.bottom() < e1.y, "{w}×{h}: arm above the plots");
     }
+    // Portrait canvases with the analysis stack it under the time plots.
+    let tall = Layout::compute(700.0, 900.0, 1.0, &LayoutOptions::default());
+    assert_eq!(tall.arrangement, Arrangement::Stacked);
+    let e2 = tall.panel(PanelKind::Error2).unwrap().rect;
+    assert!(tall.panels.iter().filter(|p| p.kind.is_analysis()).all(|p| p.rect.y > e2.bottom()));
 }
 
 #[test]

@@ -323,6 +323,7 @@ pub const PARAMS: &[&Param] = &[
     &B_DELTA,
     &B_ALPHA,
     &super::MODE,
+    &super::TAB,
     &super::POLES,
     &super::PLANE,
     &super::RHO,

@@ -23,6 +23,25 @@ pub const MODE: Param = Param {
         "The intro shows the arm, its errors, δ and the preliminary feedback; the full view every control and figure.",
 };
 
+/// The view a phone shows (a narrow canvas shows one at a time).
+pub const TAB: Param = Param {
+    key: "tab",
+    label: "Shown on a narrow screen",
+    symbol: "",
+    unit: "",
+    name: "tab",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "run", label: "Arm and errors" },
+            Choice { value: "poles", label: "Poles and ρ(δ)" },
+            Choice { value: "maps", label: "Stability maps" },
+        ],
+        default: "run",
+    },
+    scope: Scope::Page,
+    help: "A phone shows one view at a time: the arm and its errors, the poles and ρ(δ), or the stability maps.",
+};
+
 /// The pole plot.
 pub const POLES: Param = switch(
     "poles",

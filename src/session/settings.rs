@@ -157,16 +157,34 @@ pub struct ViewSettings {
     pub torque: bool,
     /// log |e| with the predicted slope.
     pub log: bool,
+    /// The view a narrow canvas shows ("run", "poles", "maps").
+    pub tab: &'static str,
 }
 
 /// The view parameters, in the order the state string writes them.
-const VIEW_PARAMS: [&Param; 7] =
-    [&schema::MODE, &schema::POLES, &schema::PLANE, &schema::RHO, &schema::MAP, &schema::TORQUE, &schema::LOG];
+const VIEW_PARAMS: [&Param; 8] = [
+    &schema::MODE,
+    &schema::TAB,
+    &schema::POLES,
+    &schema::PLANE,
+    &schema::RHO,
+    &schema::MAP,
+    &schema::TORQUE,
+    &schema::LOG,
+];
 
 impl Default for ViewSettings {
     fn default() -> Self {
-        let mut v =
-            Self { full: false, poles: false, z_plane: false, rho: false, map: false, torque: false, log: false };
+        let mut v = Self {
+            full: false,
+            poles: false,
+            z_plane: false,
+            rho: false,
+            map: false,
+            torque: false,
+            log: false,
+            tab: "run",
+        };
         for p in VIEW_PARAMS {
             v.set(p.key, p.default_value());
         }
@@ -180,6 +198,7 @@ impl ViewSettings {
         Some(match key {
             "mode" => Value::Choice(if self.full { "full" } else { "intro" }),
             "plane" => Value::Choice(if self.z_plane { "z" } else { "s" }),
+            "tab" => Value::Choice(self.tab),
             "poles" => Value::Switch(self.poles),
             "rho" => Value::Switch(self.rho),
             "map" => Value::Switch(self.map),
@@ -194,6 +213,7 @@ impl ViewSettings {
         match (key, v) {
             ("mode", Value::Choice(m)) => self.full = m == "full",
             ("plane", Value::Choice(p)) => self.z_plane = p == "z",
+            ("tab", Value::Choice(t)) => self.tab = t,
             ("poles", Value::Switch(b)) => self.poles = b,
             ("rho", Value::Switch(b)) => self.rho = b,
             ("map", Value::Switch(b)) => self.map = b,

@@ -1,11 +1,13 @@
-//! Where each panel goes on the canvas.
+//! Where each panel goes on the canvas, decided from its size and aspect.
 //!
-//! The canvas is split into a *stage* (the arm picture, or two arms when two runs are compared)
-//! and a column of *plots*: the time traces stacked, then the analysis panels (pole plot and the
-//! two stability maps) in a row below them. On a wide canvas the stage takes the left ≈ 40 % and
-//! the plots sit on the right; on a narrow or portrait canvas the stage sits on top and the plots
-//! below it. The analysis panels share their row side by side, or wrap onto more rows when that
-//! gives every panel more room (narrow canvases).
+//! The panels are the *stage* (the arm picture, or two arms when two runs are compared), the
+//! *time plots* (errors, torques) and the *analysis panels* (pole plot, ρ(δ), the two stability
+//! maps). A wide canvas shows them all in two bands: the stage and the time plots side by side on
+//! top, the analysis panels across the whole width below, with the split and the number of
+//! columns chosen so that the smallest panel is as large as it can be ([`Arrangement::Bands`]).
+//! Without analysis panels (the intro) the stage sits left of the time plots. A portrait canvas
+//! stacks stage, time plots and analysis panels. A phone-sized canvas shows one [`Tab`] at a time:
+//! the arm and its errors, the poles and ρ(δ), or the maps.
 //!
 //! Panel rectangles are in CSS pixels and, for plots, are exactly the data area: the axis ranges
 //! map linearly onto them. Gutters around each plot are left free for the HTML tick labels and
@@ -61,9 +63,14 @@ impl Rect {
             && other.bottom() <= self.bottom() + TOL
     }
 
-    /// True if the interiors of the two rectangles overlap.
+    /// True if the interiors of the two rectangles overlap (by more than rounding: edges that
+    /// touch do not).
     pub fn overlaps(&self, other: &Rect) -> bool {
-        self.x < other.right() && other.x < self.right() && self.y < other.bottom() && other.y < self.bottom()
+        const TOL: f64 = 1e-9;
+        self.x < other.right() - TOL
+            && other.x < self.right() - TOL
+            && self.y < other.bottom() - TOL
+            && other.y < self.bottom() - TOL
     }
 }
 
@@ -146,6 +153,54 @@ pub struct Panel {
     pub rect: Rect,
 }
 
+/// One of the views a phone shows at a time (a narrow canvas cannot show every panel readably).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Tab {
+    /// The arm(s) and the time plots.
+    #[default]
+    Run,
+    /// The pole plot (s or z) and ρ(δ).
+    Poles,
+    /// The two stability maps.
+    Maps,
+}
+
+impl Tab {
+    pub const ALL: [Tab; 3] = [Tab::Run, Tab::Poles, Tab::Maps];
+
+    /// The word in the state string (`tab=poles`).
+    pub fn id(self) -> &'static str {
+        match self {
+            Tab::Run => "run",
+            Tab::Poles => "poles",
+            Tab::Maps => "maps",
+        }
+    }
+
+    /// What the tab bar says.
+    pub fn label(self) -> &'static str {
+        match self {
+            Tab::Run => "Arm and errors",
+            Tab::Poles => "Poles and ρ(δ)",
+            Tab::Maps => "Stability maps",
+        }
+    }
+
+    pub fn from_id(id: &str) -> Option<Tab> {
+        Tab::ALL.into_iter().find(|t| t.id() == id)
+    }
+
+    /// True if `kind` belongs to this tab.
+    fn holds(self, kind: PanelKind) -> bool {
+        match self {
+            Tab::Run => kind.is_stage() || kind.is_time_plot(),
+            Tab::Poles => kind.is_pole_plot() || kind == PanelKind::RhoCurve,
+            Tab::Maps => kind.is_map(),
+        }
+    }
+}
+
 /// Which panels to show.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LayoutOptions {
@@ -161,12 +216,23 @@ pub struct LayoutOptions {
     pub show_map: bool,
     /// Two runs side by side: a second arm on the stage.
     pub pair: bool,
+    /// The view a narrow canvas shows (a wide one shows them all).
+    pub tab: Tab,
 }
 
 impl Default for LayoutOptions {
-    /// What the page shows by default: one run, no torque, the s-plane pole plot, ρ(δ), the maps.
+    /// What the page's full view shows by default: one run, no torque, the s-plane pole plot,
+    /// ρ(δ), the maps.
     fn default() -> Self {
-        Self { show_torque: false, show_poles: true, z_plane: false, show_rho: true, show_map: true, pair: false }
+        Self {
+            show_torque: false,
+            show_poles: true,
+            z_plane: false,
+            show_rho: true,
+            show_map: true,
+            pair: false,
+            tab: Tab::Run,
+        }
     }
 }
 
@@ -204,56 +270,90 @@ impl LayoutOptions {
         }
         PanelLists { stage, plots, analysis }
     }
+
+    /// The tabs a narrow canvas offers: the run always, the others when they have panels.
+    pub fn tabs(&self) -> Vec<Tab> {
+        let lists = self.panels();
+        Tab::ALL.into_iter().filter(|t| *t == Tab::Run || lists.analysis.iter().any(|k| t.holds(*k))).collect()
+    }
 }
 
-/// Stage beside the plots, or stage above the plots.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// How the panels are arranged.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Arrangement {
-    /// Wide canvas: stage on the left, plots on the right.
+    /// Wide canvas: stage on the left, a column of plots on the right (the time plots, and any
+    /// analysis panels under them when that suits better than bands).
     SideBySide,
-    /// Narrow or portrait canvas: stage on top, plots below.
+    /// Wide canvas with analysis panels: stage and time plots side by side in a top band, the
+    /// analysis panels across the whole width below them.
+    Bands,
+    /// Portrait canvas: stage on top, the time plots below, the analysis panels below them.
     Stacked,
+    /// Narrow canvas (a phone): only the panels of one [`Tab`], stacked.
+    Tabbed,
 }
 
 /// Margins in CSS pixels.
 pub mod margins {
     /// Around the whole canvas.
     pub const OUTER: f64 = 8.0;
-    /// Between the stage and the plot column.
+    /// Between the stage and the plot column, and between bands.
     pub const GAP: f64 = 12.0;
-    /// Left of a plot: room for the y tick labels.
+    /// Left of a time plot: room for the y tick labels.
     pub const PLOT_LEFT: f64 = 60.0;
-    /// Above a plot: room for its title (the y label).
+    /// Above a time plot: its header (the y label left, the x label right).
     pub const PLOT_TOP: f64 = 22.0;
-    /// Below a plot: room for the time tick labels.
+    /// Below a time plot: the time tick labels.
     pub const PLOT_BOTTOM: f64 = 20.0;
     /// Right of a plot.
     pub const PLOT_RIGHT: f64 = 10.0;
     /// Left of an analysis panel: its tick labels are short ("−40", "0.2").
     pub const ANALYSIS_LEFT: f64 = 44.0;
-    /// Above the stage: room for a caption such as "spring twist ×20".
+    /// Above an analysis panel: its title, then its y label.
+    pub const ANALYSIS_TOP: f64 = 40.0;
+    /// Below an analysis panel: the tick labels, then its x label.
+    pub const ANALYSIS_BOTTOM: f64 = 38.0;
+    /// Above the stage: room for a caption such as "arm, top view".
     pub const STAGE_TOP: f64 = 22.0;
 }
 
-/// Share of the canvas width given to the stage on a wide canvas.
+/// The label gutters (left, top, right, bottom) around a panel's rectangle, CSS px.
+pub fn gutters(kind: PanelKind) -> [f64; 4] {
+    use margins::*;
+    if kind.is_stage() {
+        [0.0, STAGE_TOP, 0.0, 0.0]
+    } else if kind.is_analysis() {
+        [ANALYSIS_LEFT, ANALYSIS_TOP, PLOT_RIGHT, ANALYSIS_BOTTOM]
+    } else {
+        [PLOT_LEFT, PLOT_TOP, PLOT_RIGHT, PLOT_BOTTOM]
+    }
+}
+
+/// Share of the canvas width given to the stage on a wide canvas without analysis panels.
 pub const STAGE_WIDTH_SHARE: f64 = 0.4;
-/// The same when the analysis row is shown (the row needs the width).
-pub const STAGE_WIDTH_SHARE_WITH_ANALYSIS: f64 = 0.38;
-/// Share of the canvas height given to the stage on a narrow canvas.
+/// The same when the analysis panels sit in the column right of it.
+pub const STAGE_WIDTH_SHARE_WITH_ANALYSIS: f64 = 0.34;
+/// Share of the canvas height given to the stage on a portrait canvas.
 pub const STAGE_HEIGHT_SHARE: f64 = 0.42;
 /// The same when the analysis panels are shown.
 pub const STAGE_HEIGHT_SHARE_WITH_ANALYSIS: f64 = 0.3;
-/// Canvases narrower than this (CSS px), or taller than wide × [`PORTRAIT_ASPECT`], stack.
-pub const NARROW_WIDTH: f64 = 640.0;
+/// Canvases narrower than this (CSS px) show one tab at a time ...
+pub const TABBED_WIDTH: f64 = 600.0;
+/// ... and so do wider ones where showing every panel at once would leave one with a data-area
+/// side (a time plot's height, an analysis panel's shorter side) below this, CSS px.
+pub const MIN_READABLE_SIDE: f64 = 70.0;
 /// Width / height below which the canvas counts as portrait.
 pub const PORTRAIT_ASPECT: f64 = 1.05;
-/// Height of one analysis row relative to one time-plot row (a single analysis row) ...
+/// Height of one analysis row relative to one time-plot row when stacked (a single row) ...
 pub const ANALYSIS_ROW_WEIGHT: f64 = 1.6;
 /// ... and per row when the analysis panels wrap onto several rows.
 pub const WRAPPED_ANALYSIS_ROW_WEIGHT: f64 = 1.25;
 /// A time plot's or analysis panel's data area is kept at least this tall (CSS px) when the
 /// canvas has room for it, by shrinking the other rows towards the same minimum.
 pub const MIN_PLOT_HEIGHT: f64 = 60.0;
+/// The top band's share of the height that the band layout tries, from … to … in steps.
+const BAND_SHARES: [f64; 10] = [0.40, 0.44, 0.48, 0.52, 0.56, 0.60, 0.64, 0.68, 0.72, 0.76];
 
 /// The panels for one canvas size.
 #[derive(Clone, Debug, PartialEq)]
@@ -265,6 +365,9 @@ pub struct Layout {
     pub device_pixel_ratio: f64,
     pub arrangement: Arrangement,
     pub panels: Vec<Panel>,
+    /// The tabs offered (a narrow canvas; empty otherwise) and the one shown.
+    pub tabs: Vec<Tab>,
+    pub tab: Option<Tab>,
 }
 
 impl Layout {
@@ -276,37 +379,72 @@ impl Layout {
         let sane = |v: f64| if v.is_finite() && v >= 1.0 { v } else { 1.0 };
         let (w, h) = (sane(css_width), sane(css_height));
         let dpr = if device_pixel_ratio.is_finite() && device_pixel_ratio > 0.0 { device_pixel_ratio } else { 1.0 };
-        let arrangement =
-            if w < NARROW_WIDTH || w < PORTRAIT_ASPECT * h { Arrangement::Stacked } else { Arrangement::SideBySide };
-        let mut lists = options.panels();
+        let lists = options.panels();
         let inner = Rect::new(0.0, 0.0, w, h).inset(margins::OUTER, margins::OUTER, margins::OUTER, margins::OUTER);
-        let (mut stage_area, plot_area) = split(inner, arrangement, !lists.analysis.is_empty());
         let mut panels = Vec::with_capacity(lists.stage.len() + lists.plots.len() + lists.analysis.len());
-        // A single arm in a tall stage column leaves room under its square: ρ(δ) goes there.
-        let under_arm = arrangement == Arrangement::SideBySide
-            && lists.stage.len() == 1
-            && stage_area.h - (stage_area.w + margins::STAGE_TOP) >= UNDER_ARM_MIN_HEIGHT;
-        if under_arm {
-            if let Some(i) = lists.analysis.iter().position(|k| *k == PanelKind::RhoCurve) {
-                lists.analysis.remove(i);
-                let arm_h = (stage_area.w + margins::STAGE_TOP)
-                    .max(stage_area.h * 0.55)
-                    .min(stage_area.h - UNDER_ARM_MIN_HEIGHT);
-                let below = stage_area.inset(0.0, arm_h + margins::GAP, 0.0, 0.0);
-                stage_area.h = arm_h;
-                panels_push_analysis(below, PanelKind::RhoCurve, &mut panels);
+        let portrait = w < PORTRAIT_ASPECT * h;
+        let mut tabbed = w < TABBED_WIDTH && !lists.analysis.is_empty();
+        if !tabbed && !lists.analysis.is_empty() {
+            // Everything at once only where everything stays readable; else one tab at a time.
+            let all = Layout::compute_all(inner, &lists, portrait, &mut panels);
+            if smallest_side(&panels) >= MIN_READABLE_SIDE {
+                panels.sort_by_key(|p| panel_order(p.kind));
+                return Layout {
+                    css_width: w,
+                    css_height: h,
+                    device_pixel_ratio: dpr,
+                    arrangement: all,
+                    panels,
+                    tabs: Vec::new(),
+                    tab: None,
+                };
             }
+            panels.clear();
+            tabbed = true;
         }
-        // Elsewhere it joins the analysis row only where that has room for one more panel: it shows
-        // a slice of the map, which stays.
-        if !under_arm && plot_area.h < ROOMY_PLOT_COLUMN {
-            lists.analysis.retain(|k| *k != PanelKind::RhoCurve);
-        }
-        stage_panels(stage_area, &lists.stage, &mut panels);
-        plot_column(plot_area, &lists.plots, &lists.analysis, &mut panels);
-        // Panels in reading order: the stage first, then the plots, then the analysis row.
+        let (arrangement, tabs, tab) = if tabbed {
+            let tabs = options.tabs();
+            let tab = if tabs.contains(&options.tab) { options.tab } else { Tab::Run };
+            match tab {
+                Tab::Run => {
+                    run_panels(inner, &lists, w < TABBED_WIDTH || portrait, &mut panels);
+                }
+                _ => {
+                    let shown: Vec<PanelKind> = lists.analysis.iter().copied().filter(|k| tab.holds(*k)).collect();
+                    plot_column(inner, &[], &shown, &mut panels);
+                }
+            }
+            (Arrangement::Tabbed, tabs, Some(tab))
+        } else if lists.analysis.is_empty() {
+            let arrangement = run_panels(inner, &lists, w < TABBED_WIDTH || portrait, &mut panels);
+            (arrangement, Vec::new(), None)
+        } else {
+            unreachable!("analysis panels are laid out by compute_all or tabbed")
+        };
+        // Panels in reading order: the stage first, then the plots, then the analysis panels.
         panels.sort_by_key(|p| panel_order(p.kind));
-        Layout { css_width: w, css_height: h, device_pixel_ratio: dpr, arrangement, panels }
+        Layout { css_width: w, css_height: h, device_pixel_ratio: dpr, arrangement, panels, tabs, tab }
+    }
+
+    /// Every panel at once (with analysis panels): stacked on a portrait canvas; else two bands,
+    /// or the stage beside one column of everything else when that gives the smallest panel more
+    /// room (few analysis panels under many time plots).
+    fn compute_all(inner: Rect, lists: &PanelLists, portrait: bool, out: &mut Vec<Panel>) -> Arrangement {
+        if portrait {
+            stacked(inner, &lists.stage, &lists.plots, &lists.analysis, out);
+            return Arrangement::Stacked;
+        }
+        let mut column = Vec::with_capacity(out.capacity());
+        let stage_w = (inner.w * STAGE_WIDTH_SHARE_WITH_ANALYSIS).round();
+        stage_panels(Rect::new(inner.x, inner.y, stage_w, inner.h), &lists.stage, &mut column);
+        plot_column(inner.inset(stage_w + margins::GAP, 0.0, 0.0, 0.0), &lists.plots, &lists.analysis, &mut column);
+        bands(inner, lists, out);
+        if smallest_side(&column) > smallest_side(out) + 1e-9 {
+            *out = column;
+            Arrangement::SideBySide
+        } else {
+            Arrangement::Bands
+        }
     }
 
     /// The first panel of the given kind, if shown.
@@ -326,18 +464,10 @@ impl Layout {
     }
 }
 
-/// A plot column at least this tall (CSS px) takes ρ(δ) into its analysis row.
-pub const ROOMY_PLOT_COLUMN: f64 = 640.0;
-
-/// Height a panel under the arm needs at least (with its label gutters), CSS px.
-pub const UNDER_ARM_MIN_HEIGHT: f64 = 150.0;
-
-/// An analysis panel filling `cell` (less its label gutters).
-fn panels_push_analysis(cell: Rect, kind: PanelKind, out: &mut Vec<Panel>) {
-    out.push(Panel {
-        kind,
-        rect: cell.inset(margins::ANALYSIS_LEFT, margins::PLOT_TOP, margins::PLOT_RIGHT, margins::PLOT_BOTTOM),
-    });
+/// A panel filling `cell` less its label gutters.
+fn panel_in(cell: Rect, kind: PanelKind) -> Panel {
+    let [l, t, r, b] = gutters(kind);
+    Panel { kind, rect: cell.inset(l, t, r, b) }
 }
 
 /// Where a panel kind comes in the list of panels.
@@ -355,22 +485,89 @@ fn panel_order(kind: PanelKind) -> u8 {
     }
 }
 
-/// Splits the inner area into the stage area and the plot area.
-fn split(inner: Rect, arrangement: Arrangement, analysis: bool) -> (Rect, Rect) {
-    match arrangement {
-        Arrangement::SideBySide => {
-            let share = if analysis { STAGE_WIDTH_SHARE_WITH_ANALYSIS } else { STAGE_WIDTH_SHARE };
-            let stage_w = (inner.w * share).round();
-            let stage = Rect::new(inner.x, inner.y, stage_w, inner.h);
-            let plots = inner.inset(stage_w + margins::GAP, 0.0, 0.0, 0.0);
-            (stage, plots)
+/// The stage and the time plots alone: stacked on a narrow canvas, else side by side.
+fn run_panels(inner: Rect, lists: &PanelLists, narrow: bool, out: &mut Vec<Panel>) -> Arrangement {
+    if narrow {
+        stacked(inner, &lists.stage, &lists.plots, &[], out);
+        return Arrangement::Stacked;
+    }
+    let stage_w = (inner.w * STAGE_WIDTH_SHARE).round();
+    stage_panels(Rect::new(inner.x, inner.y, stage_w, inner.h), &lists.stage, out);
+    place_plot_column(inner.inset(stage_w + margins::GAP, 0.0, 0.0, 0.0), &lists.plots, &[], 1, out);
+    Arrangement::SideBySide
+}
+
+/// Stage on top, then the time plots, then the analysis panels (wrapped onto rows).
+fn stacked(inner: Rect, stage: &[PanelKind], plots: &[PanelKind], analysis: &[PanelKind], out: &mut Vec<Panel>) {
+    let share = if analysis.is_empty() { STAGE_HEIGHT_SHARE } else { STAGE_HEIGHT_SHARE_WITH_ANALYSIS };
+    let stage_h = (inner.h * share).round();
+    stage_panels(Rect::new(inner.x, inner.y, inner.w, stage_h), stage, out);
+    plot_column(inner.inset(0.0, stage_h + margins::GAP, 0.0, 0.0), plots, analysis, out);
+}
+
+/// The band layout: a top band with the stage and the time plots side by side, the analysis
+/// panels across the whole width below. The split and the number of analysis columns are chosen
+/// to make the smallest data-area side (time plots' heights, analysis panels' widths and heights,
+/// three quarters of an arm's side) largest.
+fn bands(inner: Rect, lists: &PanelLists, out: &mut Vec<Panel>) {
+    let mut best: Option<(f64, Vec<Panel>)> = None;
+    let mut trial = Vec::with_capacity(lists.stage.len() + lists.plots.len() + lists.analysis.len());
+    for share in BAND_SHARES {
+        for columns in 1..=lists.analysis.len() {
+            trial.clear();
+            place_bands(inner, lists, share, columns, &mut trial);
+            let score = smallest_side(&trial);
+            if best.as_ref().is_none_or(|(b, _)| score > *b + 1e-9) {
+                best = Some((score, trial.clone()));
+            }
         }
-        Arrangement::Stacked => {
-            let share = if analysis { STAGE_HEIGHT_SHARE_WITH_ANALYSIS } else { STAGE_HEIGHT_SHARE };
-            let stage_h = (inner.h * share).round();
-            let stage = Rect::new(inner.x, inner.y, inner.w, stage_h);
-            let plots = inner.inset(0.0, stage_h + margins::GAP, 0.0, 0.0);
-            (stage, plots)
+    }
+    out.extend(best.map(|(_, panels)| panels).unwrap_or_default());
+}
+
+/// What a layout is judged by: its smallest data-area side — a time plot's height, an analysis
+/// panel's shorter side, three quarters of an arm's (an arm reads well smaller).
+fn smallest_side(panels: &[Panel]) -> f64 {
+    panels
+        .iter()
+        .map(|p| match p.kind {
+            k if k.is_stage() => 0.75 * p.rect.w.min(p.rect.h),
+            k if k.is_time_plot() => p.rect.h,
+            _ => p.rect.w.min(p.rect.h),
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// One candidate band layout.
+fn place_bands(inner: Rect, lists: &PanelLists, share: f64, columns: usize, out: &mut Vec<Panel>) {
+    let top_h = (inner.h * share).round();
+    let arms = lists.stage.len().max(1) as f64;
+    // The arms are squares as tall as the band (below their captions), at most half the width.
+    let side = (top_h - margins::STAGE_TOP).min((inner.w * 0.5 - margins::GAP * (arms - 1.0)) / arms).max(0.0);
+    let stage_w = side * arms + margins::GAP * (arms - 1.0);
+    stage_panels(Rect::new(inner.x, inner.y, stage_w, top_h), &lists.stage, out);
+    let plots = Rect::new(inner.x + stage_w + margins::GAP, inner.y, inner.w - stage_w - margins::GAP, top_h);
+    place_plot_column(plots, &lists.plots, &[], 1, out);
+    let bottom = inner.inset(0.0, top_h + margins::GAP, 0.0, 0.0);
+    let rows = lists.analysis.len().div_ceil(columns.max(1));
+    let row_h = bottom.h / rows.max(1) as f64;
+    place_grid(bottom, &lists.analysis, columns, row_h, out);
+}
+
+/// Analysis panels in `columns` columns from `area`'s top, rows `row_h` tall (rows filled from
+/// the bottom, so a short first row holds the pole plot alone and the maps stay together).
+fn place_grid(area: Rect, analysis: &[PanelKind], columns: usize, row_h: f64, out: &mut Vec<Panel>) {
+    let columns = columns.clamp(1, analysis.len().max(1));
+    let rows = analysis.len().div_ceil(columns);
+    let first_row = analysis.len() - (rows.saturating_sub(1)) * columns;
+    let mut next = 0;
+    for r in 0..rows {
+        let count = if r == 0 { first_row } else { columns };
+        let cell_w = area.w / count.max(1) as f64;
+        for c in 0..count {
+            let Some(&kind) = analysis.get(next) else { break };
+            next += 1;
+            out.push(panel_in(Rect::new(area.x + c as f64 * cell_w, area.y + r as f64 * row_h, cell_w, row_h), kind));
         }
     }
 }
@@ -391,7 +588,7 @@ fn stage_panels(area: Rect, kinds: &[PanelKind], out: &mut Vec<Panel>) {
         } else {
             Rect::new(area.x, area.y + i as f64 * (row_h + margins::GAP), area.w, row_h)
         };
-        out.push(Panel { kind, rect: cell.inset(0.0, margins::STAGE_TOP, 0.0, 0.0) });
+        out.push(panel_in(cell, kind));
     }
 }
 
@@ -403,48 +600,30 @@ fn row_heights(height: f64, time_rows: usize, rows: usize) -> (f64, f64) {
     let (nt, na) = (time_rows as f64, rows as f64);
     let unit = height / (nt + na * weight).max(1e-9);
     let (mut time_row, mut analysis_row) = (unit, unit * weight);
-    let min_row = MIN_PLOT_HEIGHT + margins::PLOT_TOP + margins::PLOT_BOTTOM;
-    if nt * min_row + na * min_row <= height {
-        if time_rows > 0 && time_row < min_row {
-            time_row = min_row;
+    let min_time = MIN_PLOT_HEIGHT + margins::PLOT_TOP + margins::PLOT_BOTTOM;
+    let min_analysis = MIN_PLOT_HEIGHT + margins::ANALYSIS_TOP + margins::ANALYSIS_BOTTOM;
+    if nt * min_time + na * min_analysis <= height {
+        if time_rows > 0 && time_row < min_time {
+            time_row = min_time;
             analysis_row = (height - nt * time_row) / na.max(1.0);
-        } else if rows > 0 && analysis_row < min_row {
-            analysis_row = min_row;
+        } else if rows > 0 && analysis_row < min_analysis {
+            analysis_row = min_analysis;
             time_row = (height - na * analysis_row) / nt.max(1.0);
         }
     }
     (time_row, analysis_row)
 }
 
-/// The time plots stacked, then the analysis panels in `columns` columns (rows filled from the
-/// bottom, so a short first row holds the pole plot alone and the maps stay together).
+/// The time plots stacked, then the analysis panels in `columns` columns.
 fn place_plot_column(area: Rect, plots: &[PanelKind], analysis: &[PanelKind], columns: usize, out: &mut Vec<Panel>) {
     let columns = columns.clamp(1, analysis.len().max(1));
     let rows = analysis.len().div_ceil(columns);
     let (time_row, analysis_row) = row_heights(area.h, plots.len(), rows);
     for (i, &kind) in plots.iter().enumerate() {
-        let row = Rect::new(area.x, area.y + i as f64 * time_row, area.w, time_row);
-        out.push(Panel {
-            kind,
-            rect: row.inset(margins::PLOT_LEFT, margins::PLOT_TOP, margins::PLOT_RIGHT, margins::PLOT_BOTTOM),
-        });
+        out.push(panel_in(Rect::new(area.x, area.y + i as f64 * time_row, area.w, time_row), kind));
     }
     let top = area.y + plots.len() as f64 * time_row;
-    let first_row = analysis.len() - (rows.saturating_sub(1)) * columns;
-    let mut next = 0;
-    for r in 0..rows {
-        let count = if r == 0 { first_row } else { columns };
-        let cell_w = area.w / count.max(1) as f64;
-        for c in 0..count {
-            let Some(&kind) = analysis.get(next) else { break };
-            next += 1;
-            let cell = Rect::new(area.x + c as f64 * cell_w, top + r as f64 * analysis_row, cell_w, analysis_row);
-            out.push(Panel {
-                kind,
-                rect: cell.inset(margins::ANALYSIS_LEFT, margins::PLOT_TOP, margins::PLOT_RIGHT, margins::PLOT_BOTTOM),
-            });
-        }
-    }
+    place_grid(Rect::new(area.x, top, area.w, area.bottom() - top), analysis, columns, analysis_row, out);
 }
 
 /// Lays out the plot column, choosing how many columns the analysis panels use: the choice that

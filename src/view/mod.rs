@@ -14,6 +14,7 @@
 //! | [`rho_curve`] | ρ(δ) at the current α with the stable windows |
 //! | [`map`] | stability maps ρ(δ, α) on log axes with the ρ = 1 contour, and their markers |
 //! | [`scene`] | [`Scene`]: one frame from a session's runs, and its description for the page |
+//! | [`labels`] | where every text over the canvas goes (ticks, titles, notes), without overlaps |
 //!
 //! Ticks, number formats, colours and contours come from [`crate::plot`]. Simulation values
 //! arrive as f64 and stay f64 until a vertex is written (f32, physical pixels).
@@ -22,6 +23,7 @@
 
 pub mod arm;
 pub mod autoscale;
+pub mod labels;
 pub mod layout;
 pub mod map;
 pub mod options;
@@ -33,7 +35,8 @@ pub mod traces;
 pub mod zplane;
 
 pub use crate::plot::{palette, Color};
-pub use layout::{Layout, LayoutOptions, Panel, PanelKind, Rect};
+pub use labels::{Label, LabelClass};
+pub use layout::{Layout, LayoutOptions, Panel, PanelKind, Rect, Tab};
 pub use map::MapSide;
 pub use painter::{Painter, Vertex};
 pub use poles::{PoleInfo, PoleKind};

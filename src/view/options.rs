@@ -4,7 +4,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::arm::DEFAULT_SPRING_MAGNIFICATION;
-use super::layout::LayoutOptions;
+use super::layout::{LayoutOptions, Tab};
 use super::traces::DEFAULT_TIME_WINDOW;
 
 /// Longest time window accepted, s.
@@ -31,6 +31,8 @@ pub struct ViewOptions {
     pub show_map: bool,
     /// The error plots show log |e|, with the slope ln ρ / δ the analysis predicts.
     pub log_errors: bool,
+    /// The view a narrow canvas shows.
+    pub tab: Tab,
 }
 
 impl Default for ViewOptions {
@@ -44,6 +46,7 @@ impl Default for ViewOptions {
             show_rho: true,
             show_map: true,
             log_errors: false,
+            tab: Tab::Run,
         }
     }
 }
@@ -132,6 +135,7 @@ impl ViewOptions {
             show_rho: self.show_rho,
             show_map: self.show_map,
             pair,
+            tab: self.tab,
         }
     }
 }

@@ -9,7 +9,7 @@ use web_sys::HtmlCanvasElement;
 use super::gpu::GpuCanvas;
 use super::session::WebSession;
 use super::to_js;
-use crate::view::{OptionsUpdate, PanelInfo, PoleInfo, Scene, SeriesInfo, ViewOptions};
+use crate::view::{Label, OptionsUpdate, PanelInfo, PoleInfo, Scene, SeriesInfo, ViewOptions};
 
 /// What `Renderer.layout()` returns.
 #[derive(Serialize)]
@@ -25,6 +25,21 @@ struct LayoutReport {
     poles: Vec<PoleInfo>,
     spring_magnification: f64,
     backend: &'static str,
+    /// Every text over the canvas, placed: `{panel, class, text, x, y, align: [ax, ay], size,
+    /// time}` (the anchor in CSS px; `align` says which point of the text sits on it; `time` is
+    /// set on time ticks, which move with the scrolling window).
+    labels: Vec<Label>,
+    /// On a narrow canvas the views it shows one at a time, and which: `[{id, label, selected}]`
+    /// (empty when everything is shown at once).
+    tabs: Vec<TabInfo>,
+}
+
+/// One tab of a narrow canvas.
+#[derive(Serialize)]
+struct TabInfo {
+    id: &'static str,
+    label: &'static str,
+    selected: bool,
 }
 
 /// Draws a session on a canvas: the arm on one side, the error (and torque) traces on the other,
@@ -135,6 +150,12 @@ impl Renderer {
             poles: self.scene.pole_info(),
             spring_magnification: self.scene.options().spring_magnification,
             backend: self.gpu.backend().name(),
+            labels: self.scene.labels(),
+            tabs: {
+                let layout = self.scene.layout();
+                let tabs = layout.tabs.iter();
+                tabs.map(|t| TabInfo { id: t.id(), label: t.label(), selected: layout.tab == Some(*t) }).collect()
+            },
         };
         to_js(&report)
     }

@@ -582,6 +582,8 @@ test('the timeline: look back by dragging on the error plot, step back, continue
 test('a "Try:" button keeps the figure in sight, on a laptop and on a phone', async () => {
   for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
     const { page, problems } = await open('?preset=fig5.2', { viewport });
+    // On a phone the explanation is in the sheet of controls.
+    if (await page.isVisible('#sheet-toggle')) await page.click('#sheet-toggle');
     await page.click('#explain > summary');
     const button = page.locator('#explain button.try[data-try="preset:fig5.3"]').first();
     await button.scrollIntoViewIfNeeded();

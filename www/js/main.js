@@ -16,6 +16,7 @@ import { wireKeys } from './keys.js';
 import { writeUrl } from './url.js';
 import { createLesson } from './lesson.js';
 import { createTimeline } from './timeline.js';
+import { createTabs } from './tabs.js';
 
 const store = createStore();
 const errors = createErrors(store);
@@ -135,6 +136,15 @@ async function main() {
   byId('poke').addEventListener('click', () => change(() => session.poke()));
   byId('export-csv').addEventListener('click', () => download('flexarm-traces.csv', guard('Export failed', () => session.csv(), null)));
   byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
+  // On a phone the controls (and the lesson) live in a sheet over the bottom of the page.
+  const sheet = byId('panel');
+  const sheetToggle = byId('sheet-toggle');
+  const openSheet = (/** @type {boolean} */ open) => {
+    sheet.classList.toggle('open', open);
+    sheetToggle.setAttribute('aria-expanded', String(open));
+    setText(sheetToggle, open ? 'Close ▾' : 'Controls, verdict and lesson ▴');
+  };
+  sheetToggle.addEventListener('click', () => openSheet(!sheet.classList.contains('open')));
   wireKeys({ togglePlay: () => store.dispatch({ type: 'toggle-play' }), step, stepBack, reset });
   wireTryButtons({
     preset: (id) => change(() => session.applyPreset(id)),
@@ -145,6 +155,8 @@ async function main() {
     }),
     after: () => {
       store.dispatch({ type: 'play' });
+      // On a phone the sheet would cover what the button changed.
+      openSheet(false);
       showFigure();
     },
   });
@@ -157,7 +169,10 @@ async function main() {
     refreshStatus();
   };
   const lesson = createLesson({
-    start: () => lessonDo(() => session.lessonOpen(0)),
+    start: () => {
+      lessonDo(() => session.lessonOpen(0));
+      openSheet(true);
+    },
     next: () => lessonDo(() => session.lessonNext()),
     back: () => lessonDo(() => session.lessonBack()),
     leave: () => lessonDo(() => session.lessonLeave()),
@@ -187,6 +202,7 @@ async function main() {
   });
 
   // ---------------------------------------------------------------- canvas
+  const tabs = createTabs({ select: (id) => change(() => session.set('tab', id)) });
   const pointer = createPointer({
     probe: (x, y, reach) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, reach), null) : null),
     pick: (map, delta, alpha) => change(() => session.setFromMap(map, delta, alpha)),
@@ -216,7 +232,10 @@ async function main() {
     if (generation !== layoutGeneration) {
       layout = guard('Renderer layout', () => renderer?.layout(), null);
       layoutGeneration = generation;
-      if (layout) overlays.update(layout);
+      if (layout) {
+        overlays.update(layout);
+        tabs.render(layout.tabs);
+      }
     }
     overlays.scroll(renderer.windowStart(), renderer.windowEnd());
     return true;

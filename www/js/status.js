@@ -48,9 +48,14 @@ export function createStatus() {
   const mapRow = byId('map-row');
   let legendKey = '';
 
+  const strip = byId('verdict-strip');
   /** @param {Status} s @param {number} now */
   function render(s, now) {
     setText(showing, s.showing);
+    // The phone's strip over the figure: the same verdict, in a line.
+    if (strip.dataset.verdict !== s.runs[0].verdict) strip.dataset.verdict = s.runs[0].verdict;
+    setText(byId('strip-word'), s.runs[0].headline);
+    setText(byId('strip-detail'), s.runs[0].detail);
     const [a, b] = s.runs;
     runs[0].render(a, now);
     bControls.hidden = !b;

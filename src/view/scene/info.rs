@@ -14,6 +14,7 @@ use crate::plot::Color;
 use crate::session::maps::{feedback_short, point_text, MapSide};
 use crate::view::arm::ArmFrame;
 use crate::view::autoscale::Autoscale;
+use crate::view::labels::{place_labels, Label};
 use crate::view::layout::{Panel, PanelKind};
 use crate::view::map::{map_ticks, side_of};
 use crate::view::poles::{
@@ -169,6 +170,12 @@ impl Scene {
     pub fn panel_info(&self) -> Vec<PanelInfo> {
         let window = self.window();
         self.layout.panels.iter().map(|panel| self.describe(panel, window)).collect()
+    }
+
+    /// Every text over the canvas, placed (see [`crate::view::labels`]).
+    pub fn labels(&self) -> Vec<Label> {
+        let kinds = self.layout.panels.iter().map(|p| p.kind);
+        place_labels(&kinds.zip(self.panel_info()).collect::<Vec<_>>())
     }
 
     fn describe(&self, panel: &Panel, window: TimeWindow) -> PanelInfo {

@@ -17,7 +17,7 @@ use plots::{plot_series, plot_tick_counts, plot_ticks, pole_tick_counts, pole_ti
 
 use super::arm::VERTEX_BUDGET as ARM_VERTEX_BUDGET;
 use super::autoscale::{Autoscale, AutoscaleSettings};
-use super::layout::{Layout, Panel, PanelKind};
+use super::layout::{Layout, Panel, PanelKind, Tab};
 use super::map::{draw_map_static, map_ticks, side_of, LogFrame, StabilityGrid, MARKER_VERTEX_BUDGET};
 use super::painter::{Painter, Vertex};
 use super::poles::{PoleStyle, RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET};
@@ -178,6 +178,7 @@ impl Scene {
             show_map: v.map,
             show_torque: v.torque,
             log_errors: v.log,
+            tab: Tab::from_id(v.tab).unwrap_or_default(),
             ..self.options
         };
         if next != self.options {

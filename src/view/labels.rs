@@ -1,0 +1,256 @@
+//! Where every text over the canvas goes: tick labels, axis titles, panel titles and notes, marks
+//! at points. Decided here, from the panels' descriptions, so that a native test can check that no
+//! two texts overlap at any canvas size; the page only puts each text at its anchor.
+//!
+//! A label is an anchor point (CSS px, origin top-left of the canvas), an alignment (which point
+//! of the text's box sits on the anchor: 0 left/top, 0.5 centre, 1 right/bottom) and a font size.
+//! Its box is estimated from the number of characters ([`EM_PER_CHAR`]), on the generous side;
+//! the end-to-end tests compare the estimate with the browser's own measure.
+//!
+//! Around a time plot: its y label left and its x label right in the header row above it, the
+//! tick labels left of and below it. Around an analysis panel: its title (what it shows) in a
+//! first header row, its y label in a second, the tick labels, and its x label below them. Texts
+//! that would not fit their row are shortened with "…" (the page's description of the canvas
+//! carries the full words).
+
+use serde::Serialize;
+
+use super::layout::{margins, PanelKind, Rect};
+use super::scene::PanelInfo;
+
+/// Font sizes, CSS px (all at least 11: readable on a phone and a projector).
+pub mod font {
+    /// Tick labels.
+    pub const TICK: f64 = 12.0;
+    /// Axis titles and panel titles.
+    pub const TITLE: f64 = 13.0;
+    /// Notes and marks at points.
+    pub const NOTE: f64 = 12.0;
+}
+
+/// Estimated width of one character in ems: generous for the page's sans-serif (digits of
+/// DejaVu Sans are 0.64 em, most letters narrower).
+pub const EM_PER_CHAR: f64 = 0.64;
+/// Height of a line of text in ems.
+pub const LINE_HEIGHT: f64 = 1.3;
+/// Space between a panel's edge and its tick labels, CSS px.
+const TICK_GAP: f64 = 4.0;
+
+/// What a label is, for its style.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum LabelClass {
+    Tick,
+    /// An axis title (the unit in brackets).
+    Axis,
+    /// What a panel shows.
+    Title,
+    Note,
+    /// A text at a point inside a panel (the flexible pair).
+    Mark,
+}
+
+/// One text over the canvas.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Label {
+    /// The panel it belongs to (its id).
+    pub panel: &'static str,
+    pub class: LabelClass,
+    pub text: String,
+    /// The anchor, CSS px.
+    pub x: f64,
+    pub y: f64,
+    /// Which point of the text's box sits on the anchor.
+    pub align: [f64; 2],
+    /// Font size, CSS px.
+    pub size: f64,
+    /// A time tick: its time, for moving it with the scrolling window (None otherwise).
+    pub time: Option<f64>,
+}
+
+impl Label {
+    /// The text's box as estimated (CSS px).
+    pub fn bounds(&self) -> Rect {
+        let (w, h) = (text_width(&self.text, self.size), self.size * LINE_HEIGHT);
+        Rect::new(self.x - self.align[0] * w, self.y - self.align[1] * h, w, h)
+    }
+}
+
+/// Estimated width of `text` at `size` px.
+pub fn text_width(text: &str, size: f64) -> f64 {
+    text.chars().count() as f64 * EM_PER_CHAR * size
+}
+
+/// `text`, shortened with "…" to fit `width` px at `size` px (empty if not even that fits).
+pub fn fit(text: &str, width: f64, size: f64) -> String {
+    if text_width(text, size) <= width {
+        return text.to_string();
+    }
+    let room = (width / (EM_PER_CHAR * size)).floor() as usize;
+    if room < 2 {
+        return String::new();
+    }
+    let mut out: String = text.chars().take(room - 1).collect();
+    out = out.trim_end().to_string();
+    out.push('…');
+    out
+}
+
+/// Where a value sits along an axis from `r0` to `r1` (0 at the start, 1 at the end).
+fn fraction(v: f64, range: [f64; 2], log: bool) -> f64 {
+    if log {
+        (v / range[0]).ln() / (range[1] / range[0]).ln()
+    } else {
+        (v - range[0]) / (range[1] - range[0]).max(f64::MIN_POSITIVE)
+    }
+}
+
+/// Every label of the panels `(kind, description)`.
+pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
+    let mut out = Vec::new();
+    for (kind, p) in panels {
+        let label =
+            |class, text: String, x, y, align, size| Label { panel: p.id, class, text, x, y, align, size, time: None };
+        if kind.is_stage() {
+            out.push(label(
+                LabelClass::Title,
+                fit(&p.title, p.width, font::TITLE),
+                p.x,
+                p.y - 3.0,
+                [0.0, 1.0],
+                font::TITLE,
+            ));
+            continue;
+        }
+        ticks(kind, p, &mut out);
+        let (left, right) =
+            (p.x - if kind.is_analysis() { margins::ANALYSIS_LEFT } else { margins::PLOT_LEFT }, p.x + p.width);
+        if kind.is_analysis() {
+            // Header row 1: what the panel shows; row 2: the y axis; below the ticks: the x axis.
+            let title = fit(&p.note, right - left, font::TITLE);
+            let row1 = p.y - margins::ANALYSIS_TOP + 2.0;
+            out.push(label(LabelClass::Title, title, left, row1, [0.0, 0.0], font::TITLE));
+            let x_label = fit(p.x_label, p.width, font::TITLE);
+            let below = p.y + p.height + TICK_GAP + font::TICK * LINE_HEIGHT;
+            out.push(label(LabelClass::Axis, x_label.clone(), right, below, [1.0, 0.0], font::TITLE));
+            let y_room = p.width + TICK_GAP;
+            out.push(label(
+                LabelClass::Axis,
+                fit(p.y_label, y_room, font::TITLE),
+                p.x - TICK_GAP,
+                p.y - 2.0,
+                [0.0, 1.0],
+                font::TITLE,
+            ));
+        } else {
+            // The header row: the y label left, the x label right, a note between if it fits.
+            let x_w = text_width(p.x_label, font::TITLE);
+            let y_label = fit(p.y_label, p.width - x_w - 12.0, font::TITLE);
+            let y_w = text_width(&y_label, font::TITLE);
+            out.push(label(LabelClass::Axis, y_label, p.x - TICK_GAP, p.y - 2.0, [0.0, 1.0], font::TITLE));
+            out.push(label(
+                LabelClass::Axis,
+                p.x_label.to_string(),
+                right + TICK_GAP,
+                p.y - 2.0,
+                [1.0, 1.0],
+                font::TITLE,
+            ));
+            if !p.note.is_empty() {
+                let room = p.width - x_w - y_w - 36.0;
+                let note = fit(&p.note, room, font::NOTE);
+                let at = p.x - TICK_GAP + y_w + 16.0;
+                out.push(label(LabelClass::Note, note, at, p.y - 2.0, [0.0, 1.0], font::NOTE));
+            }
+        }
+        marks(p, &mut out);
+    }
+    out.retain(|l| !l.text.is_empty());
+    drop_collisions(out)
+}
+
+/// Titles and axis labels stay (the layout leaves them room); a tick label, note or mark that
+/// would overlap a label already kept, or a plot's data, is left out (a corner tick, a crowded
+/// tick of a narrow panel).
+fn drop_collisions(labels: Vec<Label>) -> Vec<Label> {
+    let rank = |l: &Label| match l.class {
+        LabelClass::Title | LabelClass::Axis => 0,
+        LabelClass::Tick => 1,
+        LabelClass::Note => 2,
+        LabelClass::Mark => 3,
+    };
+    let mut order: Vec<usize> = (0..labels.len()).collect();
+    order.sort_by_key(|&i| rank(&labels[i]));
+    let mut kept: Vec<(usize, Rect)> = Vec::with_capacity(labels.len());
+    for i in order {
+        let b = labels[i].bounds();
+        let free = kept.iter().all(|(_, k)| !overlaps(&b, k));
+        if rank(&labels[i]) == 0 || free {
+            kept.push((i, b));
+        }
+    }
+    let mut keep = vec![false; labels.len()];
+    for (i, _) in kept {
+        keep[i] = true;
+    }
+    labels.into_iter().zip(keep).filter_map(|(l, k)| k.then_some(l)).collect()
+}
+
+/// Boxes that overlap by more than half a pixel.
+fn overlaps(a: &Rect, b: &Rect) -> bool {
+    a.x < b.right() - 0.5 && b.x < a.right() - 0.5 && a.y < b.bottom() - 0.5 && b.y < a.bottom() - 0.5
+}
+
+/// The tick labels left of and below a plot.
+fn ticks(kind: &PanelKind, p: &PanelInfo, out: &mut Vec<Label>) {
+    for t in &p.y_labels {
+        let f = fraction(t.value, p.y_range, p.y_scale == "log");
+        let y = p.y + p.height - f * p.height;
+        out.push(Label {
+            panel: p.id,
+            class: LabelClass::Tick,
+            text: t.text.clone(),
+            x: p.x - TICK_GAP,
+            y,
+            align: [1.0, 0.5],
+            size: font::TICK,
+            time: None,
+        });
+    }
+    for t in &p.x_labels {
+        let f = fraction(t.value, p.x_range, p.x_scale == "log");
+        out.push(Label {
+            panel: p.id,
+            class: LabelClass::Tick,
+            text: t.text.clone(),
+            x: p.x + f * p.width,
+            y: p.y + p.height + TICK_GAP,
+            align: [0.5, 0.0],
+            size: font::TICK,
+            time: kind.is_time_plot().then_some(t.value),
+        });
+    }
+}
+
+/// Texts at points: beside the point, up and to the right, or flipped to stay inside the panel.
+fn marks(p: &PanelInfo, out: &mut Vec<Label>) {
+    for m in &p.marks {
+        let text = fit(&m.text, p.width - 8.0, font::NOTE);
+        let w = text_width(&text, font::NOTE);
+        let h = font::NOTE * LINE_HEIGHT;
+        let right = m.x + 9.0 + w <= p.x + p.width;
+        let up = m.y - 9.0 - h >= p.y;
+        let (x, ax) = if right { (m.x + 9.0, 0.0) } else { ((m.x - 9.0).max(p.x + w), 1.0) };
+        let (y, ay) = if up { (m.y - 9.0, 1.0) } else { ((m.y + 9.0).min(p.y + p.height - h), 0.0) };
+        out.push(Label {
+            panel: p.id,
+            class: LabelClass::Mark,
+            text,
+            x,
+            y,
+            align: [ax, ay],
+            size: font::NOTE,
+            time: None,
+        });
+    }
+}

@@ -1,0 +1,81 @@
+//! Every text over the canvas has its own room (issue 11): at any canvas size from a 320-px phone
+//! to a 2560-px screen and with any set of panels, no label overlaps another, none overlaps a
+//! panel's data area (except a mark inside its own panel), all lie on the canvas and none is
+//! smaller than 11 px.
+
+mod common;
+use common::{play, session};
+
+use flexarm::view::labels::{font, text_width};
+use flexarm::view::{Label, LabelClass, Rect, Scene, ViewOptions};
+
+const WIDTHS: [f64; 12] = [320.0, 360.0, 390.0, 480.0, 600.0, 640.0, 800.0, 1024.0, 1280.0, 1440.0, 1920.0, 2560.0];
+const HEIGHTS: [f64; 5] = [400.0, 560.0, 700.0, 900.0, 1300.0];
+
+/// View settings to try, as state strings.
+const VIEWS: [&str; 9] = [
+    "mode=intro",
+    "mode=full",
+    "mode=full&torque=1&log=1",
+    "mode=full&plane=z&rho=0",
+    "mode=full&map=0",
+    "mode=full&poles=0&rho=0",
+    "mode=full&compare=1&torque=1",
+    "mode=full&tab=poles&plane=z",
+    "mode=full&tab=maps",
+];
+
+fn overlap(a: &Rect, b: &Rect) -> bool {
+    // Half a pixel of slack: boxes that touch are fine.
+    a.x < b.right() - 0.5 && b.x < a.right() - 0.5 && a.y < b.bottom() - 0.5 && b.y < a.bottom() - 0.5
+}
+
+fn describe(l: &Label) -> String {
+    format!("{:?} {:?} '{}' at {:?}", l.panel, l.class, l.text, l.bounds())
+}
+
+#[test]
+fn no_text_overlaps_another_or_the_data_at_any_size() {
+    let mut checked = 0;
+    for view in VIEWS {
+        let mut s = session(&format!("preset=fig5.3&{view}"));
+        play(&mut s, 1.5);
+        s.refresh();
+        for w in WIDTHS {
+            for h in HEIGHTS {
+                let mut scene = Scene::new(ViewOptions::default(), w, h, 1.0);
+                scene.draw_session(&s);
+                let labels = scene.labels();
+                let panels = scene.layout().panels.clone();
+                let canvas = Rect::new(-0.5, -0.5, w + 1.0, h + 1.0);
+                for (i, a) in labels.iter().enumerate() {
+                    let ba = a.bounds();
+                    assert!(a.size >= 11.0, "{view} {w}×{h}: {} too small", describe(a));
+                    assert!(canvas.contains_rect(&ba), "{view} {w}×{h}: {} off the canvas", describe(a));
+                    for p in &panels {
+                        let own = p.kind.id() == a.panel;
+                        if a.class == LabelClass::Mark && own {
+                            assert!(p.rect.contains_rect(&ba), "{view} {w}×{h}: {} leaves its panel", describe(a));
+                        } else {
+                            assert!(!overlap(&ba, &p.rect), "{view} {w}×{h}: {} covers {:?}", describe(a), p.kind);
+                        }
+                    }
+                    for b in &labels[i + 1..] {
+                        assert!(!overlap(&ba, &b.bounds()), "{view} {w}×{h}: {} overlaps {}", describe(a), describe(b));
+                    }
+                }
+                checked += labels.len();
+            }
+        }
+    }
+    println!("{checked} labels checked");
+}
+
+#[test]
+fn texts_that_do_not_fit_are_shortened_not_spilled() {
+    use flexarm::view::labels::fit;
+    assert_eq!(fit("ρ without K_pr", 1000.0, font::TITLE), "ρ without K_pr");
+    let short = fit("dashed: π/δ = 20.9 rad/s — the flexible mode is faster: aliased", 120.0, font::NOTE);
+    assert!(short.ends_with('…') && text_width(&short, font::NOTE) <= 120.0, "{short}");
+    assert_eq!(fit("anything", 5.0, font::NOTE), "");
+}
