@@ -176,3 +176,28 @@ fn the_windows_are_marked_on_the_map_of_the_current_feedback() {
     assert!(panels.iter().any(|p| p.id == "rho-curve"));
     let _ = PanelKind::RhoCurve;
 }
+
+#[test]
+fn the_key_names_every_marker_shown_and_the_maps_colour_bar() {
+    use flexarm::view::legend::Glyph;
+    let s = session("preset=fig5.3&plane=z");
+    let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
+    scene.draw_session(&s);
+    let key = scene.legend();
+    let titles: Vec<&str> = key.iter().map(|g| g.title).collect();
+    assert_eq!(titles, ["z-plane", "ρ(δ)", "stability maps"]);
+    let z = &key[0];
+    for glyph in [Glyph::Cross, Glyph::Halo, Glyph::Ring, Glyph::Diamond, Glyph::Swatch, Glyph::Chevron] {
+        assert!(z.items.iter().any(|i| i.glyph == glyph), "{glyph:?} explained");
+    }
+    assert!(z.items.iter().any(|i| i.text.contains("unit circle")));
+    let scale = key[2].scale.as_ref().unwrap();
+    let one = scale.ticks.iter().find(|(_, t)| t == "1").unwrap();
+    assert!((one.0 - 0.5).abs() < 1e-12, "ρ = 1 in the middle of the bar");
+    assert_eq!(scale.stops.first().unwrap().1, flexarm::plot::color::ramp_color(0.0).css());
+    // The intro shows no analysis panels: nothing to key.
+    let intro = common::session("preset=fig5.3");
+    let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
+    scene.draw_session(&intro);
+    assert!(scene.legend().is_empty());
+}

@@ -62,3 +62,19 @@ fn the_map_colours_diverge_around_rho_1() {
     // ρ = 0.98 and 1.02 are visibly coloured (the square-root ramp): a fifth of the way out.
     assert!((rho_position(1.02) - 0.5) > 0.15);
 }
+
+#[test]
+fn the_dark_scheme_inverts_lightness_and_keeps_hue() {
+    use flexarm::plot::Color;
+    assert_eq!(Color::hex(0xffffff).for_dark().0, [0.0, 0.0, 0.0, 1.0], "white paper turns black");
+    assert_eq!(Color::hex(0x000000).for_dark().0, [1.0, 1.0, 1.0, 1.0]);
+    let blue = Color::hex(0x1b5599);
+    let light = blue.for_dark();
+    let lightness = |c: Color| (c.0[0].max(c.0[1]).max(c.0[2]) + c.0[0].min(c.0[1]).min(c.0[2])) / 2.0;
+    assert!((lightness(light) - (1.0 - lightness(blue))).abs() < 1e-6);
+    // The same channel differences: the same hue and chroma.
+    assert!(((light.0[2] - light.0[0]) - (blue.0[2] - blue.0[0])).abs() < 1e-6);
+    let back = light.for_dark();
+    assert!(back.0.iter().zip(blue.0).all(|(a, b)| (a - b).abs() < 1e-6), "twice is the identity");
+    assert_eq!(blue.with_alpha(0.5).for_dark().0[3], 0.5);
+}

@@ -330,3 +330,32 @@ fn the_windows_status_says_them_in_words_and_as_slider_bands() {
     s.set("delta", "0.02").unwrap();
     assert!(s.status().windows.is_some());
 }
+
+#[test]
+fn the_page_exports_the_clis_figures_and_an_embed_snippet() {
+    let mut s = session("preset=fig5.3&mode=full");
+    play(&mut s, 1.0);
+    let svg = s.svg_traces();
+    assert!(svg.starts_with("<svg") && svg.contains("Tracking errors") && svg.contains("Unstable"), "{}", &svg[..200]);
+    assert!(svg.contains(&flexarm::svg::escape(&s.settings().run_query())), "the state string in the figure");
+    let e = s.svg_maps().unwrap_err().to_string();
+    assert!(e.contains("finished stability maps"), "{e}");
+    let mut tick = 0.0;
+    let mut clock = || {
+        tick += 1.0;
+        tick
+    };
+    while s.maps_mut().work(&mut clock, 50.0) {}
+    let maps = s.svg_maps().unwrap();
+    assert!(maps.contains("without K_pr") && maps.contains("with paper K_pr"), "both maps, captioned");
+    let snippet = s.embed_snippet("https://example.org/flexarm/index.html?x=1#top");
+    assert!(snippet.starts_with("<iframe src=\"https://example.org/flexarm/index.html?delta=0.01"), "{snippet}");
+    assert!(snippet.contains("embed=1") && snippet.contains("width=\"640\" height=\"400\""), "{snippet}");
+    assert!(snippet.contains("&amp;"), "the query is escaped in the attribute: {snippet}");
+    let (embedded, notices) = Session::open("preset=fig5.3&embed=1&views=arm,traces,zplane");
+    assert!(notices.is_empty(), "{notices:?}");
+    let v = embedded.settings().view.shown();
+    assert!(v.embed && v.poles && v.z_plane && !v.map && !v.rho && !v.torque, "{v:?}");
+    let (_, notices) = Session::open("views=arm,everything");
+    assert!(notices[0].text.contains("a list of arm, traces"), "{notices:?}");
+}

@@ -30,6 +30,16 @@ impl Color {
         Color(c)
     }
 
+    /// The colour for a dark scheme: its lightness inverted, its hue and chroma kept (white
+    /// paper becomes black, dark ink light, a deep blue a light blue). Every channel moves by
+    /// 1 − max − min, which maps HSL lightness L to 1 − L. The shader applies the same formula
+    /// to every vertex in the dark scheme (`web/shader.wgsl`).
+    pub fn for_dark(self) -> Color {
+        let [r, g, b, a] = self.0;
+        let shift = 1.0 - r.max(g).max(b) - r.min(g).min(b);
+        Color([r + shift, g + shift, b + shift, a])
+    }
+
     /// The colour as a CSS string: `#rrggbb`, or `rgba(r, g, b, a)` when not opaque.
     pub fn css(self) -> String {
         let [r, g, b, a] = self.0;

@@ -2,7 +2,7 @@
 //! and a lesson step, so a link or a step of the lesson sets the figures as well as the physics.
 //! Page-only ([`Scope::Page`]): the command line ignores them.
 
-use super::{Choice, Kind, Param, Scope};
+use super::{Choice, Kind, NumberSpec, Param, Scale, Scope};
 
 /// The intro (a first screen for beginners) or the full view.
 pub const MODE: Param = Param {
@@ -40,6 +40,36 @@ pub const TAB: Param = Param {
     },
     scope: Scope::Page,
     help: "A phone shows one view at a time: the arm and its errors, the poles and ρ(δ), or the stability maps.",
+};
+
+/// The page embedded in another (an iframe in a course page): the canvas and a strip of controls.
+pub const EMBED: Param = switch(
+    "embed",
+    "Embedded: the figure and a strip of controls",
+    false,
+    "For an iframe: the canvas and a strip of controls, nothing else (the views from `views=…`).",
+);
+
+/// The width of the time plots' window.
+pub const WINDOW: Param = Param {
+    key: "window",
+    label: "Time window of the error plots",
+    symbol: "",
+    unit: "s",
+    name: "window",
+    kind: Kind::Number(NumberSpec {
+        min: 1.0,
+        min_inclusive: true,
+        max: 60.0,
+        allowed: Some("must be from 1 to 60 s (the page keeps 60 s of traces)"),
+        control: [2.0, 30.0],
+        scale: Scale::Log,
+        digits: 2,
+        integer: false,
+        default: 10.0,
+    }),
+    scope: Scope::Page,
+    help: "How many seconds the error plots show: short to see the oscillation, long to see the envelope.",
 };
 
 /// The pole plot.

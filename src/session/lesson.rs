@@ -5,7 +5,8 @@
 
 use serde::Serialize;
 
-use super::settings::{split_query, Settings, Source};
+use super::query::split_query;
+use super::settings::{Settings, Source};
 use super::Session;
 use crate::error::Error;
 use crate::lesson::{self, Goal, Lesson, Term};

@@ -7,6 +7,10 @@
 //! `flexarm simulate …` that reproduces run A.
 
 use super::presets::{preset, Preset, PRESETS};
+use super::query::join_query;
+pub use super::query::split_query;
+pub use super::view::ViewSettings;
+use super::view::VIEW_PARAMS;
 use crate::control::config::{FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
 use crate::error::{Error, ParseError};
 use crate::schema::{self, Param, Scope, Value};
@@ -144,96 +148,6 @@ impl CompareSettings {
     }
 }
 
-/// What the page shows: the schema's view parameters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ViewSettings {
-    /// The full view (every control and figure) rather than the intro.
-    pub full: bool,
-    pub poles: bool,
-    /// The pole plot draws λ with the unit circle instead of s = ln λ / δ.
-    pub z_plane: bool,
-    pub rho: bool,
-    pub map: bool,
-    pub torque: bool,
-    /// log |e| with the predicted slope.
-    pub log: bool,
-    /// The view a narrow canvas shows ("run", "poles", "maps").
-    pub tab: &'static str,
-}
-
-/// The view parameters, in the order the state string writes them.
-const VIEW_PARAMS: [&Param; 8] = [
-    &schema::MODE,
-    &schema::TAB,
-    &schema::POLES,
-    &schema::PLANE,
-    &schema::RHO,
-    &schema::MAP,
-    &schema::TORQUE,
-    &schema::LOG,
-];
-
-impl Default for ViewSettings {
-    fn default() -> Self {
-        let mut v = Self {
-            full: false,
-            poles: false,
-            z_plane: false,
-            rho: false,
-            map: false,
-            torque: false,
-            log: false,
-            tab: "run",
-        };
-        for p in VIEW_PARAMS {
-            v.set(p.key, p.default_value());
-        }
-        v
-    }
-}
-
-impl ViewSettings {
-    /// The value of a view parameter.
-    pub fn get(&self, key: &str) -> Option<Value> {
-        Some(match key {
-            "mode" => Value::Choice(if self.full { "full" } else { "intro" }),
-            "plane" => Value::Choice(if self.z_plane { "z" } else { "s" }),
-            "tab" => Value::Choice(self.tab),
-            "poles" => Value::Switch(self.poles),
-            "rho" => Value::Switch(self.rho),
-            "map" => Value::Switch(self.map),
-            "torque" => Value::Switch(self.torque),
-            "log" => Value::Switch(self.log),
-            _ => return None,
-        })
-    }
-
-    /// Sets a view parameter; false if `key` is not one.
-    fn set(&mut self, key: &str, v: Value) -> bool {
-        match (key, v) {
-            ("mode", Value::Choice(m)) => self.full = m == "full",
-            ("plane", Value::Choice(p)) => self.z_plane = p == "z",
-            ("tab", Value::Choice(t)) => self.tab = t,
-            ("poles", Value::Switch(b)) => self.poles = b,
-            ("rho", Value::Switch(b)) => self.rho = b,
-            ("map", Value::Switch(b)) => self.map = b,
-            ("torque", Value::Switch(b)) => self.torque = b,
-            ("log", Value::Switch(b)) => self.log = b,
-            _ => return false,
-        }
-        true
-    }
-
-    /// What is drawn: the intro shows the arm and the errors only, whatever the figures' switches say.
-    pub fn shown(&self) -> Self {
-        if self.full {
-            *self
-        } else {
-            Self { poles: false, rho: false, map: false, torque: false, ..*self }
-        }
-    }
-}
-
 /// Everything the page's URL holds: run A, run B if compared, the playback speed and the view.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
@@ -351,10 +265,15 @@ impl Settings {
                 None => fail("preset", preset_error(id))?,
             }
         }
+        if let Some((_, list)) = pairs.iter().rev().find(|(k, _)| k == "views") {
+            if let Err(e) = self.view.read_views(list) {
+                fail("views", e)?;
+            }
+        }
         let compare = pairs.iter().rev().find(|(k, _)| k == "compare").map(|(_, v)| v.as_str());
         for (key, _) in &pairs {
             // `lesson` is the session's (which step of the lesson is open), not a setting.
-            if key != "preset" && key != "lesson" && schema::param(key).is_none() {
+            if !matches!(key.as_str(), "preset" | "lesson" | "views") && schema::param(key).is_none() {
                 fail(key, unknown(key))?;
             }
         }
@@ -474,64 +393,6 @@ fn run_pairs(a: &RunSettings, changed_only: bool) -> Vec<(&'static str, String)>
     out
 }
 
-fn join_query(pairs: &[(&str, String)]) -> String {
-    pairs.iter().map(|(k, v)| format!("{k}={}", encode(v))).collect::<Vec<_>>().join("&")
-}
-
-/// Splits `a=1&b=2` (with or without a leading `?`) into decoded pairs.
-pub fn split_query(query: &str) -> Vec<(String, String)> {
-    query
-        .trim()
-        .trim_start_matches('?')
-        .split('&')
-        .filter(|part| !part.is_empty())
-        .map(|part| {
-            let (k, v) = part.split_once('=').unwrap_or((part, ""));
-            (decode(k), decode(v))
-        })
-        .collect()
-}
-
-/// Percent-decoding with `+` as a space; invalid escapes stay as they are.
-fn decode(s: &str) -> String {
-    let bytes = s.as_bytes();
-    let mut out = Vec::with_capacity(bytes.len());
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'+' => out.push(b' '),
-            b'%' => match (hex(bytes.get(i + 1)), hex(bytes.get(i + 2))) {
-                (Some(h), Some(l)) => {
-                    out.push(h * 16 + l);
-                    i += 2;
-                }
-                _ => out.push(b'%'),
-            },
-            b => out.push(b),
-        }
-        i += 1;
-    }
-    String::from_utf8_lossy(&out).into_owned()
-}
-
-fn hex(b: Option<&u8>) -> Option<u8> {
-    let b = *b?;
-    (b as char).to_digit(16).map(|d| d as u8)
-}
-
-/// Percent-encodes what a query value must not contain raw.
-fn encode(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for b in s.bytes() {
-        if b.is_ascii_alphanumeric() || b"-._~".contains(&b) {
-            out.push(b as char);
-        } else {
-            out.push_str(&format!("%{b:02X}"));
-        }
-    }
-    out
-}
-
 fn unknown(key: &str) -> Error {
     let known: Vec<&str> = schema::PARAMS.iter().map(|p| p.key).collect();
     Error::Parse(ParseError {
@@ -548,6 +409,7 @@ fn preset_error(id: &str) -> Error {
 
 #[cfg(test)]
 mod tests {
+    use super::super::query::{decode, encode};
     use super::*;
 
     #[test]

@@ -235,3 +235,41 @@ pub fn describe(run: &Run) -> String {
     };
     format!("{}, δ = {} s, {alpha} 1/s", feedback_short(s.pf), sig_trim(s.delta, 3))
 }
+
+impl super::Session {
+    /// The figure in words, for screen readers (the canvas' description): what it shows, at
+    /// which instant, the verdict and the newest numbers of each run.
+    pub fn figure_text(&self) -> String {
+        let v = self.settings().view.shown();
+        let mut shown = vec!["the arm (top view)", "the tracking errors e1, e2 over time"];
+        if v.torque {
+            shown.push("the torques");
+        }
+        if v.poles {
+            shown.push(if v.z_plane {
+                "the loop's eigenvalues λ with the unit circle"
+            } else {
+                "the pole plot s = ln λ / δ"
+            });
+        }
+        if v.rho {
+            shown.push("ρ along δ");
+        }
+        if v.map {
+            shown.push("the stability maps ρ(δ, α)");
+        }
+        let mut text = format!("The figure shows {}.", shown.join(", "));
+        for (i, run) in self.runs().enumerate() {
+            let name = if i == 0 { "A" } else { "B" };
+            let s = run_status(name, run);
+            let at = self.shown_snapshot(i).map_or(f64::NAN, |snap| snap.time);
+            let when = if self.viewing().is_some() { "looking back at" } else { "at" };
+            let who = if self.run(1).is_some() { format!("Run {name} ({}): ", s.settings) } else { String::new() };
+            text += &format!(
+                " {who}{} — {}; {when} t = {at:.2} s the errors are {}; {}.",
+                s.headline, s.detail, s.readouts.error, s.observed
+            );
+        }
+        text
+    }
+}

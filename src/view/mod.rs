@@ -15,6 +15,7 @@
 //! | [`map`] | stability maps ρ(δ, α) on log axes with the ρ = 1 contour, and their markers |
 //! | [`scene`] | [`Scene`]: one frame from a session's runs, and its description for the page |
 //! | [`labels`] | where every text over the canvas goes (ticks, titles, notes), without overlaps |
+//! | [`legend`] | the key to the markers, lines and shades shown, and the colour bar of ρ |
 //!
 //! Ticks, number formats, colours and contours come from [`crate::plot`]. Simulation values
 //! arrive as f64 and stay f64 until a vertex is written (f32, physical pixels).
@@ -25,6 +26,7 @@ pub mod arm;
 pub mod autoscale;
 pub mod labels;
 pub mod layout;
+pub mod legend;
 pub mod map;
 pub mod options;
 pub mod painter;

@@ -13,7 +13,7 @@ use crate::view::{Color, Vertex};
 
 /// The shader, kept in its own WGSL file.
 const SHADER: &str = include_str!("shader.wgsl");
-/// Size of the uniform block: vec2 size, f32 flag, f32 padding.
+/// Size of the uniform block: vec2 size, f32 sRGB flag, f32 dark flag.
 const UNIFORM_BYTES: u64 = 16;
 /// Smallest vertex buffer allocated, bytes.
 const MIN_VERTEX_BUFFER: u64 = 256 * 1024;
@@ -61,6 +61,8 @@ pub struct GpuCanvas {
     config: wgpu::SurfaceConfiguration,
     /// True if the surface format is sRGB (the shader then decodes colours).
     srgb_target: bool,
+    /// The dark colour scheme: every colour's lightness inverted.
+    dark: bool,
     pipeline: wgpu::RenderPipeline,
     uniforms: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
@@ -164,6 +166,7 @@ impl GpuCanvas {
             queue,
             config,
             srgb_target,
+            dark: false,
             pipeline,
             uniforms,
             bind_group,
@@ -188,8 +191,19 @@ impl GpuCanvas {
         self.config.width = width.max(1);
         self.config.height = height.max(1);
         self.configure_surface();
-        let flag = if self.srgb_target { 1.0f32 } else { 0.0 };
-        let data: [f32; 4] = [width as f32, height as f32, flag, 0.0];
+        self.write_uniforms();
+    }
+
+    /// Draws in the dark colour scheme (lightness inverted) or not.
+    pub fn set_dark(&mut self, dark: bool) {
+        self.dark = dark;
+        self.write_uniforms();
+    }
+
+    fn write_uniforms(&self) {
+        let flag = |b: bool| if b { 1.0f32 } else { 0.0 };
+        let data: [f32; 4] =
+            [self.config.width as f32, self.config.height as f32, flag(self.srgb_target), flag(self.dark)];
         self.queue.write_buffer(&self.uniforms, 0, bytemuck::cast_slice(&data));
     }
 
@@ -238,7 +252,10 @@ impl GpuCanvas {
                     depth_slice: None,
                     resolve_target: None,
                     ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(clear_color(background, self.srgb_target)),
+                        load: wgpu::LoadOp::Clear(clear_color(
+                            if self.dark { background.for_dark() } else { background },
+                            self.srgb_target,
+                        )),
                         store: wgpu::StoreOp::Store,
                     },
                 })],

@@ -9,6 +9,7 @@ use web_sys::HtmlCanvasElement;
 use super::gpu::GpuCanvas;
 use super::session::WebSession;
 use super::to_js;
+use crate::view::legend::LegendGroup;
 use crate::view::{Label, OptionsUpdate, PanelInfo, PoleInfo, Scene, SeriesInfo, ViewOptions};
 
 /// What `Renderer.layout()` returns.
@@ -32,6 +33,9 @@ struct LayoutReport {
     /// On a narrow canvas the views it shows one at a time, and which: `[{id, label, selected}]`
     /// (empty when everything is shown at once).
     tabs: Vec<TabInfo>,
+    /// The key to the panels shown: `[{title, items: [{glyph, color, text}], scale: {stops:
+    /// [[pos, css]], ticks: [[pos, text]]} | null}]`.
+    legend: Vec<LegendGroup>,
 }
 
 /// One tab of a narrow canvas.
@@ -82,6 +86,12 @@ impl Renderer {
         self.scene.resize(w, h, dpr);
         let (width, height) = self.scene.physical_size();
         self.gpu.resize(width, height);
+    }
+
+    /// Draws in the dark colour scheme (every colour's lightness inverted, hues kept) or not.
+    #[wasm_bindgen(js_name = setDark)]
+    pub fn set_dark(&mut self, dark: bool) {
+        self.gpu.set_dark(dark);
     }
 
     /// Changes drawing options: `{show_torque?: bool, time_window?: seconds,
@@ -151,6 +161,7 @@ impl Renderer {
             spring_magnification: self.scene.options().spring_magnification,
             backend: self.gpu.backend().name(),
             labels: self.scene.labels(),
+            legend: self.scene.legend(),
             tabs: {
                 let layout = self.scene.layout();
                 let tabs = layout.tabs.iter();

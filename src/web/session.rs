@@ -336,6 +336,25 @@ impl WebSession {
         self.inner.csv()
     }
 
+    /// Run A's tracking errors as an SVG figure (the same as `flexarm simulate --svg`).
+    #[wasm_bindgen(js_name = svgTraces)]
+    pub fn svg_traces(&self) -> String {
+        self.inner.svg_traces()
+    }
+
+    /// The two stability maps as an SVG figure (the same as `flexarm map --svg`); throws while
+    /// they are not computed.
+    #[wasm_bindgen(js_name = svgMaps)]
+    pub fn svg_maps(&self) -> Result<String, JsError> {
+        self.inner.svg_maps().map_err(js_error)
+    }
+
+    /// An `<iframe>` snippet embedding the current state, for the page at `page_url`.
+    #[wasm_bindgen(js_name = embedSnippet)]
+    pub fn embed_snippet(&self, page_url: &str) -> String {
+        self.inner.embed_snippet(page_url)
+    }
+
     /// The state string (the URL query) of everything set.
     #[wasm_bindgen(js_name = stateString)]
     pub fn state_string(&self) -> String {

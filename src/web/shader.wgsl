@@ -1,13 +1,15 @@
 // flexarm's one shader: the view's triangles arrive in physical pixels with sRGB-encoded colours;
 // the vertex stage maps pixels to clip space, the fragment stage passes the colour through
-// (decoding it to linear first when the surface encodes sRGB on write).
+// (its lightness inverted in the dark scheme; decoded to linear first when the surface encodes
+// sRGB on write).
 
 struct Viewport {
     // Canvas size in physical pixels.
     size: vec2<f32>,
     // 1.0 if the target encodes sRGB on write (colours must be decoded first), else 0.0.
     srgb_target: f32,
-    _pad: f32,
+    // 1.0 for the dark colour scheme: every colour's lightness inverted (Color::for_dark).
+    dark: f32,
 };
 
 @group(0) @binding(0) var<uniform> viewport: Viewport;
@@ -35,10 +37,20 @@ fn srgb_to_linear(c: vec3<f32>) -> vec3<f32> {
     return select(high, low, c <= vec3<f32>(0.04045));
 }
 
+// Lightness inverted, hue and chroma kept: every channel moves by 1 − max − min.
+fn for_dark(c: vec3<f32>) -> vec3<f32> {
+    let shift = 1.0 - max(c.r, max(c.g, c.b)) - min(c.r, min(c.g, c.b));
+    return c + vec3<f32>(shift);
+}
+
 @fragment
 fn fs_main(in: VertexOutput) -> @location(0) vec4<f32> {
-    if (viewport.srgb_target > 0.5) {
-        return vec4<f32>(srgb_to_linear(in.color.rgb), in.color.a);
+    var rgb = in.color.rgb;
+    if (viewport.dark > 0.5) {
+        rgb = for_dark(rgb);
     }
-    return in.color;
+    if (viewport.srgb_target > 0.5) {
+        rgb = srgb_to_linear(rgb);
+    }
+    return vec4<f32>(rgb, in.color.a);
 }

@@ -39,7 +39,7 @@ function buildField(p, slot, on) {
     const input = /** @type {HTMLInputElement} */ (make('input', { type: 'checkbox', id }));
     input.addEventListener('change', () => on.onSet(p.key, input.checked ? '1' : '0'));
     slot.append(input, make('label', { for: id, text: labelText(p), title: p.help }));
-    return { input, output: null };
+    return { input, output: null, exact: null };
   }
   const label = make('label', { for: id, text: labelText(p), title: p.help });
   if (p.kind === 'choice') {
@@ -47,7 +47,7 @@ function buildField(p, slot, on) {
     for (const [value, text] of p.options) select.append(make('option', { value, text }));
     select.addEventListener('change', () => on.onSet(p.key, select.value));
     slot.append(label, select);
-    return { input: select, output: null };
+    return { input: select, output: null, exact: null };
   }
   const helpId = `${id}-help`;
   const output = make('output', { id: `${id}-value`, for: id, class: 'value' });
@@ -64,8 +64,21 @@ function buildField(p, slot, on) {
     on.onStep(p.key, steps);
   });
   const span = p.control ? `${p.allowed}${p.scale === 'log' ? ', logarithmic scale' : ''}` : p.allowed;
-  slot.append(label, output, input, make('small', { id: helpId, class: 'help', text: span }));
-  return { input, output };
+  // An exact value can be typed (within the parameter's limits, which may reach past the slider).
+  const exact = /** @type {HTMLInputElement} */ (make('input', {
+    type: 'number', id: `${id}-number`, class: 'exact', step: 'any', inputmode: 'decimal',
+    'aria-label': `${p.label}: exact value${p.unit ? ` in ${p.unit}` : ''}`,
+  }));
+  if (p.limits) {
+    if (Number.isFinite(p.limits[0])) exact.min = String(p.limits[0]);
+    if (Number.isFinite(p.limits[1])) exact.max = String(p.limits[1]);
+  }
+  exact.addEventListener('change', () => {
+    if (exact.value.trim() !== '') on.onSet(p.key, exact.value.trim());
+  });
+  const exactRow = make('span', { class: 'exact-row' }, [exact, make('span', { class: 'unit', text: p.unit, 'aria-hidden': 'true' })]);
+  slot.append(label, output, input, make('small', { id: helpId, class: 'help', text: span }), exactRow);
+  return { input, output, exact };
 }
 
 /**
@@ -75,7 +88,7 @@ function buildField(p, slot, on) {
  *   onStep: (key: string, steps: number) => void }} on
  */
 export function buildControls(schema, on) {
-  /** @type {Map<string, { input: HTMLElement, output: HTMLElement | null }>} */
+  /** @type {Map<string, { input: HTMLElement, output: HTMLElement | null, exact: HTMLInputElement | null }>} */
   const fields = new Map();
   for (const p of schema) {
     const slot = /** @type {HTMLElement | null} */ (document.querySelector(`[data-param="${p.key}"]`));
@@ -95,6 +108,8 @@ export function buildControls(schema, on) {
           if (input.value !== pos) input.value = pos;
           if (f.output) setText(f.output, v.text);
           if (input.getAttribute('aria-valuetext') !== v.text) input.setAttribute('aria-valuetext', v.text);
+          // The typed field shows the value as set, unless the user is typing in it.
+          if (f.exact && document.activeElement !== f.exact && f.exact.value !== v.value) f.exact.value = v.value;
         } else if (input.value !== v.value) {
           input.value = v.value;
         }
@@ -102,7 +117,10 @@ export function buildControls(schema, on) {
     },
     /** @param {boolean} enabled */
     setEnabled(enabled) {
-      for (const f of fields.values()) /** @type {HTMLInputElement} */ (f.input).disabled = !enabled;
+      for (const f of fields.values()) {
+        /** @type {HTMLInputElement} */ (f.input).disabled = !enabled;
+        if (f.exact) f.exact.disabled = !enabled;
+      }
     },
     /** @param {string} key */
     input: (key) => fields.get(key)?.input ?? null,

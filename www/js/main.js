@@ -17,6 +17,8 @@ import { writeUrl } from './url.js';
 import { createLesson } from './lesson.js';
 import { createTimeline } from './timeline.js';
 import { createTabs } from './tabs.js';
+import { createExport } from './export.js';
+import { createLegend } from './legend.js';
 
 const store = createStore();
 const errors = createErrors(store);
@@ -134,7 +136,15 @@ async function main() {
   byId('step').addEventListener('click', step);
   byId('reset').addEventListener('click', reset);
   byId('poke').addEventListener('click', () => change(() => session.poke()));
-  byId('export-csv').addEventListener('click', () => download('flexarm-traces.csv', guard('Export failed', () => session.csv(), null)));
+  byId('export-csv').addEventListener('click', () => download('flexarm-traces.csv', guard('Export failed', () => session.csv(), null), 'text/csv'));
+  createExport({
+    session,
+    canvas: /** @type {HTMLCanvasElement} */ (byId('canvas')),
+    overlay: byId('axes-overlay'),
+    renderNow: () => render(),
+    download,
+    report: (/** @type {string} */ what, /** @type {unknown} */ e) => errors.report(what, e),
+  });
   byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
   // On a phone the controls (and the lesson) live in a sheet over the bottom of the page.
   const sheet = byId('panel');
@@ -203,6 +213,7 @@ async function main() {
 
   // ---------------------------------------------------------------- canvas
   const tabs = createTabs({ select: (id) => change(() => session.set('tab', id)) });
+  const legend = createLegend();
   const pointer = createPointer({
     probe: (x, y, reach) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, reach), null) : null),
     pick: (map, delta, alpha) => change(() => session.setFromMap(map, delta, alpha)),
@@ -235,6 +246,7 @@ async function main() {
       if (layout) {
         overlays.update(layout);
         tabs.render(layout.tabs);
+        legend.render(layout.legend);
       }
     }
     overlays.scroll(renderer.windowStart(), renderer.windowEnd());
@@ -295,6 +307,14 @@ async function main() {
     setText(label, backend);
     label.dataset.backend = backend;
     watchSize(() => renderer);
+    // The canvas follows the system's colour scheme, as the stylesheet does.
+    const dark = matchMedia('(prefers-color-scheme: dark)');
+    const scheme = () => {
+      renderer?.setDark(dark.matches);
+      loop.touch();
+    };
+    dark.addEventListener('change', scheme);
+    scheme();
   } catch (e) {
     setText(byId('backend'), 'none');
     byId('backend').dataset.backend = 'none';
@@ -355,10 +375,10 @@ function canvasProblem(/** @type {string} */ title, /** @type {string} */ detail
   byId('canvas').hidden = true;
 }
 
-/** Offers `text` as a file. @param {string} name @param {string | null | undefined} text */
-function download(name, text) {
-  if (text == null) return;
-  const url = URL.createObjectURL(new Blob([text], { type: 'text/csv;charset=utf-8' }));
+/** Offers `data` as a file. @param {string} name @param {BlobPart | null | undefined} data @param {string} type */
+function download(name, data, type) {
+  if (data == null) return;
+  const url = URL.createObjectURL(data instanceof Blob ? data : new Blob([data], { type: type.startsWith('text/') || type.includes('svg') ? `${type};charset=utf-8` : type }));
   const a = make('a', { href: url, download: name });
   document.body.appendChild(a);
   a.click();

@@ -24,8 +24,9 @@ export function bandGradient(bands, band, rest) {
   return `linear-gradient(to right, ${stops.join(', ')})`;
 }
 
-/** Colours of the δ slider's track: the stable windows, and the rest. */
-const TRACK = { band: '#7cc49a', rest: '#e4c9c3' };
+/** Colours of the δ slider's track: the stable windows, and the rest (the stylesheet's, so the
+ * dark scheme has its own). */
+const TRACK = { band: 'var(--band-stable)', rest: 'var(--band-rest)' };
 
 export function createStatus() {
   const runs = [createRunView('verdict'), createRunView('verdict-b')];

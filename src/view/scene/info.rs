@@ -172,6 +172,12 @@ impl Scene {
         self.layout.panels.iter().map(|panel| self.describe(panel, window)).collect()
     }
 
+    /// The key to the panels shown (see [`crate::view::legend`]).
+    pub fn legend(&self) -> Vec<crate::view::legend::LegendGroup> {
+        let kinds: Vec<PanelKind> = self.layout.panels.iter().map(|p| p.kind).collect();
+        crate::view::legend::legend(&kinds, self.pair)
+    }
+
     /// Every text over the canvas, placed (see [`crate::view::labels`]).
     pub fn labels(&self) -> Vec<Label> {
         let kinds = self.layout.panels.iter().map(|p| p.kind);

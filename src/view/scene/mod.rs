@@ -179,6 +179,11 @@ impl Scene {
             show_torque: v.torque,
             log_errors: v.log,
             tab: Tab::from_id(v.tab).unwrap_or_default(),
+            time_window: if v.window.is_finite() && v.window > 0.0 {
+                v.window.min(MAX_TIME_WINDOW)
+            } else {
+                self.options.time_window
+            },
             ..self.options
         };
         if next != self.options {

@@ -1,0 +1,63 @@
+//! What the page exports besides the CSV: the same SVG figures as `flexarm simulate --svg` and
+//! `flexarm map --svg` (written by [`crate::svg`]), and the snippet that embeds the current state
+//! in a course page.
+
+use super::maps::MapSide;
+use super::{status, Session};
+use crate::analysis::StabilityMap;
+use crate::error::{Error, ParseError};
+
+/// The embedded page's size, CSS px (a canvas and a strip of controls fit it without scrolling).
+pub const EMBED_SIZE: [u32; 2] = [640, 400];
+
+impl Session {
+    /// Run A's tracking errors as an SVG figure headed by the settings and the verdict, the
+    /// state string in its description.
+    pub fn svg_traces(&self) -> String {
+        let s = status::run_status("A", &self.a);
+        let title = format!("Tracking errors e1, e2: {} — {}", status::describe(&self.a), s.headline);
+        crate::svg::error_traces_svg(self.a.closed_loop().traces(), &title, Some(&self.settings.run_query()))
+    }
+
+    /// The two stability maps shown, side by side with their colour bar and the current (δ, α),
+    /// once they are computed.
+    pub fn svg_maps(&self) -> Result<String, Error> {
+        let pf = self.settings.a.pf;
+        let mut maps: Vec<(StabilityMap, String)> = Vec::new();
+        for side in MapSide::BOTH {
+            let entry = self.maps.shown(side).filter(|e| e.is_done()).ok_or_else(|| {
+                Error::Parse(ParseError {
+                    key: "map".into(),
+                    text: String::new(),
+                    expected: "finished stability maps: show the maps and wait for them to be computed".into(),
+                })
+            })?;
+            maps.push((entry.job().clone().finish()?, self.maps.caption(side, pf)));
+        }
+        let panels: Vec<(&StabilityMap, &str)> = maps.iter().map(|(m, c)| (m, c.as_str())).collect();
+        let a = &self.settings.a;
+        let title = format!(
+            "Spectral radius ρ of the sampled loop (k = {}, m = {}, inner loop {})",
+            a.k,
+            a.eps_ratio,
+            a.inner.name()
+        );
+        let mark = (a.alpha[0] == a.alpha[1]).then_some((a.delta, a.alpha[0]));
+        Ok(crate::svg::stability_maps_svg(&panels, &title, mark, Some(&self.settings.run_query())))
+    }
+
+    /// An `<iframe>` that shows what is on screen in a course page: the page at `page_url` (no
+    /// query) with the current state string, embedded (canvas and a strip of controls).
+    pub fn embed_snippet(&self, page_url: &str) -> String {
+        let base = page_url.split(['?', '#']).next().unwrap_or(page_url);
+        let mut settings = self.settings;
+        settings.view.embed = true;
+        let title = crate::svg::escape(&format!("flexarm: {}", self.status().showing));
+        let [w, h] = EMBED_SIZE;
+        format!(
+            "<iframe src=\"{}?{}\" width=\"{w}\" height=\"{h}\" title=\"{title}\" style=\"border:0\" loading=\"lazy\"></iframe>",
+            crate::svg::escape(base),
+            crate::svg::escape(&settings.to_query())
+        )
+    }
+}

@@ -1,0 +1,346 @@
+// Export of what is on screen: a PNG of the figure with a caption line, a WebM video of a run,
+// the SVG figures Rust writes, and the embed snippet. The picture is composited here (the wgpu
+// canvas, the HTML labels over it, a caption); what the SVGs and the snippet say is Rust's.
+
+import { byId, messageOf, setText } from './dom.js';
+
+/** Height of the caption strip under the figure, CSS px. */
+const CAPTION_PX = 28;
+/** The caption's font size, CSS px. */
+const CAPTION_FONT_PX = 13;
+/** Frames per second of the recorded video. */
+const VIDEO_FPS = 30;
+/** A recording stops by itself after this long, ms. */
+const VIDEO_MAX_MS = 60_000;
+/** The recorded video is at most this wide, px (a 2× screen would give very large frames). */
+const VIDEO_MAX_WIDTH = 1920;
+/** The video formats tried, best first. */
+export const VIDEO_TYPES = ['video/webm;codecs=vp9', 'video/webm;codecs=vp8', 'video/webm'];
+
+// ---------------------------------------------------------------- pure helpers (unit-tested)
+
+/** The caption line under the figure. @param {string} showing @param {string} state */
+export function captionText(showing, state) {
+  return `flexarm — ${showing} — state: ${state}`;
+}
+
+/**
+ * `text`, shortened with … at the end so that `measure` of it is at most `maxWidth`.
+ * @param {string} text @param {number} maxWidth @param {(s: string) => number} measure
+ */
+export function fitText(text, maxWidth, measure) {
+  if (measure(text) <= maxWidth) return text;
+  const chars = Array.from(text);
+  let lo = 0;
+  let hi = chars.length - 1;
+  // The longest prefix whose shortened form fits (binary search: widths grow with length).
+  while (lo < hi) {
+    const mid = Math.ceil((lo + hi) / 2);
+    if (measure(`${chars.slice(0, mid).join('')}…`) <= maxWidth) lo = mid;
+    else hi = mid - 1;
+  }
+  return lo === 0 ? '…' : `${chars.slice(0, lo).join('').trimEnd()}…`;
+}
+
+/** The first of `types` that `supported` accepts, or '' for none. @param {string[]} types @param {(t: string) => boolean} supported */
+export function firstSupported(types, supported) {
+  return types.find((t) => supported(t)) ?? '';
+}
+
+/** Elapsed time as m:ss. @param {number} ms */
+export function formatElapsed(ms) {
+  const s = Math.max(0, Math.floor(ms / 1000));
+  return `${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}`;
+}
+
+/**
+ * The pixel size of a composite of a canvas `cssWidth`×`cssHeight` CSS px at `scale` px per CSS
+ * px, with the caption strip below.
+ * @param {number} cssWidth @param {number} cssHeight @param {number} scale
+ */
+export function figureSize(cssWidth, cssHeight, scale) {
+  return { width: Math.max(1, Math.round(cssWidth * scale)), height: Math.max(1, Math.round((cssHeight + CAPTION_PX) * scale)) };
+}
+
+/**
+ * Where a text's alphabetic baseline lies in a line box (CSS: half the leading above the font's
+ * ascent). @param {number} top @param {number} lineHeight @param {number} ascent @param {number} descent
+ */
+export function baselineIn(top, lineHeight, ascent, descent) {
+  return top + (lineHeight - ascent - descent) / 2 + ascent;
+}
+
+/** Whether a computed CSS colour paints nothing. @param {string} colour */
+export function isTransparent(colour) {
+  const c = colour.replace(/\s+/g, '');
+  return c === '' || c === 'transparent' || /^rgba\(\d+,\d+,\d+,0(\.0*)?\)$/.test(c) || /\/0(\.0*)?\)$/.test(c);
+}
+
+/** The canvas font of a computed style (size in CSS px: the context is scaled). @param {CSSStyleDeclaration} s */
+function fontOf(s) {
+  return `${s.fontStyle} ${s.fontWeight} ${s.fontSize} ${s.fontFamily}`;
+}
+
+// ---------------------------------------------------------------- compositing
+
+/**
+ * Draws the figure into `target` (sized by the caller, `scale` px per CSS px): the wgpu canvas
+ * as just rendered, every label shown over it, and the caption. False when nothing was drawn.
+ * @param {CanvasRenderingContext2D} ctx
+ * @param {number} scale
+ * @param {{ canvas: HTMLCanvasElement, overlay: HTMLElement, renderNow: () => boolean, caption: () => string }} from
+ */
+export function composeFigure(ctx, scale, from) {
+  const box = from.canvas.getBoundingClientRect();
+  const page = getComputedStyle(document.body);
+  const surface = getComputedStyle(from.canvas.parentElement ?? document.body).backgroundColor;
+  ctx.setTransform(scale, 0, 0, scale, 0, 0);
+  ctx.fillStyle = isTransparent(surface) ? '#ffffff' : surface;
+  ctx.fillRect(0, 0, box.width, box.height + CAPTION_PX);
+  // Rendered and copied in the same task: the drawing buffer is still the frame's.
+  if (!from.renderNow()) return false;
+  ctx.drawImage(from.canvas, 0, 0, box.width, box.height);
+  drawLabels(ctx, from.overlay, box);
+  drawCaption(ctx, box, from.caption(), page);
+  return true;
+}
+
+/** Every label shown over the canvas, where it is on screen. @param {CanvasRenderingContext2D} ctx @param {HTMLElement} overlay @param {DOMRect} box */
+function drawLabels(ctx, overlay, box) {
+  for (const span of /** @type {NodeListOf<HTMLElement>} */ (overlay.querySelectorAll('.label'))) {
+    if (span.hidden || span.getClientRects().length === 0 || !span.textContent) continue;
+    const s = getComputedStyle(span);
+    if (s.visibility === 'hidden' || s.display === 'none') continue;
+    const r = span.getBoundingClientRect();
+    const x = r.left - box.left;
+    const y = r.top - box.top;
+    if (!isTransparent(s.backgroundColor)) {
+      ctx.fillStyle = s.backgroundColor;
+      ctx.beginPath();
+      ctx.roundRect(x, y, r.width, r.height, parseFloat(s.borderTopLeftRadius) || 0);
+      ctx.fill();
+    }
+    ctx.font = fontOf(s);
+    ctx.fillStyle = s.color;
+    ctx.textAlign = 'left';
+    ctx.textBaseline = 'alphabetic';
+    const m = ctx.measureText(span.textContent);
+    const left = x + (parseFloat(s.paddingLeft) || 0) + (parseFloat(s.borderLeftWidth) || 0);
+    const top = y + (parseFloat(s.paddingTop) || 0) + (parseFloat(s.borderTopWidth) || 0);
+    const inner = r.height - (parseFloat(s.paddingTop) || 0) - (parseFloat(s.paddingBottom) || 0);
+    ctx.fillText(span.textContent, left, baselineIn(top, inner, m.fontBoundingBoxAscent, m.fontBoundingBoxDescent));
+  }
+}
+
+/** The caption strip under the figure. @param {CanvasRenderingContext2D} ctx @param {DOMRect} box @param {string} text @param {CSSStyleDeclaration} page */
+function drawCaption(ctx, box, text, page) {
+  const pad = 8;
+  ctx.fillStyle = page.color || '#1b2330';
+  ctx.fillRect(0, box.height, box.width, 1);
+  ctx.font = `400 ${CAPTION_FONT_PX}px ${page.fontFamily}`;
+  ctx.textAlign = 'left';
+  ctx.textBaseline = 'middle';
+  const line = fitText(text, box.width - 2 * pad, (t) => ctx.measureText(t).width);
+  ctx.fillText(line, pad, box.height + CAPTION_PX / 2);
+}
+
+/** A 2D canvas sized for the figure at `scale`. @param {HTMLCanvasElement} canvas @param {number} scale */
+function figureCanvas(canvas, scale) {
+  const box = canvas.getBoundingClientRect();
+  const out = document.createElement('canvas');
+  Object.assign(out, figureSize(box.width, box.height, scale));
+  const ctx = out.getContext('2d');
+  if (!ctx) throw new Error('this browser has no 2D canvas');
+  return { out, ctx };
+}
+
+// ---------------------------------------------------------------- the buttons
+
+/**
+ * @param {{ session: any, canvas: HTMLCanvasElement, overlay: HTMLElement, renderNow: () => boolean,
+ *   download: (name: string, data: BlobPart | null | undefined, type: string) => void,
+ *   report: (what: string, e: unknown) => void }} on
+ */
+export function createExport(on) {
+  const status = byId('export-status');
+  const say = (/** @type {string} */ text) => setText(status, text);
+  const from = {
+    canvas: on.canvas,
+    overlay: on.overlay,
+    renderNow: on.renderNow,
+    caption: () => {
+      const s = on.session.status();
+      return captionText(s.showing, on.session.stateString());
+    },
+  };
+  /** A click handler that reports what fails. @param {string} what @param {() => void | Promise<void>} fn */
+  const guarded = (what, fn) => async () => {
+    try {
+      await fn();
+    } catch (e) {
+      on.report(what, e);
+    }
+  };
+
+  byId('export-png').addEventListener('click', guarded('Saving the picture failed', () => savePng(on, from, say)));
+  wireVideo(on, from, say);
+  byId('export-svg-traces').addEventListener('click', guarded('Saving the error figure failed', () => {
+    on.download('flexarm-errors.svg', on.session.svgTraces(), 'image/svg+xml');
+    say('Saved flexarm-errors.svg.');
+  }));
+  byId('export-svg-maps').addEventListener('click', guarded('Saving the map figure failed', () => {
+    let svg;
+    try {
+      svg = on.session.svgMaps();
+    } catch (e) {
+      say(messageOf(e)); // not computed yet: an expected state, not an error
+      return;
+    }
+    on.download('flexarm-maps.svg', svg, 'image/svg+xml');
+    say('Saved flexarm-maps.svg.');
+  }));
+  byId('embed-snippet').addEventListener('click', guarded('Making the embed snippet failed', () => showEmbed(on.session.embedSnippet(window.location.href), say)));
+}
+
+/**
+ * Composites the figure and offers it as flexarm-figure.png.
+ * @param {{ download: (name: string, data: Blob, type: string) => void }} on
+ * @param {Parameters<typeof composeFigure>[2]} from @param {(text: string) => void} say
+ */
+async function savePng(on, from, say) {
+  const { out, ctx } = figureCanvas(from.canvas, window.devicePixelRatio || 1);
+  if (!composeFigure(ctx, window.devicePixelRatio || 1, from)) {
+    say('Nothing to save: the figure is not drawn in this browser.');
+    return;
+  }
+  /** @type {Blob | null} */
+  const blob = await new Promise((resolve) => out.toBlob(resolve, 'image/png'));
+  if (!blob) throw new Error('the browser made no PNG');
+  on.download('flexarm-figure.png', blob, 'image/png');
+  say(`Saved flexarm-figure.png (${out.width}×${out.height} px).`);
+}
+
+/**
+ * The record button: a composited canvas redrawn every frame, recorded as WebM.
+ * @param {{ download: (name: string, data: Blob, type: string) => void, report: (what: string, e: unknown) => void }} on
+ * @param {Parameters<typeof composeFigure>[2]} from @param {(text: string) => void} say
+ */
+function wireVideo(on, from, say) {
+  const button = /** @type {HTMLButtonElement} */ (byId('record-video'));
+  const idleText = button.textContent ?? '';
+  const type = typeof MediaRecorder === 'undefined' ? '' : firstSupported(VIDEO_TYPES, (t) => MediaRecorder.isTypeSupported(t));
+  if (!type) {
+    button.disabled = true;
+    say('This browser cannot record video (no MediaRecorder for WebM).');
+    return;
+  }
+  /** @type {{ stop: () => void } | null} */
+  let recording = null;
+  const showIdle = () => {
+    setText(button, idleText);
+    button.setAttribute('aria-pressed', 'false');
+  };
+  button.addEventListener('click', () => {
+    if (recording) {
+      recording.stop();
+      return;
+    }
+    try {
+      recording = record(type, from, {
+        tick: (ms) => setText(button, `Stop recording (${formatElapsed(ms)})`),
+        done: (blob) => {
+          recording = null;
+          showIdle();
+          on.download('flexarm-run.webm', blob, 'video/webm');
+          say(`Saved flexarm-run.webm (${Math.round(blob.size / 1024)} kB).`);
+        },
+        failed: (e) => {
+          recording = null;
+          showIdle();
+          on.report('Recording the video failed', e);
+        },
+      });
+      button.setAttribute('aria-pressed', 'true');
+      setText(button, `Stop recording (${formatElapsed(0)})`);
+      say('Recording… press the button again to stop (at most 1 minute).');
+    } catch (e) {
+      recording = null;
+      showIdle();
+      on.report('Recording the video failed', e);
+    }
+  });
+}
+
+/**
+ * Starts recording the composited figure; `tick` gets the elapsed ms each frame, `done` the video.
+ * @param {string} type @param {Parameters<typeof composeFigure>[2]} from
+ * @param {{ tick: (ms: number) => void, done: (video: Blob) => void, failed: (e: unknown) => void }} to
+ */
+function record(type, from, to) {
+  const box = from.canvas.getBoundingClientRect();
+  const scale = Math.min(window.devicePixelRatio || 1, VIDEO_MAX_WIDTH / Math.max(1, box.width));
+  const { out, ctx } = figureCanvas(from.canvas, scale);
+  const draw = () => {
+    // The canvas may have changed size: the figure keeps the video's width.
+    composeFigure(ctx, out.width / Math.max(1, from.canvas.getBoundingClientRect().width), from);
+  };
+  draw();
+  const stream = out.captureStream(VIDEO_FPS);
+  const recorder = new MediaRecorder(stream, { mimeType: type });
+  /** @type {Blob[]} */
+  const chunks = [];
+  const t0 = performance.now();
+  let frame = 0;
+  let failed = false;
+  const loop = () => {
+    try {
+      draw();
+    } catch (e) {
+      failed = true;
+      to.failed(e);
+      finish();
+      return;
+    }
+    to.tick(performance.now() - t0);
+    frame = requestAnimationFrame(loop);
+  };
+  const limit = setTimeout(() => finish(), VIDEO_MAX_MS);
+  const finish = () => {
+    cancelAnimationFrame(frame);
+    clearTimeout(limit);
+    if (recorder.state !== 'inactive') recorder.stop();
+  };
+  recorder.addEventListener('dataavailable', (e) => {
+    if (e.data.size > 0) chunks.push(e.data);
+  });
+  recorder.addEventListener('stop', () => {
+    stream.getTracks().forEach((t) => t.stop());
+    if (!failed) to.done(new Blob(chunks, { type: 'video/webm' }));
+  });
+  recorder.addEventListener('error', (e) => {
+    failed = true;
+    cancelAnimationFrame(frame);
+    clearTimeout(limit);
+    to.failed(/** @type {any} */ (e).error ?? e);
+  });
+  recorder.start(1000);
+  frame = requestAnimationFrame(loop);
+  return { stop: finish };
+}
+
+/** Shows the embed snippet, selected, and copies it where the browser allows. @param {string} snippet @param {(text: string) => void} say */
+async function showEmbed(snippet, say) {
+  const code = /** @type {HTMLTextAreaElement} */ (byId('embed-code'));
+  code.value = snippet;
+  code.hidden = false;
+  byId('embed-label').hidden = false;
+  code.focus();
+  code.select();
+  try {
+    if (!navigator.clipboard) throw new Error('no clipboard');
+    await navigator.clipboard.writeText(snippet);
+    say('Embed snippet copied to the clipboard.');
+  } catch {
+    say('The embed snippet is selected above: select and copy it.');
+  }
+}

@@ -1,0 +1,12 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { glyphSvg, scaleGradient } from './legend.js';
+
+test('each glyph is a small SVG in its colour', () => {
+  for (const g of ['cross', 'plus', 'ring', 'diamond', 'halo', 'line', 'dashed', 'swatch', 'chevron']) {
+    const svg = glyphSvg(g, '#123456');
+    assert.match(svg, /^<svg [^>]*width="14"/);
+    assert.ok(svg.includes('#123456'), g);
+  }
+  assert.equal(scaleGradient({ stops: [[0, '#00f'], [1, '#f00']], ticks: [] }), 'linear-gradient(to right, #00f 0.0%, #f00 100.0%)');
+});
