@@ -14,6 +14,8 @@ pub enum Error {
     InvalidDuration(f64),
     /// A linear-algebra step of the analysis failed (singular matrix, no Riccati solution, ...).
     Analysis(&'static str),
+    /// Something asked for is not there yet (e.g. the stability maps are still being computed).
+    NotReady(&'static str),
     /// The lesson's text does not follow its format (line number, 1-based, and what is wrong),
     /// or a lesson action does not apply (line 0).
     Lesson { line: usize, message: String },
@@ -28,6 +30,7 @@ impl fmt::Display for Error {
                 write!(f, "invalid duration = {d}: must be a finite number ≥ 0 s (at most 1e6 s)")
             }
             Error::Analysis(m) => write!(f, "analysis failed: {m}"),
+            Error::NotReady(m) => write!(f, "{m}"),
             Error::Lesson { line: 0, message } => write!(f, "lesson: {message}"),
             Error::Lesson { line, message } => write!(f, "lesson, line {line}: {message}"),
         }

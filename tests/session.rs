@@ -339,7 +339,7 @@ fn the_page_exports_the_clis_figures_and_an_embed_snippet() {
     assert!(svg.starts_with("<svg") && svg.contains("Tracking errors") && svg.contains("Unstable"), "{}", &svg[..200]);
     assert!(svg.contains(&flexarm::svg::escape(&s.settings().run_query())), "the state string in the figure");
     let e = s.svg_maps().unwrap_err().to_string();
-    assert!(e.contains("finished stability maps"), "{e}");
+    assert!(e.starts_with("the stability maps are still being computed"), "{e}");
     let mut tick = 0.0;
     let mut clock = || {
         tick += 1.0;
@@ -358,4 +358,15 @@ fn the_page_exports_the_clis_figures_and_an_embed_snippet() {
     assert!(v.embed && v.poles && v.z_plane && !v.map && !v.rho && !v.torque, "{v:?}");
     let (_, notices) = Session::open("views=arm,everything");
     assert!(notices[0].text.contains("a list of arm, traces"), "{notices:?}");
+}
+
+#[test]
+fn the_keyboard_moves_the_point_on_a_map_through_round_values() {
+    let mut s = session("preset=fig5.2&mode=full");
+    s.step_on_map(MapSide::Off, 1, 0).unwrap();
+    let a = s.settings().a;
+    assert_eq!((a.delta, a.alpha, a.pf), (0.012, [2.0, 2.0], Pf::Off), "one step right on the map without K_pr");
+    s.step_on_map(MapSide::On, 0, -1).unwrap();
+    let a = s.settings().a;
+    assert_eq!((a.delta, a.alpha[0], a.pf), (0.012, 1.5, Pf::Paper), "one step down on the map with K_pr");
 }

@@ -5,7 +5,7 @@
 use super::maps::MapSide;
 use super::{status, Session};
 use crate::analysis::StabilityMap;
-use crate::error::{Error, ParseError};
+use crate::error::Error;
 
 /// The embedded page's size, CSS px (a canvas and a strip of controls fit it without scrolling).
 pub const EMBED_SIZE: [u32; 2] = [640, 400];
@@ -25,13 +25,9 @@ impl Session {
         let pf = self.settings.a.pf;
         let mut maps: Vec<(StabilityMap, String)> = Vec::new();
         for side in MapSide::BOTH {
-            let entry = self.maps.shown(side).filter(|e| e.is_done()).ok_or_else(|| {
-                Error::Parse(ParseError {
-                    key: "map".into(),
-                    text: String::new(),
-                    expected: "finished stability maps: show the maps and wait for them to be computed".into(),
-                })
-            })?;
+            let entry = self.maps.shown(side).filter(|e| e.is_done()).ok_or(Error::NotReady(
+                "the stability maps are still being computed: show them and wait for the progress bar to fill",
+            ))?;
             maps.push((entry.job().clone().finish()?, self.maps.caption(side, pf)));
         }
         let panels: Vec<(&StabilityMap, &str)> = maps.iter().map(|(m, c)| (m, c.as_str())).collect();

@@ -277,6 +277,16 @@ impl Session {
         self.apply(next, false, "")
     }
 
+    /// Moves run A's point on a map by arrow-key steps (δ across, α up), running with that map's
+    /// preliminary feedback: the keyboard's way of clicking a map.
+    pub fn step_on_map(&mut self, side: MapSide, delta_steps: i32, alpha_steps: i32) -> Result<(), Error> {
+        let spec = |p: &schema::Param| *p.number().expect("δ and α are numbers");
+        let a = self.settings.a;
+        let delta = spec(&schema::DELTA).step_from(a.delta, delta_steps);
+        let alpha = spec(&schema::ALPHA).step_from(a.alpha[0], alpha_steps);
+        self.set_from_map(side, delta, alpha)
+    }
+
     /// Runs A at a sampling period picked on ρ(δ): rounded to the δ control's precision and kept
     /// within its span.
     pub fn pick_delta(&mut self, delta: f64) -> Result<(), Error> {

@@ -28,8 +28,8 @@ pub mod font {
     pub const NOTE: f64 = 12.0;
 }
 
-/// Estimated width of one character in ems: generous for the page's sans-serif (digits of
-/// DejaVu Sans are 0.64 em, most letters narrower).
+/// Estimated width of an ordinary character in ems: generous for the page's sans-serif (digits
+/// of DejaVu Sans are 0.64 em, most letters narrower).
 pub const EM_PER_CHAR: f64 = 0.64;
 /// Height of a line of text in ems.
 pub const LINE_HEIGHT: f64 = 1.3;
@@ -66,34 +66,64 @@ pub struct Label {
     pub size: f64,
     /// A time tick: its time, for moving it with the scrolling window (None otherwise).
     pub time: Option<f64>,
+    /// The estimated width of the text, CSS px (what the overlap checks use).
+    pub width: f64,
 }
 
 impl Label {
     /// The text's box as estimated (CSS px).
     pub fn bounds(&self) -> Rect {
-        let (w, h) = (text_width(&self.text, self.size), self.size * LINE_HEIGHT);
+        let bold = matches!(self.class, LabelClass::Title | LabelClass::Axis | LabelClass::Note | LabelClass::Mark);
+        let w = if bold { bold_width(&self.text, self.size) } else { text_width(&self.text, self.size) };
+        let h = self.size * LINE_HEIGHT;
         Rect::new(self.x - self.align[0] * w, self.y - self.align[1] * h, w, h)
     }
 }
 
-/// Estimated width of `text` at `size` px.
+/// Estimated width of `text` at `size` px in the regular weight: [`EM_PER_CHAR`] a character,
+/// more for the wide ones (the minus sign, dashes, Greek letters), less for the narrow ones.
 pub fn text_width(text: &str, size: f64) -> f64 {
-    text.chars().count() as f64 * EM_PER_CHAR * size
+    text.chars().map(char_em).sum::<f64>() * size
+}
+
+/// The same in bold (titles and axis labels).
+pub fn bold_width(text: &str, size: f64) -> f64 {
+    BOLD * text_width(text, size)
+}
+
+/// Bold text is this much wider.
+const BOLD: f64 = 1.1;
+
+/// Estimated width of a character, ems (generous: the browser's sans-serif is at most this).
+fn char_em(c: char) -> f64 {
+    match c {
+        '−' | '—' | '…' | '×' | 'm' | 'M' | 'W' | 'w' | '%' => 0.9,
+        'α'..='ω' | 'Α'..='Ω' => 0.72,
+        '.' | ',' | ':' | ';' | ' ' | 'i' | 'j' | 'l' | '|' | '\'' | '!' => 0.4,
+        '(' | ')' | '[' | ']' | 'f' | 't' | 'r' | 'I' | '/' => 0.5,
+        _ => EM_PER_CHAR,
+    }
 }
 
 /// `text`, shortened with "…" to fit `width` px at `size` px (empty if not even that fits).
+/// `text` in bold, shortened with "…" to fit `width` px at `size` px (empty if not even that fits).
 pub fn fit(text: &str, width: f64, size: f64) -> String {
-    if text_width(text, size) <= width {
+    if bold_width(text, size) <= width {
         return text.to_string();
     }
-    let room = (width / (EM_PER_CHAR * size)).floor() as usize;
-    if room < 2 {
+    let mut out = String::new();
+    for c in text.chars() {
+        let next = format!("{out}{c}…");
+        if bold_width(&next, size) > width {
+            break;
+        }
+        out.push(c);
+    }
+    let out = out.trim_end();
+    if out.chars().count() < 1 {
         return String::new();
     }
-    let mut out: String = text.chars().take(room - 1).collect();
-    out = out.trim_end().to_string();
-    out.push('…');
-    out
+    format!("{out}…")
 }
 
 /// Where a value sits along an axis from `r0` to `r1` (0 at the start, 1 at the end).
@@ -109,8 +139,17 @@ fn fraction(v: f64, range: [f64; 2], log: bool) -> f64 {
 pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
     let mut out = Vec::new();
     for (kind, p) in panels {
-        let label =
-            |class, text: String, x, y, align, size| Label { panel: p.id, class, text, x, y, align, size, time: None };
+        let label = |class, text: String, x, y, align, size| Label {
+            panel: p.id,
+            class,
+            text,
+            x,
+            y,
+            align,
+            size,
+            time: None,
+            width: 0.0,
+        };
         if kind.is_stage() {
             out.push(label(
                 LabelClass::Title,
@@ -144,9 +183,9 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
             ));
         } else {
             // The header row: the y label left, the x label right, a note between if it fits.
-            let x_w = text_width(p.x_label, font::TITLE);
+            let x_w = bold_width(p.x_label, font::TITLE);
             let y_label = fit(p.y_label, p.width - x_w - 12.0, font::TITLE);
-            let y_w = text_width(&y_label, font::TITLE);
+            let y_w = bold_width(&y_label, font::TITLE);
             out.push(label(LabelClass::Axis, y_label, p.x - TICK_GAP, p.y - 2.0, [0.0, 1.0], font::TITLE));
             out.push(label(
                 LabelClass::Axis,
@@ -166,6 +205,9 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
         marks(p, &mut out);
     }
     out.retain(|l| !l.text.is_empty());
+    for l in &mut out {
+        l.width = l.bounds().w;
+    }
     drop_collisions(out)
 }
 
@@ -215,6 +257,7 @@ fn ticks(kind: &PanelKind, p: &PanelInfo, out: &mut Vec<Label>) {
             align: [1.0, 0.5],
             size: font::TICK,
             time: None,
+            width: 0.0,
         });
     }
     for t in &p.x_labels {
@@ -228,6 +271,7 @@ fn ticks(kind: &PanelKind, p: &PanelInfo, out: &mut Vec<Label>) {
             align: [0.5, 0.0],
             size: font::TICK,
             time: kind.is_time_plot().then_some(t.value),
+            width: 0.0,
         });
     }
 }
@@ -236,7 +280,7 @@ fn ticks(kind: &PanelKind, p: &PanelInfo, out: &mut Vec<Label>) {
 fn marks(p: &PanelInfo, out: &mut Vec<Label>) {
     for m in &p.marks {
         let text = fit(&m.text, p.width - 8.0, font::NOTE);
-        let w = text_width(&text, font::NOTE);
+        let w = bold_width(&text, font::NOTE);
         let h = font::NOTE * LINE_HEIGHT;
         let right = m.x + 9.0 + w <= p.x + p.width;
         let up = m.y - 9.0 - h >= p.y;
@@ -251,6 +295,7 @@ fn marks(p: &PanelInfo, out: &mut Vec<Label>) {
             align: [ax, ay],
             size: font::NOTE,
             time: None,
+            width: 0.0,
         });
     }
 }

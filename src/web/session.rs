@@ -166,6 +166,13 @@ impl WebSession {
         self.inner.set_from_map(side, delta, alpha).map_err(js_error)
     }
 
+    /// Moves run A's point on a map ("off" or "on") by arrow-key steps of δ and α.
+    #[wasm_bindgen(js_name = stepOnMap)]
+    pub fn step_on_map(&mut self, side: &str, delta_steps: i32, alpha_steps: i32) -> Result<(), JsError> {
+        let side = MapSide::parse(side).map_err(|e| JsError::new(&e))?;
+        self.inner.step_on_map(side, delta_steps, alpha_steps).map_err(js_error)
+    }
+
     /// `[{key, value, position, text}]`: what each control shows.
     pub fn controls(&self) -> Result<JsValue, JsError> {
         to_js(&self.inner.controls())

@@ -15,7 +15,7 @@ export const inputId = (key) => key.replace(/_/g, '-');
 
 /**
  * @typedef {{ key: string, label: string, unit: string, help: string, kind: string,
- *   scale?: string | null, control?: number[] | null, integer: boolean,
+ *   scale?: string | null, control?: number[] | null, limits?: number[] | null, integer: boolean,
  *   options: string[][], default: string, allowed: string }} Param
  * @typedef {{ key: string, value: string, position?: number | null, text: string }} ControlValue
  */

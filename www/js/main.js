@@ -19,6 +19,7 @@ import { createTimeline } from './timeline.js';
 import { createTabs } from './tabs.js';
 import { createExport } from './export.js';
 import { createLegend } from './legend.js';
+import { createFocus } from './focus.js';
 
 const store = createStore();
 const errors = createErrors(store);
@@ -89,11 +90,20 @@ async function main() {
     byId('mode-intro').setAttribute('aria-pressed', String(!full));
     byId('mode-full').setAttribute('aria-pressed', String(full));
     /** @type {HTMLInputElement} */ (byId('pf-toggle')).checked = value('pf') !== 'off';
+    /** @type {HTMLInputElement} */ (byId('embed-pf')).checked = value('pf') !== 'off';
+    const embed = value('embed') === '1';
+    if (document.body.dataset.embed !== String(embed)) document.body.dataset.embed = String(embed);
+    if (embed) {
+      // The whole page, for the reader who wants more: the same state, not embedded.
+      /** @type {HTMLAnchorElement} */ (byId('embed-open')).href = `${window.location.pathname}?${session.stateString().replace(/(^|&)embed=1/, '')}`;
+    }
   }
   byId('mode-intro').addEventListener('click', () => change(() => session.set('mode', 'intro')));
   byId('mode-full').addEventListener('click', () => change(() => session.set('mode', 'full')));
-  const pfToggle = /** @type {HTMLInputElement} */ (byId('pf-toggle'));
-  pfToggle.addEventListener('change', () => change(() => session.set('pf', pfToggle.checked ? 'paper' : 'off')));
+  for (const id of ['pf-toggle', 'embed-pf']) {
+    const box = /** @type {HTMLInputElement} */ (byId(id));
+    box.addEventListener('change', () => change(() => session.set('pf', box.checked ? 'paper' : 'off')));
+  }
 
   const presetSelect = /** @type {HTMLSelectElement} */ (byId('preset'));
   for (const p of wasm.presets()) presetSelect.append(make('option', { value: p.id, text: p.title }));
@@ -122,6 +132,13 @@ async function main() {
     }
   });
   play.addEventListener('click', () => store.dispatch({ type: 'toggle-play' }));
+  const embedPlay = byId('embed-play');
+  embedPlay.addEventListener('click', () => store.dispatch({ type: 'toggle-play' }));
+  store.subscribe((s, prev) => {
+    if (s.playing === prev.playing) return;
+    setText(embedPlay, s.playing ? '❚❚ Pause' : '▶ Play');
+    embedPlay.setAttribute('aria-pressed', String(s.playing));
+  });
   const step = () => {
     store.dispatch({ type: 'pause' });
     guard('Step failed', () => session.stepPeriod());
@@ -152,7 +169,7 @@ async function main() {
   const openSheet = (/** @type {boolean} */ open) => {
     sheet.classList.toggle('open', open);
     sheetToggle.setAttribute('aria-expanded', String(open));
-    setText(sheetToggle, open ? 'Close ▾' : 'Controls, verdict and lesson ▴');
+    setText(sheetToggle, open ? 'Close ▾' : document.body.classList.contains('in-lesson') ? 'The lesson, controls and verdict ▴' : 'Controls, verdict and lesson ▴');
   };
   sheetToggle.addEventListener('click', () => openSheet(!sheet.classList.contains('open')));
   wireKeys({ togglePlay: () => store.dispatch({ type: 'toggle-play' }), step, stepBack, reset });
@@ -214,6 +231,14 @@ async function main() {
   // ---------------------------------------------------------------- canvas
   const tabs = createTabs({ select: (id) => change(() => session.set('tab', id)) });
   const legend = createLegend();
+  const focus = createFocus({
+    stepOnMap: (side, d, a) => change(() => session.stepOnMap(side, d, a)),
+    enterMap: (side) => change(() => session.stepOnMap(side, 0, 0)),
+    stepDelta: (d) => change(() => session.stepValue('delta', d)),
+    probe: (x, y) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, 2), null) : null),
+    showTip: overlays.showTip,
+    hideTip: overlays.hideTip,
+  });
   const pointer = createPointer({
     probe: (x, y, reach) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, reach), null) : null),
     pick: (map, delta, alpha) => change(() => session.setFromMap(map, delta, alpha)),
@@ -247,6 +272,7 @@ async function main() {
         overlays.update(layout);
         tabs.render(layout.tabs);
         legend.render(layout.legend);
+        focus.update(layout);
       }
     }
     overlays.scroll(renderer.windowStart(), renderer.windowEnd());
@@ -254,9 +280,18 @@ async function main() {
   }
 
   /** Everything the page says about the session, from one status. */
+  const figureDescription = byId('figure-description');
+  let lessonShown = false;
   function refreshStatus() {
     const s = guard('Status', () => session.status(), null);
     if (!s) return;
+    setText(figureDescription, s.figure);
+    // A lesson opened from a link shows its step: on a phone, the sheet it lives in opens once.
+    if (s.lesson && !lessonShown) {
+      lessonShown = true;
+      openSheet(true);
+    }
+    if (!s.lesson) lessonShown = false;
     status.render(s, performance.now());
     status.renderLegend(s, layout?.series ?? []);
     lesson.render(s.lesson);
@@ -294,6 +329,11 @@ async function main() {
   syncControls();
   writeUrl(session.stateString());
   byId('loading').hidden = true;
+  // Motion only on request where the system asks for less of it.
+  if (matchMedia('(prefers-reduced-motion: reduce)').matches) {
+    store.dispatch({ type: 'pause' });
+    session.setNote('Paused because your system asks for reduced motion: press Play to run.');
+  }
   transport.forEach((b) => (/** @type {HTMLButtonElement} */ (b).disabled = false));
   loop.start();
 

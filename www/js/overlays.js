@@ -14,7 +14,7 @@ const EDGE_PX = 14;
  *   x_labels: TickLabel[], y_labels: TickLabel[], x_scale: string, y_scale: string,
  *   scrolls: boolean, marks: { x: number, y: number, text: string }[] }} Panel
  * @typedef {{ panel: string, class: string, text: string, x: number, y: number, align: number[],
- *   size: number, time: number | null }} Label
+ *   size: number, time: number | null, width: number }} Label
  * @typedef {{ generation: number, panels: Panel[], mode: string, series: any[], poles: any[],
  *   spring_magnification: number, backend: string, labels: Label[],
  *   tabs: { id: string, label: string, selected: boolean }[] }} Layout
@@ -47,6 +47,7 @@ export function createOverlays() {
       span.className = `label ${l.class}`;
       setText(span, l.text);
       span.style.fontSize = `${l.size}px`;
+      span.dataset.estimate = l.width.toFixed(1);
       span.style.transform = placement(l);
       const panel = panels.get(l.panel);
       if (l.time != null && panel) scrolling.push({ span, label: l, panel });

@@ -62,11 +62,12 @@ export function createPointer(on) {
       }
       return;
     }
-    // Dragging on ρ(δ) picks δ as the pointer moves.
+    // Dragging on ρ(δ) picks δ, and on a map (δ, α), as the pointer moves.
     if (ev.type === 'pointermove' && ev.buttons === 1) {
       const drag = on.probe(x, y, 0);
-      if (drag && drag.kind === 'rho') {
-        on.pickDelta(drag.delta);
+      if (drag && (drag.kind === 'rho' || drag.kind === 'map')) {
+        if (drag.kind === 'rho') on.pickDelta(drag.delta);
+        else on.pick(drag.map, drag.delta, drag.alpha);
         show(on.probe(x, y, 0) ?? drag);
         return;
       }

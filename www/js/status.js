@@ -50,6 +50,7 @@ export function createStatus() {
   let legendKey = '';
 
   const strip = byId('verdict-strip');
+  const embedVerdict = byId('embed-verdict');
   /** @param {Status} s @param {number} now */
   function render(s, now) {
     setText(showing, s.showing);
@@ -57,6 +58,7 @@ export function createStatus() {
     if (strip.dataset.verdict !== s.runs[0].verdict) strip.dataset.verdict = s.runs[0].verdict;
     setText(byId('strip-word'), s.runs[0].headline);
     setText(byId('strip-detail'), s.runs[0].detail);
+    setText(embedVerdict, `${s.runs[0].headline}: ${s.runs[0].detail}`);
     const [a, b] = s.runs;
     runs[0].render(a, now);
     bControls.hidden = !b;

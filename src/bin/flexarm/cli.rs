@@ -35,7 +35,7 @@ pub fn lib_error(e: Error) -> Failure {
             usage_error(format!("{e}{hint}"))
         }
         Error::InvalidDuration(_) => usage_error(format!("{e} (set with --duration)")),
-        Error::Analysis(_) | Error::Lesson { .. } => Failure(e.to_string(), 1),
+        Error::Analysis(_) | Error::Lesson { .. } | Error::NotReady(_) => Failure(e.to_string(), 1),
     }
 }
 

@@ -247,10 +247,11 @@ impl Scene {
                 info.y_range = IM_RANGE;
                 info.x_ticks = x_ticks.collect();
                 info.y_ticks = y_ticks.collect();
+                info.note = "loop poles s = ln λ / δ".into();
                 if let Some(report) = &self.runs[0].report {
                     let w = nyquist(report.sampling_period);
                     if w < IM_RANGE[1] {
-                        info.note = format!("dashed: π/δ = {} rad/s", format::sig(w, 3));
+                        info.note += &format!("; dashed: π/δ = {} rad/s", format::sig(w, 3));
                         if flexible_aliased(report) {
                             info.note += " — the flexible mode is faster: aliased";
                         }
@@ -268,7 +269,7 @@ impl Scene {
                 info.y_range = [y0, y1];
                 info.x_ticks = vec![-1.0, 0.0, 1.0];
                 info.y_ticks = vec![-1.0, 0.0, 1.0];
-                info.note = "outside |λ| = 1: grows".into();
+                info.note = "eigenvalues λ; outside |λ| = 1: grows".into();
                 info.marks = self.flexible_mark(PanelKind::ZPlane);
             }
             PanelKind::RhoCurve => {

@@ -1,0 +1,117 @@
+// End-to-end test of the page's exports: the PNG of the figure, the WebM video, the SVG figures
+// and the embed snippet, each checked from the file the browser offers.
+// Run: node --test tests/e2e/export.test.mjs (needs the wasm in www/pkg, like page.test.mjs).
+
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { serve, launch, openPage, clickForDownload } from './harness.mjs';
+
+const PAGE = '?preset=fig5.3&mode=full&speed=2';
+const PNG_SIGNATURE = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+const EBML_MAGIC = Buffer.from([0x1a, 0x45, 0xdf, 0xa3]);
+
+let server;
+let browser;
+
+before(async () => {
+  server = await serve();
+  browser = await launch();
+});
+
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+const kB = (/** @type {Buffer} */ b) => `${(b.length / 1024).toFixed(1)} kB`;
+
+test('the picture: a PNG of the canvas with its labels and a caption strip', { timeout: 120000 }, async () => {
+  const { page, problems, close } = await openPage(browser, server.base, PAGE);
+  await page.waitForTimeout(1500);
+  const { name, bytes } = await clickForDownload(page, '#export-png');
+  assert.equal(name, 'flexarm-figure.png');
+  assert.deepEqual(bytes.subarray(0, 8), PNG_SIGNATURE, 'PNG signature');
+  const width = bytes.readUInt32BE(16);
+  const height = bytes.readUInt32BE(20);
+  const css = await page.evaluate(() => {
+    const r = document.querySelector('#canvas').getBoundingClientRect();
+    return { width: r.width, height: r.height, dpr: window.devicePixelRatio || 1, labels: document.querySelectorAll('#axes-overlay .label:not([hidden])').length };
+  });
+  console.log(`# PNG ${width}×${height} px, ${kB(bytes)} (canvas ${css.width}×${css.height} CSS px at ${css.dpr}×, ${css.labels} labels)`);
+  assert.ok(bytes.length > 20 * 1024, `PNG only ${kB(bytes)}`);
+  assert.equal(width, Math.round(css.width * css.dpr));
+  assert.ok(height > css.height * css.dpr, `PNG height ${height} leaves no caption under ${css.height}×${css.dpr}`);
+  assert.match(await page.textContent('#export-status'), /flexarm-figure\.png/);
+  assert.deepEqual(problems, []);
+  await close();
+});
+
+test('the video: recording toggles, counts the time and gives a WebM', { timeout: 120000 }, async () => {
+  const { page, problems, close } = await openPage(browser, server.base, PAGE);
+  assert.equal(await page.isDisabled('#record-video'), false, await page.textContent('#export-status'));
+  await page.click('#record-video');
+  assert.equal(await page.getAttribute('#record-video', 'aria-pressed'), 'true');
+  await page.waitForTimeout(3000);
+  const label = await page.textContent('#record-video');
+  assert.match(label, /^Stop recording \(0:0[2-4]\)$/, `button while recording: ${label}`);
+  const { name, bytes } = await clickForDownload(page, '#record-video');
+  console.log(`# WebM ${kB(bytes)} for about 3 s`);
+  assert.equal(name, 'flexarm-run.webm');
+  assert.deepEqual(bytes.subarray(0, 4), EBML_MAGIC, 'WebM (EBML) magic');
+  assert.ok(bytes.length > 10 * 1024, `WebM only ${kB(bytes)}`);
+  assert.equal(await page.getAttribute('#record-video', 'aria-pressed'), 'false');
+  assert.doesNotMatch(await page.textContent('#record-video'), /Stop/);
+  assert.deepEqual(problems, []);
+  await close();
+});
+
+test('the SVG figures: the errors at once, the maps once they are computed', { timeout: 120000 }, async () => {
+  const { page, problems, close } = await openPage(browser, server.base, PAGE);
+  // The maps, clicked in the same task as the check that they are not done: a message, no file.
+  const wasDone = await page.evaluate(() => {
+    const done = document.querySelector('#map-progress').dataset.done === 'true';
+    document.querySelector('#export-svg-maps').click();
+    return done;
+  });
+  assert.equal(wasDone, false, 'the maps were already done when the page opened');
+  const message = await page.textContent('#export-status');
+  console.log(`# maps not done yet: "${message}"`);
+  assert.match(message, /map/i);
+  assert.equal(await page.isVisible('#error'), false, 'no error banner for maps not computed yet');
+
+  const traces = await clickForDownload(page, '#export-svg-traces');
+  const tracesText = traces.bytes.toString('utf8');
+  console.log(`# SVG errors ${kB(traces.bytes)}`);
+  assert.equal(traces.name, 'flexarm-errors.svg');
+  assert.ok(tracesText.startsWith('<svg'), tracesText.slice(0, 80));
+  assert.match(tracesText, /Tracking errors/);
+
+  await page.waitForFunction(() => document.querySelector('#map-progress').dataset.done === 'true', null, { timeout: 100000 });
+  const maps = await clickForDownload(page, '#export-svg-maps');
+  const mapsText = maps.bytes.toString('utf8');
+  console.log(`# SVG maps ${kB(maps.bytes)}`);
+  assert.equal(maps.name, 'flexarm-maps.svg');
+  assert.ok(mapsText.startsWith('<svg'), mapsText.slice(0, 80));
+  assert.match(mapsText, /without K_pr/);
+  assert.deepEqual(problems, []);
+  await close();
+});
+
+test('the embed snippet: an iframe of the current state, shown and selected', { timeout: 120000 }, async () => {
+  const { page, problems, close } = await openPage(browser, server.base, PAGE);
+  await page.click('#embed-snippet');
+  await page.waitForSelector('#embed-code:not([hidden])', { timeout: 5000 });
+  assert.equal(await page.isVisible('#embed-label'), true);
+  const code = await page.inputValue('#embed-code');
+  console.log(`# embed snippet ${code.length} characters`);
+  assert.match(code, /<iframe/);
+  assert.match(code, /embed=1/);
+  await page.waitForFunction(() => /copied|select and copy/.test(document.querySelector('#export-status').textContent), null, { timeout: 5000 });
+  const selected = await page.evaluate(() => {
+    const t = document.querySelector('#embed-code');
+    return t.selectionEnd - t.selectionStart === t.value.length;
+  });
+  assert.ok(selected, 'the snippet is selected');
+  assert.deepEqual(problems, []);
+  await close();
+});

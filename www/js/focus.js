@@ -1,0 +1,91 @@
+// The figures by keyboard: a focusable region over each map, the pole plot and ρ(δ). On a map
+// the arrow keys move the running point (δ across, α up) and Enter runs with that map's
+// feedback; on the pole plot they step from pole to pole and read each one out; on ρ(δ) they
+// step δ. What a key does to the settings is the session's; this routes keys and places regions.
+
+import { byId, make, setText } from './dom.js';
+
+/** Arrow keys as (across, up) steps (pure). @param {string} key */
+export function arrowSteps(key) {
+  return { ArrowRight: [1, 0], ArrowLeft: [-1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] }[key] ?? null;
+}
+
+/**
+ * @param {{ stepOnMap: (side: string, d: number, a: number) => void, enterMap: (side: string) => void,
+ *   stepDelta: (d: number) => void, probe: (x: number, y: number) => any, showTip: (p: any) => void,
+ *   hideTip: () => void }} on
+ */
+export function createFocus(on) {
+  const layer = byId('focus-layer');
+  const said = byId('figure-said');
+  /** @type {Map<string, HTMLElement>} */
+  const regions = new Map();
+  /** @type {any[]} */
+  let poles = [];
+  let poleIndex = 0;
+
+  const DESCRIBE = {
+    'map-off': 'Stability map without K_pr. Arrow keys move the running point: left and right change δ, up and down α; Enter runs without K_pr.',
+    'map-on': 'Stability map with K_pr. Arrow keys move the running point: left and right change δ, up and down α; Enter runs with K_pr.',
+    poles: 'Pole plot. Arrow keys step from pole to pole and read each one.',
+    'z-plane': 'The loop\u2019s eigenvalues λ and the unit circle. Arrow keys step from one to the next and read it.',
+    'rho-curve': 'ρ along δ. Left and right arrow keys change δ.',
+  };
+
+  /** A focusable region over panel `p`. @param {any} p */
+  function region(p) {
+    let r = regions.get(p.id);
+    if (!r) {
+      const el = make('div', { class: 'panel-focus', tabindex: '0', role: 'group', 'aria-label': DESCRIBE[/** @type {keyof typeof DESCRIBE} */ (p.id)] });
+      el.addEventListener('keydown', (ev) => onKey(p.id, ev));
+      el.addEventListener('blur', on.hideTip);
+      layer.append(el);
+      regions.set(p.id, el);
+      r = el;
+    }
+    Object.assign(r.style, { left: `${p.x}px`, top: `${p.y}px`, width: `${p.width}px`, height: `${p.height}px` });
+    return r;
+  }
+
+  /** @param {string} id @param {KeyboardEvent} ev */
+  function onKey(id, ev) {
+    const steps = arrowSteps(ev.key);
+    if (id === 'map-off' || id === 'map-on') {
+      const side = id === 'map-off' ? 'off' : 'on';
+      if (steps) on.stepOnMap(side, steps[0], steps[1]);
+      else if (ev.key === 'Enter') on.enterMap(side);
+      else return;
+    } else if (id === 'rho-curve') {
+      if (!steps || steps[0] === 0) return;
+      on.stepDelta(steps[0]);
+    } else {
+      if (!steps || poles.length === 0) return;
+      poleIndex = (poleIndex + steps[0] - steps[1] + poles.length) % poles.length;
+      readPole();
+    }
+    ev.preventDefault();
+  }
+
+  function readPole() {
+    const p = poles[poleIndex];
+    const probe = p && on.probe(p.x, p.y);
+    if (!probe) return;
+    on.showTip(probe);
+    setText(said, `${probe.title}. ${probe.lines.map((/** @type {any} */ l) => l.text).join('. ')}`);
+  }
+
+  /** Places the regions for a new description of the frame. @param {any} layout */
+  function update(layout) {
+    const ids = new Set();
+    for (const p of layout.panels) {
+      if (!(p.id in DESCRIBE)) continue;
+      ids.add(p.id);
+      region(p).hidden = false;
+    }
+    for (const [id, el] of regions) if (!ids.has(id)) el.hidden = true;
+    poles = (layout.poles ?? []).filter((/** @type {any} */ q) => q.in_view && q.x != null);
+    poleIndex = Math.min(poleIndex, Math.max(0, poles.length - 1));
+  }
+
+  return { update };
+}
