@@ -134,7 +134,8 @@ fn traces_are_typed_arrays() {
 /// without preliminary feedback the stable window of δ (section 4) shows at α ≈ 2.
 #[wasm_bindgen_test]
 fn stability_map_in_chunks() {
-    let mut session = WebSession::new(&state(0.01, 2.0, "off"));
+    // The full view shows (and computes) the maps; the intro does not.
+    let mut session = WebSession::new(&format!("{}&mode=full", state(0.01, 2.0, "off")));
     let deltas = session.map_deltas().to_vec();
     let alphas = session.map_alphas().to_vec();
     let mut steps = 0;
