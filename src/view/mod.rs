@@ -9,6 +9,7 @@
 //! | [`autoscale`] | the error/torque autoscale with hysteresis |
 //! | [`arm`] | the arm, motor, magnified spring twist and reference arm |
 //! | [`traces`] | scrolling time plots with min/max decimation |
+//! | [`markers`] | the pole markers' style and sizes, the flexible pair (shared by s- and z-plane) |
 //! | [`poles`] | the pole plot: s = ln λ / δ, the imaginary axis, the δ → 0 pair A4 |
 //! | [`zplane`] | the loop's eigenvalues λ against the unit circle |
 //! | [`rho_curve`] | ρ(δ) at the current α with the stable windows |
@@ -28,9 +29,11 @@ pub mod labels;
 pub mod layout;
 pub mod legend;
 pub mod map;
+pub mod markers;
 pub mod options;
 pub mod painter;
 pub mod poles;
+pub mod rect;
 pub mod rho_curve;
 pub mod scene;
 pub mod traces;

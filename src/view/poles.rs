@@ -8,18 +8,16 @@
 use serde::Serialize;
 
 use super::layout::Rect;
+pub use super::markers::{flexible_pair, size, PoleStyle, MAX_LOOP_POLES};
 use super::painter::{Painter, Point};
 use super::zplane::{exp_delta, marker_css, ZFrame};
 use crate::analysis::StabilityReport;
-use crate::plot::{palette, Color};
+use crate::plot::palette;
 
 /// Re s shown by default, 1/s: the flexible pair at ≈ ±2.6 and the slow poles at ≈ −2.
 pub const RE_RANGE: [f64; 2] = [-8.0, 6.0];
 /// Im s shown by default, rad/s: the flexible pair at ≈ ±29.6.
 pub const IM_RANGE: [f64; 2] = [-40.0, 40.0];
-/// The sampled loop has this many eigenvalues (8 plant/integrator states + 2 held inputs).
-pub const MAX_LOOP_POLES: usize = 10;
-
 /// What a marker in the pole plot stands for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -67,38 +65,6 @@ pub struct PoleInfo {
     pub in_view: bool,
 }
 
-/// How a run's markers look.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PoleStyle {
-    /// Loop poles as × (run A) or + (run B).
-    pub plus: bool,
-    /// Loop poles with Re s ≤ 0.
-    pub stable: Color,
-    /// Loop poles with Re s > 0.
-    pub unstable: Color,
-    /// A4 without preliminary feedback (rings).
-    pub a4_open: Color,
-    /// A4 with the configured preliminary feedback (diamonds).
-    pub a4: Color,
-}
-
-impl PoleStyle {
-    pub const RUN_A: PoleStyle = PoleStyle {
-        plus: false,
-        stable: palette::POLE_STABLE,
-        unstable: palette::POLE_UNSTABLE,
-        a4_open: palette::A4_OPEN,
-        a4: palette::A4_FEEDBACK,
-    };
-    pub const RUN_B: PoleStyle = PoleStyle {
-        plus: true,
-        stable: palette::RUN_B,
-        unstable: palette::POLE_UNSTABLE,
-        a4_open: palette::RUN_B_LIGHT,
-        a4: palette::RUN_B,
-    };
-}
-
 /// The pole plot's data area in physical pixels and the s-plane region mapped onto it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PoleFrame {
@@ -137,49 +103,6 @@ impl PoleFrame {
         let dir = [p[0] - c[0], p[1] - c[1]];
         (c, Some(dir))
     }
-}
-
-/// The indices (into `report.poles`) of the flexible pair: the complex pair (λ not real) with the
-/// largest |Im s|.
-pub fn flexible_pair(report: &StabilityReport) -> [Option<usize>; 2] {
-    let mut best: Option<(usize, f64)> = None;
-    for (i, p) in report.poles.iter().enumerate() {
-        let Some(s) = p.continuous else { continue };
-        let [lr, li] = p.discrete;
-        if li.abs() <= 1e-12 * lr.hypot(li) || li <= 0.0 {
-            continue;
-        }
-        if best.is_none_or(|(_, im)| s[1].abs() > im) {
-            best = Some((i, s[1].abs()));
-        }
-    }
-    let Some((i, _)) = best else { return [None, None] };
-    let [lr, li] = report.poles[i].discrete;
-    // Its conjugate: the pole with λ nearest to conj(λ).
-    let partner = report
-        .poles
-        .iter()
-        .enumerate()
-        .filter(|(j, _)| *j != i)
-        .min_by(|(_, a), (_, b)| {
-            let da = (a.discrete[0] - lr).hypot(a.discrete[1] + li);
-            let db = (b.discrete[0] - lr).hypot(b.discrete[1] + li);
-            da.total_cmp(&db)
-        })
-        .map(|(j, _)| j);
-    [Some(i), partner]
-}
-
-/// Marker sizes, CSS pixels (the z-plane draws the same markers).
-pub(crate) mod size {
-    pub const CROSS: f64 = 5.0;
-    pub const CROSS_WIDTH: f64 = 2.0;
-    pub const HALO: f64 = 10.0;
-    pub const A4_RING: f64 = 11.0;
-    pub const A4_WIDTH: f64 = 1.75;
-    pub const A4_DIAMOND: f64 = 7.0;
-    pub const CHEVRON: f64 = 5.0;
-    pub const EDGE: f64 = 8.0;
 }
 
 /// An upper bound on the vertices [`draw_flexible_halo`], [`draw_a4`] and [`draw_poles`] write

@@ -3,8 +3,8 @@
 //! this δ, λ = exp(A4 δ), so the student sees the loop's flexible pair next to the limit it tends to.
 
 use super::layout::Rect;
+use super::markers::{flexible_pair, size, PoleStyle, MAX_LOOP_POLES};
 use super::painter::{Painter, Point};
-use super::poles::{flexible_pair, size, PoleStyle, MAX_LOOP_POLES};
 use crate::analysis::StabilityReport;
 use crate::plot::palette;
 
