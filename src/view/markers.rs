@@ -81,3 +81,13 @@ pub mod size {
     pub const CHEVRON: f64 = 5.0;
     pub const EDGE: f64 = 8.0;
 }
+
+/// The δ → 0 pair with the preliminary feedback, if there is one (none when it is off: the pair
+/// then is A4 without it, already marked).
+pub fn with_feedback(report: &StabilityReport) -> &[[f64; 2]] {
+    if report.limit_pair == report.limit_pair_open {
+        &[]
+    } else {
+        &report.limit_pair
+    }
+}

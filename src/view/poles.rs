@@ -8,7 +8,7 @@
 use serde::Serialize;
 
 use super::layout::Rect;
-pub use super::markers::{flexible_pair, size, PoleStyle, MAX_LOOP_POLES};
+pub use super::markers::{flexible_pair, size, with_feedback, PoleStyle, MAX_LOOP_POLES};
 use super::painter::{Painter, Point};
 use super::zplane::{exp_delta, marker_css, ZFrame};
 use crate::analysis::StabilityReport;
@@ -150,7 +150,8 @@ pub fn draw_a4(painter: &mut Painter, frame: &PoleFrame, report: &StabilityRepor
             (p, Some(d)) => painter.chevron(p, d, size::CHEVRON * dpr, 1.5 * dpr, style.a4_open),
         }
     }
-    for s in report.limit_pair {
+    // Without preliminary feedback there is no "A4 with K_pr": the pair is A4 itself.
+    for &s in with_feedback(report) {
         match frame.marker(s, size::EDGE * dpr) {
             (p, None) => painter.diamond(p, size::A4_DIAMOND * dpr, size::A4_WIDTH * dpr, style.a4),
             (p, Some(d)) => painter.chevron(p, d, size::CHEVRON * dpr, 1.5 * dpr, style.a4),
@@ -270,7 +271,8 @@ pub fn describe_poles(report: &StabilityReport, run: &'static str, view: PoleVie
     for s in report.limit_pair_open {
         push(PoleKind::A4Open, s, exp_delta(s, delta), false);
     }
-    for s in report.limit_pair {
+    // Without preliminary feedback there is no "A4 with K_pr": the pair is A4 itself.
+    for &s in with_feedback(report) {
         push(PoleKind::A4, s, exp_delta(s, delta), false);
     }
 }

@@ -3,7 +3,7 @@
 //! this δ, λ = exp(A4 δ), so the student sees the loop's flexible pair next to the limit it tends to.
 
 use super::layout::Rect;
-use super::markers::{flexible_pair, size, PoleStyle, MAX_LOOP_POLES};
+use super::markers::{flexible_pair, size, with_feedback, PoleStyle, MAX_LOOP_POLES};
 use super::painter::{Painter, Point};
 use crate::analysis::StabilityReport;
 use crate::plot::palette;
@@ -103,7 +103,8 @@ pub fn draw_zplane_run(painter: &mut Painter, frame: &ZFrame, report: &Stability
             (p, Some(d)) => painter.chevron(p, d, size::CHEVRON * dpr, 1.5 * dpr, style.a4_open),
         }
     }
-    for s in report.limit_pair {
+    // Without preliminary feedback there is no "A4 with K_pr": the pair is A4 itself.
+    for &s in with_feedback(report) {
         match frame.marker(exp_delta(s, delta), size::EDGE * dpr) {
             (p, None) => painter.diamond(p, size::A4_DIAMOND * dpr, size::A4_WIDTH * dpr, style.a4),
             (p, Some(d)) => painter.chevron(p, d, size::CHEVRON * dpr, 1.5 * dpr, style.a4),
