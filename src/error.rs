@@ -70,7 +70,18 @@ impl ConfigError {
 
 impl fmt::Display for ConfigError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "invalid {} = {}: {}", self.parameter, self.value, self.allowed)
+        write!(f, "invalid {} = {}: {}", self.parameter, value_text(self.value), self.allowed)
+    }
+}
+
+/// A rejected number as the user would write it: plain for ordinary magnitudes, with an
+/// exponent for tiny and huge ones (1e-300, not three hundred zeros).
+fn value_text(v: f64) -> String {
+    let a = v.abs();
+    if a != 0.0 && a.is_finite() && !(1e-4..1e9).contains(&a) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
     }
 }
 

@@ -7,6 +7,10 @@ use super::sampled::{LinearSettings, LoopModel};
 use crate::control::config::SimulationConfig;
 use crate::error::Error;
 
+/// Seconds to compute ρ of one cell on the development machine (measured 30 µs for the default
+/// grid with k = 12, rounded up): what [`crate::control::Work`] estimates a map or sweep with.
+pub const SECONDS_PER_CELL: f64 = 40e-6;
+
 /// A logarithmic (δ, α) grid: ranges and sizes.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct MapGrid {

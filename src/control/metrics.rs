@@ -1,5 +1,6 @@
 //! What a run measures while it goes: the largest errors during and after the slews, their RMS,
-//! the growth rate of the error envelope and the verdict (stable, unstable, diverged).
+//! the growth rate of the error envelope and the verdict (stable, unstable, a bounded oscillation,
+//! diverged). Everything is computed online in bounded memory: a run of any length costs the same.
 
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
@@ -12,6 +13,18 @@ pub const GROWTH_FIT_SPAN: f64 = 3.0;
 pub const UNSTABLE_GROWTH_RATE: f64 = 0.05;
 /// Errors below this (rad) are rounding noise and cannot make a run unstable.
 pub const ERROR_NOISE_FLOOR: f64 = 1e-10;
+/// Errors below this fraction of the largest error of the run are at their floor (a stable run's
+/// errors settle near 1e-12 rad, set by rounding and the friction observer): the growth rate is
+/// not fitted on them, where it would only measure noise.
+pub const FLOOR_FRACTION: f64 = 1e-6;
+/// A steady oscillation is recognised on this many consecutive whole cycles between slews…
+pub const CYCLES_TO_RECOGNISE: usize = 2;
+/// …whose amplitude changes by less than this rate (1/s) from cycle to cycle: a limit cycle, e.g.
+/// the stick-slip hunting of friction compensation held over δ. A linear mode whose envelope
+/// changes this slowly would need |ln ρ|/δ < 0.01 1/s.
+pub const BOUNDED_ENVELOPE_RATE: f64 = 0.01;
+/// Whole cycles kept (bounded memory).
+const CYCLES_KEPT: usize = CYCLES_TO_RECOGNISE;
 
 /// Why a run ended early.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -27,24 +40,70 @@ pub enum DivergenceReason {
 
 /// The outcome of a run.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "verdict", rename_all = "lowercase")]
+#[serde(tag = "verdict", rename_all = "snake_case")]
 pub enum Verdict {
-    /// Errors bounded and not growing.
+    /// Errors bounded and not growing (decaying, or at their floor).
     Stable,
     /// Errors growing at the given rate (1/s) but still within the bound.
     Unstable { growth_rate: f64 },
+    /// A limit cycle: between slews the errors oscillate with a steady amplitude (max |e1|, |e2|
+    /// over the last whole cycle, rad) and period (s) — bounded, neither growing nor decaying.
+    BoundedOscillation { amplitude: [f64; 2], period: f64 },
     /// The run ended at `at` (s).
     Diverged { at: f64, reason: DivergenceReason },
 }
 
 impl Verdict {
-    /// "stable", "unstable" or "diverged".
+    /// "stable", "unstable", "bounded oscillation" or "diverged": the one name the CLI, the JSON
+    /// and the page use.
     pub fn label(&self) -> &'static str {
         match self {
             Verdict::Stable => "stable",
             Verdict::Unstable { .. } => "unstable",
+            Verdict::BoundedOscillation { .. } => "bounded oscillation",
             Verdict::Diverged { .. } => "diverged",
         }
+    }
+
+    /// The verdict in a sentence, e.g. "unstable (errors grow at 2.273 1/s)"; `bound` is the
+    /// divergence bound, rad.
+    pub fn text(&self, bound: f64) -> String {
+        match *self {
+            Verdict::Stable => "stable".into(),
+            Verdict::Unstable { growth_rate } => format!("unstable (errors grow at {growth_rate:.3} 1/s)"),
+            Verdict::BoundedOscillation { amplitude, period } => format!(
+                "bounded oscillation (a limit cycle: amplitude {:.2e}, {:.2e} rad, period {period:.2} s)",
+                amplitude[0], amplitude[1]
+            ),
+            Verdict::Diverged { at, reason } => format!(
+                "diverged at t = {at:.3} s ({})",
+                match reason {
+                    DivergenceReason::ErrorBound => format!("a tracking error exceeded {bound:.4} rad"),
+                    DivergenceReason::NonFinite => "the state became NaN or infinite".into(),
+                    DivergenceReason::NewtonFailure => "Newton's iteration in the predictor failed".into(),
+                }
+            ),
+        }
+    }
+
+    /// The verdict in a table cell: "unstable (2.27 1/s)", "limit cycle (7.8 s)", "diverged at 1.23 s".
+    pub fn short_text(&self) -> String {
+        match *self {
+            Verdict::Stable => "stable".into(),
+            Verdict::Unstable { growth_rate } => format!("unstable ({growth_rate:.2} 1/s)"),
+            Verdict::BoundedOscillation { period, .. } => format!("bounded oscillation ({period:.2} s)"),
+            Verdict::Diverged { at, .. } => format!("diverged at {at:.2} s"),
+        }
+    }
+}
+
+/// The growth rate in words, the same in the CLI, the JSON and the page: "2.24 1/s", "none
+/// (errors at their floor)", or "n/a (run too short)".
+pub fn growth_text(growth_rate: Option<f64>, at_floor: bool) -> String {
+    match (growth_rate, at_floor) {
+        (Some(g), _) => format!("{g:.2} 1/s"),
+        (None, true) => "none (errors at their floor)".into(),
+        (None, false) => "n/a (run too short)".into(),
     }
 }
 
@@ -60,8 +119,11 @@ pub struct Metrics {
     /// RMS of e_i over the whole run, rad.
     pub rms_error: [f64; 2],
     /// Slope of ln max(|e1|, |e2|) over the last windows between slews, 1/s (see
-    /// [`ErrorStats::growth_rate`]).
+    /// [`ErrorStats::growth_rate`]); for a bounded oscillation, the rate of its cycles'
+    /// amplitude. `None` while too short, or when the errors are at their floor.
     pub growth_rate: Option<f64>,
+    /// The errors have settled at their floor (rounding, friction): nothing left to grow or decay.
+    pub errors_at_floor: bool,
     /// max |T_i| applied, N m.
     pub max_torque: [f64; 2],
     pub verdict: Verdict,
@@ -74,6 +136,68 @@ struct Window {
     end: f64,
     max: f64,
     rest_phase: u64,
+}
+
+/// One whole cycle of a link's error between two upward zero crossings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Cycle {
+    end: f64,
+    period: f64,
+    /// max |e1|, |e2| during the cycle.
+    amplitude: [f64; 2],
+}
+
+/// The cycles of one link's error between slews (a slew starts them afresh).
+#[derive(Clone, Debug, Default)]
+struct Cycles {
+    /// The error has been below −floor since the last upward crossing.
+    armed: bool,
+    last_up: Option<f64>,
+    max: [f64; 2],
+    done: std::collections::VecDeque<Cycle>,
+}
+
+impl Cycles {
+    fn record(&mut self, t: f64, e: f64, abs: [f64; 2], floor: f64) {
+        self.max = [self.max[0].max(abs[0]), self.max[1].max(abs[1])];
+        if e < -floor {
+            self.armed = true;
+        } else if self.armed && e > floor {
+            if let Some(t0) = self.last_up {
+                if self.done.len() == CYCLES_KEPT {
+                    self.done.pop_front();
+                }
+                self.done.push_back(Cycle { end: t, period: t - t0, amplitude: self.max });
+            }
+            self.last_up = Some(t);
+            self.max = [0.0; 2];
+            self.armed = false;
+        }
+    }
+
+    /// A steady oscillation of link `i`: its last [`CYCLES_TO_RECOGNISE`] cycles regular (periods
+    /// within 1.5×), still going at `now`, and the amplitude changing from one to the next at
+    /// less than [`BOUNDED_ENVELOPE_RATE`]. Returns the amplitude of the last cycle, the mean
+    /// period and the envelope rate.
+    fn steady(&self, i: usize, now: f64, floor: f64) -> Option<([f64; 2], f64, f64)> {
+        let n = self.done.len();
+        if n < CYCLES_TO_RECOGNISE {
+            return None;
+        }
+        let recent = self.done.range(n - CYCLES_TO_RECOGNISE..);
+        let (first, last) = (self.done[n - CYCLES_TO_RECOGNISE], self.done[n - 1]);
+        if last.amplitude[i] <= floor || first.amplitude[i] <= floor {
+            return None;
+        }
+        let (lo, hi) = recent.clone().fold((f64::INFINITY, 0.0f64), |(a, b), c| (a.min(c.period), b.max(c.period)));
+        let period = recent.map(|c| c.period).sum::<f64>() / CYCLES_TO_RECOGNISE as f64;
+        // Regular cycles, and the oscillation has not stopped since the last one.
+        if hi > 1.5 * lo || now - last.end > 2.0 * period + GROWTH_WINDOW {
+            return None;
+        }
+        let rate = (last.amplitude[i] / first.amplitude[i]).ln() / (last.end - first.end);
+        (rate.abs() < BOUNDED_ENVELOPE_RATE).then_some((last.amplitude, period, rate))
+    }
 }
 
 /// Running statistics of the errors: maxima, RMS, torque, and the envelope windows of the last
@@ -93,6 +217,10 @@ pub(crate) struct ErrorStats {
     /// Counts the rest phases (between slews); the reference moved at the last sample.
     rest_phase: u64,
     was_moving: bool,
+    /// The largest error since `since`: the floor is a fraction of it.
+    peak: f64,
+    /// The cycles of e1 and e2 in the current rest phase.
+    cycles: [Cycles; 2],
     /// The statistics describe the run since this time (the last change of configuration), so a
     /// live change shows its own numbers, not a mix with the previous setting.
     pub(crate) since: f64,
@@ -111,6 +239,16 @@ impl ErrorStats {
         if self.was_moving && !moving {
             self.rest_phase += 1;
         }
+        let abs = [e[0].abs(), e[1].abs()];
+        self.peak = self.peak.max(abs[0]).max(abs[1]);
+        if moving {
+            self.cycles = Default::default();
+        } else {
+            let floor = self.floor();
+            for (i, c) in self.cycles.iter_mut().enumerate() {
+                c.record(t, e[i], abs, floor);
+            }
+        }
         self.was_moving = moving;
         self.window_moving |= moving;
         self.window_max = self.window_max.max(e[0].abs().max(e[1].abs()));
@@ -125,6 +263,11 @@ impl ErrorStats {
             self.window_max = 0.0;
             self.window_moving = false;
         }
+    }
+
+    /// Errors at or below this are at their floor, rad.
+    fn floor(&self) -> f64 {
+        ERROR_NOISE_FLOOR.max(FLOOR_FRACTION * self.peak)
     }
 
     /// Starts the statistics afresh at time `t` (a new configuration took effect).
@@ -148,9 +291,11 @@ impl ErrorStats {
     /// reference rests, each rest phase with its own level (a pooled, within-phase slope). Every
     /// slew excites the loop anew, so only the phases between slews show how its free motion
     /// grows or decays; with a repeating slew that is known after the first rest phase (about
-    /// 0.75 s of it), not after whole cycles. `None` until three windows are in.
+    /// 0.75 s of it), not after whole cycles. Windows at the floor are left out. `None` until
+    /// three windows above the floor are in.
     pub(crate) fn growth_rate(&self) -> Option<f64> {
-        let pts: Vec<&Window> = self.windows.iter().filter(|w| w.max > 0.0).collect();
+        let floor = self.floor();
+        let pts: Vec<&Window> = self.windows.iter().filter(|w| w.max > floor).collect();
         if pts.len() < 3 {
             return None;
         }
@@ -174,14 +319,23 @@ impl ErrorStats {
     /// The metrics and verdict at time `time`.
     pub(crate) fn metrics(&self, time: f64, divergence: Option<(f64, DivergenceReason)>) -> Metrics {
         let n = self.samples.max(1) as f64;
-        let growth_rate = self.growth_rate();
-        let last_window = self.windows.back().map(|w| w.max).unwrap_or(0.0).max(self.window_max);
-        let verdict = match divergence {
-            Some((at, reason)) => Verdict::Diverged { at, reason },
-            None => match growth_rate {
-                Some(g) if g > UNSTABLE_GROWTH_RATE && last_window > ERROR_NOISE_FLOOR => {
-                    Verdict::Unstable { growth_rate: g }
-                }
+        let floor = self.floor();
+        // The link with the larger swing decides whether the errors oscillate steadily.
+        let dominant = usize::from(self.cycles[1].max[1] > self.cycles[0].max[0]);
+        let steady = self.cycles[dominant].steady(dominant, time, floor);
+        let at_floor = steady.is_none()
+            && self.windows.back().is_some_and(|w| w.max <= floor && w.end >= time - 2.0 * GROWTH_WINDOW)
+            && self.window_max <= floor;
+        let growth_rate = match steady {
+            Some((_, _, rate)) => Some(rate),
+            None if at_floor => None,
+            None => self.growth_rate(),
+        };
+        let verdict = match (divergence, steady) {
+            (Some((at, reason)), _) => Verdict::Diverged { at, reason },
+            (None, Some((amplitude, period, _))) => Verdict::BoundedOscillation { amplitude, period },
+            (None, None) => match growth_rate {
+                Some(g) if g > UNSTABLE_GROWTH_RATE => Verdict::Unstable { growth_rate: g },
                 _ => Verdict::Stable,
             },
         };
@@ -191,6 +345,7 @@ impl ErrorStats {
             max_error_after: self.max_after,
             rms_error: [(self.sum_sq[0] / n).sqrt(), (self.sum_sq[1] / n).sqrt()],
             growth_rate,
+            errors_at_floor: at_floor,
             max_torque: self.max_torque,
             verdict,
         }

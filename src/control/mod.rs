@@ -14,9 +14,11 @@ pub mod linear;
 pub mod metrics;
 pub mod predictive;
 pub mod traces;
+pub mod work;
 
 pub use closed_loop::{simulate, ClosedLoop, RunReport};
 pub use config::{ControllerParameters, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
 pub use history::{History, LoopState};
 pub use metrics::{DivergenceReason, Metrics, Verdict};
-pub use traces::{Column, Snapshot, Traces};
+pub use traces::{Column, Snapshot, TraceEnvelope, Traces};
+pub use work::Work;

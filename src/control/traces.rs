@@ -152,18 +152,39 @@ impl Traces {
         }
     }
 
+    /// Empties every column, keeping the allocations (for a run written out in chunks).
+    pub fn clear(&mut self) {
+        for col in &mut self.columns {
+            col.clear();
+        }
+    }
+
+    /// Row `i`: every column's value.
+    fn row(&self, i: usize) -> Row {
+        std::array::from_fn(|j| self.columns[j][i])
+    }
+
+    fn push_row(&mut self, row: &Row) {
+        for (col, v) in self.columns.iter_mut().zip(row) {
+            col.push(*v);
+        }
+    }
+
     /// The CSV header row: each column's name and unit.
     pub fn csv_header() -> String {
         Column::ALL.map(Column::header).join(",")
     }
 
-    /// Writes the series as CSV: an optional `# ` comment line (the state string), the header
-    /// row, then one row per sample.
-    pub fn write_csv(&self, out: &mut impl Write, comment: Option<&str>) -> std::io::Result<()> {
+    /// Writes the CSV head: an optional `# ` comment line (the state string), then the header row.
+    pub fn write_csv_head(out: &mut impl Write, comment: Option<&str>) -> std::io::Result<()> {
         if let Some(c) = comment {
             writeln!(out, "# {}", c.replace('\n', " "))?;
         }
-        writeln!(out, "{}", Self::csv_header())?;
+        writeln!(out, "{}", Self::csv_header())
+    }
+
+    /// Writes one CSV row per sample (no head): a long run streams its traces chunk by chunk.
+    pub fn write_csv_rows(&self, out: &mut impl Write) -> std::io::Result<()> {
         for i in 0..self.len() {
             for (j, col) in self.columns.iter().enumerate() {
                 if j > 0 {
@@ -176,11 +197,111 @@ impl Traces {
         Ok(())
     }
 
+    /// Writes the series as CSV: the head ([`Traces::write_csv_head`]), then one row per sample.
+    pub fn write_csv(&self, out: &mut impl Write, comment: Option<&str>) -> std::io::Result<()> {
+        Self::write_csv_head(out, comment)?;
+        self.write_csv_rows(out)
+    }
+
     /// The series as CSV (see [`Traces::write_csv`]).
     pub fn to_csv(&self, comment: Option<&str>) -> String {
         let mut out = Vec::with_capacity(self.len() * Column::ALL.len() * 18 + 200);
         // Writing to a Vec cannot fail.
         let _ = self.write_csv(&mut out, comment);
         String::from_utf8(out).unwrap_or_default()
+    }
+}
+
+/// The envelope of a run of any length in bounded memory, for a figure: the rows are grouped in
+/// buckets of `stride` consecutive samples and each bucket keeps only its rows with the smallest
+/// and largest e1 and e2. When more than `limit` rows are held, the stride doubles and the held
+/// rows are regrouped. A figure that itself draws each pixel's minimum and maximum (the SVG) looks
+/// the same as from the full traces as long as `limit` is several times its number of buckets.
+#[derive(Clone, Debug)]
+pub struct TraceEnvelope {
+    kept: Traces,
+    /// Index in the whole run of each kept row.
+    index: Vec<u64>,
+    /// The open bucket's candidates: the rows with min e1, max e1, min e2, max e2.
+    open: [Option<(u64, Row)>; 4],
+    stride: u64,
+    seen: u64,
+    limit: usize,
+}
+
+type Row = [f64; Column::ALL.len()];
+
+impl TraceEnvelope {
+    /// An empty envelope holding at most about `limit` rows (at least 64).
+    pub fn new(limit: usize) -> Self {
+        TraceEnvelope { kept: Traces::default(), index: Vec::new(), open: [None; 4], stride: 1, seen: 0, limit: limit.max(64) }
+    }
+
+    /// Adds every row of `chunk` (the next samples of the run).
+    pub fn extend(&mut self, chunk: &Traces) {
+        for i in 0..chunk.len() {
+            self.add(chunk.row(i));
+        }
+    }
+
+    /// Adds the run's next row (its index is `self.seen`).
+    fn add(&mut self, row: Row) {
+        if self.open[0].is_some_and(|(j, _)| j / self.stride != self.seen / self.stride) {
+            self.close_bucket();
+        }
+        let (e1, e2) = (Column::E1.index(), Column::E2.index());
+        for (slot, (col, lower)) in self.open.iter_mut().zip([(e1, true), (e1, false), (e2, true), (e2, false)]) {
+            let wins = match slot {
+                None => true,
+                Some((_, r)) => (lower && row[col] < r[col]) || (!lower && row[col] > r[col]),
+            };
+            if wins {
+                *slot = Some((self.seen, row));
+            }
+        }
+        self.seen += 1;
+    }
+
+    /// Moves the open bucket's distinct candidates, in time order, to the kept rows.
+    fn push_open(open: &[Option<(u64, Row)>; 4], kept: &mut Traces, index: &mut Vec<u64>) {
+        let mut rows: [Option<&(u64, Row)>; 4] = std::array::from_fn(|k| open[k].as_ref());
+        rows.sort_by_key(|r| r.map(|(j, _)| *j));
+        let mut last = None;
+        for (j, row) in rows.into_iter().flatten() {
+            if last != Some(*j) {
+                kept.push_row(row);
+                index.push(*j);
+                last = Some(*j);
+            }
+        }
+    }
+
+    fn close_bucket(&mut self) {
+        Self::push_open(&self.open, &mut self.kept, &mut self.index);
+        self.open = [None; 4];
+        if self.kept.len() > self.limit {
+            // Regroup the kept rows into buckets twice as long (rare: the stride doubles each time).
+            self.stride *= 2;
+            let (held, index) = (std::mem::take(&mut self.kept), std::mem::take(&mut self.index));
+            let mut refill = TraceEnvelope { stride: self.stride, ..TraceEnvelope::new(usize::MAX) };
+            for (k, &j) in index.iter().enumerate() {
+                refill.seen = j;
+                refill.add(held.row(k));
+            }
+            Self::push_open(&refill.open, &mut refill.kept, &mut refill.index);
+            (self.kept, self.index) = (refill.kept, refill.index);
+        }
+    }
+
+    /// The envelope so far (the open bucket included).
+    pub fn traces(&self) -> Traces {
+        let (mut out, mut index) = (self.kept.clone(), self.index.clone());
+        Self::push_open(&self.open, &mut out, &mut index);
+        out
+    }
+
+    /// Samples seen in all.
+    pub fn samples(&self) -> u64 {
+        self.seen
     }
 }

@@ -70,7 +70,7 @@ pub struct Goal {
 }
 
 /// The verdicts a goal may ask for.
-pub const GOAL_VERDICTS: [&str; 4] = ["stable", "unstable", "borderline", "diverged"];
+pub const GOAL_VERDICTS: [&str; 5] = ["stable", "unstable", "borderline", "diverged", "bounded oscillation"];
 
 /// The built-in lesson ([`LESSON_TEXT`]).
 pub fn builtin() -> Result<Lesson, Error> {
@@ -305,7 +305,7 @@ mod tests {
         );
         assert_eq!(
             bad("# T\n## S\nstate: x\ngoal: verdict=fine\n"),
-            "lesson, line 4: goal verdict 'fine': one of stable, unstable, borderline, diverged"
+            "lesson, line 4: goal verdict 'fine': one of stable, unstable, borderline, diverged, bounded oscillation"
         );
         assert!(bad("# T\n## S\ntext\n").contains("no 'state:' line"));
         assert!(bad("# T\n<!-- open\n").contains("unclosed comment"));

@@ -431,8 +431,12 @@ mod tests {
         assert!(DELTA.parse("0.5", true).is_err(), "outside the control");
         assert!(DELTA.parse("0.5", false).is_ok(), "inside the limits");
         let e = DELTA.parse("-1", false).unwrap_err().to_string();
-        assert_eq!(e, "invalid sampling_period (δ) = -1: must be > 0");
-        assert!(DELTA.check(11.0).unwrap_err().to_string().ends_with("must be at most 10 s"));
+        assert!(e.starts_with("invalid sampling_period (δ) = -1: must be from 1e-5 s to 10 s"), "{e}");
+        // The lower bound says why: nothing below it but the δ → 0 limit, at great cost.
+        let e = DELTA.check(1e-300).unwrap_err().to_string();
+        assert!(e.contains("= 1e-300") && e.contains("δ → 0 limit"), "{e}");
+        assert!(DELTA.check(1e-5).is_ok() && DELTA.check(10.0).is_ok());
+        assert!(DELTA.check(11.0).unwrap_err().to_string().contains("to 10 s"));
         assert!(K.parse("2.5", false).is_err() && K.parse("12", false).is_ok());
         assert_eq!(PF.parse("lq", false).unwrap(), Value::Choice("lq"));
         let e = PF.parse("maybe", false).unwrap_err().to_string();

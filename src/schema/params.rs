@@ -4,10 +4,15 @@ use super::{Choice, Kind, NumberSpec, Param, Scale, Scope};
 
 /// The numbers of δ (also the default map and window range).
 pub const DELTA_SPEC: NumberSpec = NumberSpec {
-    min: 0.0,
-    min_inclusive: false,
+    // Below 1e-5 s nothing new can be seen: the loop is at its δ → 0 limit (the pair A4 decides,
+    // ρ − 1 ≈ 2.6 δ is under 3e-5), and one simulated second costs over 10⁵ predictions.
+    min: 1e-5,
+    min_inclusive: true,
     max: 10.0,
-    allowed: None,
+    allowed: Some(
+        "must be from 1e-5 s to 10 s (below 1e-5 s the loop is at its δ → 0 limit, where the pair A4 decides, \
+         and a simulated second needs over 10⁵ predictions)",
+    ),
     control: [0.002, 0.25],
     scale: Scale::Log,
     digits: 3,

@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::maps::feedback_short;
 use super::run::Run;
 use crate::control::config::FrictionCompensation;
-use crate::control::metrics::{DivergenceReason, Metrics, Verdict, UNSTABLE_GROWTH_RATE};
+use crate::control::metrics::{growth_text, DivergenceReason, Metrics, Verdict, UNSTABLE_GROWTH_RATE};
 use crate::plot::format::{minus, sci, sig, sig_trim};
 
 /// The readouts under the canvas.
@@ -53,9 +53,11 @@ impl Prediction {
 pub struct RunStatus {
     /// "A" or "B".
     pub run: &'static str,
-    /// "stable", "unstable", "borderline" (from ρ), or "diverged" once the run has.
+    /// "stable", "unstable", "borderline" (from ρ), or what the run has shown beyond it:
+    /// "diverged", "bounded oscillation".
     pub verdict: &'static str,
-    /// The verdict as the headline says it: "Unstable", "Stable", "Borderline", "Diverged".
+    /// The verdict as the headline says it: "Unstable", "Stable", "Borderline", "Diverged",
+    /// "Bounded oscillation".
     pub headline: &'static str,
     /// The prediction in a sentence: "ρ = 1.0239 > 1 — the error grows ×e every 0.42 s".
     pub detail: String,
@@ -121,7 +123,28 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         };
         return (format!("observed: diverged at t = {at:.2} s ({why}) — {agrees}"), true);
     }
+    if let Verdict::BoundedOscillation { amplitude, period } = m.verdict {
+        let what = format!(
+            "observed: a bounded oscillation (limit cycle) — amplitude {}, {} rad, period {} s",
+            sci(amplitude[0], 2),
+            sci(amplitude[1], 2),
+            sig_trim(period, 3)
+        );
+        let why = match prediction {
+            Some((Prediction::Unstable, _)) => "ρ > 1 predicts growth, and the nonlinearity bounds it".to_string(),
+            _ => format!("a nonlinear effect ρ cannot show: {}", caveat(run)),
+        };
+        return (format!("{what}; {why}"), true);
+    }
     let Some(g) = m.growth_rate else {
+        if m.errors_at_floor {
+            let agrees = match prediction {
+                Some((Prediction::Unstable, _)) => format!(" — not what ρ predicts: {}", caveat(run)),
+                Some(_) => " — nothing left to grow or decay, as ρ < 1 predicts".into(),
+                None => String::new(),
+            };
+            return (format!("observed: the errors have settled at their floor{agrees}"), true);
+        }
         return ("observed: measuring how the errors move between slews…".into(), false);
     };
     let rate = format!("observed growth rate {} 1/s", minus(&format!("{g:.2}")));
@@ -167,14 +190,16 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         None => (None, format!("the linear analysis failed: {}", run.analysis().error().unwrap_or("no report"))),
     };
     let (observed, measured) = observation(&m, prediction, run);
-    let diverged = matches!(m.verdict, Verdict::Diverged { .. });
-    let (verdict, headline) = match (diverged, prediction.map(|p| p.0)) {
-        (true, _) => ("diverged", "Diverged"),
-        (false, Some(Prediction::Unstable)) => ("unstable", "Unstable"),
-        (false, Some(Prediction::Stable)) => ("stable", "Stable"),
-        (false, Some(Prediction::Borderline)) => ("borderline", "Borderline"),
+    // What the simulation has seen beyond the linear analysis overrides it: a divergence, or a
+    // limit cycle (named as the CLI and the JSON name it).
+    let (verdict, headline) = match (m.verdict, prediction.map(|p| p.0)) {
+        (Verdict::Diverged { .. }, _) => ("diverged", "Diverged"),
+        (v @ Verdict::BoundedOscillation { .. }, _) => (v.label(), "Bounded oscillation"),
+        (_, Some(Prediction::Unstable)) => ("unstable", "Unstable"),
+        (_, Some(Prediction::Stable)) => ("stable", "Stable"),
+        (_, Some(Prediction::Borderline)) => ("borderline", "Borderline"),
         // Without an analysis only the simulation can say.
-        (false, None) => (m.verdict.label(), if m.verdict.label() == "unstable" { "Unstable" } else { "Observing" }),
+        (v, None) => (v.label(), if v.label() == "unstable" { "Unstable" } else { "Observing" }),
     };
     let rho_line = match report {
         None => "linear analysis: ρ = —".into(),
@@ -195,7 +220,10 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         max_slew: pair(m.max_error_slew, "rad"),
         max_after: pair(m.max_error_after, "rad"),
         torque: format!("{}, {} N m", sig(m.max_torque[0], 3), sig(m.max_torque[1], 3)),
-        growth: m.growth_rate.map_or("measuring…".into(), |g| format!("{} 1/s", minus(&format!("{g:.2}")))),
+        growth: match m.growth_rate {
+            None if !m.errors_at_floor => "measuring…".into(),
+            g => minus(&growth_text(g, m.errors_at_floor)),
+        },
         a4: report.map_or("—".into(), |r| {
             let [re, im] = r.limit_pair[0];
             format!("{} ± {}j 1/s", sig(re, 3), sig(im.abs(), 4))

@@ -14,6 +14,7 @@
 
 mod analyze;
 mod cli;
+mod long_work;
 mod map;
 mod output;
 mod simulate;

@@ -1,16 +1,18 @@
 //! `flexarm map`: ρ on a logarithmic (δ, α) grid without and/or with preliminary feedback, its
 //! summary (the stable δ intervals near α = 2), and the map as CSV, JSON or an SVG figure.
 
-use std::io::IsTerminal;
 use std::time::Instant;
 
 use clap::{ArgMatches, Command};
+use flexarm::analysis::map::SECONDS_PER_CELL;
 use flexarm::analysis::{stable_intervals, LinearSettings, MapGrid, MapJob, StabilityMap};
+use flexarm::control::Work;
 use flexarm::plot::format::sig_trim;
 use flexarm::PreliminaryFeedbackChoice;
 use serde_json::{json, Value};
 
 use crate::cli::{self, lib_error, parse_number, usage_error, write_file, Failure, Res};
+use crate::long_work::{self, Progress};
 
 /// The run settings a map takes besides its grid.
 pub const KEYS: &[&str] = &["inner", "k", "eps_ratio"];
@@ -25,15 +27,13 @@ const REDIRECTS: &[(&str, &str)] = &[
 ];
 /// The summary lists the stable δ intervals in the grid row with α nearest this (the paper's α).
 const SUMMARY_ALPHA: f64 = 2.0;
-/// Maps with at least this many cells report progress (when stderr is a terminal).
-const PROGRESS_CELLS: usize = 2000;
 
 pub fn command() -> Command {
     let g = MapGrid::DEFAULT;
     cli::command(
         "map",
         "ρ on a logarithmic (δ, α) grid; prints a summary with the stable δ intervals in the grid row of α \
-         nearest 2 1/s (progress goes to stderr when it is a terminal)",
+         nearest 2 1/s (progress goes to stderr when it takes more than a few seconds)",
     )
     .arg(cli::option(
         "delta-range",
@@ -81,6 +81,7 @@ pub fn command() -> Command {
         "Print one JSON object {PF: {sampling_periods, alphas, spectral_radius (row-major by α), ...}} instead of \
          the summary",
     ))
+    .arg(long_work::force_arg())
 }
 
 /// `A:B` with 0 < A < B.
@@ -113,33 +114,6 @@ fn pf_caption(pf: PreliminaryFeedbackChoice) -> &'static str {
         PreliminaryFeedbackChoice::Off => "without preliminary feedback (PF off)",
         PreliminaryFeedbackChoice::Paper => "with the paper's preliminary feedback K_pr",
         PreliminaryFeedbackChoice::Lq => "with the LQ preliminary feedback",
-    }
-}
-
-/// Percentages on stderr, every 10 %, when enabled.
-struct Progress {
-    enabled: bool,
-    total: usize,
-    done: usize,
-    next: usize,
-    shown: bool,
-}
-
-impl Progress {
-    fn step(&mut self) {
-        self.done += 1;
-        let percent = self.done * 100 / self.total.max(1);
-        if self.enabled && percent >= self.next {
-            eprint!("\rmap: {percent:>3} % of {} rows", self.total);
-            self.next = (percent / 10 + 1) * 10;
-            self.shown = true;
-        }
-    }
-
-    fn finish(&self) {
-        if self.shown {
-            eprint!("\r{:40}\r", "");
-        }
     }
 }
 
@@ -209,13 +183,11 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         }
     }
 
-    let mut progress = Progress {
-        enabled: std::io::stderr().is_terminal() && grid.n_delta * grid.n_alpha * pfs.len() >= PROGRESS_CELLS,
-        total: grid.n_alpha * pfs.len(),
-        done: 0,
-        next: 10,
-        shown: false,
-    };
+    let cells = (grid.n_delta * grid.n_alpha * pfs.len()) as f64;
+    let work = Work::of_units(cells, SECONDS_PER_CELL);
+    long_work::check(m, "this map", work, "use fewer --n-delta or --n-alpha")?;
+    let mut progress = Progress::new("map", work);
+    let (rows_total, mut rows_done) = ((grid.n_alpha * pfs.len()) as f64, 0.0);
     let started = Instant::now();
     let mut results = Vec::new();
     for &pf in &pfs {
@@ -227,7 +199,8 @@ pub fn run(m: &ArgMatches) -> Res<String> {
                 progress.finish();
                 return Err(lib_error(e));
             }
-            progress.step();
+            rows_done += 1.0;
+            progress.update(rows_done / rows_total);
         }
         let failed = job.failed_cells();
         let map = job.finish().map_err(lib_error)?;

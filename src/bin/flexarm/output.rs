@@ -1,22 +1,11 @@
 //! Words and numbers the commands share: the configuration line, the verdicts.
 
-use flexarm::control::{DivergenceReason, Verdict};
+use flexarm::control::Verdict;
 use flexarm::SimulationConfig;
 
-/// The verdict in words, e.g. "unstable (errors grow at 2.273 1/s)".
+/// The verdict in words, e.g. "unstable (errors grow at 2.273 1/s)" (see [`Verdict::text`]).
 pub fn verdict_text(verdict: Verdict, bound: f64) -> String {
-    match verdict {
-        Verdict::Stable => "stable".into(),
-        Verdict::Unstable { growth_rate } => format!("unstable (errors grow at {growth_rate:.3} 1/s)"),
-        Verdict::Diverged { at, reason } => format!(
-            "diverged at t = {at:.3} s ({})",
-            match reason {
-                DivergenceReason::ErrorBound => format!("a tracking error exceeded {bound:.4} rad"),
-                DivergenceReason::NonFinite => "the state became NaN or infinite".into(),
-                DivergenceReason::NewtonFailure => "Newton's iteration in the predictor failed".into(),
-            }
-        ),
-    }
+    verdict.text(bound)
 }
 
 /// "stable" for ρ < 1, else "unstable".

@@ -4,10 +4,14 @@ use clap::{ArgMatches, Command};
 use flexarm::analysis;
 use flexarm::schema;
 use flexarm::session::Settings;
-use flexarm::{RunReport, SimulationConfig, Verdict};
+use flexarm::control::metrics::growth_text;
+use flexarm::control::{Metrics, TraceEnvelope, Traces, Work};
+use flexarm::{SimulationConfig, Verdict};
+use std::io::{BufWriter, Write};
 use serde_json::{json, Value};
 
 use crate::cli::{self, lib_error, write_file, Failure, Res};
+use crate::long_work::{self, Progress, TraceSinks};
 use crate::output::{delta_alpha_text, describe_config, linear_verdict, verdict_text};
 
 /// The run settings `simulate` takes.
@@ -26,6 +30,7 @@ pub fn command() -> Command {
         ))
         .arg(cli::option("svg", "FILE", "Write a figure of the tracking errors e1, e2 over time to FILE (SVG)"))
         .arg(cli::flag("json", "Print one JSON object instead of the text summary"))
+        .arg(long_work::force_arg())
 }
 
 pub fn run(m: &ArgMatches) -> Res<String> {
@@ -34,31 +39,54 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let mut config = settings.a.config();
     config.output_interval = cli::number(m, &schema::OUTPUT_INTERVAL)?;
     config.validate().map_err(|e| lib_error(e.into()))?;
+    let work = Work::of_run(&config, duration);
+    long_work::check(m, "this run", work, "choose a shorter --duration or a longer --delta")?;
     let json_out = m.get_flag("json");
-    let report = flexarm::simulate(&config, duration).map_err(lib_error)?;
-    let rho = analysis::spectral_radius(&config, None).ok();
     let state = settings.run_query();
-    let mut out = if json_out {
-        simulation_json(&settings, &config, duration, &report, rho).to_string() + "\n"
-    } else {
-        simulation_text(&config, duration, &report, rho)
-    };
-    if let Some(path) = m.get_one::<String>("csv") {
-        let comment = format!("flexarm state: {state} | {}", settings.command_line(Some(duration)));
-        std::fs::write(path, report.traces.to_csv(Some(&comment)))
-            .map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
-        if !json_out {
-            out += &format!("traces ({} rows) written to {path}\n", report.traces.len());
+
+    // The CSV is streamed to its file as the run goes; the figure keeps only an envelope.
+    let csv_path = m.get_one::<String>("csv");
+    let mut csv_file = match csv_path {
+        Some(path) => {
+            let file = std::fs::File::create(path)
+                .map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
+            let mut out = BufWriter::new(file);
+            let comment = format!("flexarm state: {state} | {}", settings.command_line(Some(duration)));
+            Traces::write_csv_head(&mut out, Some(&comment))
+                .map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
+            Some((out, path.as_str()))
         }
+        None => None,
+    };
+    let svg_path = m.get_one::<String>("svg");
+    let mut envelope = svg_path.map(|_| TraceEnvelope::new(8 * flexarm::svg::MAX_TRACE_POINTS));
+    let sinks = TraceSinks {
+        csv: csv_file.as_mut().map(|(out, path)| (out as &mut dyn std::io::Write, *path)),
+        envelope: envelope.as_mut(),
+    };
+    let mut progress = Progress::new("simulate", work);
+    let (metrics, rows) = long_work::run(&config, duration, sinks, &mut progress)?;
+    if let Some((mut out, path)) = csv_file {
+        out.flush().map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
     }
-    if let Some(path) = m.get_one::<String>("svg") {
+
+    let rho = analysis::spectral_radius(&config, None).ok();
+    let mut out = if json_out {
+        simulation_json(&settings, &config, duration, &metrics, rho).to_string() + "\n"
+    } else {
+        simulation_text(&config, duration, &metrics, rho)
+    };
+    if let (Some(path), false) = (csv_path, json_out) {
+        out += &format!("traces ({rows} rows) written to {path}\n");
+    }
+    if let (Some(path), Some(envelope)) = (svg_path, envelope) {
         let title = format!(
             "Tracking errors: {}, PF {} — {}",
             delta_alpha_text(&config),
             config.preliminary_feedback.name(),
-            verdict_text(report.metrics.verdict, config.divergence_bound)
+            verdict_text(metrics.verdict, config.divergence_bound)
         );
-        write_file("--svg", path, &flexarm::svg::error_traces_svg(&report.traces, &title, Some(&state)))?;
+        write_file("--svg", path, &flexarm::svg::error_traces_svg(&envelope.traces(), &title, Some(&state)))?;
         if !json_out {
             out += &format!("figure of the tracking errors written to {path}\n");
         }
@@ -72,12 +100,15 @@ pub fn simulation_json(
     settings: &Settings,
     c: &SimulationConfig,
     duration: f64,
-    r: &RunReport,
+    m: &Metrics,
     rho: Option<f64>,
 ) -> Value {
-    let m = &r.metrics;
     let (at, reason) = match m.verdict {
         Verdict::Diverged { at, reason } => (Some(at), serde_json::to_value(reason).ok()),
+        _ => (None, None),
+    };
+    let (amplitude, period) = match m.verdict {
+        Verdict::BoundedOscillation { amplitude, period } => (Some(amplitude), Some(period)),
         _ => (None, None),
     };
     json!({
@@ -103,16 +134,19 @@ pub fn simulation_json(
         "max_error_after": m.max_error_after,
         "rms_error": m.rms_error,
         "growth_rate": m.growth_rate,
+        "growth": growth_text(m.growth_rate, m.errors_at_floor),
+        "errors_at_floor": m.errors_at_floor,
+        "oscillation_amplitude": amplitude,
+        "oscillation_period": period,
         "max_torque": m.max_torque,
         "spectral_radius": rho,
     })
 }
 
-fn simulation_text(c: &SimulationConfig, duration: f64, r: &RunReport, rho: Option<f64>) -> String {
-    let m = &r.metrics;
+fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, rho: Option<f64>) -> String {
     let verdict = verdict_text(m.verdict, c.divergence_bound);
     let pair = |v: [f64; 2], unit: &str| format!("{:.3e}, {:.3e} {unit}", v[0], v[1]);
-    let growth = m.growth_rate.map_or("n/a (run too short)".into(), |g| format!("{g:.4} 1/s"));
+    let growth = growth_text(m.growth_rate, m.errors_at_floor);
     let rho = rho.map_or("n/a (analysis failed)".into(), |r| {
         format!("{r:.6} → linearly {} (ρ < 1 ⇒ linearly stable)", linear_verdict(r))
     });

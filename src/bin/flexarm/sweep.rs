@@ -3,10 +3,11 @@
 use clap::{ArgMatches, Command};
 use flexarm::analysis;
 use flexarm::schema;
-use flexarm::Verdict;
+use flexarm::control::Work;
 use serde_json::{json, Value};
 
 use crate::cli::{self, lib_error, parse_number, usage_error, Res};
+use crate::long_work::{self, Progress, TraceSinks};
 use crate::output::linear_verdict;
 use crate::simulate::simulation_json;
 
@@ -32,6 +33,7 @@ pub fn command() -> Command {
         .arg(cli::flag("simulate", "Also run each point for --duration s"))
         .arg(cli::param_arg(&schema::DURATION))
         .arg(cli::flag("json", "Print an array of JSON objects"))
+        .arg(long_work::force_arg())
         .args(cli::redirects(REDIRECTS))
 }
 
@@ -71,6 +73,28 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let alphas = list("alpha_list", "--alpha", "α = α1 = α2 in 1/s")?;
     let run = m.get_flag("simulate");
     let duration = cli::number(m, &schema::DURATION)?;
+    // Every point is checked before any work starts (and before the estimate, which needs them).
+    for &alpha in &alphas {
+        for &delta in &deltas {
+            let mut point = settings;
+            point.a.delta = delta;
+            point.a.alpha = [alpha, alpha];
+            point.a.config().validate().map_err(|e| lib_error(e.into()))?;
+        }
+    }
+    let points = (deltas.len() * alphas.len()) as f64;
+    let mut work = Work::of_units(points, analysis::map::SECONDS_PER_CELL);
+    if run {
+        for &delta in &deltas {
+            let mut point = settings;
+            point.a.delta = delta;
+            work = work.plus(Work::of_run(&point.a.config(), duration).times(alphas.len() as f64));
+        }
+    }
+    long_work::check(m, "this sweep", work, "sweep fewer or longer δ, or a shorter --duration")?;
+    let mut progress = Progress::new("sweep", work);
+    let mut quiet = Progress::new("sweep", Work::NONE);
+    let mut done = 0.0;
     let mut rows = Vec::new();
     let mut text = format!("{:>10} {:>8} {:>12} {:>9}", "δ [s]", "α [1/s]", "ρ", "linear");
     if run {
@@ -90,21 +114,20 @@ pub fn run(m: &ArgMatches) -> Res<String> {
             });
             text += &format!("{delta:>10.5} {alpha:>8.3} {rho:>12.6} {:>9}", linear_verdict(rho));
             if run {
-                let r = flexarm::simulate(&c, duration).map_err(lib_error)?;
-                row["simulation"] = simulation_json(&point, &c, duration, &r, Some(rho));
-                let m = &r.metrics;
-                let verdict = match m.verdict {
-                    Verdict::Stable => "stable".to_string(),
-                    Verdict::Unstable { growth_rate } => format!("unstable ({growth_rate:.2} 1/s)"),
-                    Verdict::Diverged { at, .. } => format!("diverged at {at:.2} s"),
-                };
+                let sinks = TraceSinks { csv: None, envelope: None };
+                let (m, _) = long_work::run(&c, duration, sinks, &mut quiet)?;
+                row["simulation"] = simulation_json(&point, &c, duration, &m, Some(rho));
+                let verdict = m.verdict.short_text();
                 let [s1, s2] = m.max_error_slew;
                 let [a1, a2] = m.max_error_after;
                 text += &format!("  {verdict:>28}  {s1:>10.3e} {s2:>10.3e}  {a1:>10.3e} {a2:>10.3e}");
             }
             text += "\n";
             rows.push(row);
+            done += 1.0;
+            progress.update(done / points);
         }
     }
+    progress.finish();
     Ok(if m.get_flag("json") { Value::Array(rows).to_string() + "\n" } else { text })
 }

@@ -1,0 +1,128 @@
+//! Long work on the command line: estimated before it starts (refused over the limit unless
+//! `--force`), run in bounded memory, with progress on stderr.
+
+use std::io::{IsTerminal, Write};
+use std::time::Instant;
+
+use clap::{Arg, ArgMatches};
+use flexarm::control::work::{duration_text, WORK_LIMIT_SECONDS};
+use flexarm::control::{ClosedLoop, Metrics, TraceEnvelope, Traces, Work};
+use flexarm::SimulationConfig;
+
+use crate::cli::{self, lib_error, usage_error, Failure, Res};
+
+/// Simulated seconds per chunk of a run: the traces of one chunk are all that is held at once.
+const CHUNK_SECONDS: f64 = 5.0;
+
+/// The `--force` flag.
+pub fn force_arg() -> Arg {
+    cli::flag(
+        "force",
+        "Run even when the work is estimated to take longer than a minute (the estimate is printed first)",
+    )
+}
+
+/// Refuses `work` over the limit unless `--force` was given (status 2, with the estimate and
+/// what to change).
+pub fn check(m: &ArgMatches, what: &str, work: Work, shorter: &str) -> Res<()> {
+    if work.is_over_limit() && !m.get_flag("force") {
+        return Err(usage_error(format!(
+            "{what} would take too long: {} (the limit is {}); {shorter}, or add --force to run it anyway",
+            work.text(),
+            duration_text(WORK_LIMIT_SECONDS)
+        )));
+    }
+    Ok(())
+}
+
+/// Progress on stderr for work estimated over a few seconds: a line rewritten in place on a
+/// terminal, one line per 10 % otherwise.
+pub struct Progress {
+    label: &'static str,
+    enabled: bool,
+    terminal: bool,
+    next_percent: u32,
+    started: Instant,
+    shown: bool,
+}
+
+impl Progress {
+    pub fn new(label: &'static str, work: Work) -> Self {
+        Progress {
+            label,
+            enabled: work.wants_progress(),
+            terminal: std::io::stderr().is_terminal(),
+            next_percent: 10,
+            started: Instant::now(),
+            shown: false,
+        }
+    }
+
+    /// `fraction` (0 to 1) of the work is done.
+    pub fn update(&mut self, fraction: f64) {
+        let percent = (fraction.clamp(0.0, 1.0) * 100.0) as u32;
+        if !self.enabled || percent < self.next_percent || percent >= 100 {
+            return;
+        }
+        self.next_percent = (percent / 10 + 1) * 10;
+        let elapsed = self.started.elapsed().as_secs_f64();
+        let left = elapsed * (1.0 - fraction) / fraction.max(1e-9);
+        let left = if left < 1.0 { "less than a second".to_string() } else { format!("about {}", duration_text(left)) };
+        let line = format!("{}: {percent:>3} %, {left} left", self.label);
+        let mut err = std::io::stderr().lock();
+        let _ = if self.terminal { write!(err, "\r{line:<60}") } else { writeln!(err, "{line}") };
+        self.shown = true;
+    }
+
+    /// Clears the progress line on a terminal.
+    pub fn finish(&mut self) {
+        if self.shown && self.terminal {
+            eprint!("\r{:60}\r", "");
+        }
+        self.shown = false;
+    }
+}
+
+/// Where a run's traces go while it runs: nowhere, a CSV file (streamed), an envelope for a
+/// figure, or both.
+pub struct TraceSinks<'a> {
+    pub csv: Option<(&'a mut dyn Write, &'a str)>,
+    pub envelope: Option<&'a mut TraceEnvelope>,
+}
+
+/// Runs `config` from rest for `duration` s, chunk by chunk, passing each chunk's traces to the
+/// sinks and dropping them: the memory does not grow with the duration.
+pub fn run(
+    config: &SimulationConfig,
+    duration: f64,
+    mut sinks: TraceSinks,
+    progress: &mut Progress,
+) -> Res<(Metrics, u64)> {
+    let mut sim = ClosedLoop::new(*config).map_err(lib_error)?;
+    let mut rows = 0u64;
+    let mut flush = |traces: &mut Traces, sinks: &mut TraceSinks| -> Res<()> {
+        rows += traces.len() as u64;
+        if let Some((out, path)) = sinks.csv.as_mut() {
+            traces
+                .write_csv_rows(out)
+                .map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
+        }
+        if let Some(env) = sinks.envelope.as_mut() {
+            env.extend(traces);
+        }
+        traces.clear();
+        Ok(())
+    };
+    loop {
+        // The last chunk ends on the duration itself (advance rounds to whole plant steps).
+        let left = duration - sim.time();
+        sim.advance(left.clamp(0.0, CHUNK_SECONDS)).map_err(lib_error)?;
+        flush(sim.traces_mut(), &mut sinks)?;
+        progress.update(sim.time() / duration.max(1e-300));
+        if left <= CHUNK_SECONDS || sim.is_finished() {
+            break;
+        }
+    }
+    progress.finish();
+    Ok((sim.metrics(), rows))
+}
