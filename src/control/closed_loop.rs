@@ -41,6 +41,32 @@ pub fn simulate(config: &SimulationConfig, duration: f64) -> Result<RunReport, E
     Ok(RunReport { config: *config, metrics: sim.metrics(), traces: sim.traces().clone() })
 }
 
+/// Runs `config` from rest for `duration` seconds (or until it diverges) in chunks of at most
+/// `chunk` simulated seconds, handing each chunk's traces and the fraction done to `on_chunk`
+/// and then dropping them: the memory does not grow with the duration (the metrics are online).
+pub fn simulate_in_chunks<E: From<Error>>(
+    config: &SimulationConfig,
+    duration: f64,
+    chunk: f64,
+    mut on_chunk: impl FnMut(&Traces, f64) -> Result<(), E>,
+) -> Result<Metrics, E> {
+    let mut sim = ClosedLoop::new(*config)?;
+    if !(duration.is_finite() && duration >= 0.0) {
+        return Err(Error::InvalidDuration(duration).into());
+    }
+    let chunk = if chunk > 0.0 { chunk } else { duration.max(1.0) };
+    loop {
+        // The last chunk ends on the duration itself (advance rounds to whole plant steps).
+        let left = duration - sim.time();
+        sim.advance(left.clamp(0.0, chunk))?;
+        on_chunk(sim.traces(), (sim.time() / duration).min(1.0))?;
+        sim.traces_mut().clear();
+        if left <= chunk || sim.is_finished() {
+            return Ok(sim.metrics());
+        }
+    }
+}
+
 /// Derived settings that follow from the configuration.
 #[derive(Clone, Copy, Debug)]
 struct Derived {

@@ -16,7 +16,7 @@ pub mod predictive;
 pub mod traces;
 pub mod work;
 
-pub use closed_loop::{simulate, ClosedLoop, RunReport};
+pub use closed_loop::{simulate, simulate_in_chunks, ClosedLoop, RunReport};
 pub use config::{ControllerParameters, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
 pub use history::{History, LoopState};
 pub use metrics::{DivergenceReason, Metrics, Verdict};

@@ -12,6 +12,12 @@ pub struct Failure(pub String, pub i32);
 
 pub type Res<T> = Result<T, Failure>;
 
+impl From<Error> for Failure {
+    fn from(e: Error) -> Self {
+        lib_error(e)
+    }
+}
+
 /// A mistake in the command line (status 2).
 pub fn usage_error(msg: impl Into<String>) -> Failure {
     Failure(msg.into(), 2)

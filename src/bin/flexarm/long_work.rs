@@ -6,10 +6,10 @@ use std::time::Instant;
 
 use clap::{Arg, ArgMatches};
 use flexarm::control::work::{duration_text, WORK_LIMIT_SECONDS};
-use flexarm::control::{ClosedLoop, Metrics, TraceEnvelope, Traces, Work};
+use flexarm::control::{simulate_in_chunks, Metrics, TraceEnvelope, Work};
 use flexarm::SimulationConfig;
 
-use crate::cli::{self, lib_error, usage_error, Failure, Res};
+use crate::cli::{self, usage_error, Failure, Res};
 
 /// Simulated seconds per chunk of a run: the traces of one chunk are all that is held at once.
 const CHUNK_SECONDS: f64 = 5.0;
@@ -91,16 +91,15 @@ pub struct TraceSinks<'a> {
 }
 
 /// Runs `config` from rest for `duration` s, chunk by chunk, passing each chunk's traces to the
-/// sinks and dropping them: the memory does not grow with the duration.
+/// sinks: the memory does not grow with the duration. Returns the metrics and the rows seen.
 pub fn run(
     config: &SimulationConfig,
     duration: f64,
     mut sinks: TraceSinks,
     progress: &mut Progress,
 ) -> Res<(Metrics, u64)> {
-    let mut sim = ClosedLoop::new(*config).map_err(lib_error)?;
     let mut rows = 0u64;
-    let mut flush = |traces: &mut Traces, sinks: &mut TraceSinks| -> Res<()> {
+    let metrics = simulate_in_chunks(config, duration, CHUNK_SECONDS, |traces, done| -> Result<(), Failure> {
         rows += traces.len() as u64;
         if let Some((out, path)) = sinks.csv.as_mut() {
             traces
@@ -110,19 +109,9 @@ pub fn run(
         if let Some(env) = sinks.envelope.as_mut() {
             env.extend(traces);
         }
-        traces.clear();
+        progress.update(done);
         Ok(())
-    };
-    loop {
-        // The last chunk ends on the duration itself (advance rounds to whole plant steps).
-        let left = duration - sim.time();
-        sim.advance(left.clamp(0.0, CHUNK_SECONDS)).map_err(lib_error)?;
-        flush(sim.traces_mut(), &mut sinks)?;
-        progress.update(sim.time() / duration.max(1e-300));
-        if left <= CHUNK_SECONDS || sim.is_finished() {
-            break;
-        }
-    }
+    });
     progress.finish();
-    Ok((sim.metrics(), rows))
+    Ok((metrics?, rows))
 }

@@ -73,14 +73,18 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let alphas = list("alpha_list", "--alpha", "α = α1 = α2 in 1/s")?;
     let run = m.get_flag("simulate");
     let duration = cli::number(m, &schema::DURATION)?;
-    // Every point is checked before any work starts (and before the estimate, which needs them).
+    // Every value is checked before any work starts (and before the estimate, which needs them);
+    // δ and α are limited independently of each other.
+    for (i, &delta) in deltas.iter().enumerate() {
+        let alpha = alphas[i.min(alphas.len() - 1)];
+        let mut point = settings;
+        (point.a.delta, point.a.alpha) = (delta, [alpha, alpha]);
+        point.a.config().validate().map_err(|e| lib_error(e.into()))?;
+    }
     for &alpha in &alphas {
-        for &delta in &deltas {
-            let mut point = settings;
-            point.a.delta = delta;
-            point.a.alpha = [alpha, alpha];
-            point.a.config().validate().map_err(|e| lib_error(e.into()))?;
-        }
+        let mut point = settings;
+        (point.a.delta, point.a.alpha) = (deltas[0], [alpha, alpha]);
+        point.a.config().validate().map_err(|e| lib_error(e.into()))?;
     }
     let points = (deltas.len() * alphas.len()) as f64;
     let mut work = Work::of_units(points, analysis::map::SECONDS_PER_CELL);
