@@ -93,9 +93,9 @@ fn csv_has_a_header_with_units_and_numeric_rows() {
 }
 
 #[test]
-fn csv_write_failure_exits_with_1() {
+fn an_unwritable_output_path_is_bad_input() {
     let out = flexarm(&["simulate", "--duration", "0.1", "--csv", "/nonexistent-dir/flexarm/x.csv"]);
-    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).starts_with("error:"));
 }
 

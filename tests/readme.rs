@@ -109,3 +109,15 @@ fn the_verdicts_quoted_in_the_readme_are_the_pages() {
         assert!(flat(web).contains(&flat(&quoted)), "README's web demo section should quote {quoted:?}");
     }
 }
+
+#[test]
+fn held_friction_hunts_as_printed() {
+    let mut c = config(0.04, 2.0, PreliminaryFeedbackChoice::Paper);
+    let rho = analyze(&c, None).unwrap().spectral_radius;
+    let row = "(not in the paper) Fig. 5.1 with the friction compensation held";
+    assert_says(row, &format!("ρ = {rho:.4} < 1"));
+    c.friction_compensation = FrictionCompensation::Held;
+    let m = simulate(&c, 60.0).unwrap().metrics;
+    let Verdict::BoundedOscillation { amplitude, period } = m.verdict else { panic!("{:?}", m.verdict) };
+    assert_says(row, &format!("amplitude {:.2e}, {:.2e} rad, period {period:.2} s", amplitude[0], amplitude[1]));
+}

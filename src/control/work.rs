@@ -75,7 +75,12 @@ impl Work {
 
     /// Over [`WORK_LIMIT_SECONDS`] (or not even finite).
     pub fn is_over_limit(&self) -> bool {
-        !(self.seconds <= WORK_LIMIT_SECONDS)
+        self.is_over(WORK_LIMIT_SECONDS)
+    }
+
+    /// Over `limit` seconds (or not even finite).
+    pub fn is_over(&self, limit: f64) -> bool {
+        !(self.seconds <= limit)
     }
 
     /// Long enough to report progress.

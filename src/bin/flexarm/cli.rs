@@ -146,9 +146,15 @@ pub fn command(name: &'static str, about: &'static str) -> Command {
     Command::new(name).bin_name(format!("flexarm {name}")).about(about).disable_version_flag(true)
 }
 
-/// Writes an output file; a failure is reported with the flag that named the file (status 1).
+/// A file named on the command line could not be written: bad input, like any other argument
+/// (status 2), named with its flag.
+pub fn write_error(flag: &str, path: &str, e: std::io::Error) -> Failure {
+    usage_error(format!("could not write {flag} file '{path}': {e}"))
+}
+
+/// Writes an output file; a failure is reported with the flag that named the file.
 pub fn write_file(flag: &str, path: &str, contents: &str) -> Res<()> {
-    std::fs::write(path, contents).map_err(|e| Failure(format!("could not write {flag} file '{path}': {e}"), 1))
+    std::fs::write(path, contents).map_err(|e| write_error(flag, path, e))
 }
 
 /// Flags that other commands have but this one does not, with the flag to use instead: hidden,

@@ -18,18 +18,34 @@ const CHUNK_SECONDS: f64 = 5.0;
 pub fn force_arg() -> Arg {
     cli::flag(
         "force",
-        "Run even when the work is estimated to take longer than a minute (the estimate is printed first)",
+        "Run even when the work is estimated to take longer than a minute (or FLEXARM_WORK_LIMIT seconds); \
+         without it such work is refused with the estimate",
     )
+}
+
+/// The environment variable that sets the work limit in seconds (default [`WORK_LIMIT_SECONDS`]):
+/// a faster machine may allow more, a test harness less.
+pub const LIMIT_VARIABLE: &str = "FLEXARM_WORK_LIMIT";
+
+/// The work limit in force, s.
+fn limit() -> f64 {
+    std::env::var(LIMIT_VARIABLE)
+        .ok()
+        .and_then(|v| cli::parse_number(&v))
+        .filter(|v| *v > 0.0)
+        .unwrap_or(WORK_LIMIT_SECONDS)
 }
 
 /// Refuses `work` over the limit unless `--force` was given (status 2, with the estimate and
 /// what to change).
 pub fn check(m: &ArgMatches, what: &str, work: Work, shorter: &str) -> Res<()> {
-    if work.is_over_limit() && !m.get_flag("force") {
+    let limit = limit();
+    if work.is_over(limit) && !m.get_flag("force") {
         return Err(usage_error(format!(
-            "{what} would take too long: {} (the limit is {}); {shorter}, or add --force to run it anyway",
+            "{what} would take too long: {} (the limit is {}, set by {LIMIT_VARIABLE}); {shorter}, or add --force \
+             to run it anyway",
             work.text(),
-            duration_text(WORK_LIMIT_SECONDS)
+            duration_text(limit)
         )));
     }
     Ok(())
@@ -104,7 +120,7 @@ pub fn run(
         if let Some((out, path)) = sinks.csv.as_mut() {
             traces
                 .write_csv_rows(out)
-                .map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
+                .map_err(|e| cli::write_error("--csv", path, e))?;
         }
         if let Some(env) = sinks.envelope.as_mut() {
             env.extend(traces);

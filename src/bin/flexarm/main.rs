@@ -9,8 +9,8 @@
 //!   feedback, summarizes it, and writes it as CSV, JSON or an SVG figure.
 //!
 //! The flags of the run settings come from the schema ([`flexarm::schema`]), as do their ranges
-//! and error messages. Bad input prints one `error: ...` line to stderr and exits with status 2;
-//! a failed file write or analysis exits with status 1.
+//! and error messages. Bad input — including an output path that cannot be written — prints one
+//! `error: ...` line to stderr and exits with status 2; a failed analysis exits with status 1.
 
 mod analyze;
 mod cli;

@@ -10,7 +10,7 @@ use flexarm::{SimulationConfig, Verdict};
 use std::io::{BufWriter, Write};
 use serde_json::{json, Value};
 
-use crate::cli::{self, lib_error, write_file, Failure, Res};
+use crate::cli::{self, lib_error, write_file, Res};
 use crate::long_work::{self, Progress, TraceSinks};
 use crate::output::{delta_alpha_text, describe_config, linear_verdict, verdict_text};
 
@@ -49,16 +49,20 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let mut csv_file = match csv_path {
         Some(path) => {
             let file = std::fs::File::create(path)
-                .map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
+                .map_err(|e| cli::write_error("--csv", path, e))?;
             let mut out = BufWriter::new(file);
             let comment = format!("flexarm state: {state} | {}", settings.command_line(Some(duration)));
             Traces::write_csv_head(&mut out, Some(&comment))
-                .map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
+                .map_err(|e| cli::write_error("--csv", path, e))?;
             Some((out, path.as_str()))
         }
         None => None,
     };
     let svg_path = m.get_one::<String>("svg");
+    // A figure that cannot be written is known before the run, not after it.
+    if let Some(path) = svg_path {
+        std::fs::File::create(path).map_err(|e| cli::write_error("--svg", path, e))?;
+    }
     let mut envelope = svg_path.map(|_| TraceEnvelope::new(8 * flexarm::svg::MAX_TRACE_POINTS));
     let sinks = TraceSinks {
         csv: csv_file.as_mut().map(|(out, path)| (out as &mut dyn std::io::Write, *path)),
@@ -67,7 +71,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let mut progress = Progress::new("simulate", work);
     let (metrics, rows) = long_work::run(&config, duration, sinks, &mut progress)?;
     if let Some((mut out, path)) = csv_file {
-        out.flush().map_err(|e| Failure(format!("could not write --csv file '{path}': {e}"), 1))?;
+        out.flush().map_err(|e| cli::write_error("--csv", path, e))?;
     }
 
     let rho = analysis::spectral_radius(&config, None).ok();
