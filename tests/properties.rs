@@ -174,3 +174,41 @@ proptest! {
         prop_assert!(v["growth"].is_string());
     }
 }
+
+proptest! {
+    #![proptest_config(cases(2000))]
+
+    /// 2000 random grids (2–40 nodes a side, a cone with a random apex, a level through a random
+    /// node — the degenerate case — and random unknown cells): the contour's segments chain into
+    /// polylines that use every segment exactly once, join only at shared endpoints, and the
+    /// chaining ends. `chain_segments` marks one segment used per step, so it cannot loop; this
+    /// checks the bookkeeping that argument rests on (the cone test in tests/view.rs once failed
+    /// and then hung under parallel builds: the hang was the build, not this code).
+    #[test]
+    fn contours_chain_every_segment_once(
+        nx in 2usize..40, ny in 2usize..40, apex in (-1.0f64..1.0, -1.0f64..1.0),
+        node in (0usize..40, 0usize..40), holes in proptest::collection::vec(0usize..1600, 0..6),
+    ) {
+        use flexarm::plot::contour::{chain_segments, marching_squares};
+        let xs: Vec<f64> = (0..nx).map(|i| -2.0 + 4.0 * i as f64 / (nx - 1) as f64).collect();
+        let ys: Vec<f64> = (0..ny).map(|i| -2.0 + 4.0 * i as f64 / (ny - 1) as f64).collect();
+        let mut values: Vec<f64> =
+            ys.iter().flat_map(|&y| xs.iter().map(move |&x| (x - apex.0).hypot(y - apex.1))).collect();
+        let level = values[(node.1 % ny) * nx + node.0 % nx];
+        for h in holes {
+            if h < values.len() {
+                values[h] = f64::NAN;
+            }
+        }
+        let segments = marching_squares(&xs, &ys, &values, level);
+        let lines = chain_segments(&segments);
+        let used: usize = lines.iter().map(|l| l.len() - 1).sum();
+        prop_assert_eq!(used, segments.len());
+        for line in &lines {
+            for w in line.windows(2) {
+                let joins = segments.iter().any(|s| (s[0] == w[0] && s[1] == w[1]) || (s[0] == w[1] && s[1] == w[0]));
+                prop_assert!(joins, "{:?} is not a segment", w);
+            }
+        }
+    }
+}
