@@ -370,3 +370,41 @@ fn the_keyboard_moves_the_point_on_a_map_through_round_values() {
     let a = s.settings().a;
     assert_eq!((a.delta, a.alpha[0], a.pf), (0.012, 1.5, Pf::Paper), "one step down on the map with K_pr");
 }
+
+#[test]
+fn a_lesson_link_reads_each_url_value_once() {
+    // Issue 12: the settings after `lesson=N` were decoded, joined and decoded again, so an
+    // encoded `&` inside a value smuggled in a second setting.
+    let (plain, _) = Session::open("lesson=2");
+    let (s, notices) = Session::open("lesson=2&pf=off%26delta%3D0.2");
+    assert_eq!(s.settings().a.delta, plain.settings().a.delta, "no δ = 0.2 from inside pf's value");
+    assert_eq!(s.settings().a.pf, plain.settings().a.pf);
+    assert!(notices.iter().any(|n| n.key == "pf" && n.text.contains("'off&delta=0.2'")), "{notices:?}");
+    // "0.0%25350" is the text "0.0%350" (not a number), not "0.050" decoded twice.
+    let (s, notices) = Session::open("lesson=2&delta=0.0%25350");
+    assert_ne!(plain.settings().a.delta, 0.05);
+    assert_eq!(s.settings().a.delta, plain.settings().a.delta, "{notices:?}");
+}
+
+/// The page names a limit cycle as the CLI and the JSON do — "bounded oscillation" — with its
+/// amplitude and period, says why ρ < 1 could not show it, and never calls the held-friction
+/// hunting unstable once the cycle is recognised; a settled stable run says its growth is "none
+/// (errors at their floor)".
+#[test]
+fn the_page_names_a_limit_cycle_and_a_settled_run_as_the_cli_does() {
+    let mut s = common::session("delta=0.04&alpha=2&pf=paper&friction=held&repeat=0");
+    common::play(&mut s, 45.0);
+    let st = &s.status().runs[0];
+    let m = s.run(0).unwrap().closed_loop().metrics();
+    assert!(matches!(m.verdict, flexarm::Verdict::BoundedOscillation { .. }), "{:?}", m.verdict);
+    assert_eq!(st.verdict, m.verdict.label());
+    assert_eq!(st.headline, "Bounded oscillation");
+    assert!(st.observed.contains("limit cycle") && st.observed.contains("held compensation"), "{}", st.observed);
+
+    let mut s = common::session("delta=0.01&alpha=2&pf=paper&friction=continuous&repeat=0");
+    common::play(&mut s, 30.0);
+    let st = &s.status().runs[0];
+    assert_eq!(st.verdict, "stable");
+    assert_eq!(st.readouts.growth, "none (errors at their floor)");
+    assert!(st.observed.contains("settled at their floor"), "{}", st.observed);
+}

@@ -218,7 +218,13 @@ impl Session {
             })
         })?;
         self.lesson_open(step - 1)?;
-        let rest: Vec<String> = pairs.iter().filter(|(k, _)| k != "lesson").map(|(k, v)| format!("{k}={v}")).collect();
+        // Encoded again: a decoded `&`, `=`, `%` or `+` in a value must not be read a second time
+        // as another setting (`pf=off%26delta%3D0.2` is one bad value of pf, not delta=0.2).
+        let rest: Vec<String> = pairs
+            .iter()
+            .filter(|(k, _)| k != "lesson")
+            .map(|(k, v)| format!("{}={}", super::query::encode(k), super::query::encode(v)))
+            .collect();
         if !rest.is_empty() {
             let mut next = self.settings;
             next.read(&rest.join("&"), Source::Page)?;

@@ -393,11 +393,13 @@ fn run_pairs(a: &RunSettings, changed_only: bool) -> Vec<(&'static str, String)>
     out
 }
 
+/// A key that names no setting ("invalid setting = 'bogus': expected a known setting: …"): the
+/// key is what was given, so it is quoted like any other value (and shortened by the page).
 fn unknown(key: &str) -> Error {
     let known: Vec<&str> = schema::PARAMS.iter().map(|p| p.key).collect();
     Error::Parse(ParseError {
-        key: key.into(),
-        text: String::new(),
+        key: "setting".into(),
+        text: key.into(),
         expected: format!("a known setting: preset, {}", known.join(", ")),
     })
 }
@@ -445,6 +447,7 @@ mod tests {
         let notices = s.read("?delta=abc&pf=maybe&alpha=0.5&bogus=1", Source::Page).unwrap();
         let keys: Vec<&str> = notices.iter().map(|n| n.key.as_str()).collect();
         assert_eq!(keys, ["bogus", "delta", "pf"]);
+        assert!(notices[0].text.starts_with("invalid setting = 'bogus': expected a known setting: preset, delta"));
         assert_eq!(s.a.alpha, [0.5, 0.5]);
         assert_eq!(s.a.delta, 0.01);
         assert!(Settings::default().read("delta=abc", Source::CommandLine).is_err());

@@ -2,31 +2,20 @@
 // and the embed snippet, each checked from the file the browser offers.
 // Run: node --test tests/e2e/export.test.mjs (needs the wasm in www/pkg, like page.test.mjs).
 
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve, launch, openPage, clickForDownload } from './harness.mjs';
+import { openPage, clickForDownload, shared } from './harness.mjs';
 
 const PAGE = '?preset=fig5.3&mode=full&speed=2';
 const PNG_SIGNATURE = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
 const EBML_MAGIC = Buffer.from([0x1a, 0x45, 0xdf, 0xa3]);
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const env = shared();
 
 const kB = (/** @type {Buffer} */ b) => `${(b.length / 1024).toFixed(1)} kB`;
 
 test('the picture: a PNG of the canvas with its labels and a caption strip', { timeout: 120000 }, async () => {
-  const { page, problems, close } = await openPage(browser, server.base, PAGE);
+  const { page, problems, close } = await openPage(env.browser, env.server.base, PAGE);
   await page.waitForTimeout(1500);
   const { name, bytes } = await clickForDownload(page, '#export-png');
   assert.equal(name, 'flexarm-figure.png');
@@ -47,7 +36,7 @@ test('the picture: a PNG of the canvas with its labels and a caption strip', { t
 });
 
 test('the video: recording toggles, counts the time and gives a WebM', { timeout: 120000 }, async () => {
-  const { page, problems, close } = await openPage(browser, server.base, PAGE);
+  const { page, problems, close } = await openPage(env.browser, env.server.base, PAGE);
   assert.equal(await page.isDisabled('#record-video'), false, await page.textContent('#export-status'));
   await page.click('#record-video');
   assert.equal(await page.getAttribute('#record-video', 'aria-pressed'), 'true');
@@ -66,7 +55,7 @@ test('the video: recording toggles, counts the time and gives a WebM', { timeout
 });
 
 test('the SVG figures: the errors at once, the maps once they are computed', { timeout: 120000 }, async () => {
-  const { page, problems, close } = await openPage(browser, server.base, PAGE);
+  const { page, problems, close } = await openPage(env.browser, env.server.base, PAGE);
   // The maps, clicked in the same task as the check that they are not done: a message, no file.
   const wasDone = await page.evaluate(() => {
     const done = document.querySelector('#map-progress').dataset.done === 'true';
@@ -98,7 +87,7 @@ test('the SVG figures: the errors at once, the maps once they are computed', { t
 });
 
 test('the embed snippet: an iframe of the current state, shown and selected', { timeout: 120000 }, async () => {
-  const { page, problems, close } = await openPage(browser, server.base, PAGE);
+  const { page, problems, close } = await openPage(env.browser, env.server.base, PAGE);
   await page.click('#embed-snippet');
   await page.waitForSelector('#embed-code:not([hidden])', { timeout: 5000 });
   assert.equal(await page.isVisible('#embed-label'), true);

@@ -5,69 +5,33 @@
 
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import http from 'node:http';
 import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
-
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
-const www = path.join(root, 'www');
-const shots = path.join(root, 'screenshots');
-const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
-
-const MIME = {
-  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript',
-  '.css': 'text/css', '.wasm': 'application/wasm', '.json': 'application/json',
-  '.svg': 'image/svg+xml', '.png': 'image/png', '.ico': 'image/x-icon',
-};
+import { serve, launch, openPage, canvasInk, regionInk, shots, www } from './harness.mjs';
 
 let server;
-let base;
 let browser;
 
 before(async () => {
-  assert.ok(fs.existsSync(path.join(www, 'pkg', 'flexarm_bg.wasm')), 'www/pkg is missing: build the wasm first (scripts/test.sh does)');
   fs.mkdirSync(shots, { recursive: true });
-  server = http.createServer((req, res) => {
-    const url = new URL(req.url, 'http://localhost');
-    let file = path.normalize(path.join(www, decodeURIComponent(url.pathname)));
-    if (!file.startsWith(www)) { res.writeHead(403).end(); return; }
-    if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, 'index.html');
-    fs.readFile(file, (err, data) => {
-      if (err) { res.writeHead(404).end('not found'); return; }
-      res.writeHead(200, { 'Content-Type': MIME[path.extname(file)] || 'application/octet-stream' });
-      res.end(data);
-    });
-  });
-  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
-  base = `http://127.0.0.1:${server.address().port}`;
-  browser = await chromium.launch({
-    executablePath: CHROMIUM,
-    args: ['--no-sandbox', '--disable-dev-shm-usage', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
-  });
+  server = await serve();
+  browser = await launch();
 });
 
 after(async () => {
   await browser?.close();
-  await new Promise((resolve) => (server ? server.close(resolve) : resolve()));
+  await server?.close();
 });
 
-/** Opens the page at `query`, collecting console errors and uncaught exceptions. Most tests drive
- * the full view: `mode=full` is added unless the query chooses a mode, opens the lesson, or `raw`. */
+/** Opens the page at `query`, collecting console errors, uncaught exceptions and dialogs (the
+ * harness's openPage). Most tests drive the full view: `mode=full` is added unless the query
+ * chooses a mode, opens the lesson, or `raw`. */
 async function open(query = '', { raw = false, viewport = { width: 1280, height: 800 } } = {}) {
-  const page = await browser.newPage({ viewport });
-  const problems = [];
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
-  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
   const params = new URLSearchParams(query);
   if (!raw && !params.has('mode') && !params.has('lesson')) params.set('mode', 'full');
   const q = params.toString();
-  await page.goto(`${base}/${q ? `?${q}` : ''}`);
-  await page.waitForFunction(() => document.querySelector('#backend')?.textContent?.trim().length > 0, null, { timeout: 20000 });
-  return { page, problems };
+  return openPage(browser, server.base, q ? `?${q}` : '', { viewport });
 }
 
 const verdictOf = (page) => page.$eval('#verdict', (el) => el.dataset.verdict || '');
@@ -76,66 +40,6 @@ const verdictOf = (page) => page.$eval('#verdict', (el) => el.dataset.verdict ||
 async function waitForVerdict(page, words, timeout) {
   await page.waitForFunction((w) => w.includes(document.querySelector('#verdict')?.dataset.verdict), words, { timeout });
   return verdictOf(page);
-}
-
-/** Fraction of canvas pixels that differ from its background colour (sampled at a corner), and
- * the number of distinct colours, decoded by the browser from a real screenshot. */
-async function canvasInk(page, file) {
-  const png = await page.locator('#canvas').screenshot({ path: file });
-  return page.evaluate(async (b64) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.width; c.height = img.height;
-    const ctx = c.getContext('2d');
-    ctx.drawImage(img, 0, 0);
-    const { data } = ctx.getImageData(0, 0, c.width, c.height);
-    const bg = [data[0], data[1], data[2]];
-    let ink = 0;
-    const colours = new Set();
-    for (let i = 0; i < data.length; i += 4) {
-      const d = Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]);
-      if (d > 30) { ink++; colours.add((data[i] >> 4) << 8 | (data[i + 1] >> 4) << 4 | (data[i + 2] >> 4)); }
-    }
-    return { ink: ink / (data.length / 4), colours: colours.size, width: c.width, height: c.height };
-  }, png.toString('base64'));
-}
-
-/** For each rectangle (CSS px in the canvas): how much of it is drawn. `ink` is the fraction of
- * pixels that differ from the canvas background (its corner), `marks` the fraction that differ
- * from the rectangle's own most common colour, `colours` the distinct colours. */
-async function regionInk(page, rects, file) {
-  const png = await page.locator('#canvas').screenshot({ path: file });
-  return page.evaluate(async ({ b64, rects }) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.width; c.height = img.height;
-    const ctx = c.getContext('2d');
-    ctx.drawImage(img, 0, 0);
-    const scale = img.width / document.querySelector('#canvas').getBoundingClientRect().width;
-    const all = ctx.getImageData(0, 0, c.width, c.height).data;
-    const bg = [all[0], all[1], all[2]];
-    return rects.map((r) => {
-      const x0 = Math.max(0, Math.floor(r.x * scale)); const y0 = Math.max(0, Math.floor(r.y * scale));
-      const x1 = Math.min(c.width, Math.ceil((r.x + r.width) * scale)); const y1 = Math.min(c.height, Math.ceil((r.y + r.height) * scale));
-      if (x1 <= x0 || y1 <= y0) return { ink: 0, marks: 0, colours: 0 };
-      const { data } = ctx.getImageData(x0, y0, x1 - x0, y1 - y0);
-      const counts = new Map();
-      let ink = 0;
-      for (let i = 0; i < data.length; i += 4) {
-        const d = Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]);
-        if (d > 30) ink++;
-        const key = (data[i] >> 3) << 10 | (data[i + 1] >> 3) << 5 | (data[i + 2] >> 3);
-        counts.set(key, (counts.get(key) || 0) + 1);
-      }
-      const n = data.length / 4;
-      const dominant = Math.max(...counts.values());
-      return { ink: ink / n, marks: (n - dominant) / n, colours: counts.size };
-    });
-  }, { b64: png.toString('base64'), rects });
 }
 
 /** The renderer's latest layout as the page keeps it. */
@@ -156,8 +60,8 @@ async function sliderNumber(page, id) {
   return Number.parseFloat(text);
 }
 
-test('the canvas shows the arm and the traces', async () => {
-  const { page, problems } = await open('?speed=1');
+test('the canvas shows the arm and the traces', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?speed=1');
   await page.waitForTimeout(1500);
   const backend = (await page.textContent('#backend')).trim();
   assert.match(backend, /WebGPU|WebGL2/, `backend shown: ${backend}`);
@@ -167,11 +71,11 @@ test('the canvas shows the arm and the traces', async () => {
   assert.ok(ink.colours >= 4, `only ${ink.colours} colours drawn`);
   await page.screenshot({ path: path.join(shots, 'page-full.png') });
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('Fig. 5.3 preset goes unstable; switching the preliminary feedback on makes it stable', async () => {
-  const { page, problems } = await open('?preset=fig5.2&speed=4');
+test('Fig. 5.3 preset goes unstable; switching the preliminary feedback on makes it stable', { timeout: 90000 }, async () => {
+  const { page, problems, close } = await open('?preset=fig5.2&speed=4');
   await page.selectOption('#preset', 'fig5.3');
   const word = await waitForVerdict(page, ['unstable', 'diverged'], 30000);
   await page.screenshot({ path: path.join(shots, 'fig5.3-unstable.png') });
@@ -185,21 +89,21 @@ test('Fig. 5.3 preset goes unstable; switching the preliminary feedback on makes
   assert.equal(await verdictOf(page), 'stable');
   await page.screenshot({ path: path.join(shots, 'fig5.3-then-pf-stable.png') });
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('δ in the URL sets the slider', async () => {
-  const { page, problems } = await open('?delta=0.05&pf=off');
+test('δ in the URL sets the slider', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?delta=0.05&pf=off');
   const shown = await page.$eval('#delta', (el) => el.getAttribute('aria-valuetext') || el.value);
   assert.match(shown, /0\.05/, `slider shows ${shown}`);
   assert.equal(await page.$eval('#pf', (el) => el.value), 'off');
   assert.ok(new URL(page.url()).searchParams.get('delta').startsWith('0.05'));
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('a garbage URL value gives a notice and the page still works', async () => {
-  const { page, problems } = await open('?delta=abc&pf=maybe');
+test('a garbage URL value gives a notice and the page still works', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?delta=abc&pf=maybe');
   const notice = await page.textContent('#url-notice');
   assert.ok(await page.isVisible('#url-notice'), 'notice visible');
   assert.match(notice, /delta/);
@@ -210,13 +114,13 @@ test('a garbage URL value gives a notice and the page still works', async () => 
   const ink = await canvasInk(page, path.join(shots, 'garbage-url-canvas.png'));
   assert.ok(ink.ink > 0.01);
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('performance figures (printed for the README)', async () => {
+test('performance figures (printed for the README)', { timeout: 150000 }, async () => {
   const wasm = fs.readFileSync(path.join(www, 'pkg', 'flexarm_bg.wasm'));
   const gzip = zlib.gzipSync(wasm, { level: 9 }).length;
-  const { page, problems } = await open('?speed=1');
+  const { page, problems, close } = await open('?speed=1');
   await page.waitForTimeout(5000);
   const perf = await page.evaluate(() => window.flexarmPerf());
   assert.ok(perf.map_ms === null || perf.map_ms > 0, `map_ms ${perf.map_ms}`);
@@ -242,11 +146,11 @@ test('performance figures (printed for the README)', async () => {
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));
   assert.ok((await page.evaluate(() => window.flexarmPerf().map_ms)) > 0, 'map_ms recorded');
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('a click on the map without preliminary feedback sets δ, α and PF off', async () => {
-  const { page, problems } = await open('?pf=paper&delta=0.01&alpha1=1&alpha2=1&speed=1');
+test('a click on the map without preliminary feedback sets δ, α and PF off', { timeout: 120000 }, async () => {
+  const { page, problems, close } = await open('?pf=paper&delta=0.01&alpha1=1&alpha2=1&speed=1');
   const layout = await waitForPanels(page, ['map-off', 'map-on']);
   // Let the maps fill in, so the screenshot shows them.
   await page.waitForFunction(() => window.flexarmPerf().map_times.length >= 2, null, { timeout: 60000 });
@@ -278,11 +182,11 @@ test('a click on the map without preliminary feedback sets δ, α and PF off', a
   await page.waitForTimeout(400);
   await page.screenshot({ path: path.join(shots, 'map-click.png') });
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('the pole plot is drawn and a pole explains itself', async () => {
-  const { page, problems } = await open('?preset=fig5.3&speed=1');
+test('the pole plot is drawn and a pole explains itself', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?preset=fig5.3&speed=1');
   await waitForPanels(page, ['poles']);
   await page.waitForFunction(() => (window.flexarm.lastLayout?.poles || []).length >= 8, null, { timeout: 20000 });
   await page.waitForTimeout(500);
@@ -306,11 +210,11 @@ test('the pole plot is drawn and a pole explains itself', async () => {
   assert.match(tip, /rad\/s/);
   await page.screenshot({ path: path.join(shots, 'poles.png') });
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('side by side: two arms, both runs, two verdicts', async () => {
-  const { page, problems } = await open('?preset=fig5.3&speed=2');
+test('side by side: two arms, both runs, two verdicts', { timeout: 90000 }, async () => {
+  const { page, problems, close } = await open('?preset=fig5.3&speed=2');
   await page.check('#compare');
   const layout = await waitForPanels(page, ['arm', 'arm-b']);
   assert.equal(await page.$eval('#b-pf', (el) => el.value), 'paper', 'B = A with the preliminary feedback switched');
@@ -327,11 +231,11 @@ test('side by side: two arms, both runs, two verdicts', async () => {
   assert.match(legend, /B:.*paper K_pr/);
   await page.screenshot({ path: path.join(shots, 'side-by-side.png') });
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('copy as command line gives the flexarm command of what is on screen', async () => {
-  const { page, problems } = await open('?preset=fig5.3&speed=4');
+test('copy as command line gives the flexarm command of what is on screen', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?preset=fig5.3&speed=4');
   await page.waitForTimeout(1000);
   await page.click('#copy-command');
   await page.waitForSelector('#command-line:not([hidden])', { timeout: 5000 });
@@ -345,7 +249,7 @@ test('copy as command line gives the flexarm command of what is on screen', asyn
   const csv = await page.evaluate(() => window.flexarm.session.csv());
   assert.ok(csv.startsWith('# flexarm state: delta=0.01&alpha=2&pf=off'), csv.slice(0, 80));
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
 // --------------------------------------------------------------- issue 9: honest and visible
@@ -353,8 +257,8 @@ test('copy as command line gives the flexarm command of what is on screen', asyn
 /** The verdict block's text. */
 const verdictText = (page) => page.$eval('#verdict', (el) => el.textContent.replace(/\s+/g, ' ').trim());
 
-test('Fig. 5.3 is called unstable from the first second and never "stable"; the growth is observed before it diverges', async () => {
-  const { page, problems } = await open('?preset=fig5.3&speed=1');
+test('Fig. 5.3 is called unstable from the first second and never "stable"; the growth is observed before it diverges', { timeout: 90000 }, async () => {
+  const { page, problems, close } = await open('?preset=fig5.3&speed=1');
   const opened = Date.now();
   await page.waitForFunction(() => document.querySelector('#verdict')?.dataset.verdict === 'unstable', null, { timeout: 20000 });
   const first = await verdictText(page);
@@ -384,11 +288,11 @@ test('Fig. 5.3 is called unstable from the first second and never "stable"; the 
   assert.ok(observedBefore.t < 3, `observed at t = ${observedBefore.t}: ${observedBefore.text}`);
   assert.match(observedBefore.text, /matches ln ρ\/δ = 2\.36 1\/s/);
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('the stable windows of δ are stated and drawn on the slider as the session computes them', async () => {
-  const { page, problems } = await open('?delta=0.05&pf=off&alpha=2');
+test('the stable windows of δ are stated and drawn on the slider as the session computes them', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?delta=0.05&pf=off&alpha=2');
   await page.waitForFunction(() => (document.querySelector('#delta')?.dataset.bands || '').length > 0, null, { timeout: 20000 });
   const text = await page.textContent('#delta-windows');
   assert.match(text, /Without preliminary feedback \(α = 2 1\/s\) the loop is stable only for 0\.0350 s < δ < 0\.1007 s, 0\.1068 s < δ < 0\.1161 s and 0\.1627 s < δ < 0\.2236 s/);
@@ -410,11 +314,11 @@ test('the stable windows of δ are stated and drawn on the slider as the session
   await page.waitForFunction(() => /^With paper K_pr/.test(document.querySelector('#delta-windows').textContent), null, { timeout: 10000 });
   await page.screenshot({ path: path.join(shots, 'windows-on-the-slider.png') });
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('the z-plane shows the flexible pair crossing the unit circle as δ crosses a window edge', async () => {
-  const { page, problems } = await open('?delta=0.0345&pf=off&alpha=2&speed=0.1');
+test('the z-plane shows the flexible pair crossing the unit circle as δ crosses a window edge', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?delta=0.0345&pf=off&alpha=2&speed=0.1');
   await page.selectOption('#plane', 'z');
   await waitForPanels(page, ['z-plane']);
   const modulus = () => page.evaluate(() => Math.max(...window.flexarm.lastLayout.poles.filter((p) => p.kind === 'loop').map((p) => p.modulus)));
@@ -427,11 +331,11 @@ test('the z-plane shows the flexible pair crossing the unit circle as δ crosses
   await page.screenshot({ path: path.join(shots, 'z-plane-after-the-edge.png') });
   assert.equal(await verdictOf(page), 'stable');
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('log |e| with the predicted slope, and two runs compared side by side in numbers', async () => {
-  const { page, problems } = await open('?preset=fig5.1&speed=2&compare=1&b_pf=paper&b_delta=0.01&b_alpha=2');
+test('log |e| with the predicted slope, and two runs compared side by side in numbers', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?preset=fig5.1&speed=2&compare=1&b_pf=paper&b_delta=0.01&b_alpha=2');
   await page.check('#log');
   await page.waitForFunction(() => window.flexarm.lastLayout?.panels.find((p) => p.id === 'e1')?.y_scale === 'log', null, { timeout: 10000 });
   await page.waitForTimeout(3000);
@@ -446,7 +350,7 @@ test('log |e| with the predicted slope, and two runs compared side by side in nu
   await page.screenshot({ path: path.join(shots, 'log-view-compare.png') });
   await page.locator('#readouts').screenshot({ path: path.join(shots, 'compare-readouts.png') });
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
 // ------------------------------------------------------------------ issue 10: lesson and timeline
@@ -454,8 +358,8 @@ test('log |e| with the predicted slope, and two runs compared side by side in nu
 /** The session's status as the page has it. */
 const statusOf = (page) => page.evaluate(() => window.flexarm.session.status());
 
-test('the cold open names Fig. 5.3 in the intro: δ, the feedback, play, the lesson and the verdict', async () => {
-  const { page, problems } = await open('', { raw: true });
+test('the cold open names Fig. 5.3 in the intro: δ, the feedback, play, the lesson and the verdict', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('', { raw: true });
   assert.equal(await page.$eval('body', (b) => b.dataset.mode), 'intro');
   assert.match(await page.textContent('#showing'), /Fig\. 5\.3/);
   assert.equal(await waitForVerdict(page, ['unstable'], 3000), 'unstable');
@@ -472,11 +376,11 @@ test('the cold open names Fig. 5.3 in the intro: δ, the feedback, play, the les
   assert.ok(await page.isVisible('#preset'));
   assert.equal(new URL(page.url()).searchParams.get('mode'), 'full');
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('the lesson: every step sets the simulator up, every prediction is answered, back restores the step', async () => {
-  const { page, problems } = await open('', { raw: true });
+test('the lesson: every step sets the simulator up, every prediction is answered, back restores the step', { timeout: 240000 }, async () => {
+  const { page, problems, close } = await open('', { raw: true });
   await page.click('#lesson-start');
   await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 5000 });
   const walked = [];
@@ -530,20 +434,20 @@ test('the lesson: every step sets the simulator up, every prediction is answered
   assert.ok(await page.isHidden('#lesson'));
   assert.equal(new URL(page.url()).searchParams.get('lesson'), null);
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('a lesson link opens its step', async () => {
-  const { page, problems } = await open('?lesson=4');
+test('a lesson link opens its step', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?lesson=4');
   await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 5000 });
   assert.match(await page.textContent('#lesson-title'), /never touches/);
   assert.equal(await page.$eval('#plane', (el) => el.value), 'z');
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('the timeline: look back by dragging on the error plot, step back, continue from exactly that state', async () => {
-  const { page, problems } = await open('?preset=fig5.3&speed=1');
+test('the timeline: look back by dragging on the error plot, step back, continue from exactly that state', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await open('?preset=fig5.3&speed=1');
   await page.waitForFunction(() => window.flexarm.session.time() > 3.0, null, { timeout: 15000 });
   const layout = await layoutOf(page);
   const e1 = layout.panels.find((p) => p.id === 'e1');
@@ -576,12 +480,12 @@ test('the timeline: look back by dragging on the error plot, step back, continue
   assert.equal(t.live, true);
   assert.match(await page.textContent('#run-note'), /Continued from t = /);
   assert.deepEqual(problems, []);
-  await page.close();
+  await close();
 });
 
-test('a "Try:" button keeps the figure in sight, on a laptop and on a phone', async () => {
+test('a "Try:" button keeps the figure in sight, on a laptop and on a phone', { timeout: 90000 }, async () => {
   for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
-    const { page, problems } = await open('?preset=fig5.2', { viewport });
+    const { page, problems, close } = await open('?preset=fig5.2', { viewport });
     // On a phone the explanation is in the sheet of controls.
     if (await page.isVisible('#sheet-toggle')) await page.click('#sheet-toggle');
     await page.click('#explain > summary');
@@ -593,6 +497,6 @@ test('a "Try:" button keeps the figure in sight, on a laptop and on a phone', as
     assert.ok(box.y + box.height > 80 && box.y < viewport.height - 80, `${viewport.width} px: the figure at y = ${box.y}`);
     assert.equal(await verdictOf(page), 'unstable', 'and it shows what the button set');
     assert.deepEqual(problems, []);
-    await page.close();
+    await close();
   }
 });

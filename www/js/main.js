@@ -13,7 +13,7 @@ import { createPointer } from './pointer.js';
 import { createLoop } from './loop.js';
 import { wireTryButtons } from './explain.js';
 import { wireKeys } from './keys.js';
-import { writeUrl } from './url.js';
+import { noticeLines, writeUrl } from './url.js';
 import { createLesson } from './lesson.js';
 import { createTimeline } from './timeline.js';
 import { createTabs } from './tabs.js';
@@ -404,7 +404,7 @@ function showFigure() {
 /** The URL's values that were not taken. @param {{ key: string, text: string }[]} notices */
 function showNotices(notices) {
   if (notices.length === 0) return;
-  byId('url-notice-list').replaceChildren(...notices.map((n) => make('li', { text: `Ignored URL value — ${n.text}` })));
+  byId('url-notice-list').replaceChildren(...noticeLines(notices).map((text) => make('li', { text })));
   byId('url-notice').hidden = false;
   byId('url-notice-dismiss').addEventListener('click', () => (byId('url-notice').hidden = true), { once: true });
 }

@@ -9,3 +9,10 @@ export async function loadWasm() {
   performance.mark('flexarm:wasm-ready');
   return mod;
 }
+
+/** Bytes of the module's linear memory (it can only grow; the end-to-end tests watch it stay
+ * flat). Initialising an initialised module returns its exports at once. @returns {Promise<number>} */
+export async function wasmMemoryBytes() {
+  const mod = await import('../pkg/flexarm.js');
+  return (await mod.default()).memory.buffer.byteLength;
+}
