@@ -478,6 +478,9 @@ test('the timeline: look back by dragging on the error plot, step back, continue
   assert.ok(Math.abs(timeAfter - back) < 1e-9);
   t = (await statusOf(page)).timeline;
   assert.equal(t.live, true);
+  // The note is written by the next frame, not by the click itself.
+  await page.waitForFunction(() => /Continued from t = /.test(document.querySelector('#run-note')?.textContent ?? ''), null, { timeout: 10000 })
+    .catch(() => {});
   assert.match(await page.textContent('#run-note'), /Continued from t = /);
   assert.deepEqual(problems, []);
   await close();

@@ -93,7 +93,7 @@ fn error_message(e: wasm_bindgen::JsError) -> String {
 fn bad_settings_throw_a_readable_error() {
     let mut session = WebSession::new(&state(0.01, 2.0, "paper"));
     let msg = error_message(session.set("delta", "-0.01").err().expect("δ < 0 is rejected"));
-    assert!(msg.contains("sampling_period") && msg.contains("> 0"), "{msg}");
+    assert!(msg.contains("sampling_period") && msg.contains("from 1e-5 s to 10 s"), "{msg}");
     let msg = error_message(session.set("pf", "maybe").err().expect("unknown PF is rejected"));
     assert!(msg.contains("pf") && msg.contains("maybe") && msg.contains("off | paper | lq"), "{msg}");
     let msg = error_message(session.set("k", "2").err().expect("k ≤ 3 is rejected"));
