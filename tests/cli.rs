@@ -316,8 +316,9 @@ fn map_and_simulate_write_svg_figures() {
     assert!(std::fs::read_to_string(&path).unwrap().starts_with("<svg"));
     std::fs::remove_file(&path).ok();
 
+    // A path that cannot be written is bad input, like any other argument.
     let out = flexarm(&["map", "--n-delta", "2", "--n-alpha", "2", "--svg", "/nonexistent-dir/flexarm/x.svg"]);
-    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).starts_with("error:"));
 }
 
