@@ -76,8 +76,8 @@ ensure_binaryen() {
 
 build_wasm() {
     ensure_binaryen
-    step "building the wasm module (release, then wasm-opt: about 1.5 minutes) into www/pkg"
+    step "building the wasm module (profile web, then wasm-opt: about 2 minutes) into www/pkg"
     local started=$SECONDS
-    wasm-pack build --target web --release --out-dir www/pkg --no-pack
+    wasm-pack build --target web --profile web --out-dir www/pkg --no-pack
     echo "wasm build with wasm-opt: $((SECONDS - started)) s; $(wc -c < www/pkg/flexarm_bg.wasm) bytes"
 }
