@@ -6,7 +6,7 @@
 use serde::Serialize;
 
 use super::query::split_query;
-use super::settings::{Settings, Source};
+use super::settings::{Notice, Settings, Source};
 use super::Session;
 use crate::error::Error;
 use crate::lesson::{self, Goal, Lesson, Term};
@@ -206,10 +206,11 @@ impl Session {
     }
 
     /// Opens the lesson a URL names (`lesson=3`), then reads the URL's other settings over the
-    /// step's: a link written while in the lesson comes back as it was.
-    pub(super) fn open_lesson_from(&mut self, query: &str) -> Result<bool, Error> {
+    /// step's: a link written while in the lesson comes back as it was. A step past the last
+    /// opens the last, with a notice.
+    pub(super) fn open_lesson_from(&mut self, query: &str) -> Result<Option<Notice>, Error> {
         let pairs = split_query(query);
-        let Some((_, n)) = pairs.iter().rev().find(|(k, _)| k == "lesson") else { return Ok(false) };
+        let Some((_, n)) = pairs.iter().rev().find(|(k, _)| k == "lesson") else { return Ok(None) };
         let step: usize = n.trim().parse().ok().filter(|&s| s >= 1).ok_or_else(|| {
             Error::Parse(crate::error::ParseError {
                 key: "lesson".into(),
@@ -218,6 +219,11 @@ impl Session {
             })
         })?;
         self.lesson_open(step - 1)?;
+        let (opened, count) = self.lesson_position()?;
+        let notice = (opened + 1 < step).then(|| Notice {
+            key: "lesson".into(),
+            text: format!("lesson={}: the lesson has {count} steps; opened step {count}", n.trim()),
+        });
         // Encoded again: a decoded `&`, `=`, `%` or `+` in a value must not be read a second time
         // as another setting (`pf=off%26delta%3D0.2` is one bad value of pf, not delta=0.2).
         let rest: Vec<String> = pairs
@@ -230,7 +236,7 @@ impl Session {
             next.read(&rest.join("&"), Source::Page)?;
             self.apply(next, true, "")?;
         }
-        Ok(true)
+        Ok(notice)
     }
 
     fn lesson_position(&self) -> Result<(usize, usize), Error> {

@@ -146,8 +146,9 @@ impl Session {
             }
         };
         // `lesson=3` opens the lesson at that step, with the URL's settings over the step's.
-        if let Err(e) = session.open_lesson_from(query) {
-            notices.push(Notice { key: "lesson".into(), text: e.to_string() });
+        match session.open_lesson_from(query) {
+            Ok(notice) => notices.extend(notice),
+            Err(e) => notices.push(Notice { key: "lesson".into(), text: e.to_string() }),
         }
         (session, notices)
     }
