@@ -161,9 +161,15 @@ fn a_link_reopens_the_same_step_with_the_same_settings() {
     let (_, notices) = Session::open("lesson=abc");
     assert_eq!(notices.len(), 1, "{notices:?}");
     assert!(notices[0].text.contains("step number"), "{}", notices[0].text);
-    // Beyond the last step: the last step.
-    let last = session("lesson=99");
-    assert_eq!(last.status().lesson.unwrap().index, builtin().unwrap().steps.len() - 1);
+    // Beyond the last step: the last step, and a notice that says so; the last step itself
+    // opens without one.
+    let count = builtin().unwrap().steps.len();
+    let (mut last, notices) = Session::open("lesson=99");
+    assert_eq!(last.status().lesson.unwrap().index, count - 1);
+    assert_eq!(notices.len(), 1, "{notices:?}");
+    assert_eq!(notices[0].key, "lesson");
+    assert!(notices[0].text.contains(&format!("has {count} steps")), "{}", notices[0].text);
+    assert_eq!(session(&format!("lesson={count}")).status().lesson.unwrap().index, count - 1);
 }
 
 #[test]

@@ -408,18 +408,3 @@ fn the_page_names_a_limit_cycle_and_a_settled_run_as_the_cli_does() {
     assert_eq!(st.readouts.growth, "none (errors at their floor)");
     assert!(st.observed.contains("settled at their floor"), "{}", st.observed);
 }
-
-/// A lesson link past the last step opens the last step and says so; the last step itself opens
-/// without a notice.
-#[test]
-fn a_lesson_link_past_the_last_step_says_so() {
-    let count = flexarm::lesson::builtin().expect("the built-in lesson parses").steps.len();
-    let (s, notices) = Session::open("lesson=999");
-    let shown = s.lesson_status().expect("the lesson opened");
-    assert_eq!(shown.index + 1, count, "the last step");
-    let notice = notices.iter().find(|n| n.key == "lesson").unwrap_or_else(|| panic!("no notice: {notices:?}"));
-    assert!(notice.text.contains(&format!("has {count} steps")), "{}", notice.text);
-    let (s, notices) = Session::open(&format!("lesson={count}"));
-    assert_eq!(s.lesson_status().map(|l| l.index + 1), Some(count));
-    assert!(notices.is_empty(), "{notices:?}");
-}
