@@ -120,7 +120,9 @@ test('a garbage URL value gives a notice and the page still works', { timeout: 6
 test('performance figures (printed for the README)', { timeout: 150000 }, async () => {
   const wasm = fs.readFileSync(path.join(www, 'pkg', 'flexarm_bg.wasm'));
   const gzip = zlib.gzipSync(wasm, { level: 9 }).length;
-  const { page, problems, close } = await open('?speed=1');
+  // With K_pr, so the run is still going after 5 s (the cold open, Fig. 5.3, diverges at 4.13 s
+  // and would read a live rate of 0).
+  const { page, problems, close } = await open('?speed=1&pf=paper');
   await page.waitForTimeout(5000);
   const perf = await page.evaluate(() => window.flexarmPerf());
   assert.ok(perf.map_ms === null || perf.map_ms > 0, `map_ms ${perf.map_ms}`);
@@ -140,7 +142,8 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   const fmtMap = (m) => `${m.ms.toFixed(0)} ms start to done (${m.compute_ms.toFixed(0)} ms computing) for pf=${m.pf}`;
   console.log(`# stability map 100 × 60 in chunks of 8 ms: ${maps.map(fmtMap).join('; ')} (goal ≤ 1000 ms)`);
   console.log(`# live simulation rate ${perf.sim_rate} simulated s per wall s at speed 1×; wasm throughput ${throughput.toFixed(0)} simulated s per wall s`);
-  assert.ok(gzip < 1.5e6, `wasm gzip ${gzip} bytes exceeds the 1.5 MB goal`);
+  // A guard against growth: the module is ≈ 1.0 MB gzip (the 0.9-MB goal is not met, README).
+  assert.ok(gzip < 1.1e6, `wasm gzip ${gzip} bytes: over 1.1 MB (it was 1.0 MB)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));
