@@ -1,6 +1,7 @@
 //! The GPU side of the renderer, as thin as it can be: a device and a surface on the canvas
 //! (WebGPU when the browser offers an adapter, WebGL2 otherwise), one pipeline that draws
-//! coloured triangles in physical pixels ([`shader.wgsl`](../shader.wgsl)), and two vertex
+//! coloured triangles in physical pixels ([`shader.wgsl`](../shader.wgsl), handed to wgpu as
+//! the naga IR that build.rs writes from it), and two vertex
 //! buffers reused from frame to frame — the static layer (uploaded only when it changes) and the
 //! per-frame layer drawn over it. It knows nothing of what the triangles show.
 
@@ -11,8 +12,11 @@ use web_sys::HtmlCanvasElement;
 
 use crate::view::{Color, Vertex};
 
-/// The shader, kept in its own WGSL file.
-const SHADER: &str = include_str!("shader.wgsl");
+/// The shader: `shader.wgsl`, parsed at build time into the Rust that builds its naga IR
+/// (build.rs), so the page needs no WGSL parser.
+mod shader_ir {
+    include!(concat!(env!("OUT_DIR"), "/shader_ir.rs"));
+}
 /// Size of the uniform block: vec2 size, f32 sRGB flag, f32 dark flag.
 const UNIFORM_BYTES: u64 = 16;
 /// Smallest vertex buffer allocated, bytes.
@@ -405,7 +409,7 @@ fn create_pipeline(
 ) -> wgpu::RenderPipeline {
     let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("flexarm shader"),
-        source: wgpu::ShaderSource::Wgsl(SHADER.into()),
+        source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(shader_ir::module())),
     });
     let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: Some("flexarm"),
