@@ -36,6 +36,7 @@ pub mod model;
 pub mod plot;
 pub mod schema;
 pub mod session;
+pub mod sort;
 pub mod svg;
 pub mod view;
 

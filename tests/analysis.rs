@@ -4,7 +4,7 @@
 use flexarm::analysis::*;
 use flexarm::control::feedback::*;
 use flexarm::*;
-use nalgebra::{Complex, DMatrix};
+use nalgebra::{Complex, Matrix1, Matrix2, Vector2};
 use std::f64::consts::PI;
 
 fn open_pair(alpha: f64, q2: f64) -> LimitPair {
@@ -112,27 +112,26 @@ fn lq_design_reproduces_the_papers_gain() {
 
 #[test]
 fn riccati_solver_matches_closed_forms() {
-    // Scalar: ẋ = x + u, q = r = 1: p = 1 + √2.
-    let one = DMatrix::from_element(1, 1, 1.0);
-    let p = solve_care(&one, &one, &one, &one).unwrap();
-    assert!((p[(0, 0)] - (1.0 + 2f64.sqrt())).abs() < 1e-10);
     // Double integrator, Q = I, R = 1: P = [[√3, 1], [1, √3]].
-    let a = DMatrix::from_row_slice(2, 2, &[0.0, 1.0, 0.0, 0.0]);
-    let b = DMatrix::from_row_slice(2, 1, &[0.0, 1.0]);
-    let p = solve_care(&a, &b, &DMatrix::identity(2, 2), &one).unwrap();
+    let a = Matrix2::new(0.0, 1.0, 0.0, 0.0);
+    let b = Vector2::new(0.0, 1.0);
+    let p = solve_care(&a, &b, &Matrix2::identity(), &Matrix1::new(1.0)).unwrap();
     let s3 = 3f64.sqrt();
-    let expected = DMatrix::from_row_slice(2, 2, &[s3, 1.0, 1.0, s3]);
-    assert!((p - expected).amax() < 1e-10);
-    // An unstable 3-state system: the residual vanishes and the closed loop is stable.
-    let a = DMatrix::from_row_slice(3, 3, &[0.5, 1.0, 0.0, -2.0, 0.3, 1.0, 0.0, 0.4, -1.0]);
-    let b = DMatrix::from_row_slice(3, 2, &[1.0, 0.0, 0.0, 0.0, 0.2, 1.0]);
-    let q = DMatrix::from_diagonal(&nalgebra::DVector::from_row_slice(&[1.0, 2.0, 0.5]));
-    let r = DMatrix::from_diagonal(&nalgebra::DVector::from_row_slice(&[1.0, 3.0]));
+    assert!((p - Matrix2::new(s3, 1.0, 1.0, s3)).amax() < 1e-10, "P = {p}");
+    // Two decoupled scalar systems ẋ = x + u, q = r = 1: p = 1 + √2 on the diagonal.
+    let p = solve_care(&Matrix2::identity(), &Matrix2::identity(), &Matrix2::identity(), &Matrix2::identity()).unwrap();
+    let d = 1.0 + 2f64.sqrt();
+    assert!((p - Matrix2::new(d, 0.0, 0.0, d)).amax() < 1e-10, "P = {p}");
+    // An unstable oscillator with two inputs: the residual vanishes and the closed loop is stable.
+    let a = Matrix2::new(0.5, 30.0, -30.0, 0.5);
+    let b = Matrix2::new(1.0, 0.2, 0.3, 1.0);
+    let q = Matrix2::new(1.0, 0.0, 0.0, 2.0);
+    let r = Matrix2::new(1.0, 0.0, 0.0, 3.0);
     let p = solve_care(&a, &b, &q, &r).unwrap();
-    let rinv = r.clone().try_inverse().unwrap();
-    let residual = a.transpose() * &p + &p * &a - &p * &b * &rinv * b.transpose() * &p + &q;
+    let rinv = r.try_inverse().unwrap();
+    let residual = a.transpose() * p + p * a - p * b * rinv * b.transpose() * p + q;
     assert!(residual.amax() < 1e-9, "residual {}", residual.amax());
-    let closed = &a - &b * rinv * b.transpose() * &p;
+    let closed = a - b * rinv * b.transpose() * p;
     assert!(closed.complex_eigenvalues().iter().all(|e| e.re < 0.0));
 }
 

@@ -200,7 +200,7 @@ fn pair(c: &[Complex<f64>; 2]) -> [[f64; 2]; 2] {
 /// Eigenvalues of the one-period map, largest modulus first.
 pub fn loop_eigenvalues(m: &Mat10) -> Vec<Complex<f64>> {
     let mut ev: Vec<Complex<f64>> = m.complex_eigenvalues().iter().copied().collect();
-    ev.sort_by(|a, b| b.norm().total_cmp(&a.norm()).then(b.im.total_cmp(&a.im)));
+    crate::sort::sort_by(&mut ev, |a, b| b.norm().total_cmp(&a.norm()).then(b.im.total_cmp(&a.im)));
     ev
 }
 

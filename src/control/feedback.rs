@@ -15,7 +15,7 @@
 //! T2 about 6.7 times more than T1 (ERRATA.md says "about 6"; 6.7 reproduces both printed rows of
 //! K_pr at q2 = 0, α = 2 to within 2.5 %, while 6 leaves the T2 row 11 % high).
 
-use nalgebra::{Complex, DMatrix, Matrix2};
+use nalgebra::{Complex, Matrix2, Matrix4, SMatrix};
 use serde::{Deserialize, Serialize};
 
 use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
@@ -71,16 +71,13 @@ pub fn design_lq(
 ) -> Result<LqDesign, Error> {
     let model = linearize_at_rest(plant, alpha, q_rest);
     let open = limit_pair(&model, &FeedbackGain::zeros())?;
-    let a = DMatrix::from_iterator(2, 2, open.a4.iter().copied());
-    let b = DMatrix::from_iterator(2, 2, open.b2.iter().copied());
-    let q = DMatrix::identity(2, 2) * weights.state_weight;
-    let r = DMatrix::from_diagonal(&nalgebra::DVector::from_row_slice(&weights.input_weights));
-    let p = solve_care(&a, &b, &q, &r)?;
+    let q = Matrix2::identity() * weights.state_weight;
+    let [r1, r2] = weights.input_weights;
+    let r = Matrix2::new(r1, 0.0, 0.0, r2);
+    let p = solve_care(&open.a4, &open.b2, &q, &r)?;
     // u = K2 x2 with K2 = −R⁻¹ B2ᵀ P.
-    let r_inv =
-        DMatrix::from_diagonal(&nalgebra::DVector::from_iterator(2, weights.input_weights.iter().map(|w| 1.0 / w)));
-    let k2d = -(r_inv * b.transpose() * &p);
-    let k2 = Matrix2::from_iterator(k2d.iter().copied());
+    let r_inv = Matrix2::new(1.0 / r1, 0.0, 0.0, 1.0 / r2);
+    let k2 = -(r_inv * open.b2.transpose() * p);
     let gain = k2 * open.coordinates;
     let closed = (open.a4 + open.b2 * k2).complex_eigenvalues();
     Ok(LqDesign { gain, k2, open_pair: open.eigenvalues, closed_pair: [closed[0], closed[1]] })
@@ -99,35 +96,35 @@ pub fn resolve_gain(config: &SimulationConfig) -> Result<FeedbackGain, Error> {
 }
 
 /// Solves the continuous algebraic Riccati equation AᵀP + PA − PBR⁻¹BᵀP + Q = 0 for the
-/// stabilizing P, by the matrix sign function of the Hamiltonian
-/// H = [[A, −BR⁻¹Bᵀ], [−Q, −Aᵀ]]: the stable invariant subspace is ker(sign H + I).
-pub fn solve_care(
-    a: &DMatrix<f64>,
-    b: &DMatrix<f64>,
-    q: &DMatrix<f64>,
-    r: &DMatrix<f64>,
-) -> Result<DMatrix<f64>, Error> {
-    let n = a.nrows();
-    let r_inv = r.clone().try_inverse().ok_or(Error::Analysis("Riccati: R is singular"))?;
+/// stabilizing P of a system with two states and `M` inputs (the preliminary feedback's design
+/// on A4), by the matrix sign function of the Hamiltonian H = [[A, −BR⁻¹Bᵀ], [−Q, −Aᵀ]]: the
+/// stable invariant subspace is ker(sign H + I). Fixed sizes throughout: no allocation, and a
+/// fraction of the generic solver's code in the page.
+pub fn solve_care<const M: usize>(
+    a: &Matrix2<f64>,
+    b: &SMatrix<f64, 2, M>,
+    q: &Matrix2<f64>,
+    r: &SMatrix<f64, M, M>,
+) -> Result<Matrix2<f64>, Error> {
+    let r_inv = r.try_inverse().ok_or(Error::Analysis("Riccati: R is singular"))?;
     let g = b * r_inv * b.transpose();
-    let mut h = DMatrix::zeros(2 * n, 2 * n);
-    h.view_mut((0, 0), (n, n)).copy_from(a);
-    h.view_mut((0, n), (n, n)).copy_from(&(-&g));
-    h.view_mut((n, 0), (n, n)).copy_from(&(-q));
-    h.view_mut((n, n), (n, n)).copy_from(&(-a.transpose()));
+    let mut h = Matrix4::zeros();
+    h.fixed_view_mut::<2, 2>(0, 0).copy_from(a);
+    h.fixed_view_mut::<2, 2>(0, 2).copy_from(&(-g));
+    h.fixed_view_mut::<2, 2>(2, 0).copy_from(&(-q));
+    h.fixed_view_mut::<2, 2>(2, 2).copy_from(&(-a.transpose()));
 
-    // Newton iteration for the sign function with determinant scaling.
+    // Newton iteration for the sign function with determinant scaling (|det|^(1/4) for 4×4).
     let mut z = h;
     let mut converged = false;
     for _ in 0..100 {
         let inv = z
-            .clone()
             .try_inverse()
             .ok_or(Error::Analysis("Riccati: Hamiltonian has eigenvalues on the imaginary axis"))?;
         let det = z.determinant().abs();
-        let c = if det.is_finite() && det > 0.0 { det.powf(1.0 / (2.0 * n as f64)) } else { 1.0 };
-        let next = (&z / c + inv * c) * 0.5;
-        let change = (&next - &z).norm() / next.norm().max(1.0);
+        let c = if det.is_finite() && det > 0.0 { det.powf(0.25) } else { 1.0 };
+        let next = (z / c + inv * c) * 0.5;
+        let change = (next - z).norm() / next.norm().max(1.0);
         z = next;
         if change < 1e-13 {
             converged = true;
@@ -137,17 +134,20 @@ pub fn solve_care(
     if !converged {
         return Err(Error::Analysis("Riccati: sign iteration did not converge"));
     }
-    // [W12; W22 + I] P = −[W11 + I; W21]
-    let id = DMatrix::<f64>::identity(n, n);
-    let mut lhs = DMatrix::zeros(2 * n, n);
-    lhs.view_mut((0, 0), (n, n)).copy_from(&z.view((0, n), (n, n)));
-    lhs.view_mut((n, 0), (n, n)).copy_from(&(z.view((n, n), (n, n)) + &id));
-    let mut rhs = DMatrix::zeros(2 * n, n);
-    rhs.view_mut((0, 0), (n, n)).copy_from(&(-(z.view((0, 0), (n, n)) + &id)));
-    rhs.view_mut((n, 0), (n, n)).copy_from(&(-z.view((n, 0), (n, n))));
-    let p =
-        lhs.svd(true, true).solve(&rhs, 1e-14).map_err(|_| Error::Analysis("Riccati: least-squares solve failed"))?;
-    let p = (&p + p.transpose()) * 0.5;
+    // [W12; W22 + I] P = −[W11 + I; W21], in the least-squares sense (QR).
+    let id = Matrix2::<f64>::identity();
+    let mut lhs = SMatrix::<f64, 4, 2>::zeros();
+    lhs.fixed_view_mut::<2, 2>(0, 0).copy_from(&z.fixed_view::<2, 2>(0, 2));
+    lhs.fixed_view_mut::<2, 2>(2, 0).copy_from(&(z.fixed_view::<2, 2>(2, 2) + id));
+    let mut rhs = SMatrix::<f64, 4, 2>::zeros();
+    rhs.fixed_view_mut::<2, 2>(0, 0).copy_from(&(-(z.fixed_view::<2, 2>(0, 0) + id)));
+    rhs.fixed_view_mut::<2, 2>(2, 0).copy_from(&(-z.fixed_view::<2, 2>(2, 0)));
+    let qr = lhs.qr();
+    let p = qr
+        .r()
+        .solve_upper_triangular(&(qr.q().transpose() * rhs))
+        .ok_or(Error::Analysis("Riccati: least-squares solve failed"))?;
+    let p = (p + p.transpose()) * 0.5;
     if !p.iter().all(|v| v.is_finite()) {
         return Err(Error::Analysis("Riccati: no finite solution"));
     }

@@ -265,7 +265,7 @@ impl TraceEnvelope {
     /// Moves the open bucket's distinct candidates, in time order, to the kept rows.
     fn push_open(open: &[Option<(u64, Row)>; 4], kept: &mut Traces, index: &mut Vec<u64>) {
         let mut rows: [Option<&(u64, Row)>; 4] = std::array::from_fn(|k| open[k].as_ref());
-        rows.sort_by_key(|r| r.map(|(j, _)| *j));
+        crate::sort::sort_by_key(&mut rows, |r| r.map(|(j, _)| *j));
         let mut last = None;
         for (j, row) in rows.into_iter().flatten() {
             if last != Some(*j) {

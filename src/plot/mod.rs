@@ -2,7 +2,7 @@
 //! over it and the SVG figures: ticks (linear and logarithmic), number formatting, colours (the
 //! palette and the ρ ramp) and contour tracing. Each is implemented once, here.
 //!
-//! Architecture invariant: `plot` depends on nothing else in the crate.
+//! Architecture invariant: `plot` depends on nothing else in the crate but `sort`.
 
 pub mod color;
 pub mod contour;

@@ -29,7 +29,7 @@ struct MapPanel<'a> {
 /// Indices of the positive finite values, sorted by value (the grid may come in any order).
 fn sorted_positive(values: &[f64]) -> Vec<usize> {
     let mut idx: Vec<usize> = (0..values.len()).filter(|&i| values[i].is_finite() && values[i] > 0.0).collect();
-    idx.sort_by(|&a, &b| values[a].total_cmp(&values[b]));
+    crate::sort::sort_by(&mut idx, |&a, &b| values[a].total_cmp(&values[b]));
     idx
 }
 

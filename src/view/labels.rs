@@ -222,7 +222,7 @@ fn drop_collisions(labels: Vec<Label>) -> Vec<Label> {
         LabelClass::Mark => 3,
     };
     let mut order: Vec<usize> = (0..labels.len()).collect();
-    order.sort_by_key(|&i| rank(&labels[i]));
+    crate::sort::sort_by_key(&mut order, |&i| rank(&labels[i]));
     let mut kept: Vec<(usize, Rect)> = Vec::with_capacity(labels.len());
     for i in order {
         let b = labels[i].bounds();

@@ -334,7 +334,7 @@ impl Layout {
             // Everything at once only where everything stays readable; else one tab at a time.
             let all = Layout::compute_all(inner, &lists, portrait, &mut panels);
             if smallest_side(&panels) >= MIN_READABLE_SIDE {
-                panels.sort_by_key(|p| panel_order(p.kind));
+                crate::sort::sort_by_key(&mut panels, |p| panel_order(p.kind));
                 return Layout {
                     css_width: w,
                     css_height: h,
@@ -368,7 +368,7 @@ impl Layout {
             unreachable!("analysis panels are laid out by compute_all or tabbed")
         };
         // Panels in reading order: the stage first, then the plots, then the analysis panels.
-        panels.sort_by_key(|p| panel_order(p.kind));
+        crate::sort::sort_by_key(&mut panels, |p| panel_order(p.kind));
         Layout { css_width: w, css_height: h, device_pixel_ratio: dpr, arrangement, panels, tabs, tab }
     }
 
