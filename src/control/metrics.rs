@@ -17,14 +17,18 @@ pub const ERROR_NOISE_FLOOR: f64 = 1e-10;
 /// errors settle near 1e-12 rad, set by rounding and the friction observer): the growth rate is
 /// not fitted on them, where it would only measure noise.
 pub const FLOOR_FRACTION: f64 = 1e-6;
-/// A steady oscillation is recognised on this many consecutive whole cycles between slews…
+/// An oscillation is recognised on at least this many regular whole cycles between slews (one
+/// ends at every zero crossing, up to up and down to down, so the second ends half a period after
+/// the first), those that ended in the last [`GROWTH_FIT_SPAN`] seconds or two periods, whichever
+/// is longer…
 pub const CYCLES_TO_RECOGNISE: usize = 2;
-/// …whose amplitude changes by less than this rate (1/s) from cycle to cycle: a limit cycle, e.g.
-/// the stick-slip hunting of friction compensation held over δ. A linear mode whose envelope
-/// changes this slowly would need |ln ρ|/δ < 0.01 1/s.
+/// …and it is a bounded oscillation (a limit cycle, e.g. the stick-slip hunting of friction
+/// compensation held over δ) when its amplitude neither decays faster than this rate (1/s) nor
+/// grows faster than [`UNSTABLE_GROWTH_RATE`] from cycle to cycle. A linear mode whose envelope
+/// changes this slowly would need −0.01 < ln ρ/δ < 0.05 1/s.
 pub const BOUNDED_ENVELOPE_RATE: f64 = 0.01;
-/// Whole cycles kept (bounded memory).
-const CYCLES_KEPT: usize = CYCLES_TO_RECOGNISE;
+/// Whole cycles kept (bounded memory): 3 s of a 30-rad/s oscillation, two crossings a period.
+const CYCLES_KEPT: usize = 64;
 
 /// Why a run ended early.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -138,7 +142,7 @@ struct Window {
     rest_phase: u64,
 }
 
-/// One whole cycle of a link's error between two upward zero crossings.
+/// One whole cycle of a link's error: between two upward zero crossings, or two downward ones.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Cycle {
     end: f64,
@@ -147,56 +151,73 @@ struct Cycle {
     amplitude: [f64; 2],
 }
 
-/// The cycles of one link's error between slews (a slew starts them afresh).
+/// The cycles of one link's error between slews (a slew starts them afresh). Cycles are taken
+/// from every zero crossing, up to up and down to down: they overlap by half a period, so an
+/// oscillation is recognised half a period sooner, and each spans both of its halves whatever
+/// its offset.
 #[derive(Clone, Debug, Default)]
 struct Cycles {
-    /// The error has been below −floor since the last upward crossing.
-    armed: bool,
-    last_up: Option<f64>,
-    max: [f64; 2],
+    /// The side of zero (beyond ±floor) the error was last on: +1, −1, or 0 before either.
+    side: i8,
+    /// The last upward and downward crossings, with max |e1|, |e2| since each.
+    last: [Option<(f64, [f64; 2])>; 2],
     done: std::collections::VecDeque<Cycle>,
 }
 
 impl Cycles {
     fn record(&mut self, t: f64, e: f64, abs: [f64; 2], floor: f64) {
-        self.max = [self.max[0].max(abs[0]), self.max[1].max(abs[1])];
-        if e < -floor {
-            self.armed = true;
-        } else if self.armed && e > floor {
-            if let Some(t0) = self.last_up {
-                if self.done.len() == CYCLES_KEPT {
-                    self.done.pop_front();
+        for (_, max) in self.last.iter_mut().flatten() {
+            *max = [max[0].max(abs[0]), max[1].max(abs[1])];
+        }
+        let side = if e > floor {
+            1
+        } else if e < -floor {
+            -1
+        } else {
+            return;
+        };
+        if side != self.side {
+            // A crossing (0 up, 1 down) closes the cycle that began at the previous one like it.
+            if self.side != 0 {
+                let k = usize::from(side < 0);
+                if let Some((t0, amplitude)) = self.last[k] {
+                    if self.done.len() == CYCLES_KEPT {
+                        self.done.pop_front();
+                    }
+                    self.done.push_back(Cycle { end: t, period: t - t0, amplitude });
                 }
-                self.done.push_back(Cycle { end: t, period: t - t0, amplitude: self.max });
+                self.last[k] = Some((t, abs));
             }
-            self.last_up = Some(t);
-            self.max = [0.0; 2];
-            self.armed = false;
+            self.side = side;
         }
     }
 
-    /// A steady oscillation of link `i`: its last [`CYCLES_TO_RECOGNISE`] cycles regular (periods
-    /// within 1.5×), still going at `now`, and the amplitude changing from one to the next at
-    /// less than [`BOUNDED_ENVELOPE_RATE`]. Returns the amplitude of the last cycle, the mean
-    /// period and the envelope rate.
-    fn steady(&self, i: usize, now: f64, floor: f64) -> Option<([f64; 2], f64, f64)> {
-        let n = self.done.len();
-        if n < CYCLES_TO_RECOGNISE {
+    /// A regular oscillation of link `i`: the cycles that ended in the last [`GROWTH_FIT_SPAN`]
+    /// seconds or two periods, at least [`CYCLES_TO_RECOGNISE`] of them, regular (periods within
+    /// 1.5×) and above the floor, the oscillation still going at `now`. Returns the amplitude of
+    /// the last cycle, the mean period and the rate at which the amplitude changes, 1/s (the
+    /// least-squares slope of its logarithm: over many cycles of a fast oscillation, not the
+    /// ratio of two).
+    fn oscillation(&self, i: usize, now: f64, floor: f64) -> Option<([f64; 2], f64, f64)> {
+        let last = *self.done.back()?;
+        let span = GROWTH_FIT_SPAN.max(2.0 * last.period);
+        let recent: Vec<&Cycle> = self.done.iter().filter(|c| c.end >= last.end - span - 1e-9).collect();
+        let n = recent.len();
+        if n < CYCLES_TO_RECOGNISE || recent.iter().any(|c| c.amplitude[i] <= floor) {
             return None;
         }
-        let recent = self.done.range(n - CYCLES_TO_RECOGNISE..);
-        let (first, last) = (self.done[n - CYCLES_TO_RECOGNISE], self.done[n - 1]);
-        if last.amplitude[i] <= floor || first.amplitude[i] <= floor {
-            return None;
-        }
-        let (lo, hi) = recent.clone().fold((f64::INFINITY, 0.0f64), |(a, b), c| (a.min(c.period), b.max(c.period)));
-        let period = recent.map(|c| c.period).sum::<f64>() / CYCLES_TO_RECOGNISE as f64;
+        let (lo, hi) = recent.iter().fold((f64::INFINITY, 0.0f64), |(a, b), c| (a.min(c.period), b.max(c.period)));
+        let period = recent.iter().map(|c| c.period).sum::<f64>() / n as f64;
         // Regular cycles, and the oscillation has not stopped since the last one.
-        if hi > 1.5 * lo || now - last.end > 2.0 * period + GROWTH_WINDOW {
+        if hi > 1.5 * lo || now - last.end > period + GROWTH_WINDOW {
             return None;
         }
-        let rate = (last.amplitude[i] / first.amplitude[i]).ln() / (last.end - first.end);
-        (rate.abs() < BOUNDED_ENVELOPE_RATE).then_some((last.amplitude, period, rate))
+        let mt = recent.iter().map(|c| c.end).sum::<f64>() / n as f64;
+        let my = recent.iter().map(|c| c.amplitude[i].ln()).sum::<f64>() / n as f64;
+        let (num, den) = recent.iter().fold((0.0, 0.0), |(num, den), c| {
+            (num + (c.end - mt) * (c.amplitude[i].ln() - my), den + (c.end - mt) * (c.end - mt))
+        });
+        (den > 0.0).then(|| (last.amplitude, period, num / den))
     }
 }
 
@@ -219,8 +240,9 @@ pub(crate) struct ErrorStats {
     was_moving: bool,
     /// The largest error since `since`: the floor is a fraction of it.
     peak: f64,
-    /// The cycles of e1 and e2 in the current rest phase.
+    /// The cycles of e1 and e2 in the current rest phase, and max |e1|, |e2| in it.
     cycles: [Cycles; 2],
+    max_since_slew: [f64; 2],
     /// The statistics describe the run since this time (the last change of configuration), so a
     /// live change shows its own numbers, not a mix with the previous setting.
     pub(crate) since: f64,
@@ -243,7 +265,9 @@ impl ErrorStats {
         self.peak = self.peak.max(abs[0]).max(abs[1]);
         if moving {
             self.cycles = Default::default();
+            self.max_since_slew = [0.0; 2];
         } else {
+            self.max_since_slew = [self.max_since_slew[0].max(abs[0]), self.max_since_slew[1].max(abs[1])];
             let floor = self.floor();
             for (i, c) in self.cycles.iter_mut().enumerate() {
                 c.record(t, e[i], abs, floor);
@@ -320,9 +344,12 @@ impl ErrorStats {
     pub(crate) fn metrics(&self, time: f64, divergence: Option<(f64, DivergenceReason)>) -> Metrics {
         let n = self.samples.max(1) as f64;
         let floor = self.floor();
-        // The link with the larger swing decides whether the errors oscillate steadily.
-        let dominant = usize::from(self.cycles[1].max[1] > self.cycles[0].max[0]);
-        let steady = self.cycles[dominant].steady(dominant, time, floor);
+        // The link with the larger swing decides whether the errors oscillate steadily: neither
+        // decaying nor growing fast enough to be called unstable.
+        let dominant = usize::from(self.max_since_slew[1] > self.max_since_slew[0]);
+        let steady = self.cycles[dominant]
+            .oscillation(dominant, time, floor)
+            .filter(|&(_, _, rate)| rate > -BOUNDED_ENVELOPE_RATE && rate <= UNSTABLE_GROWTH_RATE);
         let at_floor = steady.is_none()
             && self.windows.back().is_some_and(|w| w.max <= floor && w.end >= time - 2.0 * GROWTH_WINDOW)
             && self.window_max <= floor;
