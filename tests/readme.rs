@@ -118,6 +118,6 @@ fn held_friction_hunts_as_printed() {
     assert_says(row, &format!("ρ = {rho:.4} < 1"));
     c.friction_compensation = FrictionCompensation::Held;
     let m = simulate(&c, 60.0).unwrap().metrics;
-    let Verdict::BoundedOscillation { amplitude, period } = m.verdict else { panic!("{:?}", m.verdict) };
+    let Verdict::BoundedOscillation { amplitude, period, .. } = m.verdict else { panic!("{:?}", m.verdict) };
     assert_says(row, &format!("amplitude {:.2e}, {:.2e} rad, period {period:.2} s", amplitude[0], amplitude[1]));
 }

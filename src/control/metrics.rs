@@ -29,6 +29,10 @@ pub const CYCLES_TO_RECOGNISE: usize = 2;
 pub const BOUNDED_ENVELOPE_RATE: f64 = 0.01;
 /// Whole cycles kept (bounded memory): 3 s of a 30-rad/s oscillation, two crossings a period.
 const CYCLES_KEPT: usize = 64;
+/// With a repeating slew, the errors are judged from one there-and-back to the next once this
+/// many whole rest phases are in (the last, and the one after the same slew before it): they are
+/// unstable if their peaks grow, bounded if they rise between slews but not from one to the next.
+pub const PHASES_TO_COMPARE: usize = 3;
 
 /// Why a run ended early.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -50,9 +54,12 @@ pub enum Verdict {
     Stable,
     /// Errors growing at the given rate (1/s) but still within the bound.
     Unstable { growth_rate: f64 },
-    /// A limit cycle: between slews the errors oscillate with a steady amplitude (max |e1|, |e2|
-    /// over the last whole cycle, rad) and period (s) — bounded, neither growing nor decaying.
-    BoundedOscillation { amplitude: [f64; 2], period: f64 },
+    /// The error envelope has stopped growing: bounded, neither growing nor decaying. Either a
+    /// limit cycle between slews (`limit_cycle`: amplitude = max |e1|, |e2| over the last whole
+    /// cycle, rad; its period, s), or, with a repeating slew, errors that rise between slews
+    /// but rise no higher from one slew to the next (amplitude = max |e1|, |e2| between the last
+    /// two slews; period = the time from one rest phase to the next, s).
+    BoundedOscillation { amplitude: [f64; 2], period: f64, limit_cycle: bool },
     /// The run ended at `at` (s).
     Diverged { at: f64, reason: DivergenceReason },
 }
@@ -75,9 +82,12 @@ impl Verdict {
         match *self {
             Verdict::Stable => "stable".into(),
             Verdict::Unstable { growth_rate } => format!("unstable (errors grow at {growth_rate:.3} 1/s)"),
-            Verdict::BoundedOscillation { amplitude, period } => format!(
-                "bounded oscillation (a limit cycle: amplitude {:.2e}, {:.2e} rad, period {period:.2} s)",
-                amplitude[0], amplitude[1]
+            Verdict::BoundedOscillation { amplitude, period, limit_cycle } => format!(
+                "bounded oscillation ({}: amplitude {:.2e}, {:.2e} rad, {} {period:.2} s)",
+                if limit_cycle { "a limit cycle" } else { "the same rise after every slew" },
+                amplitude[0],
+                amplitude[1],
+                if limit_cycle { "period" } else { "every" }
             ),
             Verdict::Diverged { at, reason } => format!(
                 "diverged at t = {at:.3} s ({})",
@@ -243,9 +253,13 @@ pub(crate) struct ErrorStats {
     /// The cycles of e1 and e2 in the current rest phase, and max |e1|, |e2| in it.
     cycles: [Cycles; 2],
     max_since_slew: [f64; 2],
+    /// The last whole rest phases (between two slews): when each ended and max |e1|, |e2| in it.
+    phases: std::collections::VecDeque<(f64, [f64; 2])>,
     /// The statistics describe the run since this time (the last change of configuration), so a
-    /// live change shows its own numbers, not a mix with the previous setting.
+    /// live change shows its own numbers, not a mix with the previous setting; the rest phase
+    /// it fell in (that phase is not whole).
     pub(crate) since: f64,
+    since_phase: u64,
 }
 
 impl ErrorStats {
@@ -264,6 +278,13 @@ impl ErrorStats {
         let abs = [e[0].abs(), e[1].abs()];
         self.peak = self.peak.max(abs[0]).max(abs[1]);
         if moving {
+            // A rest phase that began after `since` has ended: keep its peaks.
+            if !self.was_moving && self.rest_phase > self.since_phase && self.samples > 1 {
+                if self.phases.len() == PHASES_TO_COMPARE {
+                    self.phases.pop_front();
+                }
+                self.phases.push_back((t, self.max_since_slew));
+            }
             self.cycles = Default::default();
             self.max_since_slew = [0.0; 2];
         } else {
@@ -298,6 +319,7 @@ impl ErrorStats {
     pub(crate) fn restart(&mut self, t: f64) {
         *self = ErrorStats {
             since: t,
+            since_phase: self.rest_phase,
             window_start: t,
             rest_phase: self.rest_phase,
             was_moving: self.was_moving,
@@ -340,6 +362,27 @@ impl ErrorStats {
         (den > 0.0).then(|| num / den)
     }
 
+    /// With a repeating slew: how the errors' peaks between slews change from one there-and-back
+    /// to the next — the last whole rest phase against the one two before it, after the same
+    /// slew (the two directions excite the arm differently). Returns the last phase's peaks, the
+    /// time from one rest phase to the next and the peaks' rate, 1/s. Each slew excites the
+    /// loop anew, and a rest phase of 1.5 s is too short for a slow growth to show through the
+    /// decay of the slew's transient: from phase to phase it does.
+    fn across_slews(&self) -> Option<([f64; 2], f64, f64)> {
+        let n = self.phases.len();
+        if n < PHASES_TO_COMPARE {
+            return None;
+        }
+        let (before, last) = (self.phases[n - PHASES_TO_COMPARE], self.phases[n - 1]);
+        let peak = |p: [f64; 2]| p[0].max(p[1]);
+        let span = last.0 - before.0;
+        if span <= 0.0 || peak(before.1) <= 0.0 || peak(last.1) <= 0.0 {
+            return None;
+        }
+        let rate = (peak(last.1) / peak(before.1)).ln() / span;
+        Some((last.1, span / (PHASES_TO_COMPARE - 1) as f64, rate))
+    }
+
     /// The metrics and verdict at time `time`.
     pub(crate) fn metrics(&self, time: f64, divergence: Option<(f64, DivergenceReason)>) -> Metrics {
         let n = self.samples.max(1) as f64;
@@ -353,16 +396,26 @@ impl ErrorStats {
         let at_floor = steady.is_none()
             && self.windows.back().is_some_and(|w| w.max <= floor && w.end >= time - 2.0 * GROWTH_WINDOW)
             && self.window_max <= floor;
-        let growth_rate = match steady {
+        let mut growth_rate = match steady {
             Some((_, _, rate)) => Some(rate),
             None if at_floor => None,
             None => self.growth_rate(),
         };
         let verdict = match (divergence, steady) {
             (Some((at, reason)), _) => Verdict::Diverged { at, reason },
-            (None, Some((amplitude, period, _))) => Verdict::BoundedOscillation { amplitude, period },
-            (None, None) => match growth_rate {
-                Some(g) if g > UNSTABLE_GROWTH_RATE => Verdict::Unstable { growth_rate: g },
+            (None, Some((amplitude, period, _))) => Verdict::BoundedOscillation { amplitude, period, limit_cycle: true },
+            (None, None) => match (growth_rate, self.across_slews()) {
+                // With a repeating slew, growth from one there-and-back to the next decides.
+                (_, Some((_, _, rate))) if rate > UNSTABLE_GROWTH_RATE => {
+                    growth_rate = Some(rate);
+                    Verdict::Unstable { growth_rate: rate }
+                }
+                // Growth between slews that every slew resets: bounded, at the envelope's rate.
+                (Some(g), Some((amplitude, period, rate))) if g > UNSTABLE_GROWTH_RATE => {
+                    growth_rate = Some(rate);
+                    Verdict::BoundedOscillation { amplitude, period, limit_cycle: false }
+                }
+                (Some(g), None) if g > UNSTABLE_GROWTH_RATE => Verdict::Unstable { growth_rate: g },
                 _ => Verdict::Stable,
             },
         };

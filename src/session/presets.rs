@@ -13,32 +13,34 @@ pub struct Preset {
     pub state: &'static str,
 }
 
-/// All presets, in the order a student meets them.
+/// All presets, in the order a student meets them. Each names every setting the paper's model
+/// fixes (friction compensated continuously, the inner loop continuous, k = 12, ε = δ/8), so a
+/// preset restores them and the page names a figure only when they hold.
 pub const PRESETS: [Preset; 5] = [
     Preset {
         id: "fig5.1",
         title: "Fig. 5.1: δ = 0.04 s with preliminary feedback (satisfactory errors)",
-        state: "delta=0.04&alpha=2&pf=paper",
+        state: "delta=0.04&alpha=2&pf=paper&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "fig5.2",
         title: "Fig. 5.2: δ = 0.01 s with preliminary feedback (smaller errors)",
-        state: "delta=0.01&alpha=2&pf=paper",
+        state: "delta=0.01&alpha=2&pf=paper&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "fig5.3",
         title: "Fig. 5.3: δ = 0.01 s without preliminary feedback (unstable)",
-        state: "delta=0.01&alpha=2&pf=off",
+        state: "delta=0.01&alpha=2&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "large-delta",
         title: "Large δ works without preliminary feedback (δ = 0.06 s)",
-        state: "delta=0.06&alpha=2&pf=off",
+        state: "delta=0.06&alpha=2&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "small-alpha",
         title: "Smaller α slows the growth (α = 0.5, no preliminary feedback)",
-        state: "delta=0.01&alpha=0.5&pf=off",
+        state: "delta=0.01&alpha=0.5&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
 ];
 

@@ -98,6 +98,17 @@ fn prediction_text(rho: f64, rate: f64) -> (Prediction, String) {
     (p, text)
 }
 
+/// The prediction's sentence under a headline the simulation has overridden (a limit cycle, or
+/// a divergence ρ did not predict): said as what the linear analysis predicts, so that the line
+/// under "Bounded oscillation" does not read as a second verdict.
+fn predicted_text(rho: f64, rate: f64) -> String {
+    match Prediction::of_rate(rate) {
+        Prediction::Unstable => format!("the linear analysis predicts growth {} (ρ = {rho:.4} > 1)", e_folding(rate)),
+        Prediction::Stable => format!("the linear analysis predicts decay {} (ρ = {rho:.4} < 1)", e_folding(rate)),
+        Prediction::Borderline => format!("the linear analysis predicts errors about flat (ρ = {rho:.5} ≈ 1)"),
+    }
+}
+
 /// Why the simulation may not follow the linear analysis.
 fn caveat(run: &Run) -> &'static str {
     match run.settings().friction {
@@ -123,13 +134,16 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         };
         return (format!("observed: diverged at t = {at:.2} s ({why}) — {agrees}"), true);
     }
-    if let Verdict::BoundedOscillation { amplitude, period } = m.verdict {
-        let what = format!(
-            "observed: a bounded oscillation (limit cycle) — amplitude {}, {} rad, period {} s",
-            sci(amplitude[0], 2),
-            sci(amplitude[1], 2),
-            sig_trim(period, 3)
-        );
+    if let Verdict::BoundedOscillation { amplitude, period, limit_cycle } = m.verdict {
+        let amplitude = format!("amplitude {}, {} rad", sci(amplitude[0], 2), sci(amplitude[1], 2));
+        let what = if limit_cycle {
+            format!("observed: a bounded oscillation (limit cycle) — {amplitude}, period {} s", sig_trim(period, 3))
+        } else {
+            format!(
+                "observed: a bounded oscillation — the errors rise between slews, but no higher after one slew than after the last ({amplitude}, every {} s)",
+                sig_trim(period, 3)
+            )
+        };
         let why = match prediction {
             Some((Prediction::Unstable, _)) => "ρ > 1 predicts growth, and the nonlinearity bounds it".to_string(),
             _ => format!("a nonlinear effect ρ cannot show: {}", caveat(run)),
@@ -200,6 +214,16 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         (_, Some(Prediction::Borderline)) => ("borderline", "Borderline"),
         // Without an analysis only the simulation can say.
         (v, None) => (v.label(), if v.label() == "unstable" { "Unstable" } else { "Observing" }),
+    };
+    // Under a headline the simulation decided against ρ, ρ's sentence is the prediction.
+    let overridden = match m.verdict {
+        Verdict::BoundedOscillation { .. } => true,
+        Verdict::Diverged { .. } => !matches!(prediction, Some((Prediction::Unstable, _))),
+        _ => false,
+    };
+    let detail = match predicted {
+        Some((rho, rate)) if overridden => predicted_text(rho, rate),
+        _ => detail,
     };
     let rho_line = match report {
         None => "linear analysis: ρ = —".into(),

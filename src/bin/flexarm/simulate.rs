@@ -112,7 +112,7 @@ pub fn simulation_json(
         _ => (None, None),
     };
     let (amplitude, period) = match m.verdict {
-        Verdict::BoundedOscillation { amplitude, period } => (Some(amplitude), Some(period)),
+        Verdict::BoundedOscillation { amplitude, period, .. } => (Some(amplitude), Some(period)),
         _ => (None, None),
     };
     json!({
