@@ -211,24 +211,31 @@ impl Cycles {
     fn oscillation(&self, i: usize, now: f64, floor: f64) -> Option<([f64; 2], f64, f64)> {
         let last = *self.done.back()?;
         let span = GROWTH_FIT_SPAN.max(2.0 * last.period);
-        let recent: Vec<&Cycle> = self.done.iter().filter(|c| c.end >= last.end - span - 1e-9).collect();
-        let n = recent.len();
-        if n < CYCLES_TO_RECOGNISE || recent.iter().any(|c| c.amplitude[i] <= floor) {
+        // The cycles end in time order: the recent ones are the deque's tail (no allocation).
+        let first = self.done.iter().position(|c| c.end >= last.end - span - 1e-9).unwrap_or(0);
+        let recent = || self.done.range(first..);
+        let n = self.done.len() - first;
+        if n < CYCLES_TO_RECOGNISE || recent().any(|c| c.amplitude[i] <= floor) {
             return None;
         }
-        let (lo, hi) = recent.iter().fold((f64::INFINITY, 0.0f64), |(a, b), c| (a.min(c.period), b.max(c.period)));
-        let period = recent.iter().map(|c| c.period).sum::<f64>() / n as f64;
+        let (lo, hi) = recent().fold((f64::INFINITY, 0.0f64), |(a, b), c| (a.min(c.period), b.max(c.period)));
+        let period = recent().map(|c| c.period).sum::<f64>() / n as f64;
         // Regular cycles, and the oscillation has not stopped since the last one.
         if hi > 1.5 * lo || now - last.end > period + GROWTH_WINDOW {
             return None;
         }
-        let mt = recent.iter().map(|c| c.end).sum::<f64>() / n as f64;
-        let my = recent.iter().map(|c| c.amplitude[i].ln()).sum::<f64>() / n as f64;
-        let (num, den) = recent.iter().fold((0.0, 0.0), |(num, den), c| {
-            (num + (c.end - mt) * (c.amplitude[i].ln() - my), den + (c.end - mt) * (c.end - mt))
-        });
+        let (num, den) = centred_sums(recent().map(|c| (c.end, c.amplitude[i].ln())));
         (den > 0.0).then(|| (last.amplitude, period, num / den))
     }
+}
+
+/// Σ(x − x̄)(y − ȳ) and Σ(x − x̄)² over `points`: the numerator and denominator of their
+/// least-squares slope.
+fn centred_sums(points: impl Iterator<Item = (f64, f64)> + Clone) -> (f64, f64) {
+    let n = points.clone().count() as f64;
+    let mx = points.clone().map(|p| p.0).sum::<f64>() / n;
+    let my = points.clone().map(|p| p.1).sum::<f64>() / n;
+    points.fold((0.0, 0.0), |(num, den), (x, y)| (num + (x - mx) * (y - my), den + (x - mx) * (x - mx)))
 }
 
 /// Running statistics of the errors: maxima, RMS, torque, and the envelope windows of the last
@@ -279,7 +286,7 @@ impl ErrorStats {
         self.peak = self.peak.max(abs[0]).max(abs[1]);
         if moving {
             // A rest phase that began after `since` has ended: keep its peaks.
-            if !self.was_moving && self.rest_phase > self.since_phase && self.samples > 1 {
+            if !self.was_moving && self.rest_phase > self.since_phase {
                 if self.phases.len() == PHASES_TO_COMPARE {
                     self.phases.pop_front();
                 }
@@ -349,15 +356,11 @@ impl ErrorStats {
         let mut i = 0;
         while i < pts.len() {
             let phase = pts[i].rest_phase;
-            let group: Vec<&&Window> = pts[i..].iter().take_while(|w| w.rest_phase == phase).collect();
-            i += group.len();
-            let n = group.len() as f64;
-            let mt = group.iter().map(|w| w.end).sum::<f64>() / n;
-            let my = group.iter().map(|w| w.max.ln()).sum::<f64>() / n;
-            for w in group {
-                num += (w.end - mt) * (w.max.ln() - my);
-                den += (w.end - mt) * (w.end - mt);
-            }
+            let group = pts[i..].iter().take_while(|w| w.rest_phase == phase);
+            i += group.clone().count();
+            let (n, d) = centred_sums(group.map(|w| (w.end, w.max.ln())));
+            num += n;
+            den += d;
         }
         (den > 0.0).then(|| num / den)
     }
