@@ -402,8 +402,10 @@ fn the_page_names_a_limit_cycle_and_a_settled_run_as_the_cli_does() {
     assert!(st.observed.contains("limit cycle") && st.observed.contains("held compensation"), "{}", st.observed);
     // Under that headline ρ's line is the linear analysis's prediction, not a second verdict.
     assert!(st.detail.starts_with("the linear analysis predicts decay"), "{}", st.detail);
-    // Held friction is not the paper's Fig. 5.1, and the preset puts the paper's model back.
+    // Held friction is not the paper's Fig. 5.1 and is named, and the preset puts the paper's
+    // model back.
     assert!(!s.status().showing.contains("Fig. 5.1"), "{}", s.status().showing);
+    assert!(s.status().showing.ends_with("friction compensation held"), "{}", s.status().showing);
     s.apply_preset("fig5.1").unwrap();
     assert!(s.status().showing.starts_with("Fig. 5.1"), "{}", s.status().showing);
     assert!(s.state_string().contains("friction=continuous"), "{}", s.state_string());

@@ -277,7 +277,8 @@ pub(super) fn error_pair(e: [f64; 2]) -> String {
     format!("{}, {} rad", f(e[0]), f(e[1]))
 }
 
-/// "no K_pr, δ = 0.01 s, α = 2 1/s".
+/// "no K_pr, δ = 0.01 s, α = 2 1/s", and what departs from the paper's model ("…, friction
+/// compensation held").
 pub fn describe(run: &Run) -> String {
     let s = run.settings();
     let alpha = if s.alpha[0] == s.alpha[1] {
@@ -285,7 +286,19 @@ pub fn describe(run: &Run) -> String {
     } else {
         format!("α = {}, {}", sig_trim(s.alpha[0], 3), sig_trim(s.alpha[1], 3))
     };
-    format!("{}, δ = {} s, {alpha} 1/s", feedback_short(s.pf), sig_trim(s.delta, 3))
+    let mut text = format!("{}, δ = {} s, {alpha} 1/s", feedback_short(s.pf), sig_trim(s.delta, 3));
+    // What departs from the paper's model, so "your settings" never hide it.
+    let paper = super::settings::RunSettings::default();
+    if s.friction != paper.friction {
+        text += &format!(", friction compensation {}", s.friction.name());
+    }
+    if s.inner != paper.inner {
+        text += &format!(", inner loop {}", s.inner.name());
+    }
+    if s.k != paper.k || s.eps_ratio != paper.eps_ratio {
+        text += &format!(", k = {}, m = {}", s.k, sig_trim(s.eps_ratio, 3));
+    }
+    text
 }
 
 impl super::Session {
