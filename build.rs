@@ -9,9 +9,7 @@
 
 use std::fmt::Write as _;
 
-use naga::{
-    AddressSpace, Binding, Block, Expression, Function, Literal, Module, Statement, TypeInner,
-};
+use naga::{AddressSpace, Binding, Block, Expression, Function, Literal, Module, Statement, TypeInner};
 
 const SHADER: &str = "src/web/shader.wgsl";
 
@@ -237,9 +235,13 @@ fn expression(e: &Expression) -> Result<String> {
         Expression::GlobalVariable(g) => format!("Expression::GlobalVariable(g{})", g.index()),
         Expression::LocalVariable(l) => format!("Expression::LocalVariable(l{})", l.index()),
         Expression::CallResult(f) => format!("Expression::CallResult(fn{})", f.index()),
-        Expression::AccessIndex { base, index } => format!("Expression::AccessIndex {{ base: {}, index: {index} }}", h(base)),
+        Expression::AccessIndex { base, index } => {
+            format!("Expression::AccessIndex {{ base: {}, index: {index} }}", h(base))
+        }
         Expression::Load { pointer } => format!("Expression::Load {{ pointer: {} }}", h(pointer)),
-        Expression::Unary { op, expr } => format!("Expression::Unary {{ op: UnaryOperator::{op:?}, expr: {} }}", h(expr)),
+        Expression::Unary { op, expr } => {
+            format!("Expression::Unary {{ op: UnaryOperator::{op:?}, expr: {} }}", h(expr))
+        }
         Expression::Binary { op, left, right } => {
             format!("Expression::Binary {{ op: BinaryOperator::{op:?}, left: {}, right: {} }}", h(left), h(right))
         }
@@ -250,7 +252,9 @@ fn expression(e: &Expression) -> Result<String> {
             opt_expr(arg2),
             opt_expr(arg3)
         ),
-        Expression::Splat { size, value } => format!("Expression::Splat {{ size: VectorSize::{size:?}, value: {} }}", h(value)),
+        Expression::Splat { size, value } => {
+            format!("Expression::Splat {{ size: VectorSize::{size:?}, value: {} }}", h(value))
+        }
         Expression::Swizzle { size, vector, pattern } => format!(
             "Expression::Swizzle {{ size: VectorSize::{size:?}, vector: {}, pattern: [{}] }}",
             h(vector),
@@ -262,7 +266,12 @@ fn expression(e: &Expression) -> Result<String> {
             components.iter().map(h).collect::<Vec<_>>().join(", ")
         ),
         Expression::Select { condition, accept, reject } => {
-            format!("Expression::Select {{ condition: {}, accept: {}, reject: {} }}", h(condition), h(accept), h(reject))
+            format!(
+                "Expression::Select {{ condition: {}, accept: {}, reject: {} }}",
+                h(condition),
+                h(accept),
+                h(reject)
+            )
         }
         other => return Err(format!("expression {other:?} is not supported by build.rs")),
     })

@@ -16,20 +16,97 @@ const COMMANDS: &[&str] = &["simulate", "analyze", "sweep", "map", "help", "", "
 
 /// Every flag of every command, some misspelt, some of other commands.
 const FLAGS: &[&str] = &[
-    "--delta", "--alpha", "--alpha1", "--alpha2", "--pf", "--friction", "--inner", "--repeat", "--k", "--eps-ratio",
-    "--duration", "--output-interval", "--csv", "--svg", "--json", "--state", "--q2", "--simulate",
-    "--delta-range", "--alpha-range", "--n-delta", "--n-alpha", "--mark", "--help", "--force", "--deltaa", "-d",
-    "--", "---", "--speed", "--compare",
+    "--delta",
+    "--alpha",
+    "--alpha1",
+    "--alpha2",
+    "--pf",
+    "--friction",
+    "--inner",
+    "--repeat",
+    "--k",
+    "--eps-ratio",
+    "--duration",
+    "--output-interval",
+    "--csv",
+    "--svg",
+    "--json",
+    "--state",
+    "--q2",
+    "--simulate",
+    "--delta-range",
+    "--alpha-range",
+    "--n-delta",
+    "--n-alpha",
+    "--mark",
+    "--help",
+    "--force",
+    "--deltaa",
+    "-d",
+    "--",
+    "---",
+    "--speed",
+    "--compare",
 ];
 
 /// Values meant to break things: non-numbers, extremes, injections, paths that cannot be written.
 const VALUES: &[&str] = &[
-    "", " ", "0", "-0", "-1", "1e-300", "1e-9", "1e-5", "0.01", "0.04", "2", "10", "11", "1e6", "1e308", "1e309",
-    "-1e308", "nan", "NaN", "inf", "-inf", "infinity", "0x10", "1,2", "1:2", "1:2:3", "1e-5:10:10000",
-    "0.1:10:10000", "2000", "2001", "abc", "off", "paper", "lq", "both", "held", "sampled", "continuous", "1", "true",
-    "٣", "１", "δ", "'; rm -rf /", "$(touch /tmp/flexarm-pwned)", "<script>alert(1)</script>", "%s%n%x",
-    "delta=1e-300", "delta=0.01&pf=lq&k=999999", "a=b&&&=", "/nonexistent-dir/x/y.csv", "/proc/version",
-    "/", "/dev/full", ".", "..",
+    "",
+    " ",
+    "0",
+    "-0",
+    "-1",
+    "1e-300",
+    "1e-9",
+    "1e-5",
+    "0.01",
+    "0.04",
+    "2",
+    "10",
+    "11",
+    "1e6",
+    "1e308",
+    "1e309",
+    "-1e308",
+    "nan",
+    "NaN",
+    "inf",
+    "-inf",
+    "infinity",
+    "0x10",
+    "1,2",
+    "1:2",
+    "1:2:3",
+    "1e-5:10:10000",
+    "0.1:10:10000",
+    "2000",
+    "2001",
+    "abc",
+    "off",
+    "paper",
+    "lq",
+    "both",
+    "held",
+    "sampled",
+    "continuous",
+    "1",
+    "true",
+    "٣",
+    "１",
+    "δ",
+    "'; rm -rf /",
+    "$(touch /tmp/flexarm-pwned)",
+    "<script>alert(1)</script>",
+    "%s%n%x",
+    "delta=1e-300",
+    "delta=0.01&pf=lq&k=999999",
+    "a=b&&&=",
+    "/nonexistent-dir/x/y.csv",
+    "/proc/version",
+    "/",
+    "/dev/full",
+    ".",
+    "..",
 ];
 
 fn arguments() -> impl Strategy<Value = Vec<String>> {
@@ -91,7 +168,12 @@ fn run(args: &[String]) -> Result<(Option<i32>, String, String, f64), String> {
 /// 400 random argument lists; prints how many succeeded, were refused, and the slowest.
 #[test]
 fn random_arguments_fail_in_one_line_or_succeed_never_panic_nor_hang() {
-    let config = ProptestConfig { cases: 400, rng_seed: RngSeed::Fixed(1994), failure_persistence: None, ..ProptestConfig::default() };
+    let config = ProptestConfig {
+        cases: 400,
+        rng_seed: RngSeed::Fixed(1994),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    };
     let tally = std::cell::RefCell::new((0u32, 0u32, 0.0f64));
     let result = TestRunner::new(config).run(&arguments(), |args| {
         let (status, stdout, stderr, seconds) = run(&args).map_err(TestCaseError::fail)?;
@@ -118,7 +200,10 @@ fn random_arguments_fail_in_one_line_or_succeed_never_panic_nor_hang() {
         Ok(())
     });
     let (ok, refused, slowest) = *tally.borrow();
-    println!("cli arguments: {} cases, {ok} succeeded, {refused} refused in one line, slowest {slowest:.2} s", ok + refused);
+    println!(
+        "cli arguments: {} cases, {ok} succeeded, {refused} refused in one line, slowest {slowest:.2} s",
+        ok + refused
+    );
     if let Err(e) = result {
         panic!("{e}");
     }

@@ -84,7 +84,11 @@ fn held_friction_with_a_repeating_slew_is_bounded_at_every_length() {
     c.reference.repeat_hold = Some(1.5);
     for duration in [10.0, 15.0, 25.0] {
         let m = metrics(&c, duration);
-        assert!(matches!(m.verdict, Verdict::Unstable { .. } | Verdict::Diverged { .. }), "{duration} s: {:?}", m.verdict);
+        assert!(
+            matches!(m.verdict, Verdict::Unstable { .. } | Verdict::Diverged { .. }),
+            "{duration} s: {:?}",
+            m.verdict
+        );
     }
 }
 

@@ -23,10 +23,7 @@ fn cases(cases: u32) -> ProptestConfig {
 /// A random valid configuration: every choice, δ and α over the page's controls (log-uniform),
 /// k and m anywhere the controller allows (k/2 ≤ m ≤ k).
 fn configs() -> impl Strategy<Value = SimulationConfig> {
-    (
-        (-3.0f64..-0.6, -1.0f64..0.7, 0usize..3, 0usize..3, 0usize..2, any::<bool>()),
-        (4usize..=24, 0.0f64..=1.0),
-    )
+    ((-3.0f64..-0.6, -1.0f64..0.7, 0usize..3, 0usize..3, 0usize..2, any::<bool>()), (4usize..=24, 0.0f64..=1.0))
         .prop_map(|((log_delta, log_alpha, pf, friction, inner, repeat), (k, m))| {
             let mut c = SimulationConfig::default();
             c.controller.sampling_period = 10f64.powf(log_delta);

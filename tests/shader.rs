@@ -21,7 +21,8 @@ fn validate(module: &Module) -> ModuleInfo {
 
 /// What WebGL2 receives for one stage: GLSL ES 3.0, as wgpu's GL backend asks naga for it.
 fn glsl(module: &Module, info: &ModuleInfo, stage: ShaderStage, entry_point: &str) -> String {
-    let options = glsl::Options { version: glsl::Version::Embedded { version: 300, is_webgl: true }, ..Default::default() };
+    let options =
+        glsl::Options { version: glsl::Version::Embedded { version: 300, is_webgl: true }, ..Default::default() };
     let pipeline = glsl::PipelineOptions { shader_stage: stage, entry_point: entry_point.into(), multiview: None };
     let mut out = String::new();
     let mut writer = glsl::Writer::new(&mut out, module, info, &options, &pipeline, Default::default())

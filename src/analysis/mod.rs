@@ -1,11 +1,13 @@
 //! Linear stability analysis of the sampled loop: its one-period map linearized at rest, the
 //! eigenvalues and spectral radius ρ ([`sampled`]), stability maps ρ(δ, α) as resumable jobs
-//! ([`map`]), and the stable windows of δ ([`windows`]).
+//! ([`map`]), the stable windows of δ ([`windows`]), and the flexible joint's resonance, the pair
+//! A4, in closed form ([`resonance`]).
 //!
 //! Architecture invariant: `analysis` reads the controller (`control`) and the arm (`model`) and
 //! is read by the session, the CLI and the figures; it never runs the nonlinear simulation.
 
 pub mod map;
+pub mod resonance;
 pub mod sampled;
 pub mod windows;
 

@@ -118,9 +118,8 @@ pub fn solve_care<const M: usize>(
     let mut z = h;
     let mut converged = false;
     for _ in 0..100 {
-        let inv = z
-            .try_inverse()
-            .ok_or(Error::Analysis("Riccati: Hamiltonian has eigenvalues on the imaginary axis"))?;
+        let inv =
+            z.try_inverse().ok_or(Error::Analysis("Riccati: Hamiltonian has eigenvalues on the imaginary axis"))?;
         let det = z.determinant().abs();
         let c = if det.is_finite() && det > 0.0 { det.powf(0.25) } else { 1.0 };
         let next = (z / c + inv * c) * 0.5;

@@ -145,8 +145,11 @@ pub struct LimitPair {
 /// Backward Euler on a linear index-3 DAE forgets its inconsistent start after three steps,
 /// whatever ε: ((E − εF)⁻¹E)^k = Q diag((I − εJ)^(−k), 0) Q⁻¹ for k ≥ 3 in Weierstrass form. So
 /// the k-step map at any moderate ε has exactly the range (finite deflating subspace) and kernel
-/// (infinite one) of the limit projector Π; Newton's iteration X ← X(2I − X) pushes its nonzero
-/// eigenvalues (1 − ελ)^(−k) to 1 and keeps the zero ones, giving Π. Then K_lim x = the v-part of
+/// (infinite one) of the limit projector Π. Its nonzero eigenvalues are (1 + εα_i)^(−k), all in
+/// (0.6, 1] for εα ≤ 0.1, and the purification X ← X²(3I − 2X) takes them to 1 while keeping the
+/// zero ones at 0, giving Π. (The plain Newton step X ← X(2I − X) doubles the rounding noise on
+/// the zero eigenvalues at every step and diverged for some α, e.g. α1 = 1, α2 = 3; the
+/// purification's fixed points 0 and 1 are both attracting.) Then K_lim x = the v-part of
 /// Π (x, 0), V* = range of Π's x-part, and A4 is A + B(K + K_lim) on ℝ⁸/V*.
 pub fn limit_pair(model: &LinearModel, gain: &FeedbackGain) -> Result<LimitPair, Error> {
     let (e, f) = pencil(model, gain);
@@ -154,20 +157,7 @@ pub fn limit_pair(model: &LinearModel, gain: &FeedbackGain) -> Result<LimitPair,
     let alpha_max = model.a[(6, 0)].cbrt().max(model.a[(7, 1)].cbrt()).max(1e-3);
     let eps = 0.1 / alpha_max;
     let step = backward_euler_map(&e, &f, eps)?;
-    let mut proj = matrix_power(&step, 4);
-    let mut converged = false;
-    for _ in 0..80 {
-        let next = proj * (Mat10::identity() * 2.0 - proj);
-        let change = (next - proj).amax();
-        proj = next;
-        if change < 1e-13 * proj.amax().max(1.0) {
-            converged = true;
-            break;
-        }
-    }
-    if !converged {
-        return Err(Error::Analysis("the limit projector did not converge"));
-    }
+    let proj = limit_projector(matrix_power(&step, 4))?;
     let proj_x: Mat8 = proj.fixed_view::<8, 8>(0, 0).into_owned();
     let k_lim: SMatrix<f64, 2, 8> = proj.fixed_view::<2, 8>(8, 0).into_owned();
     let complement = Mat8::identity() - proj_x;
@@ -185,4 +175,24 @@ pub fn limit_pair(model: &LinearModel, gain: &FeedbackGain) -> Result<LimitPair,
     let ev = a4.complex_eigenvalues();
     let eigenvalues = if ev[0].im >= ev[1].im { [ev[0], ev[1]] } else { [ev[1], ev[0]] };
     Ok(LimitPair { k_lim, coordinates, a4, b2, eigenvalues, off_motor_residual })
+}
+
+/// The projector Π with the range and kernel of `x`, whose eigenvalues lie near 0 or near 1:
+/// the purification X ← X²(3I − 2X) until X² = X to rounding.
+fn limit_projector(mut x: Mat10) -> Result<Mat10, Error> {
+    for _ in 0..60 {
+        let square = x * x;
+        let next = square * 3.0 - square * x * 2.0;
+        let change = (next - x).amax();
+        x = next;
+        if change <= 1e-13 * x.amax().max(1.0) {
+            break;
+        }
+    }
+    // Accept only an idempotent result: the iteration stalls at rounding, it cannot wander off.
+    let residual = (x * x - x).amax();
+    if !(residual <= 1e-9 * x.amax().max(1.0)) {
+        return Err(Error::Analysis("the limit projector did not converge"));
+    }
+    Ok(x)
 }

@@ -406,7 +406,9 @@ impl ErrorStats {
         };
         let verdict = match (divergence, steady) {
             (Some((at, reason)), _) => Verdict::Diverged { at, reason },
-            (None, Some((amplitude, period, _))) => Verdict::BoundedOscillation { amplitude, period, limit_cycle: true },
+            (None, Some((amplitude, period, _))) => {
+                Verdict::BoundedOscillation { amplitude, period, limit_cycle: true }
+            }
             (None, None) => match (growth_rate, self.across_slews()) {
                 // With a repeating slew, growth from one there-and-back to the next decides.
                 (_, Some((_, _, rate))) if rate > UNSTABLE_GROWTH_RATE => {

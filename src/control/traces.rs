@@ -234,7 +234,14 @@ type Row = [f64; Column::ALL.len()];
 impl TraceEnvelope {
     /// An empty envelope holding at most about `limit` rows (at least 64).
     pub fn new(limit: usize) -> Self {
-        TraceEnvelope { kept: Traces::default(), index: Vec::new(), open: [None; 4], stride: 1, seen: 0, limit: limit.max(64) }
+        TraceEnvelope {
+            kept: Traces::default(),
+            index: Vec::new(),
+            open: [None; 4],
+            stride: 1,
+            seen: 0,
+            limit: limit.max(64),
+        }
     }
 
     /// Adds every row of `chunk` (the next samples of the run).

@@ -45,7 +45,12 @@ impl Work {
         let steps_per_period = (delta / config.plant_step_max).ceil().max(1.0);
         let plant_steps = periods * steps_per_period;
         let per_period = SECONDS_PER_PERIOD + config.controller.horizon_steps as f64 * SECONDS_PER_PREDICTION_STEP;
-        Work { sampling_periods: periods, plant_steps, other: 0.0, seconds: periods * per_period + plant_steps * SECONDS_PER_PLANT_STEP }
+        Work {
+            sampling_periods: periods,
+            plant_steps,
+            other: 0.0,
+            seconds: periods * per_period + plant_steps * SECONDS_PER_PLANT_STEP,
+        }
     }
 
     /// `count` units of other work at `seconds_each`.

@@ -201,7 +201,9 @@ pub fn label_log_ticks(ticks: &[f64], lo: f64, hi: f64, length: f64, min_spacing
             candidates.push((false, v));
         }
     }
-    crate::sort::sort_by(&mut candidates, |a, b| b.0.cmp(&a.0).then(rank(a.1).cmp(&rank(b.1))).then(a.1.total_cmp(&b.1)));
+    crate::sort::sort_by(&mut candidates, |a, b| {
+        b.0.cmp(&a.0).then(rank(a.1).cmp(&rank(b.1))).then(a.1.total_cmp(&b.1))
+    });
     let mut kept: Vec<(f64, f64)> = Vec::new();
     for (_, v) in candidates {
         let q = pos(v);

@@ -118,9 +118,7 @@ pub fn run(
     let metrics = simulate_in_chunks(config, duration, CHUNK_SECONDS, |traces, done| -> Result<(), Failure> {
         rows += traces.len() as u64;
         if let Some((out, path)) = sinks.csv.as_mut() {
-            traces
-                .write_csv_rows(out)
-                .map_err(|e| cli::write_error("--csv", path, e))?;
+            traces.write_csv_rows(out).map_err(|e| cli::write_error("--csv", path, e))?;
         }
         if let Some(env) = sinks.envelope.as_mut() {
             env.extend(traces);

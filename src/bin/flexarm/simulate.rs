@@ -2,13 +2,13 @@
 
 use clap::{ArgMatches, Command};
 use flexarm::analysis;
-use flexarm::schema;
-use flexarm::session::Settings;
 use flexarm::control::metrics::growth_text;
 use flexarm::control::{Metrics, TraceEnvelope, Traces, Work};
+use flexarm::schema;
+use flexarm::session::Settings;
 use flexarm::{SimulationConfig, Verdict};
-use std::io::{BufWriter, Write};
 use serde_json::{json, Value};
+use std::io::{BufWriter, Write};
 
 use crate::cli::{self, lib_error, write_file, Res};
 use crate::long_work::{self, Progress, TraceSinks};
@@ -48,12 +48,10 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let csv_path = m.get_one::<String>("csv");
     let mut csv_file = match csv_path {
         Some(path) => {
-            let file = std::fs::File::create(path)
-                .map_err(|e| cli::write_error("--csv", path, e))?;
+            let file = std::fs::File::create(path).map_err(|e| cli::write_error("--csv", path, e))?;
             let mut out = BufWriter::new(file);
             let comment = format!("flexarm state: {state} | {}", settings.command_line(Some(duration)));
-            Traces::write_csv_head(&mut out, Some(&comment))
-                .map_err(|e| cli::write_error("--csv", path, e))?;
+            Traces::write_csv_head(&mut out, Some(&comment)).map_err(|e| cli::write_error("--csv", path, e))?;
             Some((out, path.as_str()))
         }
         None => None,

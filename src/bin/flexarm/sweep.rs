@@ -2,8 +2,8 @@
 
 use clap::{ArgMatches, Command};
 use flexarm::analysis;
-use flexarm::schema;
 use flexarm::control::Work;
+use flexarm::schema;
 use serde_json::{json, Value};
 
 use crate::cli::{self, lib_error, parse_number, usage_error, Res};

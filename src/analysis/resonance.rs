@@ -1,0 +1,184 @@
+//! The flexible joint's resonance and what the controller does to it, in closed form: the pair
+//! A4 of section 3 (the δ → 0 limit) written in the arm's own parameters.
+//!
+//! # Why the pair exists
+//! Linearized at rest at link angle q2, with the friction cancelled, let c_i = ë_i + 3α_i ė_i +
+//! 3α_i² e_i + w_i be what is left of constraint (4.3). The limit controller reads only the links
+//! (its gain has zero columns for θ and θ̇). It can impose c2 = 0 through T2, but reaches link 1
+//! only through the spring: the links obey their law (c = 0) exactly when the motor sits at
+//! θ* = q1 + (M11 r1 + M12 r2)/K1, with r_i = −3α_i q̇_i − 3α_i² q_i − w_i the acceleration the law
+//! asks of link i. What the controller cannot see is the gap z = θ − θ* and its rate
+//! y = θ̇ − θ̇*|_{c=0}. Differentiating along eq. (4.1) gives
+//!
+//! ```text
+//! ż = 3β z + y
+//! ẏ = −(K1/Ir1 + K1/J_eff + 6γ) z − (Bv1/Ir1) y
+//! ```
+//!
+//! with J_eff = A1 − A2 − (A3²/A2) cos² q2 (link 1's inertia as the spring feels it, link 2 free),
+//! μ = (A2 + A3 cos q2)²/(A2 J_eff), β = α1 + μ (α1 − α2), γ = α1² + μ (α1² − α2²). A gap z > 0
+//! accelerates link 1 by K1 z/J_eff ahead of its law; reading only the links, the controller
+//! answers by moving θ* the other way, and the gap widens at the rate 3β. So
+//! Re A4 = 3β/2 − Bv1/(2 Ir1) (= 3α/2 − Bv1/(2 Ir1) for α1 = α2): the controller feeds the
+//! joint's resonance, and only the motor's own damping opposes it. The frequency is close to the
+//! two-inertia resonance √(K1 (1/Ir1 + 1/J_eff)) of motor against link.
+//!
+//! A preliminary feedback K acts on the pair only through its columns for θ and θ̇ (the
+//! predictor cancels the rest on V*): with ΔT = K_θ z + K_θ̇ y it adds ΔT1/Ir1 to ẏ, and T2 reaches
+//! the pair through the mass matrix ([`closed_form_a4`]).
+//!
+//! `tests/resonance.rs` checks all of it against the numerical limit of [`super::limit_pair`].
+
+use nalgebra::{Complex, Matrix2};
+
+use crate::control::predictive::FeedbackGain;
+use crate::model::params::PlantParameters;
+
+/// The closed-form quantities of the joint's resonance at one rest point and α.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointResonance {
+    /// q2 of the rest point, rad.
+    pub q2: f64,
+    /// α1, α2, 1/s.
+    pub alpha: [f64; 2],
+    /// J_eff = A1 − A2 − (A3²/A2) cos² q2, kg m²: link 1's inertia as the spring feels it.
+    pub j_eff: f64,
+    /// μ = (A2 + A3 cos q2)²/(A2 J_eff): how much of α2 reaches the pair when α1 ≠ α2.
+    pub mu: f64,
+    /// β = α1 + μ (α1 − α2), 1/s: the rate 3β at which the controller widens the gap z.
+    pub beta: f64,
+    /// A4 without preliminary feedback, in the coordinates (z, y) = (θ − θ*, θ̇ − θ̇*).
+    pub a4: Matrix2<f64>,
+    /// Its eigenvalues, positive imaginary part first, 1/s.
+    pub eigenvalues: [Complex<f64>; 2],
+    /// ω = √(K1 (1/Ir1 + 1/J_eff)), rad/s: the motor swinging against link 1 (two inertias).
+    pub omega_joint: f64,
+    /// √(K1/Ir1), rad/s: the motor against a clamped link.
+    pub omega_clamped: f64,
+    /// Bv1/(2 Ir1), 1/s: the damping the motor's own viscous friction gives the pair.
+    pub motor_damping: f64,
+    /// 3β/2, 1/s: the negative damping the controller injects.
+    pub controller_feed: f64,
+}
+
+impl JointResonance {
+    /// The resonance of `plant` (validated: J_eff > 0) at rest at `q2` under α.
+    pub fn new(plant: &PlantParameters, alpha: [f64; 2], q2: f64) -> Self {
+        let p = plant;
+        let m = Mass::at(p, q2);
+        let [a1, a2] = alpha;
+        let beta = a1 + m.mu * (a1 - a2);
+        let gamma = a1 * a1 + m.mu * (a1 * a1 - a2 * a2);
+        let a4 = Matrix2::new(3.0 * beta, 1.0, -(p.k1 / p.ir1 + p.k1 / m.j_eff + 6.0 * gamma), -p.bv1 / p.ir1);
+        Self {
+            q2,
+            alpha,
+            j_eff: m.j_eff,
+            mu: m.mu,
+            beta,
+            a4,
+            eigenvalues: ordered(a4.complex_eigenvalues()),
+            omega_joint: (p.k1 * (1.0 / p.ir1 + 1.0 / m.j_eff)).sqrt(),
+            omega_clamped: (p.k1 / p.ir1).sqrt(),
+            motor_damping: p.bv1 / (2.0 * p.ir1),
+            controller_feed: 1.5 * beta,
+        }
+    }
+
+    /// Re A4 = 3β/2 − Bv1/(2 Ir1), 1/s.
+    pub fn real_part(&self) -> f64 {
+        self.controller_feed - self.motor_damping
+    }
+
+    /// tr A4 = 3β − Bv1/Ir1, 1/s.
+    pub fn trace(&self) -> f64 {
+        self.a4.trace()
+    }
+
+    /// det A4, 1/s²: the square of the pair's natural frequency.
+    pub fn determinant(&self) -> f64 {
+        self.a4.determinant()
+    }
+}
+
+/// α* = Bv1/(3 Ir1), 1/s: for α1 = α2 below it the motor's damping outweighs what the
+/// controller feeds the resonance, and the δ → 0 pair is stable without any preliminary
+/// feedback.
+pub fn alpha_star(plant: &PlantParameters) -> f64 {
+    plant.bv1 / (3.0 * plant.ir1)
+}
+
+/// A4 in closed form with the preliminary feedback `gain` acting continuously (u = K x + v):
+/// the pair of [`JointResonance`] plus what K's columns for θ and θ̇ add.
+pub fn closed_form_a4(plant: &PlantParameters, alpha: [f64; 2], q2: f64, gain: &FeedbackGain) -> Matrix2<f64> {
+    let p = plant;
+    let m = Mass::at(p, q2);
+    let [a1, a2] = alpha;
+    let base = JointResonance::new(plant, alpha, q2).a4;
+    // ΔT = K_θ z + K_θ̇ y. T2 changes both link accelerations (c = M⁻¹ [0; ΔT2]): through θ*'s
+    // rate (κ, zero for α1 = α2) and through link 1's acceleration in θ*'s second derivative (λ).
+    let det = p.a2 * m.j_eff;
+    let kappa = 3.0 * m.m11 * m.m12 * (a2 - a1) / (det * p.k1);
+    let lambda = m.m12 / det - 6.0 * m.m11 * m.m12 * (a2 * a2 - a1 * a1) / (det * p.k1);
+    let (k_theta, k_rate) = ([gain[(0, 2)], gain[(1, 2)]], [gain[(0, 5)], gain[(1, 5)]]);
+    base + Matrix2::new(
+        kappa * k_theta[1],
+        kappa * k_rate[1],
+        k_theta[0] / p.ir1 + lambda * k_theta[1],
+        k_rate[0] / p.ir1 + lambda * k_rate[1],
+    )
+}
+
+/// How far a preliminary feedback moves Re A4, 1/s (α1 = α2: then independent of α, since it
+/// acts on the pair only through its gains on θ̇): ½ [K_θ̇,1/Ir1 + (A2 + A3 cos q2) K_θ̇,2/(A2 J_eff)].
+pub fn feedback_shift(plant: &PlantParameters, q2: f64, gain: &FeedbackGain) -> f64 {
+    let m = Mass::at(plant, q2);
+    0.5 * (gain[(0, 5)] / plant.ir1 + m.m12 * gain[(1, 5)] / (plant.a2 * m.j_eff))
+}
+
+/// The largest α (α1 = α2) for which a fixed preliminary feedback with Re-shift `shift` (from
+/// [`feedback_shift`]) keeps the δ → 0 pair stable: 3α/2 − Bv1/(2 Ir1) + shift < 0 (α* itself for
+/// no feedback).
+pub fn alpha_limit(plant: &PlantParameters, shift: f64) -> f64 {
+    (plant.bv1 / (2.0 * plant.ir1) - shift) / 1.5
+}
+
+/// The arm's own pair with no controller (no torque, the friction cancelled) at rest at `q2`:
+/// the oscillatory eigenvalues of eq. (4.1) linearized, positive imaginary part first.
+pub fn arm_pair(plant: &PlantParameters, q2: f64) -> [Complex<f64>; 2] {
+    let model = super::linearize_at_rest(plant, [1.0, 1.0], [0.0, q2]);
+    // The 6×6 mechanical block, padded into the 10×10 size the loop's eigenvalues already use
+    // (one eigen-solver in the page's module, not two); the padding adds four zeros.
+    let mut m = crate::control::linear::Mat10::zeros();
+    m.fixed_view_mut::<6, 6>(0, 0).copy_from(&model.a.fixed_view::<6, 6>(0, 0));
+    let ev = m.complex_eigenvalues();
+    let top = ev.iter().copied().fold(Complex::new(0.0, 0.0), |best, z| if z.im > best.im { z } else { best });
+    [top, top.conj()]
+}
+
+fn ordered(ev: nalgebra::Vector2<Complex<f64>>) -> [Complex<f64>; 2] {
+    if ev[0].im >= ev[1].im {
+        [ev[0], ev[1]]
+    } else {
+        [ev[1], ev[0]]
+    }
+}
+
+/// The mass matrix's entries at q2 and the two derived inertias.
+struct Mass {
+    m11: f64,
+    m12: f64,
+    j_eff: f64,
+    mu: f64,
+}
+
+impl Mass {
+    fn at(p: &PlantParameters, q2: f64) -> Self {
+        let c = q2.cos();
+        let m11 = p.a1 + 2.0 * p.a3 * c;
+        let m12 = p.a2 + p.a3 * c;
+        // det M2 = A2 M11 − M12² = A2 J_eff.
+        let j_eff = p.a1 - p.a2 - p.a3 * p.a3 / p.a2 * c * c;
+        Self { m11, m12, j_eff, mu: m12 * m12 / (p.a2 * j_eff) }
+    }
+}
