@@ -1021,9 +1021,10 @@ fn the_analysis_is_cached_per_configuration() {
     scene.draw_loops(sim.closed_loop(), sim.analysis().report(), None);
     let first = scene.analysis(0).cloned().unwrap();
     let mut cache = sim.analysis().clone();
-    assert!(!cache.update(sim.closed_loop().config()), "same configuration: no recomputation");
+    assert!(!cache.update(sim.closed_loop().config(), 0.0), "same configuration: no recomputation");
     let other = RunSettings { pf: PreliminaryFeedbackChoice::Paper, ..*sim.settings() };
-    assert!(cache.update(&other.config()));
+    assert!(cache.update(&other.config(), 0.0));
+    assert!(cache.update(&other.config(), 1.5 * std::f64::consts::PI), "another rest point: recomputed");
     sim.change(other, false).unwrap();
     sim.advance(0.05, 60.0).unwrap();
     scene.draw_loops(sim.closed_loop(), sim.analysis().report(), None);

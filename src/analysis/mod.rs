@@ -13,7 +13,8 @@ pub mod windows;
 
 pub use map::{log_space, stability_map, MapGrid, MapJob, StabilityMap};
 pub use sampled::{
-    analyze, loop_eigenvalues, sampled_loop_matrix, spectral_radius, LinearSettings, LoopModel, Pole, StabilityReport,
+    analyze, describes, loop_eigenvalues, sampled_loop_matrix, spectral_radius, LinearSettings, LoopModel, Pole,
+    StabilityReport,
 };
 pub use windows::{stable_intervals, stable_windows, StableWindows};
 

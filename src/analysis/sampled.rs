@@ -1,5 +1,10 @@
 //! The sampled closed loop of Fig. 2.1 linearized at rest: its one-period map, eigenvalues λ and
 //! spectral radius ρ (the loop is stable iff ρ < 1), and the report the page and the CLI show.
+//!
+//! What ρ certifies: local stability of one rest point (the slew's end unless told otherwise),
+//! with the friction cancelled ([`describes`]). It is an asymptotic rate — errors behave like ρⁿ
+//! over many periods —, not a bound per period: a non-normal loop can first grow many times
+//! over even with ρ < 1.
 
 use nalgebra::{Complex, SMatrix};
 use serde::{Deserialize, Serialize};
@@ -202,6 +207,14 @@ pub fn loop_eigenvalues(m: &Mat10) -> Vec<Complex<f64>> {
     let mut ev: Vec<Complex<f64>> = m.complex_eigenvalues().iter().copied().collect();
     crate::sort::sort_by(&mut ev, |a, b| b.norm().total_cmp(&a.norm()).then(b.im.total_cmp(&a.im)));
     ev
+}
+
+/// True if the linear analysis describes a run of `config`: it takes the friction as cancelled,
+/// which only the continuous compensation does. Held over δ or left off, the Dahl friction at rest
+/// acts as a presliding spring F_c/ε (≈ 48 000 N m/rad on the motor, forty times K1), which no
+/// linearization with the friction cancelled contains: only the simulation can judge such a run.
+pub fn describes(config: &SimulationConfig) -> bool {
+    config.friction_compensation == crate::control::config::FrictionCompensation::Continuous
 }
 
 /// Analyses `config` linearized at rest at its final configuration, or at link-2 angle `q2`.

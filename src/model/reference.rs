@@ -74,6 +74,24 @@ impl Reference {
         ReferenceSample { q: from + span * s, qdot: span * (ds / tf), qddot: span * (dds / (tf * tf)) }
     }
 
+    /// q_df of the leg under way at time t: where the arm is headed, or holds (the start before
+    /// t = 0, the slew's end afterwards; alternately the end and the start when it repeats).
+    pub fn target(&self, t: f64) -> [f64; 2] {
+        let p = &self.params;
+        match p.repeat_hold {
+            _ if t < 0.0 => p.start,
+            None => p.end,
+            Some(hold) => {
+                let leg = p.slew_time + hold;
+                if t.rem_euclid(2.0 * leg) < leg {
+                    p.end
+                } else {
+                    p.start
+                }
+            }
+        }
+    }
+
     /// True while the reference moves (a slew is in progress) at time t.
     pub fn is_moving(&self, t: f64) -> bool {
         let tf = self.params.slew_time;

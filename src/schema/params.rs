@@ -139,6 +139,27 @@ pub const INNER: Param = Param {
     help: "Whether the preliminary feedback acts continuously (analog) or is sampled and held at δ.",
 };
 
+/// Where the linear analysis linearizes the loop.
+pub const REST: Param = Param {
+    key: "rest",
+    label: "Linearize at",
+    symbol: "",
+    unit: "",
+    name: "rest point of the analysis (rest)",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "end", label: "where the slew ends (q2 = 0 rad, the paper's point)" },
+            Choice { value: "arm", label: "where the arm is headed (follows the repeating slew)" },
+        ],
+        default: "end",
+    },
+    scope: Scope::Run,
+    help: "The analysis (ρ, the poles, the windows of δ, the maps) holds for small motions about one rest point, \
+           with the friction cancelled: where the slew ends, as the paper's, or the end of the slew under way, \
+           which under the repeating slew alternates between q2 = 0 and 3π/2 rad (the paper: linearize about \
+           an operating point that is updated if necessary).",
+};
+
 /// The repeating there-and-back slew.
 pub const REPEAT: Param = Param {
     key: "repeat",
@@ -316,6 +337,7 @@ pub const PARAMS: &[&Param] = &[
     &PF,
     &FRICTION,
     &INNER,
+    &REST,
     &REPEAT,
     &K,
     &EPS_RATIO,

@@ -185,9 +185,11 @@ impl Session {
         &self.note
     }
 
-    /// Run A's settings as the linear analysis sees them.
+    /// Run A's settings as the linear analysis sees them, at the rest point it linearizes at now.
     fn linear_settings(&self) -> LinearSettings {
-        LinearSettings::of(&self.settings.a.config(), None)
+        let config = self.settings.a.config();
+        let q2 = self.settings.a.rest.angles(&config, self.a.closed_loop().time())[1];
+        LinearSettings::of(&config, Some(q2))
     }
 
     // ------------------------------------------------------------------------------- changes
@@ -358,8 +360,13 @@ impl Session {
         }
         let before = self.a.closed_loop().time();
         let keep = self.trace_seconds;
+        let mut moved = false;
         for run in self.runs_mut() {
-            run.advance(dt, keep)?;
+            moved |= run.advance(dt, keep)?;
+        }
+        if moved {
+            // The analysis follows the arm to its other rest point: so do the maps.
+            self.maps.show(&self.linear_settings());
         }
         Ok(self.a.closed_loop().time() - before)
     }
@@ -370,16 +377,19 @@ impl Session {
             return;
         }
         let keep = self.trace_seconds;
-        self.a.step_period(keep);
+        let mut moved = self.a.step_period(keep);
         let t = self.a.closed_loop().time();
         let a_finished = self.a.closed_loop().is_finished();
         if let Some(b) = self.b.as_mut() {
             let dt = t - b.closed_loop().time();
             if dt > 1e-12 {
-                let _ = b.advance(dt, keep);
+                moved |= b.advance(dt, keep).unwrap_or(false);
             } else if a_finished {
-                b.step_period(keep);
+                moved |= b.step_period(keep);
             }
+        }
+        if moved {
+            self.maps.show(&self.linear_settings());
         }
         if self.note.starts_with("Paused") {
             self.note.clear();
@@ -410,6 +420,7 @@ impl Session {
         for run in self.runs_mut() {
             run.reset()?;
         }
+        self.maps.show(&self.linear_settings());
         self.note.clear();
         Ok(())
     }

@@ -16,15 +16,21 @@ pub struct AnalysisCache {
 }
 
 impl AnalysisCache {
-    /// Makes the cache describe `config`; returns true if it had to recompute.
-    pub fn update(&mut self, config: &SimulationConfig) -> bool {
-        let key = LinearSettings::of(config, None);
+    /// Makes the cache describe `config` linearized at rest at link-2 angle `q2`; returns true if
+    /// it had to recompute.
+    pub fn update(&mut self, config: &SimulationConfig, q2: f64) -> bool {
+        let key = LinearSettings::of(config, Some(q2));
         if self.key == Some(key) {
             return false;
         }
         self.key = Some(key);
-        self.result = Some(analyze(config, None).map_err(|e| e.to_string()));
+        self.result = Some(analyze(config, Some(q2)).map_err(|e| e.to_string()));
         true
+    }
+
+    /// What the analysis was computed for (None before the first update).
+    pub fn settings(&self) -> Option<&LinearSettings> {
+        self.key.as_ref()
     }
 
     /// The analysis, if it succeeded.
@@ -57,9 +63,16 @@ impl Run {
     pub fn new(settings: RunSettings) -> Result<Self, Error> {
         let mut sim = ClosedLoop::new(settings.config())?;
         sim.keep_history(HISTORY_SECONDS);
-        let mut analysis = AnalysisCache::default();
-        analysis.update(sim.config());
-        Ok(Self { sim, settings, analysis })
+        let mut run = Self { sim, settings, analysis: AnalysisCache::default() };
+        run.follow_rest(&settings.config());
+        Ok(run)
+    }
+
+    /// Brings the analysis to `config` at the rest point the settings choose at the run's present
+    /// time; true if it changed.
+    fn follow_rest(&mut self, config: &SimulationConfig) -> bool {
+        let q2 = self.settings.rest.angles(config, self.sim.time())[1];
+        self.analysis.update(config, q2)
     }
 
     pub fn closed_loop(&self) -> &ClosedLoop {
@@ -71,7 +84,7 @@ impl Run {
     }
 
     /// The linear analysis of the settings (those on screen: a change is analysed at once,
-    /// though the loop takes it at its next sampling instant).
+    /// though the loop takes it at its next sampling instant), at the rest point they choose.
     pub fn analysis(&self) -> &AnalysisCache {
         &self.analysis
     }
@@ -82,11 +95,11 @@ impl Run {
         let config = settings.config();
         self.sim.set_config(config)?;
         self.settings = settings;
-        self.analysis.update(&config);
         let restarted = restart || self.sim.is_finished();
         if restarted {
             self.sim.reset()?;
         }
+        self.follow_rest(&config);
         Ok(restarted)
     }
 
@@ -94,27 +107,33 @@ impl Run {
     /// then; returns the instant.
     pub fn branch_at(&mut self, t: f64) -> Result<f64, Error> {
         let at = self.sim.branch_at(t)?;
-        self.settings = RunSettings::of_config(self.sim.config());
-        self.analysis.update(self.sim.config());
+        // The rest point of the analysis is not part of the loop's state: it stays as chosen.
+        self.settings = RunSettings { rest: self.settings.rest, ..RunSettings::of_config(self.sim.config()) };
+        let config = *self.sim.config();
+        self.follow_rest(&config);
         Ok(at)
     }
 
     /// Back to rest with the current settings.
     pub fn reset(&mut self) -> Result<(), Error> {
-        self.sim.reset()
-    }
-
-    /// Advances by `dt` simulated seconds, keeping `trace_seconds` of traces.
-    pub fn advance(&mut self, dt: f64, trace_seconds: f64) -> Result<(), Error> {
-        self.sim.advance(dt)?;
-        self.bound_traces(trace_seconds);
+        self.sim.reset()?;
+        self.follow_rest(&self.settings.config());
         Ok(())
     }
 
-    /// Advances to the next sampling instant.
-    pub fn step_period(&mut self, trace_seconds: f64) {
+    /// Advances by `dt` simulated seconds, keeping `trace_seconds` of traces. True if the
+    /// analysis moved to another rest point (the arm began a slew to the other end).
+    pub fn advance(&mut self, dt: f64, trace_seconds: f64) -> Result<bool, Error> {
+        self.sim.advance(dt)?;
+        self.bound_traces(trace_seconds);
+        Ok(self.follow_rest(&self.settings.config()))
+    }
+
+    /// Advances to the next sampling instant; true if the analysis moved to another rest point.
+    pub fn step_period(&mut self, trace_seconds: f64) -> bool {
         self.sim.advance_one_period();
         self.bound_traces(trace_seconds);
+        self.follow_rest(&self.settings.config())
     }
 
     /// Adds a torque (T1, T2 in N m) for `duration` seconds.

@@ -21,6 +21,48 @@ pub const PAGE_START_PRESET: &str = "fig5.3";
 /// Hold time of the repeating slew at each end, s.
 pub const REPEAT_HOLD: f64 = 1.5;
 
+/// Where the linear analysis linearizes a run's loop (at rest, the friction cancelled).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum RestPoint {
+    /// Where the slew ends (q2 = 0 rad): the paper's point, fixed for the whole run.
+    #[default]
+    SlewEnd,
+    /// The end of the slew under way: under the repeating slew the analysis follows the arm
+    /// between its two rest points (the paper's remark that the operating point of a
+    /// linearization be "updated if necessary").
+    Arm,
+}
+
+impl RestPoint {
+    /// The word in URLs and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            RestPoint::SlewEnd => "end",
+            RestPoint::Arm => "arm",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "end" => Some(RestPoint::SlewEnd),
+            "arm" => Some(RestPoint::Arm),
+            _ => None,
+        }
+    }
+
+    /// The link angles (q1, q2) the analysis of `config` linearizes at, at simulated time `t`.
+    pub fn angles(self, config: &SimulationConfig, t: f64) -> [f64; 2] {
+        match self {
+            RestPoint::SlewEnd => config.reference.end,
+            RestPoint::Arm => crate::model::Reference::new(config.reference).target(t),
+        }
+    }
+}
+
+/// Run settings left out of the state string while at their defaults, so that links, CSV and
+/// SVG headers written before they existed still read the same.
+const QUIET_AT_DEFAULT: &[&str] = &["rest"];
+
 /// The settings of one run, keyed by the schema's run parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RunSettings {
@@ -37,6 +79,8 @@ pub struct RunSettings {
     pub k: usize,
     /// m = δ/ε.
     pub eps_ratio: f64,
+    /// Where the analysis linearizes the loop.
+    pub rest: RestPoint,
 }
 
 impl Default for RunSettings {
@@ -53,6 +97,7 @@ impl Default for RunSettings {
             repeat: schema::REPEAT.default_value().switch().unwrap_or(false),
             k: number(&schema::K) as usize,
             eps_ratio: number(&schema::EPS_RATIO),
+            rest: RestPoint::from_name(choice(&schema::REST)).unwrap_or_default(),
         }
     }
 }
@@ -72,7 +117,8 @@ impl RunSettings {
         c
     }
 
-    /// The settings that make `config` (the inverse of [`RunSettings::config`]).
+    /// The settings that make `config` (the inverse of [`RunSettings::config`]; the analysis's
+    /// rest point is not part of a configuration and is the default).
     pub fn of_config(c: &SimulationConfig) -> Self {
         Self {
             delta: c.controller.sampling_period,
@@ -83,6 +129,7 @@ impl RunSettings {
             repeat: c.reference.repeat_hold.is_some(),
             k: c.controller.horizon_steps,
             eps_ratio: c.controller.eps_ratio,
+            rest: RestPoint::default(),
         }
     }
 
@@ -98,6 +145,7 @@ impl RunSettings {
             "repeat" => Value::Switch(self.repeat),
             "k" => Value::Number(self.k as f64),
             "eps_ratio" => Value::Number(self.eps_ratio),
+            "rest" => Value::Choice(self.rest.name()),
             _ => return None,
         })
     }
@@ -118,6 +166,7 @@ impl RunSettings {
             ("repeat", Value::Switch(b)) => self.repeat = b,
             ("k", Value::Number(x)) => self.k = x as usize,
             ("eps_ratio", Value::Number(x)) => self.eps_ratio = x,
+            ("rest", Value::Choice(s)) => self.rest = RestPoint::from_name(s).unwrap_or(self.rest),
             _ => return false,
         }
         true
@@ -385,7 +434,8 @@ fn run_pairs(a: &RunSettings, changed_only: bool) -> Vec<(&'static str, String)>
         }
         let v = a.get(p.key).expect("run keys have values");
         let headline = matches!(p.key, "delta" | "alpha" | "alpha1" | "alpha2" | "pf");
-        if changed_only && !headline && defaults.get(p.key) == Some(v) {
+        let quiet = changed_only || QUIET_AT_DEFAULT.contains(&p.key);
+        if quiet && !headline && defaults.get(p.key) == Some(v) {
             continue;
         }
         out.push((p.key, v.text()));

@@ -109,19 +109,44 @@ fn predicted_text(rho: f64, rate: f64) -> String {
     }
 }
 
+/// True if the linear analysis describes the run: it takes the friction as cancelled, which only
+/// the continuous compensation does. Held over δ or off, the Dahl friction at rest is a stiff
+/// presliding spring (F_c/ε), and only the simulation can judge the run.
+pub fn analysis_applies(run: &Run) -> bool {
+    crate::analysis::describes(run.closed_loop().config())
+}
+
 /// Why the simulation may not follow the linear analysis.
-fn caveat(run: &Run) -> &'static str {
+fn caveat(run: &Run) -> String {
+    let p = run.closed_loop().config().plant;
     match run.settings().friction {
-        FrictionCompensation::Continuous => "the analysis is linearized at rest; far from rest the arm is nonlinear",
-        FrictionCompensation::Held => {
-            "the analysis takes the friction as cancelled, and held compensation does not cancel it"
+        FrictionCompensation::Continuous => {
+            "the analysis is linearized at rest; far from rest the arm is nonlinear".into()
         }
-        FrictionCompensation::Off => "the analysis takes the friction as cancelled, and here it is not compensated",
+        FrictionCompensation::Held => {
+            "the analysis takes the friction as cancelled, and held compensation does not cancel it".into()
+        }
+        FrictionCompensation::Off => format!(
+            "the analysis takes the friction as cancelled; uncompensated, the motor's Dahl friction at rest acts as \
+             a spring of F_c1/ε1 = {} N m/rad, far stiffer than the joint's K1 = {} N m/rad",
+            sig(p.fc1 / p.eps1, 3),
+            sig(p.k1, 4)
+        ),
     }
+}
+
+/// Where the analysis holds, in words: "at rest at q2 = 0 rad, friction cancelled".
+fn scope_text(report: &crate::analysis::StabilityReport) -> String {
+    let q2 = report.rest[1];
+    let q2 = if q2.abs() < 5e-13 { "0".to_string() } else { sig_trim(q2, 3) };
+    format!("at rest at q2 = {q2} rad, friction cancelled")
 }
 
 /// The observation, compared with the prediction.
 fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) -> (String, bool) {
+    // Where ρ does not describe the run, it is never cited as the cause of what is seen.
+    let prediction = prediction.filter(|_| analysis_applies(run));
+    let alone = !analysis_applies(run);
     if let Verdict::Diverged { at, reason } = m.verdict {
         let why = match reason {
             DivergenceReason::ErrorBound => "an error passed π rad",
@@ -130,6 +155,7 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         };
         let agrees = match prediction {
             Some((Prediction::Unstable, _)) => "as ρ > 1 predicted".to_string(),
+            _ if alone => format!("the linear analysis cannot say why: {}", caveat(run)),
             _ => format!("not what ρ predicts: {}", caveat(run)),
         };
         return (format!("observed: diverged at t = {at:.2} s ({why}) — {agrees}"), true);
@@ -159,9 +185,22 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
             };
             return (format!("observed: the errors have settled at their floor{agrees}"), true);
         }
-        return ("observed: measuring how the errors move between slews…".into(), false);
+        let text = if alone {
+            format!(
+                "observed: measuring how the errors move between slews… (only the simulation can judge: {})",
+                caveat(run)
+            )
+        } else {
+            "observed: measuring how the errors move between slews…".into()
+        };
+        return (text, false);
     };
     let rate = format!("observed growth rate {} 1/s", minus(&format!("{g:.2}")));
+    if alone {
+        let e = run.closed_loop().snapshot().error;
+        let now = format!(", errors now {}, {} rad", sci(e[0], 2), sci(e[1], 2));
+        return (format!("{rate}{now} — the simulation decides here: {}", caveat(run)), true);
+    }
     let Some((p, predicted)) = prediction else { return (rate, true) };
     let seen = Prediction::of_rate(g);
     let text = if seen == p {
@@ -204,37 +243,55 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         None => (None, format!("the linear analysis failed: {}", run.analysis().error().unwrap_or("no report"))),
     };
     let (observed, measured) = observation(&m, prediction, run);
-    // What the simulation has seen beyond the linear analysis overrides it: a divergence, or a
-    // limit cycle (named as the CLI and the JSON name it).
-    let (verdict, headline) = match (m.verdict, prediction.map(|p| p.0)) {
+    let applies = analysis_applies(run);
+    // ρ decides the headline only where it describes the run (the friction cancelled); what the
+    // simulation has seen beyond the linear analysis overrides it: a divergence, or a limit
+    // cycle (named as the CLI and the JSON name it).
+    let judged = prediction.filter(|_| applies).map(|p| p.0);
+    let (verdict, headline) = match (m.verdict, judged) {
         (Verdict::Diverged { .. }, _) => ("diverged", "Diverged"),
         (v @ Verdict::BoundedOscillation { .. }, _) => (v.label(), "Bounded oscillation"),
         (_, Some(Prediction::Unstable)) => ("unstable", "Unstable"),
         (_, Some(Prediction::Stable)) => ("stable", "Stable"),
         (_, Some(Prediction::Borderline)) => ("borderline", "Borderline"),
-        // Without an analysis only the simulation can say.
-        (v, None) => (v.label(), if v.label() == "unstable" { "Unstable" } else { "Observing" }),
+        // Without an analysis that holds, only the simulation can say, once it has seen enough.
+        (Verdict::Unstable { .. }, None) => ("unstable", "Unstable"),
+        (Verdict::Stable, None) if measured => ("stable", "Stable"),
+        (_, None) => ("observing", "Too early to tell"),
     };
     // Under a headline the simulation decided against ρ, ρ's sentence is the prediction.
     let overridden = match m.verdict {
         Verdict::BoundedOscillation { .. } => true,
-        Verdict::Diverged { .. } => !matches!(prediction, Some((Prediction::Unstable, _))),
+        Verdict::Diverged { .. } => !matches!(judged, Some(Prediction::Unstable)),
         _ => false,
     };
     let detail = match predicted {
+        Some((rho, _)) if !applies => {
+            format!("the simulation decides: ρ = {rho:.4} describes the loop with the friction cancelled, not this run")
+        }
         Some((rho, rate)) if overridden => predicted_text(rho, rate),
         _ => detail,
     };
     let rho_line = match report {
         None => "linear analysis: ρ = —".into(),
         Some(r) => {
-            let verdict = if r.spectral_radius < 1.0 { "< 1 ⇒ stable" } else { "≥ 1 ⇒ unstable" };
             let growth = if r.growth_rate.is_finite() {
                 format!(" (ln ρ/δ = {} 1/s)", minus(&format!("{:.2}", r.growth_rate)))
             } else {
                 String::new()
             };
-            format!("linear analysis: ρ = {:.4} {verdict}{growth}", r.spectral_radius)
+            let scope = scope_text(r);
+            if applies {
+                // The same judgement as the headline's, in the same words.
+                let (digits, verdict) = match Prediction::of_rate(r.growth_rate) {
+                    Prediction::Stable => (4, "< 1 ⇒ stable"),
+                    Prediction::Unstable => (4, "> 1 ⇒ unstable"),
+                    Prediction::Borderline => (5, "≈ 1 ⇒ borderline"),
+                };
+                format!("linear analysis ({scope}): ρ = {:.digits$} {verdict}{growth}", r.spectral_radius)
+            } else {
+                format!("linear analysis ({scope}, not this run's friction): ρ = {:.4}{growth}", r.spectral_radius)
+            }
         }
     };
     let pair = |v: [f64; 2], unit: &str| format!("{}, {} {unit}", sci(v[0], 3), sci(v[1], 3));

@@ -16,7 +16,7 @@ use crate::output::{delta_alpha_text, describe_config, linear_verdict, verdict_t
 
 /// The run settings `simulate` takes.
 pub const KEYS: &[&str] =
-    &["delta", "alpha", "alpha1", "alpha2", "pf", "friction", "inner", "repeat", "k", "eps_ratio"];
+    &["delta", "alpha", "alpha1", "alpha2", "pf", "friction", "inner", "rest", "repeat", "k", "eps_ratio"];
 
 pub fn command() -> Command {
     cli::command("simulate", "Run the closed loop from rest along the slew and summarize it")
@@ -72,11 +72,14 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         out.flush().map_err(|e| cli::write_error("--csv", path, e))?;
     }
 
-    let rho = analysis::spectral_radius(&config, None).ok();
+    // ρ at the rest point the settings choose, at the end of the run (as the page shows it).
+    let q2 = settings.a.rest.angles(&config, metrics.time)[1];
+    let rho = analysis::spectral_radius(&config, Some(q2)).ok();
+    let linear = Linear { rho, q2, describes: analysis::describes(&config) };
     let mut out = if json_out {
-        simulation_json(&settings, &config, duration, &metrics, rho).to_string() + "\n"
+        simulation_json(&settings, &config, duration, &metrics, &linear).to_string() + "\n"
     } else {
-        simulation_text(&config, duration, &metrics, rho)
+        simulation_text(&config, duration, &metrics, &linear)
     };
     if let (Some(path), false) = (csv_path, json_out) {
         out += &format!("traces ({rows} rows) written to {path}\n");
@@ -96,6 +99,15 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     Ok(out)
 }
 
+/// The linear analysis beside a run: ρ, where it was linearized, and whether it describes the run.
+pub struct Linear {
+    pub rho: Option<f64>,
+    /// q2 of the rest point, rad.
+    pub q2: f64,
+    /// False where the run's friction is not cancelled ([`analysis::describes`]).
+    pub describes: bool,
+}
+
 /// The run as one JSON object: the settings under their schema keys (and the long names of
 /// earlier versions), the state string, the metrics and ρ.
 pub fn simulation_json(
@@ -103,7 +115,7 @@ pub fn simulation_json(
     c: &SimulationConfig,
     duration: f64,
     m: &Metrics,
-    rho: Option<f64>,
+    linear: &Linear,
 ) -> Value {
     let (at, reason) = match m.verdict {
         Verdict::Diverged { at, reason } => (Some(at), serde_json::to_value(reason).ok()),
@@ -141,16 +153,24 @@ pub fn simulation_json(
         "oscillation_amplitude": amplitude,
         "oscillation_period": period,
         "max_torque": m.max_torque,
-        "spectral_radius": rho,
+        "spectral_radius": linear.rho,
+        "analysis_rest_q2": linear.q2,
+        "analysis_describes_run": linear.describes,
     })
 }
 
-fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, rho: Option<f64>) -> String {
+fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, linear: &Linear) -> String {
     let verdict = verdict_text(m.verdict, c.divergence_bound);
     let pair = |v: [f64; 2], unit: &str| format!("{:.3e}, {:.3e} {unit}", v[0], v[1]);
     let growth = growth_text(m.growth_rate, m.errors_at_floor);
-    let rho = rho.map_or("n/a (analysis failed)".into(), |r| {
-        format!("{r:.6} → linearly {} (ρ < 1 ⇒ linearly stable)", linear_verdict(r))
+    let scope = format!("at rest at q2 = {:.4} rad, friction cancelled", linear.q2);
+    let rho = linear.rho.map_or("n/a (analysis failed)".into(), |r| match linear.describes {
+        true => format!("{r:.6} → linearly {} ({scope}; ρ < 1 ⇒ linearly stable)", linear_verdict(r)),
+        false => format!(
+            "{r:.6} ({scope}: does not describe this run, whose friction compensation is {}; the verdict is the \
+             simulation's)",
+            c.friction_compensation.name()
+        ),
     });
     let slew = if c.reference.repeat_hold.is_some() { "the repeating slew" } else { "the 1-s slew" };
     let mut s = format!("flexarm simulate: {duration} s of {slew}\nconfiguration\n{}", describe_config(c));

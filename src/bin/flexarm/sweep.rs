@@ -9,7 +9,7 @@ use serde_json::{json, Value};
 use crate::cli::{self, lib_error, parse_number, usage_error, Res};
 use crate::long_work::{self, Progress, TraceSinks};
 use crate::output::linear_verdict;
-use crate::simulate::simulation_json;
+use crate::simulate::{simulation_json, Linear};
 
 /// The run settings `sweep` takes besides its lists of δ and α.
 pub const KEYS: &[&str] = &["pf", "friction", "inner", "repeat", "k", "eps_ratio"];
@@ -120,7 +120,9 @@ pub fn run(m: &ArgMatches) -> Res<String> {
             if run {
                 let sinks = TraceSinks { csv: None, envelope: None };
                 let (m, _) = long_work::run(&c, duration, sinks, &mut quiet)?;
-                row["simulation"] = simulation_json(&point, &c, duration, &m, Some(rho));
+                let q2 = c.reference.end[1];
+                let linear = Linear { rho: Some(rho), q2, describes: analysis::describes(&c) };
+                row["simulation"] = simulation_json(&point, &c, duration, &m, &linear);
                 let verdict = m.verdict.short_text();
                 let [s1, s2] = m.max_error_slew;
                 let [a1, a2] = m.max_error_after;
