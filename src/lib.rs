@@ -7,9 +7,11 @@
 //! A two-link arm whose first joint is a spring (motor angle θ, link angle q1) and which has Dahl
 //! friction follows a 1-s slew. The Jankowski–Van Brussel controller integrates a stabilized
 //! index-3 DAE with backward Euler over k = 12 steps of ε = δ/8 and applies the predicted torque
-//! one sampling period δ later. For small δ the loop is unstable: two modes near 2.63 ± 29.58j are
-//! left untouched by the controller. A preliminary linear feedback K_pr moves them to
-//! ≈ −2.6 ± 29.6j, after which every small δ works.
+//! one sampling period δ later. For small δ the loop is unstable: the joint's resonance (motor and
+//! link 1 against each other through the spring) is a motion the controller cannot see — it reads
+//! only the links — and feeds; in the limit δ → 0 it is the pair A4 ≈ 2.63 ± 29.58j, with
+//! Re A4 = 3α/2 − Bv1/(2 Ir1) ([`analysis::resonance`]). A preliminary linear feedback K_pr damps
+//! the motor and moves the pair to ≈ −2.5 ± 29.6j, after which every small δ works.
 //!
 //! ## Map of the crate (lower layers first; see ARCHITECTURE.md)
 //! | module | contents |
@@ -18,7 +20,7 @@
 //! | [`schema`] | every user-settable parameter once: key, label, unit, range and why, default, help |
 //! | [`model`] | the arm, eq. (4.1), its one stepper, Dahl friction (4.4), the reference slew |
 //! | [`control`] | predictive controller (2.3)–(2.4), linearization and δ → 0 limit, K_pr, the closed loop of Fig. 2.1 |
-//! | [`analysis`] | ρ and eigenvalues of the sampled loop, stability maps, stable windows of δ |
+//! | [`analysis`] | ρ and eigenvalues of the sampled loop, stability maps, stable windows of δ, the pair A4 in closed form |
 //! | [`lesson`] | the guided lesson as data: `lesson.md`, read into steps, questions and goals |
 //! | [`session`] | what a user has open: settings and state string, runs A and B, analyses, maps, the timeline, the lesson's progress |
 //! | [`plot`] | ticks, number format, colours, contours — shared by the canvas and the SVG |

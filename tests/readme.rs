@@ -121,3 +121,32 @@ fn held_friction_hunts_as_printed() {
     let Verdict::BoundedOscillation { amplitude, period, .. } = m.verdict else { panic!("{:?}", m.verdict) };
     assert_says(row, &format!("amplitude {:.2e}, {:.2e} rad, period {period:.2} s", amplitude[0], amplitude[1]));
 }
+
+#[test]
+fn the_closed_form_and_the_arm_alone_are_as_printed() {
+    use flexarm::analysis::resonance::arm_pair;
+    let own = arm_pair(&PlantParameters::default(), 0.0)[0];
+    assert_says("A4 ≈", &format!("the arm alone: {}", pair([[own.re, own.im], [own.re, -own.im]], 4)));
+    let off = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Off), None).unwrap();
+    let [re, im] = off.poles[off.flexible_pair()[0].unwrap()].continuous.unwrap();
+    assert_says("without K_pr unstable", &format!("flexible pair at {re:.2} ± {im:.2}j"));
+}
+
+#[test]
+fn small_alpha_and_the_papers_gains_at_large_alpha_are_as_printed() {
+    use flexarm::analysis::resonance::{alpha_limit, alpha_star, feedback_shift};
+    use flexarm::control::feedback::paper_gain;
+    let p = PlantParameters::default();
+    assert_says("\"a change of α", &format!("α* = Bv1/(3 Ir1) = {:.4} 1/s", alpha_star(&p)));
+    let (s, _) = Session::open("delta=0.01&alpha=0.2&pf=off");
+    let mut s = s;
+    assert_says("\"a change of α", &format!("at α = 0.2: {}", s.windows().unwrap().describe()));
+    let shift = feedback_shift(&p, 0.0, &paper_gain());
+    let row = "(not in the paper) the paper's K_pr at larger α";
+    assert_says(row, &fixed(shift, 3));
+    assert_says(row, &format!("only for α < {:.3} 1/s", alpha_limit(&p, shift)));
+    let (mut s, _) = Session::open("delta=0.01&alpha=5&pf=paper");
+    assert_says(row, &format!("at α = 5: {}", s.windows().unwrap().describe()));
+    let (mut s, _) = Session::open("delta=0.01&alpha=2&pf=paper&inner=sampled");
+    assert_says("with K_pr stable", &format!("sampled at δ: {}", s.windows().unwrap().describe()));
+}

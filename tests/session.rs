@@ -438,7 +438,7 @@ fn where_rho_does_not_describe_the_run_it_is_not_cited() {
     common::play(&mut s, 4.0);
     let st = &s.status().runs[0];
     assert!(!cites_rho(&st.observed) && !cites_rho(&st.detail), "{} / {}", st.observed, st.detail);
-    assert!(st.observed.contains("F_c1/ε1 = 48200 N m/rad"), "the presliding spring is named: {}", st.observed);
+    assert!(st.observed.contains("F_c1/ε1 = 48\u{202f}200 N m/rad"), "the presliding spring is named: {}", st.observed);
     // Uncompensated, the friction holds the arm far off the path: the errors after the slew stay
     // hundreds of times larger than Fig. 5.3's before it diverges.
     let m = s.run(0).unwrap().closed_loop().metrics();

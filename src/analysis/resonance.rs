@@ -30,6 +30,7 @@
 //! `tests/resonance.rs` checks all of it against the numerical limit of [`super::limit_pair`].
 
 use nalgebra::{Complex, Matrix2};
+use serde::{Deserialize, Serialize};
 
 use crate::control::predictive::FeedbackGain;
 use crate::model::params::PlantParameters;
@@ -180,5 +181,64 @@ impl Mass {
         // det M2 = A2 M11 − M12² = A2 J_eff.
         let j_eff = p.a1 - p.a2 - p.a3 * p.a3 / p.a2 * c * c;
         Self { m11, m12, j_eff, mu: m12 * m12 / (p.a2 * j_eff) }
+    }
+}
+
+/// The joint's resonance at a loop's rest point, as the reports carry it (numbers only).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ResonanceReport {
+    /// J_eff, kg m².
+    pub j_eff: f64,
+    /// μ.
+    pub mu: f64,
+    /// β = α1 + μ (α1 − α2), 1/s.
+    pub beta: f64,
+    /// A4 without preliminary feedback in (z, y), rows.
+    pub a4: [[f64; 2]; 2],
+    /// tr A4, 1/s; det A4, 1/s².
+    pub trace: f64,
+    pub determinant: f64,
+    /// Re A4 = 3β/2 − Bv1/(2 Ir1), and its two parts, 1/s.
+    pub real_part: f64,
+    pub controller_feed: f64,
+    pub motor_damping: f64,
+    /// √(K1 (1/Ir1 + 1/J_eff)) and √(K1/Ir1), rad/s.
+    pub omega_joint: f64,
+    pub omega_clamped: f64,
+    /// The arm's own pair with no controller (friction cancelled), upper one, 1/s.
+    pub arm_pair: [f64; 2],
+    /// α* = Bv1/(3 Ir1), 1/s.
+    pub alpha_star: f64,
+    /// What the loop's preliminary feedback adds to Re A4, 1/s (0 without one).
+    pub feedback_shift: f64,
+    /// For a fixed gain (the paper's), the largest α = α1 = α2 it keeps the pair stable at, 1/s.
+    pub feedback_alpha_limit: Option<f64>,
+}
+
+impl ResonanceReport {
+    /// The report for `plant` at rest at `q2` under α, with the preliminary feedback `gain`
+    /// (`fixed`: the gain does not change with α, so its α limit means something).
+    pub fn new(plant: &PlantParameters, alpha: [f64; 2], q2: f64, gain: &FeedbackGain, fixed: bool) -> Self {
+        let r = JointResonance::new(plant, alpha, q2);
+        let own = arm_pair(plant, q2)[0];
+        let shift = feedback_shift(plant, q2, gain);
+        let damps = fixed && shift < 0.0;
+        Self {
+            j_eff: r.j_eff,
+            mu: r.mu,
+            beta: r.beta,
+            a4: [[r.a4[(0, 0)], r.a4[(0, 1)]], [r.a4[(1, 0)], r.a4[(1, 1)]]],
+            trace: r.trace(),
+            determinant: r.determinant(),
+            real_part: r.real_part(),
+            controller_feed: r.controller_feed,
+            motor_damping: r.motor_damping,
+            omega_joint: r.omega_joint,
+            omega_clamped: r.omega_clamped,
+            arm_pair: [own.re, own.im],
+            alpha_star: alpha_star(plant),
+            feedback_shift: shift,
+            feedback_alpha_limit: damps.then(|| alpha_limit(plant, shift)),
+        }
     }
 }

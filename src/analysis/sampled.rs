@@ -9,6 +9,7 @@
 use nalgebra::{Complex, SMatrix};
 use serde::{Deserialize, Serialize};
 
+use super::resonance::ResonanceReport;
 use crate::control::config::{ControllerParameters, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
 use crate::control::feedback::{resolve_gain, FeedbackGain};
 use crate::control::linear::{limit_pair, linearize_at_rest, predictor_gain, LinearModel, Mat10, Mat8};
@@ -109,6 +110,25 @@ impl LoopModel {
         Ok(loop_eigenvalues(&self.loop_matrix(delta)?).first().map(|c| c.norm()).unwrap_or(0.0))
     }
 
+    /// The shape of the flexible pair at sampling period `delta`: the upper eigenvector of the
+    /// one-period map, as the angles (q1, q2, θ) relative to q1 (complex: amplitude and phase).
+    /// None if there is no complex pair or q1 does not move in it.
+    pub fn mode_shape(&self, delta: f64) -> Result<Option<[Complex<f64>; 3]>, Error> {
+        let phi = self.loop_matrix(delta)?;
+        let ev = loop_eigenvalues(&phi);
+        let Some(lambda) = ev.iter().filter(|l| l.im > 1e-12 * l.norm()).max_by(|a, b| {
+            let s = |l: &Complex<f64>| (l.ln() / delta).im.abs();
+            s(a).total_cmp(&s(b))
+        }) else {
+            return Ok(None);
+        };
+        // With v_q1 = 1, the other nine rows of (Φ − λI) v = 0 give the rest of v.
+        let m: SMatrix<Complex<f64>, 10, 10> = phi.map(|v| Complex::new(v, 0.0)) - SMatrix::identity() * *lambda;
+        let a: SMatrix<Complex<f64>, 9, 9> = m.fixed_view::<9, 9>(1, 1).into_owned();
+        let b: SMatrix<Complex<f64>, 9, 1> = -m.fixed_view::<9, 1>(1, 0).into_owned();
+        Ok(a.lu().solve(&b).map(|v| [Complex::new(1.0, 0.0), v[0], v[1]]))
+    }
+
     /// The whole report at the model's own δ.
     pub fn report(&self) -> Result<StabilityReport, Error> {
         let delta = self.settings.controller.sampling_period;
@@ -126,6 +146,14 @@ impl LoopModel {
             .collect();
         let open = limit_pair(&self.model, &FeedbackGain::zeros())?;
         let with_pf = limit_pair(&self.model, &self.gain)?;
+        let fixed = self.settings.preliminary_feedback == PreliminaryFeedbackChoice::Paper;
+        let resonance = ResonanceReport::new(
+            &self.settings.plant,
+            self.settings.controller.alpha,
+            self.settings.rest[1],
+            &self.gain,
+            fixed,
+        );
         Ok(StabilityReport {
             sampling_period: delta,
             rest: self.settings.rest,
@@ -134,6 +162,7 @@ impl LoopModel {
             poles,
             limit_pair_open: pair(&open.eigenvalues),
             limit_pair: pair(&with_pf.eigenvalues),
+            resonance,
         })
     }
 }
@@ -196,6 +225,41 @@ pub struct StabilityReport {
     pub limit_pair_open: [[f64; 2]; 2],
     /// The δ → 0 pair A4 with the configured preliminary feedback, 1/s.
     pub limit_pair: [[f64; 2]; 2],
+    /// The joint's resonance in closed form at the rest point (what A4 is made of).
+    pub resonance: ResonanceReport,
+}
+
+impl StabilityReport {
+    /// The indices (into `poles`) of the flexible pair, the joint's resonance in the sampled loop:
+    /// the complex pair (λ not real) with the largest |Im s|.
+    pub fn flexible_pair(&self) -> [Option<usize>; 2] {
+        let mut best: Option<(usize, f64)> = None;
+        for (i, p) in self.poles.iter().enumerate() {
+            let Some(s) = p.continuous else { continue };
+            let [lr, li] = p.discrete;
+            if li.abs() <= 1e-12 * lr.hypot(li) || li <= 0.0 {
+                continue;
+            }
+            if best.is_none_or(|(_, im)| s[1].abs() > im) {
+                best = Some((i, s[1].abs()));
+            }
+        }
+        let Some((i, _)) = best else { return [None, None] };
+        let [lr, li] = self.poles[i].discrete;
+        // Its conjugate: the pole with λ nearest to conj(λ).
+        let partner = self
+            .poles
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| *j != i)
+            .min_by(|(_, a), (_, b)| {
+                let da = (a.discrete[0] - lr).hypot(a.discrete[1] + li);
+                let db = (b.discrete[0] - lr).hypot(b.discrete[1] + li);
+                da.total_cmp(&db)
+            })
+            .map(|(j, _)| j);
+        [Some(i), partner]
+    }
 }
 
 fn pair(c: &[Complex<f64>; 2]) -> [[f64; 2]; 2] {

@@ -80,6 +80,26 @@ pub fn sig_trim(v: f64, digits: usize) -> String {
     minus(trim(&format!("{v:.decimals$}")))
 }
 
+/// A whole number with its thousands set apart by narrow no-break spaces (U+202F), rounded:
+/// "48 200", "1 153", "−5".
+pub fn grouped(v: f64) -> String {
+    if !v.is_finite() {
+        return number(v);
+    }
+    let digits = format!("{:.0}", v.abs().round());
+    let mut out = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i) % 3 == 0 {
+            out.push('\u{202f}');
+        }
+        out.push(c);
+    }
+    if v.round() < 0.0 {
+        out.insert(0, '−');
+    }
+    out
+}
+
 /// Labels for a set of ticks of a linear axis: fixed decimals enough to tell neighbours apart,
 /// or the fewest exponent digits that name each tick exactly when the values are tiny or huge.
 #[derive(Clone, Copy, Debug, PartialEq)]

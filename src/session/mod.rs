@@ -15,6 +15,7 @@ pub mod query;
 pub mod run;
 pub mod settings;
 pub mod status;
+pub mod story;
 pub mod timeline;
 pub mod view;
 
@@ -65,6 +66,8 @@ pub struct Status {
     pub lesson: Option<LessonStatus>,
     /// The figure in words (the canvas' text alternative).
     pub figure: String,
+    /// The explanation's live numbers for run A (null while its analysis is missing).
+    pub story: Option<story::Story>,
 }
 
 /// The stable windows of δ for run A's settings, as the page shows them.
@@ -550,6 +553,7 @@ impl Session {
             timeline: self.timeline(),
             lesson: self.lesson_status(),
             figure: self.figure_text(),
+            story: story::story(&self.a),
         }
     }
 

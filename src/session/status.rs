@@ -9,7 +9,8 @@ use super::maps::feedback_short;
 use super::run::Run;
 use crate::control::config::FrictionCompensation;
 use crate::control::metrics::{growth_text, DivergenceReason, Metrics, Verdict, UNSTABLE_GROWTH_RATE};
-use crate::plot::format::{minus, sci, sig, sig_trim};
+use crate::plot::format::{grouped, minus, sci, sig, sig_trim};
+use crate::schema;
 
 /// The readouts under the canvas.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -129,8 +130,8 @@ fn caveat(run: &Run) -> String {
         FrictionCompensation::Off => format!(
             "the analysis takes the friction as cancelled; uncompensated, the motor's Dahl friction at rest acts as \
              a spring of F_c1/ε1 = {} N m/rad, far stiffer than the joint's K1 = {} N m/rad",
-            sig(p.fc1 / p.eps1, 3),
-            sig(p.k1, 4)
+            grouped(schema::round_significant(p.fc1 / p.eps1, 3)),
+            grouped(p.k1)
         ),
     }
 }

@@ -78,7 +78,7 @@ pub fn legend(kinds: &[PanelKind], pair: bool) -> Vec<LegendGroup> {
             items.push(item(Glyph::Plus, PoleStyle::RUN_B.stable, "run B's poles"));
         }
         items.extend([
-            item(Glyph::Halo, palette::POLE_HALO, "the flexible pair (the motor against the spring)"),
+            item(Glyph::Halo, palette::POLE_HALO, "the flexible pair (the joint's resonance)"),
             item(Glyph::Ring, a.a4_open, "A4 without K_pr: where the pair goes as δ → 0"),
             item(Glyph::Diamond, a.a4, "A4 with K_pr"),
             item(

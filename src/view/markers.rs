@@ -39,35 +39,9 @@ impl PoleStyle {
     };
 }
 
-/// The indices (into `report.poles`) of the flexible pair: the complex pair (λ not real) with the
-/// largest |Im s|.
+/// The indices (into `report.poles`) of the flexible pair (see [`StabilityReport::flexible_pair`]).
 pub fn flexible_pair(report: &StabilityReport) -> [Option<usize>; 2] {
-    let mut best: Option<(usize, f64)> = None;
-    for (i, p) in report.poles.iter().enumerate() {
-        let Some(s) = p.continuous else { continue };
-        let [lr, li] = p.discrete;
-        if li.abs() <= 1e-12 * lr.hypot(li) || li <= 0.0 {
-            continue;
-        }
-        if best.is_none_or(|(_, im)| s[1].abs() > im) {
-            best = Some((i, s[1].abs()));
-        }
-    }
-    let Some((i, _)) = best else { return [None, None] };
-    let [lr, li] = report.poles[i].discrete;
-    // Its conjugate: the pole with λ nearest to conj(λ).
-    let partner = report
-        .poles
-        .iter()
-        .enumerate()
-        .filter(|(j, _)| *j != i)
-        .min_by(|(_, a), (_, b)| {
-            let da = (a.discrete[0] - lr).hypot(a.discrete[1] + li);
-            let db = (b.discrete[0] - lr).hypot(b.discrete[1] + li);
-            da.total_cmp(&db)
-        })
-        .map(|(j, _)| j);
-    [Some(i), partner]
+    report.flexible_pair()
 }
 
 /// Marker sizes, CSS pixels (the z-plane draws the same markers).

@@ -1,15 +1,25 @@
 // The explanation's "Try:" buttons: each names an action as `kind:args` (data-try), e.g.
-// `preset:fig5.3`, `pf:paper`, `delta:0.04`, `map:off:0.05:2`, `compare:on`.
+// `preset:fig5.3`, `pf:paper`, `delta:0.04`, `map:off:0.05:2`, `compare:on`, or any settings as
+// `set:key:value[:key:value…]` (`set:alpha1:0.5:alpha2:2`).
 
 /**
  * The action a button's spec names (pure).
  * @param {string} spec
  * @returns {{ kind: 'preset', id: string } | { kind: 'set', key: string, value: string }
- *   | { kind: 'map', side: string, delta: number, alpha: number } | null}
+ *   | { kind: 'map', side: string, delta: number, alpha: number }
+ *   | { kind: 'sets', pairs: [string, string][] } | null}
  */
 export function parseTry(spec) {
   const [kind, a, b, c] = String(spec).split(':');
   switch (kind) {
+    case 'set': {
+      const words = String(spec).split(':').slice(1);
+      if (words.length === 0 || words.length % 2 !== 0 || words.some((w) => w === '')) return null;
+      /** @type {[string, string][]} */
+      const pairs = [];
+      for (let i = 0; i < words.length; i += 2) pairs.push([words[i], words[i + 1]]);
+      return { kind: 'sets', pairs };
+    }
     case 'preset':
       return a ? { kind: 'preset', id: a } : null;
     case 'pf':
@@ -31,6 +41,7 @@ export function parseTry(spec) {
 /**
  * Wires every `button.try`.
  * @param {{ preset: (id: string) => void, set: (key: string, value: string) => void,
+ *   sets: (pairs: [string, string][]) => void,
  *   map: (side: string, delta: number, alpha: number) => void, after: () => void }} on
  */
 export function wireTryButtons(on) {
@@ -40,6 +51,7 @@ export function wireTryButtons(on) {
       if (!action) return;
       if (action.kind === 'preset') on.preset(action.id);
       else if (action.kind === 'set') on.set(action.key, action.value);
+      else if (action.kind === 'sets') on.sets(action.pairs);
       else on.map(action.side, action.delta, action.alpha);
       on.after();
     });

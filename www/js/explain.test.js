@@ -13,3 +13,11 @@ test('every kind of Try button', () => {
 test('malformed specs do nothing', () => {
   for (const bad of ['', 'preset', 'map:left:1:2', 'map:off:x:2', 'frobnicate:1']) assert.equal(parseTry(bad), null, bad);
 });
+
+test('set: names any settings, in pairs', () => {
+  assert.deepEqual(parseTry('set:alpha1:0.5:alpha2:2'), { kind: 'sets', pairs: [['alpha1', '0.5'], ['alpha2', '2']] });
+  assert.deepEqual(parseTry('set:inner:sampled'), { kind: 'sets', pairs: [['inner', 'sampled']] });
+  assert.equal(parseTry('set:alpha1'), null);
+  assert.equal(parseTry('set:'), null);
+  assert.equal(parseTry('set::2'), null);
+});

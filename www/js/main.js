@@ -176,6 +176,14 @@ async function main() {
   wireTryButtons({
     preset: (id) => change(() => session.applyPreset(id)),
     set: (key, value) => change(() => session.set(key, value)),
+    sets: (pairs) => {
+      // Unequal α1, α2 are meant: unlink the sliders first.
+      if (pairs.some(([k]) => k === 'alpha1' || k === 'alpha2')) {
+        link.checked = false;
+        store.dispatch({ type: 'link-alpha', value: false });
+      }
+      change(() => pairs.forEach(([k, v]) => session.set(k, v)));
+    },
     map: (side, delta, alpha) => change(() => {
       session.set('map', '1');
       session.setFromMap(side, delta, alpha);

@@ -9,7 +9,8 @@ import { createRunView } from './run.js';
  * @typedef {{ runs: RunStatus[], note: string, preset: string, showing: string, ghost: string,
  *   maps: { percent: number, done: boolean, text: string, points: number, shown: boolean },
  *   windows: { text: string, windows: number[][], bands: number[][] } | null,
- *   timeline: import('./timeline.js').TimelineStatus, lesson: import('./lesson.js').LessonStatus | null }} Status
+ *   timeline: import('./timeline.js').TimelineStatus, lesson: import('./lesson.js').LessonStatus | null,
+ *   story: Record<string, string> | null }} Status
  * @typedef {{ run: string, color: string, style: string, pole_marker: string }} Series
  */
 
@@ -22,6 +23,12 @@ export function bandGradient(bands, band, rest) {
   }
   stops.push(`${rest} 100%`);
   return `linear-gradient(to right, ${stops.join(', ')})`;
+}
+
+/** The text of live number `key` from a status' story: "—" while it is missing (pure).
+ * @param {Record<string, string> | null} story @param {string} key */
+export function liveText(story, key) {
+  return story?.[key] ?? '—';
 }
 
 /** Colours of the δ slider's track: the stable windows, and the rest (the stylesheet's, so the
@@ -49,6 +56,8 @@ export function createStatus() {
   const mapRow = byId('map-row');
   let legendKey = '';
 
+  // The explanation's numbers: each `data-live` element shows the story's entry of that name.
+  const live = /** @type {HTMLElement[]} */ ([...document.querySelectorAll('[data-live]')]);
   const strip = byId('verdict-strip');
   const embedVerdict = byId('embed-verdict');
   /** @param {Status} s @param {number} now */
@@ -86,6 +95,7 @@ export function createStatus() {
     progress.dataset.done = s.maps.done ? 'true' : 'false';
     setText(mapTime, s.maps.text);
     mapRow.hidden = !s.maps.shown;
+    for (const node of live) setText(node, liveText(s.story, node.dataset.live ?? ''));
   }
 
   /** The stable windows of δ: in words under the slider, and as bands on its track (none while

@@ -1,11 +1,9 @@
 //! `flexarm analyze`: the sampled loop linearized at rest — ρ, the eigenvalues, the δ → 0 pair A4.
 
 use clap::{ArgMatches, Command};
-use flexarm::analysis::resonance::{self, JointResonance};
+use flexarm::analysis::resonance::ResonanceReport;
 use flexarm::analysis::{self, StabilityReport};
-use flexarm::control::feedback::paper_gain;
 use flexarm::schema;
-use flexarm::PreliminaryFeedbackChoice;
 use flexarm::SimulationConfig;
 use serde_json::json;
 
@@ -44,11 +42,10 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         v["inner_loop"] = json!(config.inner_loop.name());
         v["stable_windows"] =
             json!({ "range": windows.range, "windows": windows.windows, "tolerance": windows.tolerance });
-        v["resonance"] = resonance_json(&config, report.rest[1]);
         return Ok(v.to_string() + "\n");
     }
     let mut text = analysis_text(&config, &report);
-    text += &resonance_text(&config, report.rest[1]);
+    text += &resonance_text(&report.resonance);
     text +=
         &format!("stable windows of δ at these α (edges within {:.0e} s): {}\n", windows.tolerance, windows.describe());
     Ok(text)
@@ -98,31 +95,9 @@ fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
     s
 }
 
-/// The joint's resonance in closed form at the rest point (see `flexarm::analysis::resonance`).
-struct Resonance {
-    r: JointResonance,
-    arm: [f64; 2],
-    star: f64,
-    /// (shift of Re A4, largest α it keeps stable) for a fixed preliminary feedback.
-    feedback: Option<(f64, f64)>,
-}
-
-fn resonance(c: &SimulationConfig, q2: f64) -> Resonance {
-    let p = &c.plant;
-    let r = JointResonance::new(p, c.controller.alpha, q2);
-    let own = resonance::arm_pair(p, q2)[0];
-    let feedback = match c.preliminary_feedback {
-        PreliminaryFeedbackChoice::Paper => {
-            let shift = resonance::feedback_shift(p, q2, &paper_gain());
-            Some((shift, resonance::alpha_limit(p, shift)))
-        }
-        _ => None,
-    };
-    Resonance { r, arm: [own.re, own.im], star: resonance::alpha_star(p), feedback }
-}
-
-fn resonance_text(c: &SimulationConfig, q2: f64) -> String {
-    let Resonance { r, arm, star, feedback } = resonance(c, q2);
+/// The joint's resonance in closed form at the rest point, from the report (see
+/// `flexarm::analysis::resonance`).
+fn resonance_text(r: &ResonanceReport) -> String {
     let a = r.a4;
     let mut s =
         "the joint's resonance in closed form (δ → 0; z = θ − θ*, the gap to the motor angle the links' law needs):\n"
@@ -135,48 +110,28 @@ fn resonance_text(c: &SimulationConfig, q2: f64) -> String {
     s += &format!(
         "  A4 = [[3β, 1], [−(K1/Ir1 + K1/J_eff + 6γ), −Bv1/Ir1]] = [[{:.4}, {:.0}], [{:.3}, {:.4}]]: trace {:.4} 1/s, \
          det {:.3} 1/s²\n",
-        a[(0, 0)],
-        a[(0, 1)],
-        a[(1, 0)],
-        a[(1, 1)],
-        r.trace(),
-        r.determinant()
+        a[0][0], a[0][1], a[1][0], a[1][1], r.trace, r.determinant
     );
     s += &format!(
         "  Re A4 = 3β/2 − Bv1/(2 Ir1) = {:.4} − {:.4} = {:.4} 1/s, with β = α1 + μ (α1 − α2) = {:.4} 1/s (μ = {:.4})\n",
-        r.controller_feed,
-        r.motor_damping,
-        r.real_part(),
-        r.beta,
-        r.mu
+        r.controller_feed, r.motor_damping, r.real_part, r.beta, r.mu
     );
-    s += &format!("  the arm alone (no torque, friction cancelled): {:.4} ± {:.4}j 1/s\n", arm[0], arm[1].abs());
     s += &format!(
-        "  α* = Bv1/(3 Ir1) = {star:.4} 1/s: below it (α1 = α2) the pair is stable without preliminary feedback\n"
+        "  the arm alone (no torque, friction cancelled): {:.4} ± {:.4}j 1/s\n",
+        r.arm_pair[0],
+        r.arm_pair[1].abs()
     );
-    if let Some((shift, limit)) = feedback {
-        s += &format!(
-            "  the paper's K_pr shifts Re A4 by {shift:.4} 1/s (its gains on θ̇), whatever α1 = α2: the pair stays stable for α < {limit:.3} 1/s\n"
-        );
+    s += &format!(
+        "  α* = Bv1/(3 Ir1) = {:.4} 1/s: below it (α1 = α2) the pair is stable without preliminary feedback\n",
+        r.alpha_star
+    );
+    if r.feedback_shift != 0.0 {
+        s +=
+            &format!("  the preliminary feedback shifts Re A4 by {:.4} 1/s (through its gains on θ̇)", r.feedback_shift);
+        s += &match r.feedback_alpha_limit {
+            Some(limit) => format!(", whatever α1 = α2: the pair stays stable for α < {limit:.3} 1/s\n"),
+            None => "\n".into(),
+        };
     }
     s
-}
-
-fn resonance_json(c: &SimulationConfig, q2: f64) -> serde_json::Value {
-    let Resonance { r, arm, star, feedback } = resonance(c, q2);
-    json!({
-        "j_eff": r.j_eff,
-        "mu": r.mu,
-        "beta": r.beta,
-        "a4": [[r.a4[(0, 0)], r.a4[(0, 1)]], [r.a4[(1, 0)], r.a4[(1, 1)]]],
-        "trace": r.trace(),
-        "determinant": r.determinant(),
-        "real_part": r.real_part(),
-        "omega_joint": r.omega_joint,
-        "omega_clamped": r.omega_clamped,
-        "arm_pair": arm,
-        "alpha_star": star,
-        "feedback_shift": feedback.map(|f| f.0),
-        "feedback_alpha_limit": feedback.map(|f| f.1),
-    })
 }

@@ -33,8 +33,8 @@ const A4_BESIDE: f64 = 16.0;
 fn pole_name(kind: PoleKind) -> &'static str {
     match kind {
         PoleKind::Loop => "loop pole (sampled loop, s = ln λ / δ)",
-        PoleKind::A4Open => "A4 without K_pr (the δ → 0 limit, not the sampled loop)",
-        PoleKind::A4 => "A4 with K_pr (the δ → 0 limit, not the sampled loop)",
+        PoleKind::A4Open => "A4 without K_pr (the flexible pair's δ → 0 limit, not the sampled loop)",
+        PoleKind::A4 => "A4 with K_pr (the flexible pair's δ → 0 limit, not the sampled loop)",
     }
 }
 /// Least distance between log-axis labels, CSS px (x: a label's width, y: its height).
@@ -340,7 +340,7 @@ impl Scene {
             return Vec::new();
         };
         let (Some(x), Some(y)) = (p.x, p.y) else { return Vec::new() };
-        let text = if kind == PanelKind::ZPlane { "flexible pair (A4 as δ → 0)" } else { "flexible pair" };
+        let text = if kind == PanelKind::ZPlane { "flexible pair (→ A4 as δ → 0)" } else { "flexible pair" };
         vec![Mark { x, y, text: text.into() }]
     }
 
@@ -467,6 +467,12 @@ impl Scene {
             format::sig(pole.modulus, 4),
             format::sig(pole.angle.abs(), 3)
         )));
+        if pole.kind == PoleKind::Loop && pole.flexible {
+            // One motion, three numbers: say which this is.
+            lines.push(TipLine::plain(
+                "the flexible pair: the joint's resonance as the loop has it at this δ (→ A4 as δ → 0)",
+            ));
+        }
         lines.push(if pole.unstable {
             TipLine::toned("unstable: |λ| > 1 (Re s > 0), it grows", false)
         } else {

@@ -1,0 +1,121 @@
+//! The explanation's numbers, live: every number the page's "why" text quotes about the current
+//! settings, formatted from run A's analysis (the report the verdict and the pole plot show), so
+//! the words and the figures cannot disagree. The page puts each into the `data-live` element of
+//! the same name.
+
+use serde::Serialize;
+
+use super::run::Run;
+use crate::analysis::resonance::{alpha_limit, closed_form_a4, feedback_shift};
+use crate::control::feedback::paper_gain;
+use crate::plot::format::{minus, sig_trim};
+
+/// The numbers of the explanation, as text with units.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Story {
+    /// "α = 2 1/s", or "α1 = 0.5, α2 = 2 1/s".
+    pub alpha: String,
+    /// The rest point the analysis is linearized at: "q2 = 0 rad".
+    pub rest: String,
+    /// The arm's own pair, no controller, the friction cancelled: "−0.29 ± 29.36j 1/s".
+    pub arm_pair: String,
+    /// √(K1 (1/Ir1 + 1/J_eff)) and √(K1/Ir1): "29.4 rad/s", "24.4 rad/s".
+    pub omega_joint: String,
+    pub omega_clamped: String,
+    /// J_eff: "4.30 kg m²".
+    pub j_eff: String,
+    /// A4 without preliminary feedback: "2.64 ± 29.58j 1/s"; its trace and determinant.
+    pub a4: String,
+    pub a4_trace: String,
+    pub a4_det: String,
+    /// Re A4 and its two parts: the controller's feed 3β/2 and the motor's damping Bv1/(2 Ir1).
+    pub re_a4: String,
+    pub feed: String,
+    pub motor_damping: String,
+    /// What the sign of Re A4 means, in words.
+    pub re_a4_says: String,
+    /// μ at the rest point.
+    pub mu: String,
+    /// α* = Bv1/(3 Ir1).
+    pub alpha_star: String,
+    /// Run A's δ, ρ, ln ρ/δ and its flexible loop pole at that δ.
+    pub delta: String,
+    pub rho: String,
+    pub growth: String,
+    pub loop_pair: String,
+    /// The paper's K_pr on the pair (acting continuously): its shift of Re A4, the pair it makes,
+    /// and the largest α (α1 = α2) it keeps stable.
+    pub kpr_shift: String,
+    pub kpr_pair: String,
+    pub kpr_alpha_limit: String,
+    /// The minimum-energy LQ design's pair: the unstable pair mirrored.
+    pub lq_pair: String,
+}
+
+/// "2.64 ± 29.58j 1/s".
+fn pair_text(re: f64, im: f64) -> String {
+    minus(&format!("{re:.2} ± {:.2}j 1/s", im.abs()))
+}
+
+/// "2.64 1/s" with a minus sign where negative.
+fn rate(v: f64) -> String {
+    minus(&format!("{v:.2} 1/s"))
+}
+
+/// The story of run A's settings; `None` while its analysis is missing (the page keeps "—").
+pub fn story(run: &Run) -> Option<Story> {
+    let report = run.analysis().report()?;
+    let settings = run.settings();
+    let config = run.closed_loop().config();
+    let plant = &config.plant;
+    let r = &report.resonance;
+    let q2 = report.rest[1];
+    let [a1, a2] = settings.alpha;
+    let alpha = if a1 == a2 {
+        format!("α = {} 1/s", sig_trim(a1, 3))
+    } else {
+        format!("α1 = {}, α2 = {} 1/s", sig_trim(a1, 3), sig_trim(a2, 3))
+    };
+    let [open_re, open_im] = report.limit_pair_open[0];
+    let re_a4_says = if r.real_part > 0.0 {
+        "positive: the controller feeds the resonance faster than the motor's damping drains it, so it grows"
+    } else {
+        "negative: the motor's damping drains the resonance faster than the controller feeds it, so it dies out"
+    };
+    let loop_pair = match report.flexible_pair()[0].and_then(|i| report.poles[i].continuous) {
+        Some([re, im]) => pair_text(re, im),
+        None => "—".into(),
+    };
+    let paper = paper_gain();
+    let kpr = closed_form_a4(plant, settings.alpha, q2, &paper).complex_eigenvalues();
+    let kpr = if kpr[0].im >= kpr[1].im { kpr[0] } else { kpr[1] };
+    let shift = feedback_shift(plant, q2, &paper);
+    // The minimum-energy LQ design reflects an unstable pair into the left half-plane and leaves a
+    // stable one where it is (tests/resonance.rs checks it against the design).
+    let lq_re = -open_re.abs();
+    Some(Story {
+        alpha,
+        rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { sig_trim(q2, 3) }),
+        arm_pair: pair_text(r.arm_pair[0], r.arm_pair[1]),
+        omega_joint: format!("{:.1} rad/s", r.omega_joint),
+        omega_clamped: format!("{:.1} rad/s", r.omega_clamped),
+        j_eff: format!("{:.2} kg m²", r.j_eff),
+        a4: pair_text(open_re, open_im),
+        a4_trace: rate(r.trace),
+        a4_det: format!("{:.0} 1/s²", r.determinant),
+        re_a4: rate(r.real_part),
+        feed: rate(r.controller_feed),
+        motor_damping: rate(r.motor_damping),
+        re_a4_says: re_a4_says.into(),
+        mu: format!("{:.2}", r.mu),
+        alpha_star: format!("{:.2} 1/s", r.alpha_star),
+        delta: format!("{} s", sig_trim(settings.delta, 3)),
+        rho: format!("{:.4}", report.spectral_radius),
+        growth: rate(report.growth_rate),
+        loop_pair,
+        kpr_shift: rate(shift),
+        kpr_pair: pair_text(kpr.re, kpr.im),
+        kpr_alpha_limit: format!("{:.2} 1/s", alpha_limit(plant, shift)),
+        lq_pair: pair_text(lq_re, open_im),
+    })
+}

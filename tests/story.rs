@@ -1,0 +1,187 @@
+//! The physical story the page and the lesson tell (issue 22): every number they quote as text is
+//! the program's, and the live numbers of the explanation come from the same analysis as the
+//! verdict and the pole plot.
+
+mod common;
+
+use flexarm::analysis::resonance::*;
+use flexarm::analysis::*;
+use flexarm::control::feedback::*;
+use flexarm::lesson::LESSON_TEXT;
+use flexarm::*;
+use std::f64::consts::PI;
+
+const PAGE: &str = include_str!("../www/index.html");
+
+/// The page's text with its markup's entities and line breaks as a reader sees them.
+fn page_text() -> String {
+    let flat = PAGE.split_whitespace().collect::<Vec<_>>().join(" ");
+    flat.replace("&lt;", "<").replace("&#8239;", "\u{202f}").replace("&nbsp;", " ")
+}
+
+fn says(what: &str, text: &str, name: &str) {
+    assert!(text.contains(what), "the {name} should say {what:?}");
+}
+
+fn config(delta: f64, alpha: f64, pf: PreliminaryFeedbackChoice) -> SimulationConfig {
+    let mut c = SimulationConfig { preliminary_feedback: pf, ..Default::default() };
+    c.controller.sampling_period = delta;
+    c.controller.alpha = [alpha, alpha];
+    c
+}
+
+fn minus(s: String) -> String {
+    s.replace('-', "−")
+}
+
+fn windows(c: &SimulationConfig) -> Vec<[f64; 2]> {
+    stable_windows(&LinearSettings::of(c, None), [0.002, 0.25]).unwrap().windows
+}
+
+#[test]
+fn the_mode_shape_quoted_is_the_unstable_eigenvector() {
+    let c = config(0.01, 2.0, PreliminaryFeedbackChoice::Off);
+    let [_, q2, theta] = LoopModel::new(&LinearSettings::of(&c, None)).unwrap().mode_shape(0.01).unwrap().unwrap();
+    let page = page_text();
+    for text in [LESSON_TEXT, page.as_str()] {
+        says(&minus(format!("θ ≈ {:.1} q1", theta.re)), text, "story");
+        says(&minus(format!("q2 ≈ {:.1} q1", q2.re)), text, "story");
+    }
+}
+
+#[test]
+fn the_lessons_resonance_numbers_are_the_programs() {
+    let plant = PlantParameters::default();
+    let own = arm_pair(&plant, 0.0)[0];
+    says(&minus(format!("({:.2} ± {:.2}j 1/s)", own.re, own.im)), LESSON_TEXT, "lesson");
+    let r = JointResonance::new(&plant, [2.0, 2.0], 0.0);
+    says(&format!("feeding the resonance {} 1/s", r.controller_feed), LESSON_TEXT, "lesson");
+    says(&format!("taking back {:.2} 1/s", r.motor_damping), LESSON_TEXT, "lesson");
+    let off = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Off), None).unwrap();
+    let [re, im] = off.poles[off.flexible_pair()[0].unwrap()].continuous.unwrap();
+    says(&format!("the loop's pair is at {re:.2} ± {im:.2}j 1/s"), LESSON_TEXT, "lesson");
+    says(&format!("α* = B_v1/(3 I_r1) ≈ {:.2} 1/s", alpha_star(&plant)), LESSON_TEXT, "lesson");
+    assert_eq!(windows(&config(0.01, 0.2, PreliminaryFeedbackChoice::Off)), vec![[0.002, 0.25]]);
+    says("at α = 0.2 1/s every δ of the slider is stable", LESSON_TEXT, "lesson");
+}
+
+/// K_pr's motor torque as the lesson and the page read it, its shift and where it stops working,
+/// and the sampled inner loop's windows.
+#[test]
+fn what_is_said_of_the_preliminary_feedback_is_the_programs() {
+    let plant = PlantParameters::default();
+    let k = paper_gain();
+    let page = page_text();
+    let twist = format!("≈ {:.0} (q1 − θ) + {:.0} (q̇1 − θ̇)", k[(0, 0)], k[(0, 3)]);
+    let motor = minus(format!("{:.0} N m s/rad", k[(0, 5)]));
+    let times = (k[(0, 5)].abs() / plant.bv1).round();
+    assert_eq!(times, 12.0, "the page says twelve times");
+    for text in [LESSON_TEXT, page.as_str()] {
+        says(&twist, text, "story");
+        says(&motor, text, "story");
+        says("twelve times", text, "story");
+        says(&format!("= {} N m s/rad", plant.bv1), &text.replace("<sub>v1</sub>", "_v1"), "story");
+    }
+    let shift = feedback_shift(&plant, 0.0, &k);
+    says(&minus(format!("{shift:.2} 1/s")), LESSON_TEXT, "lesson");
+    says(&format!("above α = {:.2} 1/s", alpha_limit(&plant, shift)), LESSON_TEXT, "lesson");
+    // At α = 5 only a window is left.
+    let w = windows(&config(0.01, 5.0, PreliminaryFeedbackChoice::Paper));
+    assert_eq!(w.len(), 1);
+    says(&format!("at α = 5 1/s only δ from {:.3} to {:.3} s is stable", w[0][0], w[0][1]), &page, "page");
+    // Sampled at δ: two windows, the first from the smallest δ.
+    let mut c = config(0.01, 2.0, PreliminaryFeedbackChoice::Paper);
+    c.inner_loop = InnerLoop::Sampled;
+    let w = windows(&c);
+    assert_eq!(w.len(), 2, "{w:?}");
+    assert_eq!(w[0][0], 0.002);
+    let sampled = format!("δ < {:.3} s (and {:.3}–{:.3} s)", w[0][1], w[1][0], w[1][1]);
+    says(&sampled, LESSON_TEXT, "lesson");
+    says(&sampled, &page, "page");
+}
+
+/// ρ is an asymptotic rate: Fig. 5.2's loop (ρ < 1) first amplifies some states hundreds of times.
+#[test]
+fn the_transient_growth_quoted_is_the_loops() {
+    let c = config(0.01, 2.0, PreliminaryFeedbackChoice::Paper);
+    let model = LoopModel::new(&LinearSettings::of(&c, None)).unwrap();
+    let phi = model.loop_matrix(0.01).unwrap();
+    let rho = model.spectral_radius(0.01).unwrap();
+    assert!(rho < 1.0);
+    let (mut power, mut peak, mut at) = (phi, 0.0, 0);
+    for n in 1..200 {
+        let norm = power.clone().svd(false, false).singular_values.max();
+        if norm > peak {
+            (peak, at) = (norm, n);
+        }
+        power *= phi;
+    }
+    assert!(peak > 400.0 && at == 7, "max ‖Φⁿ‖ = {peak} at n = {at}");
+    says(
+        &format!("(ρ = {rho:.3}) some starting states first grow over 400-fold within seven periods"),
+        &page_text(),
+        "page",
+    );
+}
+
+#[test]
+fn what_ρ_certifies_is_said_with_the_programs_numbers() {
+    let plant = PlantParameters::default();
+    let page = page_text();
+    let spring = flexarm::plot::format::grouped(flexarm::schema::round_significant(plant.fc1 / plant.eps1, 3));
+    says(
+        &format!("= {spring} N m/rad, about forty times K1"),
+        &page.replace("<sub>c1</sub>/ε<sub>1</sub>", "_c1/ε1"),
+        "page",
+    );
+    assert_eq!((plant.fc1 / plant.eps1 / plant.k1 / 10.0).round(), 4.0);
+    // The windows move with the rest point by up to 0.004 s between q2 = 0 and q2 = π.
+    let at = |q2: f64| {
+        let c = config(0.01, 2.0, PreliminaryFeedbackChoice::Off);
+        stable_windows(&LinearSettings::of(&c, Some(q2)), [0.002, 0.25]).unwrap().windows
+    };
+    let base = at(0.0);
+    let mut largest: f64 = 0.0;
+    for i in 1..=12 {
+        let w = at(PI * i as f64 / 12.0);
+        assert_eq!(w.len(), base.len());
+        for (a, b) in w.iter().zip(&base) {
+            largest = largest.max((a[0] - b[0]).abs()).max((a[1] - b[1]).abs());
+        }
+    }
+    assert!(largest > 0.003 && largest < 0.0045, "{largest}");
+    says("by up to 0.004 s between q2 = 0 and q2 = π", &page, "page");
+}
+
+/// The explanation's live numbers are the report's: the same A4, the same loop pole, and the
+/// paper's K_pr and the LQ design as the numerical limit gives them.
+#[test]
+fn the_live_numbers_are_the_analysis_numbers() {
+    let s = common::session("preset=fig5.3");
+    let story = s.status().story.unwrap();
+    let report = s.run(0).unwrap().analysis().report().unwrap().clone();
+    let pair = |re: f64, im: f64| minus(format!("{re:.2} ± {:.2}j 1/s", im.abs()));
+    let [re, im] = report.limit_pair_open[0];
+    assert_eq!(story.a4, pair(re, im));
+    let [lre, lim] = report.poles[report.flexible_pair()[0].unwrap()].continuous.unwrap();
+    assert_eq!(story.loop_pair, pair(lre, lim));
+    assert_eq!(story.rho, format!("{:.4}", report.spectral_radius));
+    assert_eq!(story.rest, "q2 = 0 rad");
+    let paper = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Paper), None).unwrap();
+    let [pre, pim] = paper.limit_pair[0];
+    assert_eq!(story.kpr_pair, pair(pre, pim));
+    let lq = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Lq), None).unwrap();
+    let [qre, qim] = lq.limit_pair[0];
+    assert_eq!(story.lq_pair, pair(qre, qim));
+    assert!(story.re_a4_says.starts_with("positive"));
+    // Below α* the sign and the words turn.
+    let s = common::session("preset=fig5.3&alpha=0.2");
+    let story = s.status().story.unwrap();
+    assert!(story.re_a4.starts_with('−') && story.re_a4_says.starts_with("negative"), "{story:?}");
+    // Every live element of the page names a field of the story.
+    let fields = serde_json::to_value(&story).unwrap();
+    for part in PAGE.split("data-live=\"").skip(1) {
+        let key = &part[..part.find('"').unwrap()];
+        assert!(fields.get(key).is_some(), "data-live=\"{key}\" is not a story field");
+    }
+}
