@@ -78,3 +78,13 @@ fn the_dark_scheme_inverts_lightness_and_keeps_hue() {
     assert!(back.0.iter().zip(blue.0).all(|(a, b)| (a - b).abs() < 1e-6), "twice is the identity");
     assert_eq!(blue.with_alpha(0.5).for_dark().0[3], 0.5);
 }
+
+#[test]
+fn grouped_numbers_set_thousands_apart_with_narrow_no_break_spaces() {
+    use flexarm::plot::format::grouped;
+    assert_eq!(grouped(48200.0), "48\u{202f}200");
+    assert_eq!(grouped(1152.6), "1\u{202f}153");
+    assert_eq!(grouped(999.4), "999");
+    assert_eq!(grouped(-1234567.0), "−1\u{202f}234\u{202f}567");
+    assert_eq!(grouped(f64::NAN), "—");
+}

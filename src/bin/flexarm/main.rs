@@ -30,7 +30,8 @@ use cli::{Failure, Res};
 const ABOUT: &str =
     "flexarm — predictive control of a flexible-joint robot arm (von Wissel, Nikoukhah & Campbell 1994)";
 
-const AFTER: &str = "ρ is the spectral radius of the one-period map linearized at rest: ρ < 1 ⇒ linearly stable.\n\
+const AFTER: &str = "ρ is the spectral radius of the one-period map linearized at rest with the friction cancelled: \
+                     ρ < 1 ⇒ that rest point is stable for small motions (errors behave like ρⁿ over many periods).\n\
                      'flexarm COMMAND --help' describes one command.";
 
 fn commands() -> Vec<Command> {
