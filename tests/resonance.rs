@@ -193,3 +193,25 @@ fn the_limit_and_the_lq_design_work_over_the_whole_range_of_alpha() {
         }
     }
 }
+
+/// The predictor reads only the links: its linearized gain has exactly zero columns for θ and θ̇
+/// at every ε, not only in the limit (with or without a preliminary feedback folded in, which
+/// the predictor sees through the links too).
+#[test]
+fn the_predictor_never_reads_the_motor_at_any_delta() {
+    let plant = PlantParameters::default();
+    for alpha in [[2.0, 2.0], [0.5, 3.0]] {
+        let model = linearize_at_rest(&plant, alpha, [0.5 * PI, 0.4]);
+        for delta in [0.002, 0.01, 0.05, 0.2] {
+            let mut c = flexarm::ControllerParameters::default();
+            c.sampling_period = delta;
+            c.alpha = alpha;
+            let k = predictor_gain(&model, &FeedbackGain::zeros(), &c).unwrap();
+            let scale = k.amax();
+            assert!(scale > 1.0, "{k}");
+            for row in 0..2 {
+                assert!(k[(row, 2)].abs() < 1e-9 * scale && k[(row, 5)].abs() < 1e-9 * scale, "δ = {delta}: {k}");
+            }
+        }
+    }
+}

@@ -4,10 +4,13 @@
 //! # The LQ design
 //! In the limit δ → 0 the predictive controller acts as a linear feedback K_lim that keeps a
 //! 6-dimensional subspace V* (the consistent states of the stabilized DAE) invariant with all six
-//! eigenvalues at −α, and never looks at the motor coordinates x2 = (θ, θ̇): on the quotient
-//! ℝ⁸/V* it leaves the 2×2 matrix A4 untouched (see [`super::linear::limit_pair`]). The
-//! preliminary feedback is designed on that part alone, u = K2 x2, with x2 = Ψ x the motor
-//! coordinates measured from V*, and mapped back to the full state, K_pr = K2 Ψ.
+//! eigenvalues at −α, and never looks at the motor coordinates x2 = (θ, θ̇): it has no gain on the
+//! quotient ℝ⁸/V*, whose 2×2 matrix A4 it cannot move (see [`super::linear::limit_pair`]). That
+//! does not make A4 the arm's own motion: the way the predictor drives the links through the
+//! spring is part of it, and feeds the joint's resonance (Re A4 = 3α/2 − Bv1/(2 Ir1), see
+//! [`crate::analysis::resonance`]). The preliminary feedback is designed on that part alone,
+//! u = K2 x2, with x2 = Ψ x the motor coordinates measured from V*, and mapped back to the full
+//! state, K_pr = K2 Ψ.
 //!
 //! K2 is the LQ gain for ẋ2 = A4 x2 + B2 u (B2 = Ψ B) with a tiny state weight
 //! Q = 1e-6 · I2 and R = diag(1, 6.7): a minimum-energy design that reflects the unstable pair

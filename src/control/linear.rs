@@ -1,6 +1,7 @@
 //! The stabilized DAE (4.1)–(4.3) linearized at rest, the predictor as a linear map, and its
 //! δ → 0 limit (section 3): the feedback K_lim, the invariant subspace V* it keeps at −α, and the
-//! pair A4 on the quotient that it never touches.
+//! pair A4 on the quotient, which it has no gain on (its θ and θ̇ columns are zero) — the joint's
+//! resonance as the controller leaves it (closed form: [`crate::analysis::resonance`]).
 //!
 //! Everything here is built from the same plant functions the simulation uses
 //! ([`crate::model::Plant`]), linearized at rest (zero velocities, θ = q1, no torque), where the
@@ -122,7 +123,7 @@ pub fn predictor_gain(
     Ok(sweep.fixed_view::<2, 8>(8, 0).into_owned())
 }
 
-/// The δ → 0 limit of the predictive controller and the pair it leaves untouched.
+/// The δ → 0 limit of the predictive controller and the pair it has no gain on.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LimitPair {
     /// K_lim: the limit of the predictor's V_k as a feedback on x_0.
