@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 use super::resonance::ResonanceReport;
 use crate::control::config::{ControllerParameters, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
 use crate::control::feedback::{resolve_gain, FeedbackGain};
-use crate::control::linear::{limit_pair, linearize_at_rest, predictor_gain, LinearModel, Mat10, Mat8};
+use crate::control::linear::{expm, limit_pair, linearize_at_rest, predictor_gain, LinearModel, Mat10, Mat8};
 use crate::error::Error;
 use crate::model::params::PlantParameters;
 
@@ -185,7 +185,7 @@ pub fn sampled_loop_matrix(
     let mut aug = Mat10::zeros();
     aug.fixed_view_mut::<8, 8>(0, 0).copy_from(&(a_plant * delta));
     aug.fixed_view_mut::<8, 2>(0, 8).copy_from(&(model.b * delta));
-    let transition = aug.exp();
+    let transition = expm(&aug);
     let phi: Mat8 = transition.fixed_view::<8, 8>(0, 0).into_owned();
     let gamma: SMatrix<f64, 8, 2> = transition.fixed_view::<8, 2>(0, 8).into_owned();
     let phi = match inner_loop {

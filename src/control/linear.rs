@@ -18,7 +18,7 @@ use crate::model::params::PlantParameters;
 use crate::model::plant::Plant;
 
 pub(crate) type Mat8 = SMatrix<f64, 8, 8>;
-pub(crate) type Mat10 = SMatrix<f64, 10, 10>;
+pub type Mat10 = SMatrix<f64, 10, 10>;
 
 /// The arm, the integrators w and the stabilized constraint linearized at rest:
 /// ẋ = A x + B u, constraint 0 = C x + D u (in deviations from `rest`).
@@ -96,6 +96,30 @@ pub(crate) fn pencil(model: &LinearModel, gain: &FeedbackGain) -> (Mat10, Mat10)
 pub(crate) fn backward_euler_map(e: &Mat10, f: &Mat10, eps: f64) -> Result<Mat10, Error> {
     let lhs = e - f * eps;
     lhs.lu().solve(e).ok_or(Error::Analysis("the backward-Euler step of the linearized DAE is singular"))
+}
+
+/// e^M by scaling and squaring a Taylor series: M is scaled by 2^−s until its ∞-norm is at most
+/// 1/8, where ten terms leave a relative error below 1e-18, and the result squared s times.
+/// Written for the sampled loop's 10×10 transition matrices: nalgebra's general `exp` (Padé with
+/// norm estimation) was 15 kB of the page's module; this is a few hundred bytes, and
+/// `tests/analysis.rs` checks it against nalgebra's to 1e-10 of the largest entry.
+pub fn expm(m: &Mat10) -> Mat10 {
+    let norm = m.row_iter().map(|r| r.iter().map(|v| v.abs()).sum::<f64>()).fold(0.0, f64::max);
+    if !norm.is_finite() {
+        return Mat10::from_element(f64::NAN);
+    }
+    let squarings = if norm > 0.125 { (norm / 0.125).log2().ceil() as i32 } else { 0 };
+    let a = m * 0.5f64.powi(squarings);
+    let mut term = Mat10::identity();
+    let mut sum = Mat10::identity();
+    for k in 1..=10 {
+        term = term * a / k as f64;
+        sum += term;
+    }
+    for _ in 0..squarings {
+        sum = sum * sum;
+    }
+    sum
 }
 
 pub(crate) fn matrix_power(m: &Mat10, mut k: usize) -> Mat10 {

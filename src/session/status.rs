@@ -200,7 +200,7 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
     if alone {
         let e = run.closed_loop().snapshot().error;
         let now = format!(", errors now {}, {} rad", sci(e[0], 2), sci(e[1], 2));
-        return (format!("{rate}{now} — the simulation decides here: {}", caveat(run)), true);
+        return (format!("{rate}{now} — {}", caveat(run)), true);
     }
     let Some((p, predicted)) = prediction else { return (rate, true) };
     let seen = Prediction::of_rate(g);
