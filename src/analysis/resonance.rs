@@ -213,6 +213,8 @@ pub struct ResonanceReport {
     pub feedback_shift: f64,
     /// For a fixed gain (the paper's), the largest α = α1 = α2 it keeps the pair stable at, 1/s.
     pub feedback_alpha_limit: Option<f64>,
+    /// The same for the paper's K_pr whatever the loop's own feedback (the maps with K_pr use it).
+    pub paper_alpha_limit: f64,
 }
 
 impl ResonanceReport {
@@ -239,6 +241,7 @@ impl ResonanceReport {
             alpha_star: alpha_star(plant),
             feedback_shift: shift,
             feedback_alpha_limit: damps.then(|| alpha_limit(plant, shift)),
+            paper_alpha_limit: alpha_limit(plant, feedback_shift(plant, q2, &crate::control::feedback::paper_gain())),
         }
     }
 }

@@ -6,7 +6,7 @@
 use serde::Serialize;
 
 use super::run::Run;
-use crate::analysis::resonance::{alpha_limit, closed_form_a4, feedback_shift};
+use crate::analysis::resonance::{closed_form_a4, feedback_shift};
 use crate::control::feedback::paper_gain;
 use crate::plot::format::{minus, sig_trim};
 
@@ -115,7 +115,7 @@ pub fn story(run: &Run) -> Option<Story> {
         loop_pair,
         kpr_shift: rate(shift),
         kpr_pair: pair_text(kpr.re, kpr.im),
-        kpr_alpha_limit: format!("{:.2} 1/s", alpha_limit(plant, shift)),
+        kpr_alpha_limit: format!("{:.2} 1/s", r.paper_alpha_limit),
         lq_pair: pair_text(lq_re, open_im),
     })
 }
