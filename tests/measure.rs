@@ -213,6 +213,8 @@ fn rho_of_delta_becomes_the_rate_with_zero_as_the_border() {
     assert!((probe.delta.unwrap() / 0.05 - 1.0).abs() < 0.01);
     assert!(probe.lines[1].text.starts_with("ρ = 0.") && probe.lines[1].tone == "good", "{:?}", probe.lines);
     assert!(probe.lines[2].text.starts_with("ln ρ/δ = −") && probe.lines[2].text.ends_with("1/s (per second)"));
+    assert_eq!(info(&panels, "map-off").note, "ln ρ/δ without K_pr");
+    assert_eq!(info(&panels, "map-on").note, "ln ρ/δ with paper K_pr");
     // The key and the figure's words say which.
     let key = scene.legend();
     assert_eq!(key.iter().map(|g| g.title).collect::<Vec<_>>(), ["pole plot", "ln ρ/δ along δ", "stability maps"]);
@@ -279,6 +281,7 @@ fn switching_the_measure_redraws_the_maps_and_the_curve() {
     s.set("measure", "rate").unwrap();
     let svg = s.svg_maps().unwrap();
     assert!(svg.contains("Rate ln ρ/δ") && svg.contains("ln ρ/δ (1/s), per second"), "{}", &svg[..300]);
+    assert!(svg.contains(">ln ρ/δ without K_pr<") && svg.contains(">ln ρ/δ with paper K_pr<"), "the panels' captions");
 }
 
 // ----------------------------------------------------------------------- the state string

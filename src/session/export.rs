@@ -23,16 +23,16 @@ impl Session {
     /// coloured by the view's measure (ρ or ln ρ/δ), once they are computed.
     pub fn svg_maps(&self) -> Result<String, Error> {
         let pf = self.settings.a.pf;
+        let measure = self.settings.view.measure;
         let mut maps: Vec<(StabilityMap, String)> = Vec::new();
         for side in MapSide::BOTH {
             let entry = self.maps.shown(side).filter(|e| e.is_done()).ok_or(Error::NotReady(
                 "the stability maps are still being computed: show them and wait for the progress bar to fill",
             ))?;
-            maps.push((entry.job().clone().finish()?, self.maps.caption(side, pf)));
+            maps.push((entry.job().clone().finish()?, self.maps.caption(side, pf, measure)));
         }
         let panels: Vec<(&StabilityMap, &str)> = maps.iter().map(|(m, c)| (m, c.as_str())).collect();
         let a = &self.settings.a;
-        let measure = self.settings.view.measure;
         let title = format!(
             "{} of the sampled loop (k = {}, m = {}, inner loop {})",
             measure.quantity(),

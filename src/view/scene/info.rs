@@ -308,7 +308,7 @@ impl Scene {
                 info.x_scale = "log";
                 info.y_scale = "log";
                 let pf = self.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
-                info.note = side.caption(pf);
+                info.note = side.caption(pf, self.options.measure);
             }
         }
         if info.x_scale == "linear" {
