@@ -331,7 +331,7 @@ fn flexarm_map_measure_rate_writes_the_rate_figure_and_refuses_other_words() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let svg = std::fs::read_to_string(&path).unwrap();
     std::fs::remove_file(&path).ok();
-    assert!(svg.contains("Rate ln ρ/δ (1/s, per second) of the sampled loop"), "{}", &svg[..400]);
+    assert!(svg.contains("Rate ln ρ/δ (1/s) of the sampled loop"), "{}", &svg[..400]);
     assert!(svg.contains("ln ρ/δ (1/s), per second"));
     let out = flexarm(&["map", "--n-delta", "8", "--n-alpha", "3", "--measure", "rho", "--svg", p]);
     assert!(out.status.success());

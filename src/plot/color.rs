@@ -298,7 +298,7 @@ impl Measure {
     pub fn quantity(self) -> &'static str {
         match self {
             Measure::Rho => "Spectral radius ρ",
-            Measure::Rate => "Rate ln ρ/δ (1/s, per second)",
+            Measure::Rate => "Rate ln ρ/δ (1/s)",
         }
     }
 
