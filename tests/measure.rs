@@ -89,7 +89,7 @@ fn colour_at(vertices: &[Vertex], p: [f64; 2]) -> Option<[f32; 4]> {
         let (d1, d2, d3) = (side(a, b), side(b, c), side(c, a));
         !((d1 < 0.0 || d2 < 0.0 || d3 < 0.0) && (d1 > 0.0 || d2 > 0.0 || d3 > 0.0))
     };
-    vertices.chunks(3).filter(|t| inside(t)).last().map(|t| t[0].color)
+    vertices.chunks(3).rev().find(|t| inside(t)).map(|t| t[0].color)
 }
 
 #[test]
