@@ -13,7 +13,7 @@ const WIDTHS: [f64; 12] = [320.0, 360.0, 390.0, 480.0, 600.0, 640.0, 800.0, 1024
 const HEIGHTS: [f64; 5] = [400.0, 560.0, 700.0, 900.0, 1300.0];
 
 /// View settings to try, as state strings.
-const VIEWS: [&str; 9] = [
+const VIEWS: [&str; 11] = [
     "mode=intro",
     "mode=full",
     "mode=full&torque=1&log=1",
@@ -23,6 +23,8 @@ const VIEWS: [&str; 9] = [
     "mode=full&compare=1&torque=1",
     "mode=full&tab=poles&plane=z",
     "mode=full&tab=maps",
+    "mode=full&measure=rate",
+    "mode=full&tab=poles&measure=rate",
 ];
 
 fn overlap(a: &Rect, b: &Rect) -> bool {

@@ -3,6 +3,7 @@
 
 use flexarm::analysis::{log_space, StabilityMap};
 use flexarm::control::{Column, Traces};
+use flexarm::plot::color::Measure;
 use flexarm::plot::palette;
 use flexarm::svg::{error_traces_svg, stability_map_svg, stability_maps_svg, MAX_TRACE_POINTS};
 
@@ -89,7 +90,7 @@ fn the_map_figure_uses_the_canvas_colour_ramp() {
 #[test]
 fn figures_carry_the_state_string() {
     let map = synthetic_map();
-    let svg = stability_maps_svg(&[(&map, "off")], "t", None, Some("delta=0.01&pf=off&x=<1>"));
+    let svg = stability_maps_svg(&[(&map, "off")], "t", None, Some("delta=0.01&pf=off&x=<1>"), Measure::Rho);
     assert_wellformed(&svg);
     assert!(svg.contains("<desc>flexarm state: delta=0.01&amp;pf=off&amp;x=&lt;1&gt;</desc>"));
     let svg = error_traces_svg(&traces(100, 1e-3), "t", Some("delta=0.04&pf=paper"));
@@ -103,7 +104,7 @@ fn nan_cells_and_points_are_skipped() {
     map.spectral_radius[77] = f64::INFINITY;
     let svg = stability_map_svg(&map, "t", Some((f64::NAN, 2.0)));
     assert_wellformed(&svg);
-    let svg = stability_maps_svg(&[(&map, "a"), (&map, "b")], "two", None, None);
+    let svg = stability_maps_svg(&[(&map, "a"), (&map, "b")], "two", None, None, Measure::Rate);
     assert_wellformed(&svg);
     assert!(svg.contains("rho-contour-1"));
     // Degenerate grids still give a valid document.

@@ -1,5 +1,6 @@
 //! Colours: the [`Color`] type, the [`palette`] of every picture (canvas and SVG), and the
-//! diverging ramp of the spectral radius ρ ([`rho_color`]), written once.
+//! diverging ramps of the stability maps — of the spectral radius ρ ([`rho_color`]) and of the
+//! rate ln ρ/δ ([`rate_color`]), chosen by a [`Measure`] — written once.
 
 /// A colour: sRGB-encoded components and straight alpha.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -153,21 +154,39 @@ pub mod palette {
 /// ρ is shown between these bounds; beyond them the colour saturates.
 pub const RHO_SHOWN: [f64; 2] = [0.8, 1.2];
 
-/// Where ρ sits on the colour ramp, in [0, 1]: ½ at ρ = 1, 0 at ρ ≤ 0.8, 1 at ρ ≥ 1.2, and in
-/// between ½ ± ½ √(|ρ − 1| / 0.2). The square root keeps ρ = 0.98 and 1.02 visibly coloured.
-/// NaN for NaN.
-pub fn rho_position(rho: f64) -> f64 {
-    if rho.is_nan() {
-        return f64::NAN;
-    }
-    let (lo, hi) = (RHO_SHOWN[0], RHO_SHOWN[1]);
-    let u = if rho < 1.0 { (rho - 1.0) / (1.0 - lo) } else { (rho - 1.0) / (hi - 1.0) };
+/// ln ρ/δ is shown within ± this, 1/s; beyond it the colour saturates. 5 1/s is the fastest decay
+/// the controller is asked for (α ≤ 5 1/s), twice the growth of Fig. 5.3 (2.4 1/s), and 97 % of the
+/// default maps' cells lie within it (they span about −4.4 to +7 1/s); an error growing at
+/// 5 1/s gains e^50 over the page's 10-s window, so faster reads the same. With the square root,
+/// ±0.2 1/s sits where ρ = 1 ± 0.008 does on the ρ ramp: visibly coloured.
+pub const RATE_SHOWN: f64 = 5.0;
+
+/// Where a signed deviation `u` (in units of its saturation bound) sits on the ramp: ½ at 0,
+/// ½ ± ½ √|u| up to |u| = 1, then 0 or 1. The square root keeps small deviations visibly
+/// coloured. NaN for NaN.
+fn diverging_position(u: f64) -> f64 {
     let t = u.abs().min(1.0).sqrt();
-    if rho < 1.0 {
+    if u.is_nan() {
+        f64::NAN
+    } else if u < 0.0 {
         0.5 - 0.5 * t
     } else {
         0.5 + 0.5 * t
     }
+}
+
+/// Where ρ sits on the colour ramp, in [0, 1]: ½ at ρ = 1, 0 at ρ ≤ 0.8, 1 at ρ ≥ 1.2, and in
+/// between ½ ± ½ √(|ρ − 1| / 0.2). The square root keeps ρ = 0.98 and 1.02 visibly coloured.
+/// NaN for NaN.
+pub fn rho_position(rho: f64) -> f64 {
+    let (lo, hi) = (RHO_SHOWN[0], RHO_SHOWN[1]);
+    diverging_position(if rho < 1.0 { (rho - 1.0) / (1.0 - lo) } else { (rho - 1.0) / (hi - 1.0) })
+}
+
+/// Where the rate ln ρ/δ (1/s) sits on the colour ramp: ½ at 0, ½ ± ½ √(|rate| / [`RATE_SHOWN`]),
+/// saturating at ± [`RATE_SHOWN`]. NaN for NaN.
+pub fn rate_position(rate: f64) -> f64 {
+    diverging_position(rate / RATE_SHOWN)
 }
 
 /// The ramp at position `p` in [0, 1]: dark blue (stable) through near white (ρ = 1) to dark
@@ -194,4 +213,100 @@ pub fn rho_color(rho: f64) -> Color {
         return palette::MAP_PENDING;
     }
     ramp_color(rho_position(rho))
+}
+
+/// The colour of the rate ln ρ/δ (1/s) on the maps: [`ramp_color`] at [`rate_position`]; light
+/// grey for NaN (not computed yet).
+pub fn rate_color(rate: f64) -> Color {
+    if rate.is_nan() {
+        return palette::MAP_PENDING;
+    }
+    ramp_color(rate_position(rate))
+}
+
+/// What the stability maps and ρ(δ) show. ρ is per sampling period: it tends to 1 as δ → 0 for
+/// any loop, so its shades cannot be compared across δ; ln ρ/δ is per second and can. Both say
+/// stable exactly where ρ < 1 ⇔ ln ρ/δ < 0, so the ρ = 1 contour is the same line under both.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Measure {
+    /// The spectral radius ρ of one sampling period.
+    #[default]
+    Rho,
+    /// The rate ln ρ/δ, 1/s: errors grow (> 0) or die out (< 0) as e^(rate·t).
+    Rate,
+}
+
+impl Measure {
+    /// The measure named `rho` or `rate` (the view parameter's values).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "rho" => Some(Measure::Rho),
+            "rate" => Some(Measure::Rate),
+            _ => None,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Measure::Rho => "rho",
+            Measure::Rate => "rate",
+        }
+    }
+
+    /// The value shown for spectral radius `rho` at sampling period `delta` (s).
+    pub fn value(self, rho: f64, delta: f64) -> f64 {
+        match self {
+            Measure::Rho => rho,
+            Measure::Rate => rho.ln() / delta,
+        }
+    }
+
+    /// The value at the edge of stability (ρ = 1): 1 or 0.
+    pub fn border(self) -> f64 {
+        match self {
+            Measure::Rho => 1.0,
+            Measure::Rate => 0.0,
+        }
+    }
+
+    /// Where a shown value sits on the colour ramp, in [0, 1].
+    pub fn position(self, value: f64) -> f64 {
+        match self {
+            Measure::Rho => rho_position(value),
+            Measure::Rate => rate_position(value),
+        }
+    }
+
+    /// The colour of a map cell with spectral radius `rho` at `delta` (s).
+    pub fn color(self, rho: f64, delta: f64) -> Color {
+        if rho.is_nan() {
+            return palette::MAP_PENDING;
+        }
+        ramp_color(self.position(self.value(rho, delta)))
+    }
+
+    /// The symbol with its unit, as a colour bar names it: "ρ" or "ln ρ/δ (1/s)".
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Measure::Rho => "ρ",
+            Measure::Rate => "ln ρ/δ (1/s)",
+        }
+    }
+
+    /// The quantity as a figure's title names it.
+    pub fn quantity(self) -> &'static str {
+        match self {
+            Measure::Rho => "Spectral radius ρ",
+            Measure::Rate => "Rate ln ρ/δ (1/s)",
+        }
+    }
+
+    /// The edge of stability in words: "ρ = 1" or "ln ρ/δ = 0".
+    pub fn border_text(self) -> &'static str {
+        match self {
+            Measure::Rho => "ρ = 1",
+            Measure::Rate => "ln ρ/δ = 0",
+        }
+    }
 }

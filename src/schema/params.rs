@@ -357,6 +357,7 @@ pub const PARAMS: &[&Param] = &[
     &super::PLANE,
     &super::RHO,
     &super::MAP,
+    &super::MEASURE,
     &super::TORQUE,
     &super::LOG,
 ];

@@ -114,6 +114,24 @@ pub const MAP: Param = switch(
     "ρ over δ and α without and with preliminary feedback (computed in the background).",
 );
 
+/// What the stability maps and ρ(δ) show: ρ per sampling period, or the rate ln ρ/δ per second.
+pub const MEASURE: Param = Param {
+    key: "measure",
+    label: "Maps and ρ(δ) show",
+    symbol: "",
+    unit: "",
+    name: "measure",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "rho", label: "ρ per sampling period" },
+            Choice { value: "rate", label: "ln ρ/δ per second" },
+        ],
+        default: "rho",
+    },
+    scope: Scope::Page,
+    help: "ρ per period tends to 1 as δ → 0 for any loop, while ln ρ/δ, in 1/s, compares across δ; both say stable exactly where ρ < 1 ⇔ ln ρ/δ < 0, so the contour is the same.",
+};
+
 /// The torque panel.
 pub const TORQUE: Param =
     switch("torque", "Show the torques T1, T2 (N m)", false, "The applied torques under the error plots.");

@@ -20,26 +20,28 @@ impl Session {
     }
 
     /// The two stability maps shown, side by side with their colour bar and the current (δ, α),
-    /// once they are computed.
+    /// coloured by the view's measure (ρ or ln ρ/δ), once they are computed.
     pub fn svg_maps(&self) -> Result<String, Error> {
         let pf = self.settings.a.pf;
+        let measure = self.settings.view.measure;
         let mut maps: Vec<(StabilityMap, String)> = Vec::new();
         for side in MapSide::BOTH {
             let entry = self.maps.shown(side).filter(|e| e.is_done()).ok_or(Error::NotReady(
                 "the stability maps are still being computed: show them and wait for the progress bar to fill",
             ))?;
-            maps.push((entry.job().clone().finish()?, self.maps.caption(side, pf)));
+            maps.push((entry.job().clone().finish()?, self.maps.caption(side, pf, measure)));
         }
         let panels: Vec<(&StabilityMap, &str)> = maps.iter().map(|(m, c)| (m, c.as_str())).collect();
         let a = &self.settings.a;
         let title = format!(
-            "Spectral radius ρ of the sampled loop (k = {}, m = {}, inner loop {})",
+            "{} of the sampled loop (k = {}, m = {}, inner loop {})",
+            measure.quantity(),
             a.k,
             a.eps_ratio,
             a.inner.name()
         );
         let mark = (a.alpha[0] == a.alpha[1]).then_some((a.delta, a.alpha[0]));
-        Ok(crate::svg::stability_maps_svg(&panels, &title, mark, Some(&self.settings.run_query())))
+        Ok(crate::svg::stability_maps_svg(&panels, &title, mark, Some(&self.settings.run_query()), measure))
     }
 
     /// An `<iframe>` that shows what is on screen in a course page: the page at `page_url` (no

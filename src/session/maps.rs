@@ -4,6 +4,7 @@
 
 use crate::analysis::{LinearSettings, MapGrid, MapJob};
 use crate::control::config::PreliminaryFeedbackChoice;
+use crate::plot::color::Measure;
 use crate::plot::format;
 
 /// Which of the two maps: without or with preliminary feedback.
@@ -56,11 +57,15 @@ impl MapSide {
         self as usize
     }
 
-    /// "ρ without K_pr", "ρ with paper K_pr".
-    pub fn caption(self, pf: PreliminaryFeedbackChoice) -> String {
+    /// "ρ without K_pr", "ρ with paper K_pr" ("ln ρ/δ without K_pr" … when the maps show the rate).
+    pub fn caption(self, pf: PreliminaryFeedbackChoice, measure: Measure) -> String {
+        let what = match measure {
+            Measure::Rho => "ρ",
+            Measure::Rate => "ln ρ/δ",
+        };
         match self.feedback(pf) {
-            PreliminaryFeedbackChoice::Off => "ρ without K_pr".into(),
-            f => format!("ρ with {}", feedback_short(f)),
+            PreliminaryFeedbackChoice::Off => format!("{what} without K_pr"),
+            f => format!("{what} with {}", feedback_short(f)),
         }
     }
 }
@@ -300,9 +305,9 @@ impl Maps {
         MapStatus { percent, done, text, points, shown: self.enabled }
     }
 
-    /// The caption of a side's map for run A's feedback `pf`.
-    pub fn caption(&self, side: MapSide, pf: PreliminaryFeedbackChoice) -> String {
-        side.caption(pf)
+    /// The caption of a side's map for run A's feedback `pf`, naming what the cells show.
+    pub fn caption(&self, side: MapSide, pf: PreliminaryFeedbackChoice, measure: Measure) -> String {
+        side.caption(pf, measure)
     }
 }
 

@@ -375,11 +375,12 @@ impl super::Session {
                 "the pole plot s = ln λ / δ"
             });
         }
+        let rate = v.measure == crate::plot::color::Measure::Rate;
         if v.rho {
-            shown.push("ρ along δ");
+            shown.push(if rate { "the rate ln ρ/δ along δ" } else { "ρ along δ" });
         }
         if v.map {
-            shown.push("the stability maps ρ(δ, α)");
+            shown.push(if rate { "the stability maps coloured by ln ρ/δ" } else { "the stability maps ρ(δ, α)" });
         }
         let mut text = format!("The figure shows {}.", shown.join(", "));
         for (i, run) in self.runs().enumerate() {

@@ -2,6 +2,7 @@
 //! read from and written to the state string with the rest.
 
 use crate::error::{Error, ParseError};
+use crate::plot::color::Measure;
 use crate::schema::{self, Param, Value};
 
 /// What the page shows: the schema's view parameters.
@@ -14,6 +15,8 @@ pub struct ViewSettings {
     pub z_plane: bool,
     pub rho: bool,
     pub map: bool,
+    /// What the maps and ρ(δ) show: ρ per period or ln ρ/δ per second.
+    pub measure: Measure,
     pub torque: bool,
     /// log |e| with the predicted slope.
     pub log: bool,
@@ -26,7 +29,7 @@ pub struct ViewSettings {
 }
 
 /// The view parameters, in the order the state string writes them.
-pub(super) const VIEW_PARAMS: [&Param; 10] = [
+pub(super) const VIEW_PARAMS: [&Param; 11] = [
     &schema::MODE,
     &schema::EMBED,
     &schema::WINDOW,
@@ -35,6 +38,7 @@ pub(super) const VIEW_PARAMS: [&Param; 10] = [
     &schema::PLANE,
     &schema::RHO,
     &schema::MAP,
+    &schema::MEASURE,
     &schema::TORQUE,
     &schema::LOG,
 ];
@@ -47,6 +51,7 @@ impl Default for ViewSettings {
             z_plane: false,
             rho: false,
             map: false,
+            measure: Measure::Rho,
             torque: false,
             log: false,
             tab: "run",
@@ -72,6 +77,7 @@ impl ViewSettings {
             "poles" => Value::Switch(self.poles),
             "rho" => Value::Switch(self.rho),
             "map" => Value::Switch(self.map),
+            "measure" => Value::Choice(self.measure.name()),
             "torque" => Value::Switch(self.torque),
             "log" => Value::Switch(self.log),
             _ => return None,
@@ -89,6 +95,7 @@ impl ViewSettings {
             ("poles", Value::Switch(b)) => self.poles = b,
             ("rho", Value::Switch(b)) => self.rho = b,
             ("map", Value::Switch(b)) => self.map = b,
+            ("measure", Value::Choice(m)) => self.measure = Measure::from_name(m).unwrap_or_default(),
             ("torque", Value::Switch(b)) => self.torque = b,
             ("log", Value::Switch(b)) => self.log = b,
             _ => return false,

@@ -1,11 +1,12 @@
-//! The stability-map figure: ρ over (δ, α) on logarithmic axes, cells in the ρ colour ramp, the
-//! ρ = 1 contour, a colour bar, and a marker at the current settings.
+//! The stability-map figure: ρ over (δ, α) on logarithmic axes, cells coloured by ρ or by ln ρ/δ
+//! (a [`Measure`], the same ramps as the page's maps), the ρ = 1 contour (ln ρ/δ = 0: the same
+//! line under both), a colour bar, and a marker at the current settings.
 
 use std::fmt::Write as _;
 
 use super::{fit_title, log_range, num, Axis, Svg, INK};
 use crate::analysis::StabilityMap;
-use crate::plot::color::{ramp_color, rho_color, rho_position, RHO_SHOWN};
+use crate::plot::color::{ramp_color, Measure, RATE_SHOWN, RHO_SHOWN};
 use crate::plot::contour::{chain_segments, marching_squares};
 use crate::plot::format;
 use crate::plot::palette;
@@ -82,20 +83,22 @@ fn rho_contour(panel: &MapPanel) -> Vec<(Vec<(f64, f64)>, bool)> {
 }
 
 /// A figure of ρ over (δ, α): logarithmic axes (δ [s] horizontal, α [1/s] vertical), cells
-/// coloured by [`rho_color`], the ρ = 1 contour, a colour bar, and a marker at `current`
-/// (δ, α) if given and inside the grid.
+/// coloured by [`crate::plot::rho_color`], the ρ = 1 contour, a colour bar, and a marker at
+/// `current` (δ, α) if given and inside the grid.
 pub fn stability_map_svg(map: &StabilityMap, title: &str, current: Option<(f64, f64)>) -> String {
-    stability_maps_svg(&[(map, "")], title, current, None)
+    stability_maps_svg(&[(map, "")], title, current, None, Measure::Rho)
 }
 
 /// Several stability maps side by side with one shared colour bar, each under its own label
-/// (e.g. without and with preliminary feedback); the marker, if any, is drawn on every panel.
-/// `state` (the state string of the settings) goes into the figure's `<desc>`.
+/// (e.g. without and with preliminary feedback), cells coloured by `measure`; the marker, if
+/// any, is drawn on every panel. `state` (the state string of the settings) goes into the
+/// figure's `<desc>`.
 pub fn stability_maps_svg(
     maps: &[(&StabilityMap, &str)],
     title: &str,
     current: Option<(f64, f64)>,
     state: Option<&str>,
+    measure: Measure,
 ) -> String {
     let n = maps.len().max(1) as f64;
     let labelled = maps.iter().any(|(_, l)| !l.is_empty());
@@ -128,15 +131,19 @@ pub fn stability_maps_svg(
         .collect();
 
     for (i, panel) in panels.iter().enumerate() {
-        draw_map_panel(&mut svg, panel, i, current);
+        draw_map_panel(&mut svg, panel, i, current, measure);
     }
-    colour_bar(&mut svg, bar_x, top, bottom);
+    colour_bar(&mut svg, bar_x, top, bottom, measure);
 
     // Legend under the plots.
     let ly = bottom + 80.0;
     let lx = MAP_LEFT;
     svg.line(lx, ly - 4.0, lx + 28.0, ly - 4.0, (&palette::CONTOUR.css(), 2.0));
-    svg.text(lx + 36.0, ly, 13.0, "start", "", "ρ = 1: stability boundary (ρ < 1 ⇔ linearly stable)");
+    let boundary = match measure {
+        Measure::Rho => "ρ = 1: stability boundary (ρ < 1 ⇔ linearly stable)",
+        Measure::Rate => "ln ρ/δ = 0 (ρ = 1): stability boundary (ln ρ/δ < 0 ⇔ linearly stable)",
+    };
+    svg.text(lx + 36.0, ly, 13.0, "start", "", boundary);
     if let Some((d, a)) = current.filter(|(d, a)| panels.iter().any(|p| p.x.contains(*d) && p.y.contains(*a))) {
         marker(&mut svg, lx + 14.0, ly + 18.0);
         let text = format!("marked: δ = {} s, α = {} 1/s", format::number(d), format::number(a));
@@ -156,7 +163,7 @@ fn marker(svg: &mut Svg, x: f64, y: f64) {
     );
 }
 
-fn draw_map_panel(svg: &mut Svg, p: &MapPanel, index: usize, current: Option<(f64, f64)>) {
+fn draw_map_panel(svg: &mut Svg, p: &MapPanel, index: usize, current: Option<(f64, f64)>, measure: Measure) {
     let (left, right, top, bottom) = (p.x.p0, p.x.p1, p.y.p1, p.y.p0);
     let map = p.map;
     if !p.label.is_empty() {
@@ -181,7 +188,12 @@ fn draw_map_panel(svg: &mut Svg, p: &MapPanel, index: usize, current: Option<(f6
             }
         };
         for (ci, &c) in cols.iter().enumerate() {
-            let fill = map.spectral_radius.get(r * nd + c).filter(|rho| !rho.is_nan()).map(|&rho| rho_color(rho).css());
+            let delta = map.sampling_periods[c];
+            let fill = map
+                .spectral_radius
+                .get(r * nd + c)
+                .filter(|rho| !rho.is_nan())
+                .map(|&rho| measure.color(rho, delta).css());
             match (&run, fill) {
                 (Some((_, f)), Some(fill)) if *f == fill => {}
                 (_, fill) => {
@@ -243,9 +255,10 @@ fn draw_map_panel(svg: &mut Svg, p: &MapPanel, index: usize, current: Option<(f6
     }
 }
 
-/// The vertical colour bar from `top` to `bottom` at x, labelled "ρ (spectral radius)": the same
-/// ramp as the cells, with ρ = 1 drawn like the contour.
-fn colour_bar(svg: &mut Svg, x: f64, top: f64, bottom: f64) {
+/// The vertical colour bar of `measure` from `top` to `bottom` at x, titled "ρ (spectral
+/// radius)" or "ln ρ/δ (1/s), per second": the same ramp as the cells, with the border of
+/// stability (ρ = 1, ln ρ/δ = 0) drawn like the contour.
+fn colour_bar(svg: &mut Svg, x: f64, top: f64, bottom: f64, measure: Measure) {
     let w = 18.0;
     let _ = write!(svg.out, "<defs><linearGradient id=\"rho-colour-bar\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">");
     for k in 0..=16 {
@@ -255,23 +268,26 @@ fn colour_bar(svg: &mut Svg, x: f64, top: f64, bottom: f64) {
     let _ = writeln!(svg.out, "</linearGradient></defs>");
     svg.rect(x, top, w, bottom - top, "fill=\"url(#rho-colour-bar)\"");
     svg.rect(x, top, w, bottom - top, &format!("fill=\"none\" stroke=\"{INK}\" stroke-width=\"1\""));
-    let y_of = |rho: f64| bottom - rho_position(rho) * (bottom - top);
-    let ticks = [RHO_SHOWN[0], 0.9, 0.95, 0.98, 1.0, 1.02, 1.05, 1.1, RHO_SHOWN[1]];
-    for (k, &rho) in ticks.iter().enumerate() {
-        let y = y_of(rho);
+    let y_of = |v: f64| bottom - measure.position(v) * (bottom - top);
+    let (ticks, name) = match measure {
+        Measure::Rho => ([RHO_SHOWN[0], 0.9, 0.95, 0.98, 1.0, 1.02, 1.05, 1.1, RHO_SHOWN[1]], "ρ (spectral radius)"),
+        Measure::Rate => ([-RATE_SHOWN, -2.0, -1.0, -0.2, 0.0, 0.2, 1.0, 2.0, RATE_SHOWN], "ln ρ/δ (1/s), per second"),
+    };
+    for (k, &v) in ticks.iter().enumerate() {
+        let y = y_of(v);
         svg.line(x + w, y, x + w + 5.0, y, (INK, 1.0));
         let label = match k {
-            0 => format!("≤ {}", format::number(rho)),
-            k if k == ticks.len() - 1 => format!("≥ {}", format::number(rho)),
-            _ => format::number(rho),
+            0 => format!("≤ {}", format::number(v)),
+            k if k == ticks.len() - 1 => format!("≥ {}", format::number(v)),
+            _ => format::number(v),
         };
         svg.text(x + w + 8.0, y, 13.0, "start", " dy=\"0.35em\"", &label);
     }
-    let y1 = y_of(1.0);
+    let y1 = y_of(measure.border());
     svg.line(x - 3.0, y1, x + w, y1, (&palette::CONTOUR.css(), 2.0));
     svg.text(x + w / 2.0, top - 8.0, 12.0, "middle", "", "unstable");
     svg.text(x + w / 2.0, bottom + 18.0, 12.0, "middle", "", "stable");
-    svg.vertical_text(x + w + 72.0, (top + bottom) / 2.0, 14.0, "ρ (spectral radius)");
+    svg.vertical_text(x + w + 72.0, (top + bottom) / 2.0, 14.0, name);
 }
 
 #[cfg(test)]

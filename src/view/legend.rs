@@ -1,12 +1,12 @@
 //! The key to the figures: what each marker, line and shade of the panels shown means, and the
-//! colour bar of ρ — written here from the same palette and ramp the panels are drawn with, so the
-//! key cannot describe another picture. The page draws each glyph and text.
+//! maps' colour bar (of ρ or of ln ρ/δ) — written here from the same palette and ramp the panels
+//! are drawn with, so the key cannot describe another picture. The page draws each glyph and text.
 
 use serde::Serialize;
 
 use super::layout::PanelKind;
 use super::poles::PoleStyle;
-use crate::plot::color::{ramp_color, rho_position, RHO_SHOWN};
+use crate::plot::color::{ramp_color, Measure, RATE_SHOWN, RHO_SHOWN};
 use crate::plot::{format, palette, Color};
 
 /// How a legend glyph looks.
@@ -38,10 +38,14 @@ pub struct LegendItem {
     pub text: String,
 }
 
-/// The colour bar of ρ on the maps: the ramp as CSS gradient stops and its labelled ticks, each
-/// at a position in [0, 1] along the bar.
+/// The colour bar of the maps: what it measures, the ramp as CSS gradient stops and its labelled
+/// ticks, each at a position in [0, 1] along the bar.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct RhoScale {
+pub struct MapScale {
+    /// The bar's title: "ρ" or "ln ρ/δ (1/s)".
+    pub name: &'static str,
+    /// The bar in words, for screen readers.
+    pub label: String,
     pub stops: Vec<(f64, String)>,
     pub ticks: Vec<(f64, String)>,
 }
@@ -52,15 +56,17 @@ pub struct LegendGroup {
     pub title: &'static str,
     pub items: Vec<LegendItem>,
     /// The maps' colour bar (maps only).
-    pub scale: Option<RhoScale>,
+    pub scale: Option<MapScale>,
 }
 
 fn item(glyph: Glyph, color: Color, text: &str) -> LegendItem {
     LegendItem { glyph, color: color.css(), text: text.to_string() }
 }
 
-/// The key to the panels `kinds`, with run B's markers when two runs are compared.
-pub fn legend(kinds: &[PanelKind], pair: bool) -> Vec<LegendGroup> {
+/// The key to the panels `kinds`, with run B's markers when two runs are compared; ρ(δ) and the
+/// maps show `measure`.
+pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure) -> Vec<LegendGroup> {
+    let rate = measure == Measure::Rate;
     let mut groups = Vec::new();
     let has = |k: PanelKind| kinds.contains(&k);
     let z = has(PanelKind::ZPlane);
@@ -94,32 +100,45 @@ pub fn legend(kinds: &[PanelKind], pair: bool) -> Vec<LegendGroup> {
         groups.push(LegendGroup { title: if z { "z-plane" } else { "pole plot" }, items, scale: None });
     }
     if has(PanelKind::RhoCurve) {
+        let [curve, band, border] = if rate {
+            [
+                "ln ρ/δ (1/s) along δ at this α",
+                "ln ρ/δ < 0: the stable windows of δ",
+                "ln ρ/δ = 0, and the δ running now",
+            ]
+        } else {
+            ["ρ along δ at this α", "ρ < 1: the stable windows of δ", "ρ = 1, and the δ running now"]
+        };
         groups.push(LegendGroup {
-            title: "ρ(δ)",
+            title: if rate { "ln ρ/δ along δ" } else { "ρ(δ)" },
             items: vec![
-                item(Glyph::Line, palette::ERROR1, "ρ along δ at this α"),
-                item(Glyph::Swatch, palette::WINDOW_BAND, "ρ < 1: the stable windows of δ"),
-                item(Glyph::Line, palette::POLE_STABLE, "ρ = 1, and the δ running now"),
+                item(Glyph::Line, palette::ERROR1, curve),
+                item(Glyph::Swatch, palette::WINDOW_BAND, band),
+                item(Glyph::Line, palette::POLE_STABLE, border),
             ],
             scale: None,
         });
     }
     if has(PanelKind::MapOff) || has(PanelKind::MapOn) {
         let mut items = vec![
-            item(Glyph::Line, palette::CONTOUR, "ρ = 1: the edge of stability"),
+            item(
+                Glyph::Line,
+                palette::CONTOUR,
+                if rate { "ln ρ/δ = 0 (ρ = 1): the edge of stability" } else { "ρ = 1: the edge of stability" },
+            ),
             item(Glyph::Ring, palette::MAP_MARKER, "the (δ, α) running now"),
             item(Glyph::Line, palette::WINDOW_MARK, "the stable windows of δ at this α"),
         ];
         if pair {
             items.push(item(Glyph::Ring, palette::RUN_B, "run B's (δ, α)"));
         }
-        groups.push(LegendGroup { title: "stability maps", items, scale: Some(rho_scale()) });
+        groups.push(LegendGroup { title: "stability maps", items, scale: Some(map_scale(measure)) });
     }
     groups
 }
 
-/// The ρ colour bar, from the ramp the maps are drawn with.
-pub fn rho_scale() -> RhoScale {
+/// The maps' colour bar for `measure`, from the ramp the maps are drawn with.
+pub fn map_scale(measure: Measure) -> MapScale {
     const STOPS: usize = 17;
     let stops = (0..STOPS)
         .map(|i| {
@@ -127,21 +146,27 @@ pub fn rho_scale() -> RhoScale {
             (p, ramp_color(p).css())
         })
         .collect();
-    let [lo, hi] = RHO_SHOWN;
-    let ticks = [lo, 0.95, 1.0, 1.05, hi]
-        .into_iter()
-        .map(|rho| {
-            (
-                rho_position(rho),
-                if rho == lo {
-                    format!("≤ {}", format::number(rho))
-                } else if rho == hi {
-                    format!("≥ {}", format::number(rho))
-                } else {
-                    format::number(rho)
-                },
-            )
+    let values = match measure {
+        Measure::Rho => [RHO_SHOWN[0], 0.95, 1.0, 1.05, RHO_SHOWN[1]],
+        Measure::Rate => [-RATE_SHOWN, -1.0, 0.0, 1.0, RATE_SHOWN],
+    };
+    let ticks: Vec<(f64, String)> = values
+        .iter()
+        .enumerate()
+        .map(|(k, &v)| {
+            let text = match k {
+                0 => format!("≤ {}", format::number(v)),
+                4 => format!("≥ {}", format::number(v)),
+                _ => format::number(v),
+            };
+            (measure.position(v), text)
         })
         .collect();
-    RhoScale { stops, ticks }
+    let border = format::number(measure.border());
+    let label = format!(
+        "colour of {}: blue below {border} (stable), white at {border}, red above {border} (unstable); from {}",
+        measure.symbol(),
+        ticks.iter().map(|t| t.1.as_str()).collect::<Vec<_>>().join(", ")
+    );
+    MapScale { name: measure.symbol(), label, stops, ticks }
 }

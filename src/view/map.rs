@@ -1,5 +1,6 @@
-//! Stability maps: ρ over (δ, α) with both axes logarithmic, the ρ = 1 contour by marching
-//! squares, and the marker of the current configuration.
+//! Stability maps: ρ over (δ, α) with both axes logarithmic, the cells coloured by ρ or by
+//! ln ρ/δ ([`Measure`]), the ρ = 1 contour by marching squares (the same line under both), and
+//! the marker of the current configuration.
 //!
 //! The grid arrives from the session's map job row by row (ρ row-major by α, rows not yet
 //! computed missing). The cells and the contour change only when the page hands over new rows, so they are
@@ -7,7 +8,7 @@
 
 use super::layout::{PanelKind, Rect};
 use super::painter::{Painter, Point};
-use crate::plot::color::rho_color;
+use crate::plot::color::Measure;
 use crate::plot::contour::{chain_segments, marching_squares};
 use crate::plot::ticks::log_ticks;
 use crate::plot::{palette, Color};
@@ -106,14 +107,15 @@ impl StabilityGrid {
         self.rho.get(alpha_index * self.deltas.len() + delta_index).copied().unwrap_or(f64::NAN)
     }
 
-    /// ρ at the grid point nearest (δ, α) in log scale; NaN outside the grid or not computed.
-    pub fn rho_near(&self, delta: f64, alpha: f64) -> f64 {
+    /// The grid's δ (s) and ρ at the grid point nearest (δ, α) in log scale (the δ gives that
+    /// cell's ln ρ/δ); ρ is NaN outside the grid or not computed.
+    pub fn near(&self, delta: f64, alpha: f64) -> (f64, f64) {
         let nearest = |values: &[f64], v: f64| {
             (0..values.len()).min_by(|&i, &j| (values[i] / v).ln().abs().total_cmp(&(values[j] / v).ln().abs()))
         };
         match (nearest(&self.deltas, delta), nearest(&self.alphas, alpha)) {
-            (Some(j), Some(i)) if delta > 0.0 && alpha > 0.0 => self.at(i, j),
-            _ => f64::NAN,
+            (Some(j), Some(i)) if delta > 0.0 && alpha > 0.0 => (self.deltas[j], self.at(i, j)),
+            _ => (delta, f64::NAN),
         }
     }
 
@@ -191,8 +193,9 @@ fn boundaries(ln_values: &[f64], out: &mut Vec<f64>) {
     out.push(ln_values[n - 1]);
 }
 
-/// Draws a whole map panel's static part into `painter`: background, filled cells (runs of
-/// equal colour merged into one quad), faint grid lines at the ticks and the ρ = 1 contour.
+/// Draws a whole map panel's static part into `painter`: background, filled cells coloured by
+/// `measure` (runs of equal colour merged into one quad), faint grid lines at the ticks and the
+/// ρ = 1 contour (always from ρ: it is ln ρ/δ = 0 too).
 /// Allocates (scratch vectors, the contour): call it when the map or the layout changes, not
 /// per frame.
 pub fn draw_map_static(
@@ -200,6 +203,7 @@ pub fn draw_map_static(
     frame: &LogFrame,
     grid: &StabilityGrid,
     ticks: (&[f64], &[f64]),
+    measure: Measure,
     dpr: f64,
 ) {
     let r = frame.rect;
@@ -212,13 +216,14 @@ pub fn draw_map_static(
         boundaries(&ln_a, &mut by);
         let xs: Vec<f64> = bx.iter().map(|&l| frame.x_log(l)).collect();
         let ys: Vec<f64> = by.iter().map(|&l| frame.y_log(l)).collect();
+        let color_at = |i: usize, j: usize| measure.color(grid.at(i, j), grid.deltas()[j]);
         for i in 0..ln_a.len() {
             let (y_bottom, y_top) = (ys[i], ys[i + 1]);
             let mut j = 0;
             while j < ln_d.len() {
-                let color = rho_color(grid.at(i, j));
+                let color = color_at(i, j);
                 let mut k = j + 1;
-                while k < ln_d.len() && rho_color(grid.at(i, k)) == color {
+                while k < ln_d.len() && color_at(i, k) == color {
                     k += 1;
                 }
                 painter.rect(Rect::new(xs[j], y_top, xs[k] - xs[j], y_bottom - y_top), color);

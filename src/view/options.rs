@@ -6,6 +6,7 @@ use serde::{Deserialize, Serialize};
 use super::arm::DEFAULT_SPRING_MAGNIFICATION;
 use super::layout::{LayoutOptions, Tab};
 use super::traces::DEFAULT_TIME_WINDOW;
+use crate::plot::color::Measure;
 
 /// Longest time window accepted, s.
 pub const MAX_TIME_WINDOW: f64 = 3600.0;
@@ -29,6 +30,8 @@ pub struct ViewOptions {
     pub show_rho: bool,
     /// Show the two stability maps.
     pub show_map: bool,
+    /// What the maps and ρ(δ) show (the session's view decides; not a page option).
+    pub measure: Measure,
     /// The error plots show log |e|, with the slope ln ρ / δ the analysis predicts.
     pub log_errors: bool,
     /// The view a narrow canvas shows.
@@ -45,6 +48,7 @@ impl Default for ViewOptions {
             z_plane: false,
             show_rho: true,
             show_map: true,
+            measure: Measure::Rho,
             log_errors: false,
             tab: Tab::Run,
         }

@@ -1,23 +1,31 @@
-//! ρ(δ) at the current α: the spectral radius against the sampling period, with the stable
-//! windows (ρ < 1) shaded and the current δ marked — the horizontal slice of the stability map,
-//! readable as a curve. Clicking or dragging on it picks δ.
+//! ρ(δ) at the current α: the spectral radius (or, under [`Measure::Rate`], the rate ln ρ/δ)
+//! against the sampling period, with the stable windows (ρ < 1 ⇔ ln ρ/δ < 0) shaded and the
+//! current δ marked — the horizontal slice of the stability map, readable as a curve. Clicking or
+//! dragging on it picks δ.
 
 use super::layout::Rect;
 use super::painter::{Painter, Point};
 use crate::analysis::StableWindows;
+use crate::plot::color::Measure;
 use crate::plot::ticks::log_ticks;
 use crate::plot::{palette, Color, Ticks};
 
 /// ρ shown at least over this range; widened to the data (within [0, 2]).
 pub const RHO_RANGE_MIN: [f64; 2] = [0.9, 1.1];
+/// ln ρ/δ shown at least over this range, 1/s; widened to the data in whole 1/s (within
+/// ± [`RATE_RANGE_MAX`]).
+pub const RATE_RANGE_MIN: [f64; 2] = [-1.0, 1.0];
+/// ln ρ/δ beyond ± this (1/s) runs along the panel's edge: over the page's 10-s window even
+/// 1 1/s is a factor e^10, so a wider axis would only flatten the curve near 0, where it matters.
+pub const RATE_RANGE_MAX: f64 = 20.0;
 
-/// The ρ(δ) panel's data area with a logarithmic δ axis and a linear ρ axis.
+/// The ρ(δ) panel's data area with a logarithmic δ axis and a linear axis of ρ or ln ρ/δ.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RhoFrame {
     pub rect: Rect,
     /// δ at the left and right edges, s.
     pub x_range: [f64; 2],
-    /// ρ at the bottom and top edges.
+    /// ρ (or ln ρ/δ, 1/s) at the bottom and top edges.
     pub y_range: [f64; 2],
 }
 
@@ -28,10 +36,10 @@ impl RhoFrame {
         self.rect.x + self.rect.w * (delta / a).ln() / (b / a).ln()
     }
 
-    /// Vertical pixel of ρ, clamped to the data area.
-    pub fn y(&self, rho: f64) -> f64 {
+    /// Vertical pixel of a value (ρ or ln ρ/δ), clamped to the data area.
+    pub fn y(&self, v: f64) -> f64 {
         let [a, b] = self.y_range;
-        (self.rect.bottom() - self.rect.h * (rho - a) / (b - a)).clamp(self.rect.y, self.rect.bottom())
+        (self.rect.bottom() - self.rect.h * (v - a) / (b - a)).clamp(self.rect.y, self.rect.bottom())
     }
 
     /// δ at horizontal pixel `x`, within the range.
@@ -42,33 +50,41 @@ impl RhoFrame {
     }
 }
 
-/// The ρ range to show for a scan: at least [`RHO_RANGE_MIN`], out to the data in steps of 0.1,
-/// never beyond [0, 2].
-pub fn rho_range(windows: Option<&StableWindows>) -> [f64; 2] {
-    let [mut lo, mut hi] = RHO_RANGE_MIN;
-    for [_, r] in windows.map_or(&[][..], |w| &w.scan[..]) {
-        if r.is_finite() {
-            lo = lo.min((r * 10.0).floor() / 10.0);
-            hi = hi.max((r * 10.0).ceil() / 10.0);
+/// The range to show for a scan: for ρ at least [`RHO_RANGE_MIN`], out to the data in steps of
+/// 0.1, never beyond [0, 2]; for ln ρ/δ at least [`RATE_RANGE_MIN`], out to the data in whole
+/// 1/s, never beyond ± [`RATE_RANGE_MAX`].
+pub fn curve_range(windows: Option<&StableWindows>, measure: Measure) -> [f64; 2] {
+    // Steps per unit: tenths of ρ, whole 1/s.
+    let (per_unit, [mut lo, mut hi], [min, max]) = match measure {
+        Measure::Rho => (10.0, RHO_RANGE_MIN, [0.0, 2.0]),
+        Measure::Rate => (1.0, RATE_RANGE_MIN, [-RATE_RANGE_MAX, RATE_RANGE_MAX]),
+    };
+    for [d, r] in windows.map_or(&[][..], |w| &w.scan[..]) {
+        let v = measure.value(*r, *d);
+        if v.is_finite() {
+            lo = lo.min((v * per_unit).floor() / per_unit);
+            hi = hi.max((v * per_unit).ceil() / per_unit);
         }
     }
-    [lo.max(0.0), hi.min(2.0)]
+    [lo.max(min), hi.min(max)]
 }
 
-/// The δ and ρ ticks of a panel whose data area is `rect_css` (CSS pixels).
+/// The δ and value ticks of a panel whose data area is `rect_css` (CSS pixels).
 pub fn rho_ticks(rect_css: Rect, frame: &RhoFrame) -> (Vec<f64>, Vec<f64>) {
     let nx = (rect_css.w / 46.0).floor().clamp(1.0, 20.0) as usize;
     let ny = (rect_css.h / 26.0).floor().clamp(2.0, 10.0) as usize;
     (log_ticks(frame.x_range[0], frame.x_range[1], nx), Ticks::new(frame.y_range[0], frame.y_range[1], ny).collect())
 }
 
-/// The static part: background, the windows shaded, grid lines, ρ = 1, and the curve. Allocates
-/// nothing itself, but is drawn only when the windows or the layout change.
+/// The static part: background, the windows shaded, grid lines, the border of stability (ρ = 1
+/// or ln ρ/δ = 0), and the curve of `measure`. Allocates nothing itself, but is drawn only when
+/// the windows or the layout change.
 pub fn draw_rho_static(
     painter: &mut Painter,
     frame: &RhoFrame,
     windows: Option<&StableWindows>,
     ticks: (&[f64], &[f64]),
+    measure: Measure,
     dpr: f64,
 ) {
     let r = frame.rect;
@@ -91,27 +107,29 @@ pub fn draw_rho_static(
         let y = frame.y(v);
         painter.line([r.x, y], [r.right(), y], grid, palette::GRID);
     }
-    let y1 = frame.y(1.0);
+    let y1 = frame.y(measure.border());
     painter.line([r.x, y1], [r.right(), y1], 1.5 * dpr, palette::CONTOUR);
     let mut stroke = painter.stroke(2.0 * dpr, palette::ERROR1, true);
     for [d, rho] in &w.scan {
-        stroke.to(if rho.is_finite() { [frame.x(*d), frame.y(*rho)] } else { [f64::NAN, f64::NAN] });
+        let v = measure.value(*rho, *d);
+        stroke.to(if v.is_finite() { [frame.x(*d), frame.y(v)] } else { [f64::NAN, f64::NAN] });
     }
 }
 
 /// An upper bound on the vertices [`draw_rho_marker`] writes.
 pub const MARKER_VERTEX_BUDGET: usize = 3 * 6 + 2 * 128 * 3;
 
-/// A run's δ: a vertical line and a dot at (δ, ρ); at the edge if δ lies outside the range.
-pub fn draw_rho_marker(painter: &mut Painter, frame: &RhoFrame, delta: f64, rho: f64, color: Color, dpr: f64) {
+/// A run's δ: a vertical line and a dot at (δ, value), the value being ρ or ln ρ/δ as the panel
+/// shows; at the edge if δ lies outside the range.
+pub fn draw_rho_marker(painter: &mut Painter, frame: &RhoFrame, delta: f64, value: f64, color: Color, dpr: f64) {
     if !(delta > 0.0 && delta.is_finite()) {
         return;
     }
     let r = frame.rect;
     let x = frame.x(delta).clamp(r.x, r.right());
     painter.line([x, r.y], [x, r.bottom()], 1.5 * dpr, color.with_alpha(0.6));
-    if rho.is_finite() {
-        let p: Point = [x, frame.y(rho)];
+    if value.is_finite() {
+        let p: Point = [x, frame.y(value)];
         painter.circle(p, 5.5 * dpr, palette::MARKER_HALO);
         painter.circle(p, 4.0 * dpr, color);
     }

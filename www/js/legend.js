@@ -5,7 +5,7 @@ import { byId, make } from './dom.js';
 
 /**
  * @typedef {{ glyph: string, color: string, text: string }} Item
- * @typedef {{ stops: [number, string][], ticks: [number, string][] }} Scale
+ * @typedef {{ name: string, label: string, stops: [number, string][], ticks: [number, string][] }} Scale
  * @typedef {{ title: string, items: Item[], scale: Scale | null }} Group
  */
 
@@ -52,14 +52,14 @@ export function createLegend() {
         });
         const parts = [make('h3', { text: g.title }), make('ul', {}, items)];
         if (g.scale) {
-          const bar = make('div', { class: 'rho-bar', role: 'img', 'aria-label': `colour of ρ: blue below 1 (stable), white at 1, red above 1 (unstable); from ${g.scale.ticks.map((t) => t[1]).join(', ')}` });
+          const bar = make('div', { class: 'rho-bar', role: 'img', 'aria-label': g.scale.label });
           bar.style.background = scaleGradient(g.scale);
           const ticks = make('div', { class: 'rho-ticks', 'aria-hidden': 'true' }, g.scale.ticks.map(([p, t]) => {
             const span = make('span', { text: t });
             span.style.left = `${(100 * p).toFixed(1)}%`;
             return span;
           }));
-          parts.push(make('div', { class: 'rho-scale' }, [make('span', { class: 'rho-name', text: 'ρ' }), make('div', { class: 'rho-track' }, [bar, ticks])]));
+          parts.push(make('div', { class: 'rho-scale' }, [make('span', { class: 'rho-name', text: g.scale.name }), make('div', { class: 'rho-track' }, [bar, ticks])]));
         }
         return make('section', { class: 'key-group' }, parts);
       }),

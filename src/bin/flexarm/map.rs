@@ -7,7 +7,9 @@ use clap::{ArgMatches, Command};
 use flexarm::analysis::map::SECONDS_PER_CELL;
 use flexarm::analysis::{stable_intervals, LinearSettings, MapGrid, MapJob, StabilityMap};
 use flexarm::control::Work;
+use flexarm::plot::color::Measure;
 use flexarm::plot::format::sig_trim;
+use flexarm::schema;
 use flexarm::PreliminaryFeedbackChoice;
 use serde_json::{json, Value};
 
@@ -66,6 +68,12 @@ pub fn command() -> Command {
     .args(cli::run_args(KEYS))
     .args(cli::redirects(REDIRECTS))
     .arg(cli::option("mark", "D:A", "Mark the point δ = D s, α = A 1/s in the figure"))
+    .arg(cli::option(
+        "measure",
+        "rho|rate",
+        "What the figure's cells are coloured by: ρ per sampling period (rho, default) or the rate ln ρ/δ in \
+         1/s (rate), which compares across δ; the ρ = 1 contour is ln ρ/δ = 0, the same line",
+    ))
     .arg(cli::option(
         "csv",
         "FILE",
@@ -156,6 +164,16 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         Some(t) => vec![P::from_name(t)
             .ok_or_else(|| usage_error(format!("--pf must be one of off | paper | lq | both, got '{t}'")))?],
     };
+    // Read by the schema's view parameter, so the CLI and the page accept the same words.
+    let measure = match text("measure") {
+        None => Measure::Rho,
+        Some(t) => schema::MEASURE
+            .parse(t, false)
+            .map_err(lib_error)?
+            .choice()
+            .and_then(Measure::from_name)
+            .unwrap_or_default(),
+    };
     let mark = match text("mark") {
         None => None,
         Some(v) => {
@@ -229,13 +247,14 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     }
     if let Some(path) = text("svg") {
         let title = format!(
-            "Spectral radius ρ of the sampled loop (k = {}, m = {}, inner loop {})",
+            "{} of the sampled loop (k = {}, m = {}, inner loop {})",
+            measure.quantity(),
             config.controller.horizon_steps,
             config.controller.eps_ratio,
             config.inner_loop.name()
         );
         let panels: Vec<(&StabilityMap, &str)> = results.iter().map(|r| (&r.map, pf_caption(r.pf))).collect();
-        write_file("--svg", path, &flexarm::svg::stability_maps_svg(&panels, &title, mark, Some(&state)))?;
+        write_file("--svg", path, &flexarm::svg::stability_maps_svg(&panels, &title, mark, Some(&state), measure))?;
         written.push(format!("figure written to {path}"));
     }
 

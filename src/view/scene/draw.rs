@@ -166,7 +166,7 @@ impl Scene {
         self.painter.rect_outline(frame.rect, dpr.max(1.0), palette::FRAME);
     }
 
-    /// The runs' current δ on ρ(δ) (the curve itself is in the static layer).
+    /// The runs' current δ on ρ(δ) or ln ρ/δ (the curve itself is in the static layer).
     pub(super) fn draw_rho_markers(&mut self, panel: Panel) {
         let dpr = self.layout.device_pixel_ratio;
         let frame = self.rho_frame(&panel, true);
@@ -174,14 +174,9 @@ impl Scene {
             let memory = &self.runs[run];
             let (Some(config), Some(report)) = (&memory.config, &memory.report) else { continue };
             let color = if run == 0 { palette::MAP_MARKER } else { palette::RUN_B };
-            draw_rho_marker(
-                &mut self.painter,
-                &frame,
-                config.controller.sampling_period,
-                report.spectral_radius,
-                color,
-                dpr,
-            );
+            let delta = config.controller.sampling_period;
+            let value = self.options.measure.value(report.spectral_radius, delta);
+            draw_rho_marker(&mut self.painter, &frame, delta, value, color, dpr);
         }
         self.painter.rect_outline(frame.rect, dpr.max(1.0), palette::FRAME);
     }

@@ -7,6 +7,7 @@ use serde::Serialize;
 use super::{
     plot_series, plot_ticks, pole_ticks, run_pole_style, y_label, Scene, CURVE_WIDTH, CURVE_WIDTH_B, RUN_NAMES,
 };
+use crate::plot::color::Measure;
 use crate::plot::format::{self, TickFormat};
 use crate::plot::ticks::label_log_ticks;
 use crate::plot::ticks::Decades;
@@ -175,7 +176,7 @@ impl Scene {
     /// The key to the panels shown (see [`crate::view::legend`]).
     pub fn legend(&self) -> Vec<crate::view::legend::LegendGroup> {
         let kinds: Vec<PanelKind> = self.layout.panels.iter().map(|p| p.kind).collect();
-        crate::view::legend::legend(&kinds, self.pair)
+        crate::view::legend::legend(&kinds, self.pair, self.options.measure)
     }
 
     /// Every text over the canvas, placed (see [`crate::view::labels`]).
@@ -275,8 +276,9 @@ impl Scene {
             PanelKind::RhoCurve => {
                 let frame = self.rho_frame(panel, false);
                 let (x_ticks, y_ticks) = rho_ticks(r, &frame);
+                let rate = self.options.measure == Measure::Rate;
                 info.x_label = "δ [s]";
-                info.y_label = "ρ";
+                info.y_label = if rate { "ln ρ/δ [1/s]" } else { "ρ" };
                 info.x_range = frame.x_range;
                 info.y_range = frame.y_range;
                 info.x_labels = log_labels(&x_ticks, info.x_range, r.w, LOG_LABEL_SPACING[0]);
@@ -284,7 +286,12 @@ impl Scene {
                 info.y_ticks = y_ticks;
                 info.x_scale = "log";
                 let alpha = self.runs[0].config.map_or(f64::NAN, |c| c.controller.alpha[0]);
-                info.note = format!("ρ(δ) at α = {} 1/s; shaded: ρ < 1", format::sig_trim(alpha, 3));
+                let alpha = format::sig_trim(alpha, 3);
+                info.note = if rate {
+                    format!("ln ρ/δ at α = {alpha} 1/s; shaded: < 0")
+                } else {
+                    format!("ρ(δ) at α = {alpha} 1/s; shaded: ρ < 1")
+                };
             }
             PanelKind::MapOff | PanelKind::MapOn => {
                 let side = side_of(panel.kind).unwrap_or(MapSide::Off);
@@ -301,7 +308,7 @@ impl Scene {
                 info.x_scale = "log";
                 info.y_scale = "log";
                 let pf = self.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
-                info.note = side.caption(pf);
+                info.note = side.caption(pf, self.options.measure);
             }
         }
         if info.x_scale == "linear" {
@@ -389,7 +396,7 @@ impl Scene {
         Some(w.start + f * w.width())
     }
 
-    /// The δ under (x, y) on ρ(δ), with ρ there.
+    /// The δ under (x, y) on ρ(δ), with ρ and ln ρ/δ there.
     fn probe_rho(&self, x: f64, y: f64) -> Option<Probe> {
         let panel = self.layout.panel(PanelKind::RhoCurve)?;
         if !contains(panel, x, y) {
@@ -397,27 +404,18 @@ impl Scene {
         }
         let frame = self.rho_frame(panel, false);
         let delta = frame.delta_at(x);
-        let rho = self.windows.as_ref().and_then(|w| {
-            w.scan.iter().min_by(|a, b| (a[0] / delta).ln().abs().total_cmp(&(b[0] / delta).ln().abs())).map(|p| p[1])
-        });
+        let [scan_delta, rho] = self
+            .windows
+            .as_ref()
+            .and_then(|w| {
+                w.scan.iter().min_by(|a, b| (a[0] / delta).ln().abs().total_cmp(&(b[0] / delta).ln().abs())).copied()
+            })
+            .unwrap_or([delta, f64::NAN]);
         let mut lines = vec![TipLine::plain(format!("δ = {} s", format::sig(delta, 3)))];
-        lines.push(match rho {
-            Some(r) if r.is_finite() => {
-                TipLine::toned(format!("ρ = {r:.3}: {}", if r < 1.0 { "stable" } else { "unstable" }), r < 1.0)
-            }
-            _ => TipLine::plain("ρ not computed yet"),
-        });
+        stability_lines(rho, scan_delta, &mut lines);
         lines.push(TipLine::plain("click or drag to run at this δ"));
-        Some(Probe {
-            kind: "rho",
-            title: "ρ(δ) at this α".into(),
-            lines,
-            x,
-            y,
-            map: None,
-            delta: Some(delta),
-            alpha: None,
-        })
+        let title = if self.options.measure == Measure::Rate { "ln ρ/δ at this α" } else { "ρ(δ) at this α" };
+        Some(Probe { kind: "rho", title: title.into(), lines, x, y, map: None, delta: Some(delta), alpha: None })
     }
 
     fn probe_pole(&self, x: f64, y: f64, reach: f64) -> Option<Probe> {
@@ -526,13 +524,9 @@ impl Scene {
 
     fn probe_map(&self, x: f64, y: f64) -> Option<Probe> {
         let (side, delta, alpha) = self.map_point(x, y)?;
-        let rho = self.maps[side.index()].rho_near(delta, alpha);
+        let (cell_delta, rho) = self.maps[side.index()].near(delta, alpha);
         let mut lines = vec![TipLine::plain(point_text(delta, alpha))];
-        lines.push(if rho.is_finite() {
-            TipLine::toned(format!("ρ = {rho:.3}: {}", if rho < 1.0 { "stable" } else { "unstable" }), rho < 1.0)
-        } else {
-            TipLine::plain("ρ not computed yet")
-        });
+        stability_lines(rho, cell_delta, &mut lines);
         lines.push(TipLine::plain("click to run here"));
         let pf = self.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
         let title = match side.feedback(pf) {
@@ -540,6 +534,19 @@ impl Scene {
             f => format!("with {}", feedback_short(f)),
         };
         Some(Probe { kind: "map", title, lines, x, y, map: Some(side), delta: Some(delta), alpha: Some(alpha) })
+    }
+}
+
+/// ρ and the rate ln ρ/δ at sampling period `delta` (s), whatever the view colours by: the
+/// verdict is read in ρ, the rate compares across δ.
+fn stability_lines(rho: f64, delta: f64, lines: &mut Vec<TipLine>) {
+    if rho.is_finite() {
+        let verdict = if rho < 1.0 { "stable" } else { "unstable" };
+        lines.push(TipLine::toned(format!("ρ = {rho:.3} per period: {verdict}"), rho < 1.0));
+        let rate = format::sig(Measure::Rate.value(rho, delta), 3);
+        lines.push(TipLine::plain(format!("ln ρ/δ = {rate} 1/s (per second)")));
+    } else {
+        lines.push(TipLine::plain("ρ not computed yet"));
     }
 }
 

@@ -22,7 +22,7 @@ use super::map::{draw_map_static, map_ticks, side_of, LogFrame, StabilityGrid, M
 use super::painter::{Painter, Vertex};
 use super::poles::{PoleStyle, RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET};
 use super::rho_curve::{
-    draw_rho_static, rho_range, rho_ticks, RhoFrame, MARKER_VERTEX_BUDGET as RHO_MARKER_VERTEX_BUDGET,
+    curve_range, draw_rho_static, rho_ticks, RhoFrame, MARKER_VERTEX_BUDGET as RHO_MARKER_VERTEX_BUDGET,
 };
 use super::traces::{vertex_budget, TimeWindow};
 use super::zplane::RUN_VERTEX_BUDGET as ZPLANE_RUN_VERTEX_BUDGET;
@@ -176,6 +176,7 @@ impl Scene {
             z_plane: v.z_plane,
             show_rho: v.rho,
             show_map: v.map,
+            measure: v.measure,
             show_torque: v.torque,
             log_errors: v.log,
             tab: Tab::from_id(v.tab).unwrap_or_default(),
@@ -316,11 +317,13 @@ impl Scene {
     fn rebuild_static(&mut self) {
         self.static_painter.clear();
         let dpr = self.layout.device_pixel_ratio;
+        let measure = self.options.measure;
         for panel in &self.layout.panels {
             if panel.kind == PanelKind::RhoCurve {
                 let frame = self.rho_frame(panel, true);
                 let (x_ticks, y_ticks) = rho_ticks(panel.rect, &frame);
-                draw_rho_static(&mut self.static_painter, &frame, self.windows.as_ref(), (&x_ticks, &y_ticks), dpr);
+                let ticks = (&x_ticks[..], &y_ticks[..]);
+                draw_rho_static(&mut self.static_painter, &frame, self.windows.as_ref(), ticks, measure, dpr);
                 continue;
             }
             let Some(side) = side_of(panel.kind) else { continue };
@@ -331,16 +334,17 @@ impl Scene {
                 y_range: grid.alpha_range(),
             };
             let (x_ticks, y_ticks) = map_ticks(panel.rect, grid);
-            draw_map_static(&mut self.static_painter, &frame, grid, (&x_ticks, &y_ticks), dpr);
+            draw_map_static(&mut self.static_painter, &frame, grid, (&x_ticks, &y_ticks), measure, dpr);
         }
         self.static_generation += 1;
     }
 
-    /// The ρ(δ) panel's frame, in physical pixels or (for descriptions) CSS pixels.
+    /// The ρ(δ) panel's frame (ρ or ln ρ/δ, as the view's measure says), in physical pixels or
+    /// (for descriptions) CSS pixels.
     fn rho_frame(&self, panel: &Panel, physical: bool) -> RhoFrame {
         let rect = if physical { self.layout.to_physical(panel.rect) } else { panel.rect };
         let x_range = self.windows.as_ref().map_or(crate::schema::DELTA_SPEC.control, |w| w.range);
-        RhoFrame { rect, x_range, y_range: rho_range(self.windows.as_ref()) }
+        RhoFrame { rect, x_range, y_range: curve_range(self.windows.as_ref(), self.options.measure) }
     }
 
     /// Takes run A's stable windows, rebuilding ρ(δ) when they changed.
