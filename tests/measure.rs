@@ -346,3 +346,25 @@ fn flexarm_map_measure_rate_writes_the_rate_figure_and_refuses_other_words() {
     let help = String::from_utf8_lossy(&flexarm(&["map", "--help"]).stdout).into_owned();
     assert!(help.contains("--measure"), "{help}");
 }
+
+/// Where the map with the paper's K_pr turns red at large α, its tooltip says why (issue 22): the
+/// gains' shift of Re A4 is fixed while the controller's feed grows; below the limit it says
+/// nothing of the kind.
+#[test]
+fn the_kpr_map_says_why_it_turns_red_above_the_gains_alpha_limit() {
+    let s = computed("delta=0.05&pf=paper");
+    let limit = s.run(0).unwrap().analysis().report().unwrap().resonance.paper_alpha_limit;
+    assert!((limit - 3.65).abs() < 0.01, "{limit}");
+    let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
+    scene.draw_session(&s);
+    let panels = scene.panel_info();
+    let map = info(&panels, "map-on");
+    let said = |alpha: f64| {
+        // α runs up the map logarithmically from 0.1 to 5 1/s.
+        let f = (alpha / 0.1).ln() / (5.0f64 / 0.1).ln();
+        let probe = scene.probe(map.x + map.width / 2.0, map.y + map.height * (1.0 - f), 0.0).unwrap();
+        probe.lines.iter().any(|l| l.text.starts_with("above α = 3.65 1/s the paper's K_pr no longer damps"))
+    };
+    assert!(said(4.5));
+    assert!(!said(2.0));
+}

@@ -527,8 +527,19 @@ impl Scene {
         let (cell_delta, rho) = self.maps[side.index()].near(delta, alpha);
         let mut lines = vec![TipLine::plain(point_text(delta, alpha))];
         stability_lines(rho, cell_delta, &mut lines);
-        lines.push(TipLine::plain("click to run here"));
         let pf = self.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
+        // Where the paper's gains stop damping the resonance, the map says why it turns red.
+        let limit = self.runs[0].report.as_ref().map(|r| r.resonance.paper_alpha_limit);
+        if let (crate::control::config::PreliminaryFeedbackChoice::Paper, Some(limit)) = (side.feedback(pf), limit) {
+            if alpha > limit {
+                lines.push(TipLine::plain(format!(
+                    "above α = {} 1/s the paper's K_pr no longer damps the joint's resonance: its shift of Re A4 is fixed, \
+                     the controller's feed 3α/2 grows",
+                    format::sig(limit, 3)
+                )));
+            }
+        }
+        lines.push(TipLine::plain("click to run here"));
         let title = match side.feedback(pf) {
             crate::control::config::PreliminaryFeedbackChoice::Off => "without preliminary feedback".to_string(),
             f => format!("with {}", feedback_short(f)),
