@@ -268,7 +268,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     };
     let detail = match predicted {
         Some((rho, _)) if !applies => {
-            format!("the simulation decides: ρ = {rho:.4} describes the loop with the friction cancelled, not this run")
+            format!("the simulation decides: ρ = {rho:.4} holds with the friction cancelled, not for this run")
         }
         Some((rho, rate)) if overridden => predicted_text(rho, rate),
         _ => detail,
