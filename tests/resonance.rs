@@ -203,9 +203,7 @@ fn the_predictor_never_reads_the_motor_at_any_delta() {
     for alpha in [[2.0, 2.0], [0.5, 3.0]] {
         let model = linearize_at_rest(&plant, alpha, [0.5 * PI, 0.4]);
         for delta in [0.002, 0.01, 0.05, 0.2] {
-            let mut c = flexarm::ControllerParameters::default();
-            c.sampling_period = delta;
-            c.alpha = alpha;
+            let c = flexarm::ControllerParameters { sampling_period: delta, alpha, ..Default::default() };
             let k = predictor_gain(&model, &FeedbackGain::zeros(), &c).unwrap();
             let scale = k.amax();
             assert!(scale > 1.0, "{k}");

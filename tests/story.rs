@@ -110,7 +110,7 @@ fn the_transient_growth_quoted_is_the_loops() {
     assert!(rho < 1.0);
     let (mut power, mut peak, mut at) = (phi, 0.0, 0);
     for n in 1..200 {
-        let norm = power.clone().svd(false, false).singular_values.max();
+        let norm = power.svd(false, false).singular_values.max();
         if norm > peak {
             (peak, at) = (norm, n);
         }
@@ -125,7 +125,7 @@ fn the_transient_growth_quoted_is_the_loops() {
 }
 
 #[test]
-fn what_ρ_certifies_is_said_with_the_programs_numbers() {
+fn what_rho_certifies_is_said_with_the_programs_numbers() {
     let plant = PlantParameters::default();
     let page = page_text();
     let spring = flexarm::plot::format::grouped(flexarm::schema::round_significant(plant.fc1 / plant.eps1, 3));
