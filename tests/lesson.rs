@@ -140,12 +140,38 @@ fn the_windows_stay_hidden_until_the_student_finds_one() {
     s.refresh();
     assert!(s.status().lesson.unwrap().done);
     assert_eq!(s.status().windows.unwrap().windows.len(), 3, "revealed: three windows at α = 2");
-    // "Show me" reveals them too.
+    // "Show me" reveals them too, and puts δ in a window, so the answer describes what is shown.
     let mut s = session("");
     s.lesson_open(step_index("Find where")).unwrap();
     s.lesson_reveal().unwrap();
     s.refresh();
     assert!(s.status().windows.is_some());
+    assert_eq!(verdict(&s), "stable");
+    assert_eq!(s.settings().a.pf, PreliminaryFeedbackChoice::Off);
+}
+
+/// "Show me" on a task does the task: the answer it reveals describes what is on screen.
+#[test]
+fn show_me_does_every_task_it_reveals() {
+    let lesson = builtin().unwrap();
+    for (i, step) in lesson.steps.iter().enumerate().filter(|(_, st)| st.task.is_some()) {
+        let mut s = session("");
+        s.lesson_open(i).unwrap();
+        s.lesson_reveal().unwrap();
+        s.refresh();
+        let goal = step.goal.as_ref().unwrap();
+        if goal.time.is_some() {
+            continue; // "play until t" is shown by playing
+        }
+        assert!(step.show.is_some(), "step {} ({}) reveals an answer without doing its task", i + 1, step.title);
+        if let Some(v) = &goal.verdict {
+            assert_eq!(verdict(&s), v, "step {}", i + 1);
+        }
+        for (key, value) in &goal.settings {
+            let now = s.settings().get(key).map(|v| v.text());
+            assert_eq!(now.as_deref(), Some(value.as_str()), "step {}: {key}", i + 1);
+        }
+    }
 }
 
 #[test]

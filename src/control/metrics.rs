@@ -54,12 +54,15 @@ pub enum Verdict {
     Stable,
     /// Errors growing at the given rate (1/s) but still within the bound.
     Unstable { growth_rate: f64 },
-    /// The error envelope has stopped growing: bounded, neither growing nor decaying. Either a
-    /// limit cycle between slews (`limit_cycle`: amplitude = max |e1|, |e2| over the last whole
-    /// cycle, rad; its period, s), or, with a repeating slew, errors that rise between slews
-    /// but rise no higher from one slew to the next (amplitude = max |e1|, |e2| between the last
-    /// two slews; period = the time from one rest phase to the next, s).
-    BoundedOscillation { amplitude: [f64; 2], period: f64, limit_cycle: bool },
+    /// A limit cycle between slews: regular cycles of a period of their own whose amplitude
+    /// neither grows nor decays (amplitude = max |e1|, |e2| over the last whole cycle, rad; its
+    /// period, s).
+    BoundedOscillation { amplitude: [f64; 2], period: f64 },
+    /// With a repeating slew: errors that rise between slews but come back no larger after one
+    /// slew than after the last — the response to the slews, locked to their period, not an
+    /// oscillation of the loop's own (amplitude = max |e1|, |e2| between the last two slews;
+    /// period = the time from one rest phase to the next, s). Called stable.
+    SlewLocked { amplitude: [f64; 2], period: f64 },
     /// The run ended at `at` (s).
     Diverged { at: f64, reason: DivergenceReason },
 }
@@ -69,7 +72,7 @@ impl Verdict {
     /// and the page use.
     pub fn label(&self) -> &'static str {
         match self {
-            Verdict::Stable => "stable",
+            Verdict::Stable | Verdict::SlewLocked { .. } => "stable",
             Verdict::Unstable { .. } => "unstable",
             Verdict::BoundedOscillation { .. } => "bounded oscillation",
             Verdict::Diverged { .. } => "diverged",
@@ -82,12 +85,13 @@ impl Verdict {
         match *self {
             Verdict::Stable => "stable".into(),
             Verdict::Unstable { growth_rate } => format!("unstable (errors grow at {growth_rate:.3} 1/s)"),
-            Verdict::BoundedOscillation { amplitude, period, limit_cycle } => format!(
-                "bounded oscillation ({}: amplitude {:.2e}, {:.2e} rad, {} {period:.2} s)",
-                if limit_cycle { "a limit cycle" } else { "the same rise after every slew" },
-                amplitude[0],
-                amplitude[1],
-                if limit_cycle { "period" } else { "every" }
+            Verdict::BoundedOscillation { amplitude, period } => format!(
+                "bounded oscillation (a limit cycle: amplitude {:.2e}, {:.2e} rad, period {period:.2} s)",
+                amplitude[0], amplitude[1]
+            ),
+            Verdict::SlewLocked { amplitude, period } => format!(
+                "stable (the errors come back with every slew, no larger: up to {:.2e}, {:.2e} rad, every {period:.2} s)",
+                amplitude[0], amplitude[1]
             ),
             Verdict::Diverged { at, reason } => format!(
                 "diverged at t = {at:.3} s ({})",
@@ -106,6 +110,7 @@ impl Verdict {
             Verdict::Stable => "stable".into(),
             Verdict::Unstable { growth_rate } => format!("unstable ({growth_rate:.2} 1/s)"),
             Verdict::BoundedOscillation { period, .. } => format!("bounded oscillation ({period:.2} s)"),
+            Verdict::SlewLocked { period, .. } => format!("stable (repeats every {period:.2} s)"),
             Verdict::Diverged { at, .. } => format!("diverged at {at:.2} s"),
         }
     }
@@ -406,19 +411,18 @@ impl ErrorStats {
         };
         let verdict = match (divergence, steady) {
             (Some((at, reason)), _) => Verdict::Diverged { at, reason },
-            (None, Some((amplitude, period, _))) => {
-                Verdict::BoundedOscillation { amplitude, period, limit_cycle: true }
-            }
+            (None, Some((amplitude, period, _))) => Verdict::BoundedOscillation { amplitude, period },
             (None, None) => match (growth_rate, self.across_slews()) {
                 // With a repeating slew, growth from one there-and-back to the next decides.
                 (_, Some((_, _, rate))) if rate > UNSTABLE_GROWTH_RATE => {
                     growth_rate = Some(rate);
                     Verdict::Unstable { growth_rate: rate }
                 }
-                // Growth between slews that every slew resets: bounded, at the envelope's rate.
+                // Growth between slews that every slew resets: the response to the slews, at the
+                // envelope's rate from one to the next.
                 (Some(g), Some((amplitude, period, rate))) if g > UNSTABLE_GROWTH_RATE => {
                     growth_rate = Some(rate);
-                    Verdict::BoundedOscillation { amplitude, period, limit_cycle: false }
+                    Verdict::SlewLocked { amplitude, period }
                 }
                 (Some(g), None) if g > UNSTABLE_GROWTH_RATE => Verdict::Unstable { growth_rate: g },
                 _ => Verdict::Stable,

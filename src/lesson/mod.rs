@@ -32,6 +32,8 @@ pub struct Step {
     pub task: Option<String>,
     /// When the task is done.
     pub goal: Option<Goal>,
+    /// Settings that do the task for the student ("Show me"), over the current ones.
+    pub show: Option<String>,
     /// The stable windows of δ stay hidden until the question is answered or the goal is met.
     pub hide_windows: bool,
     /// Paragraphs.
@@ -135,6 +137,7 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
                 "then" => step.then = Some(value),
                 "task" => step.task = Some(value),
                 "goal" => step.goal = Some(parse_goal(&value).map_err(|m| error(n, m))?),
+                "show" => step.show = Some(value),
                 "hide" if value == "windows" => step.hide_windows = true,
                 "hide" => return Err(error(n, format!("'hide: {value}': only 'hide: windows' is known"))),
                 "term" => {
@@ -195,7 +198,7 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
 
 /// `key: value` for the keys a step knows.
 fn setting_line(line: &str) -> Option<(&'static str, &str)> {
-    const KEYS: [&str; 6] = ["state", "then", "task", "goal", "hide", "term"];
+    const KEYS: [&str; 7] = ["state", "then", "task", "goal", "show", "hide", "term"];
     let (key, value) = line.split_once(':')?;
     KEYS.iter().find(|k| **k == key.trim()).map(|k| (*k, value))
 }
@@ -263,6 +266,9 @@ fn check(title: &str, steps: &[Step]) -> Result<(), Error> {
         }
         if s.task.is_some() != s.goal.is_some() {
             return Err(at("'task:' and 'goal:' go together"));
+        }
+        if s.show.is_some() && s.task.is_none() {
+            return Err(at("'show:' does a task for the student, and there is none"));
         }
         if s.hide_windows && s.question.is_none() && s.goal.is_none() {
             return Err(at("'hide: windows' needs a question or a goal to reveal them"));

@@ -148,14 +148,14 @@ pub const REST: Param = Param {
     name: "rest point of the analysis (rest)",
     kind: Kind::Choice {
         options: &[
-            Choice { value: "end", label: "where the slew ends (q2 = 0 rad, the paper's point)" },
+            Choice { value: "end", label: "where the slew ends (q2 = 0 rad)" },
             Choice { value: "arm", label: "where the arm is headed (follows the repeating slew)" },
         ],
         default: "end",
     },
     scope: Scope::Run,
     help: "The analysis (ρ, the poles, the windows of δ, the maps) holds for small motions about one rest point, \
-           with the friction cancelled: where the slew ends, as the paper's, or the end of the slew under way, \
+           with the friction cancelled: where the slew ends, or the end of the slew under way, \
            which under the repeating slew alternates between q2 = 0 and 3π/2 rad (the paper: linearize about \
            an operating point that is updated if necessary).",
 };

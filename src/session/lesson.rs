@@ -140,10 +140,18 @@ impl Session {
         }
     }
 
-    /// Shows a task's result without the student having done it ("show me").
+    /// Shows a task's result without the student having done it ("show me"): the step's "show"
+    /// settings, if any, are applied over the current ones, so the result the answer describes is
+    /// on screen.
     pub fn lesson_reveal(&mut self) -> Result<(), Error> {
         let (step, _) = self.lesson_position()?;
-        self.lesson.as_mut().expect("positioned").done[step] = true;
+        let progress = self.lesson.as_mut().expect("positioned");
+        progress.done[step] = true;
+        if let Some(show) = progress.lesson.steps[step].show.clone() {
+            let mut next = self.settings;
+            next.read(&show, Source::Lesson)?;
+            self.apply(next, false, "")?;
+        }
         Ok(())
     }
 

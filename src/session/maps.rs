@@ -137,6 +137,8 @@ pub struct MapStatus {
     pub points: usize,
     /// The maps are shown (and worked on).
     pub shown: bool,
+    /// The row's title: what the maps show ("Stability maps ρ(δ, α)").
+    pub title: String,
 }
 
 /// The maps the page shows and the cache behind them.
@@ -276,7 +278,14 @@ impl Maps {
         let points = self.grid.n_delta * self.grid.n_alpha;
         let entries: Vec<&MapEntry> = MapSide::BOTH.iter().filter_map(|&s| self.shown(s)).collect();
         if entries.is_empty() {
-            return MapStatus { percent: 0, done: false, text: "waiting to start".into(), points, shown: self.enabled };
+            return MapStatus {
+                percent: 0,
+                done: false,
+                text: "waiting to start".into(),
+                points,
+                shown: self.enabled,
+                title: String::new(),
+            };
         }
         let progress = entries.iter().map(|e| if e.is_done() { 1.0 } else { e.job.progress() }).sum::<f64>()
             / entries.len() as f64;
@@ -302,7 +311,7 @@ impl Maps {
         } else {
             format!("computing {points} points per map… {percent} %")
         };
-        MapStatus { percent, done, text, points, shown: self.enabled }
+        MapStatus { percent, done, text, points, shown: self.enabled, title: String::new() }
     }
 
     /// The caption of a side's map for run A's feedback `pf`, naming what the cells show.

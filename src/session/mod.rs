@@ -541,10 +541,22 @@ impl Session {
             runs,
             note: self.note.clone(),
             preset: self.preset().map_or(String::new(), |p| p.id.to_string()),
-            showing: self
-                .preset()
-                .map_or_else(|| format!("your settings — {}", status::describe(&self.a)), |p| p.title.to_string()),
-            maps: self.maps.status(),
+            showing: self.preset().map_or_else(
+                || format!("your settings — {}", status::describe(&self.a)),
+                // A preset names the paper's figure; the paper slews once.
+                |p| {
+                    let repeating =
+                        if self.settings.a.repeat { " — the slew repeating (the paper's slews once)" } else { "" };
+                    format!("{}{repeating}", p.title)
+                },
+            ),
+            maps: maps::MapStatus {
+                title: match self.settings.view.measure {
+                    crate::plot::color::Measure::Rho => "Stability maps ρ(δ, α)".into(),
+                    crate::plot::color::Measure::Rate => "Stability maps: ln ρ/δ over (δ, α), 1/s".into(),
+                },
+                ..self.maps.status()
+            },
             windows: self.windows_status(),
             ghost: self
                 .ghost

@@ -8,7 +8,12 @@ use serde::Serialize;
 use super::maps::feedback_short;
 use super::run::Run;
 use crate::control::config::FrictionCompensation;
-use crate::control::metrics::{growth_text, DivergenceReason, Metrics, Verdict, UNSTABLE_GROWTH_RATE};
+use crate::control::metrics::{growth_text, DivergenceReason, Metrics, Verdict, GROWTH_FIT_SPAN, UNSTABLE_GROWTH_RATE};
+
+/// Errors above this (rad) are far enough from rest for the arm's nonlinearity (Coriolis terms,
+/// the mass matrix's change with q2) to be a reason the simulation departs from ρ; below it the
+/// linearization holds and another reason is given.
+const NONLINEAR_ERROR: f64 = 0.05;
 use crate::plot::format::{grouped, minus, sci, sig, sig_trim};
 use crate::schema;
 
@@ -60,7 +65,8 @@ pub struct RunStatus {
     /// The verdict as the headline says it: "Unstable", "Stable", "Borderline", "Diverged",
     /// "Bounded oscillation".
     pub headline: &'static str,
-    /// The prediction in a sentence: "ρ = 1.0239 > 1 — the error grows ×e every 0.42 s".
+    /// The prediction in a sentence: "ρ = 1.0239 > 1 — in the long run the errors grow by e every
+    /// 0.42 s".
     pub detail: String,
     /// What the simulation has observed, and whether it agrees.
     pub observed: String,
@@ -80,9 +86,9 @@ pub struct RunStatus {
     pub settings: String,
 }
 
-/// "×e every 0.42 s" for a rate (1/s).
+/// "by e every 0.42 s" for a rate (1/s).
 fn e_folding(rate: f64) -> String {
-    format!("×e every {} s", sig_trim(1.0 / rate.abs(), 2))
+    format!("by e every {} s", sig_trim(1.0 / rate.abs(), 2))
 }
 
 /// The prediction's sentence.
@@ -90,11 +96,14 @@ fn prediction_text(rho: f64, rate: f64) -> (Prediction, String) {
     let p = Prediction::of_rate(rate);
     let text = match p {
         // ρ with four decimals, as the analysis line prints it (five where it is nearly 1).
-        Prediction::Unstable => format!("ρ = {rho:.4} > 1 — the error grows {}", e_folding(rate)),
-        Prediction::Stable => format!("ρ = {rho:.4} < 1 — the errors shrink {}", e_folding(rate)),
-        Prediction::Borderline => {
-            format!("ρ = {rho:.5} ≈ 1 — the errors change too slowly to see ({})", e_folding(rate))
-        }
+        // ρ is a rate in the long run, not a bound per period: say so.
+        Prediction::Unstable => format!("ρ = {rho:.4} > 1 — in the long run the errors grow {}", e_folding(rate)),
+        Prediction::Stable => format!("ρ = {rho:.4} < 1 — in the long run the errors shrink {}", e_folding(rate)),
+        Prediction::Borderline => format!(
+            "ρ = {rho:.5} ≈ 1, just {} 1 — the errors change too slowly to see ({})",
+            if rho < 1.0 { "below" } else { "above" },
+            e_folding(rate)
+        ),
     };
     (p, text)
 }
@@ -161,19 +170,36 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         };
         return (format!("observed: diverged at t = {at:.2} s ({why}) — {agrees}"), true);
     }
-    if let Verdict::BoundedOscillation { amplitude, period, limit_cycle } = m.verdict {
+    if let Verdict::BoundedOscillation { amplitude, period } = m.verdict {
         let amplitude = format!("amplitude {}, {} rad", sci(amplitude[0], 2), sci(amplitude[1], 2));
-        let what = if limit_cycle {
-            format!("observed: a bounded oscillation (limit cycle) — {amplitude}, period {} s", sig_trim(period, 3))
-        } else {
-            format!(
-                "observed: a bounded oscillation — the errors rise between slews, but no higher after one slew than after the last ({amplitude}, every {} s)",
-                sig_trim(period, 3)
-            )
-        };
+        let what =
+            format!("observed: a bounded oscillation (limit cycle) — {amplitude}, period {} s", sig_trim(period, 3));
         let why = match prediction {
             Some((Prediction::Unstable, _)) => "ρ > 1 predicts growth, and the nonlinearity bounds it".to_string(),
             _ => format!("a nonlinear effect ρ cannot show: {}", caveat(run)),
+        };
+        return (format!("{what}; {why}"), true);
+    }
+    if let Verdict::SlewLocked { amplitude, period } = m.verdict {
+        let what = format!(
+            "observed: the errors come back with every slew, no larger (up to {}, {} rad, every {} s): the response to \
+             the slews, not an oscillation of the loop's own",
+            sci(amplitude[0], 2),
+            sci(amplitude[1], 2),
+            sig_trim(period, 3)
+        );
+        let why = match prediction {
+            Some((Prediction::Stable | Prediction::Borderline, rate)) if 1.0 / rate.abs() > period => format!(
+                "the slowest mode dies out by e only every {} s (ln ρ/δ = {} 1/s), longer than the {} s between slews",
+                sig_trim(1.0 / rate.abs(), 2),
+                minus(&format!("{rate:.2}")),
+                sig_trim(period, 3)
+            ),
+            Some((Prediction::Stable | Prediction::Borderline, _)) => {
+                "each slew's transient dies out, as ρ < 1 predicts".into()
+            }
+            Some((Prediction::Unstable, _)) => "ρ > 1 predicts growth from slew to slew, which does not show".into(),
+            None => caveat(run),
         };
         return (format!("{what}; {why}"), true);
     }
@@ -206,17 +232,28 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
     let seen = Prediction::of_rate(g);
     let text = if seen == p {
         let close = (g - predicted).abs() <= 0.25 * predicted.abs().max(0.2);
+        let slower = g > predicted;
         let predicted = minus(&format!("{predicted:.2}"));
-        match (close, p) {
-            (true, _) => format!("{rate} — matches ln ρ/δ = {predicted} 1/s"),
-            // The sign agrees but not the rate: say so, and why that can be.
-            (false, Prediction::Unstable) => format!(
+        match (close, p, slower) {
+            (true, _, _) => format!("{rate} — matches ln ρ/δ = {predicted} 1/s"),
+            // The sign agrees but not the rate: say so, and why that can be. ln ρ/δ is the rate of
+            // the slowest (or the growing) mode; until the others have died out their sum can
+            // move faster or slower.
+            (false, Prediction::Unstable, false) => format!(
                 "{rate} — it grows, as ρ > 1 predicts; ln ρ/δ = {predicted} 1/s is the rate once the growing mode dominates"
             ),
-            (false, Prediction::Stable) => format!(
+            (false, Prediction::Unstable, true) => format!(
+                "{rate} — it grows, as ρ > 1 predicts, faster than ln ρ/δ = {predicted} 1/s for now: that is the rate in \
+                 the long run, and the modes' sum can grow faster for a while"
+            ),
+            (false, Prediction::Stable, false) => format!(
                 "{rate} — it decays, as ρ < 1 predicts; ln ρ/δ = {predicted} 1/s is the slowest mode's rate, which takes over later"
             ),
-            (false, Prediction::Borderline) => format!("{rate} — about flat, as ln ρ/δ = {predicted} 1/s predicts"),
+            (false, Prediction::Stable, true) => format!(
+                "{rate} — it decays, as ρ < 1 predicts, slower than ln ρ/δ = {predicted} 1/s: that is the rate in the \
+                 long run, and over the short rests between slews the modes' sum can decay slower"
+            ),
+            (false, Prediction::Borderline, _) => format!("{rate} — about flat, as ln ρ/δ = {predicted} 1/s predicts"),
         }
     } else {
         let expected = match p {
@@ -224,7 +261,22 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
             Prediction::Stable => "decay",
             Prediction::Borderline => "neither",
         };
-        format!("{rate} — but ln ρ/δ = {} 1/s predicts {expected}: {}", minus(&format!("{predicted:.2}")), caveat(run))
+        let e = run.closed_loop().snapshot().error;
+        let why = if predicted.abs() * GROWTH_FIT_SPAN < 1.0 {
+            // Too slow to show in the seconds fitted: never blame the nonlinearity for that.
+            format!(
+                "too early to see it: at that rate the errors change by e only every {} s, longer than the {} s fitted \
+                 between slews, where the slews' transients still show",
+                sig_trim(1.0 / predicted.abs(), 2),
+                sig_trim(GROWTH_FIT_SPAN, 2)
+            )
+        } else if e[0].abs().max(e[1].abs()) > NONLINEAR_ERROR {
+            caveat(run)
+        } else {
+            "ln ρ/δ is the rate in the long run; over the short rests between slews the modes' sum can move otherwise"
+                .into()
+        };
+        format!("{rate} — but ln ρ/δ = {} 1/s predicts {expected}: {why}", minus(&format!("{predicted:.2}")))
     };
     (text, true)
 }
@@ -257,7 +309,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         (_, Some(Prediction::Borderline)) => ("borderline", "Borderline"),
         // Without an analysis that holds, only the simulation can say, once it has seen enough.
         (Verdict::Unstable { .. }, None) => ("unstable", "Unstable"),
-        (Verdict::Stable, None) if measured => ("stable", "Stable"),
+        (Verdict::Stable | Verdict::SlewLocked { .. }, None) if measured => ("stable", "Stable"),
         (_, None) => ("observing", "Too early to tell"),
     };
     // Under a headline the simulation decided against ρ, ρ's sentence is the prediction.
@@ -355,6 +407,9 @@ pub fn describe(run: &Run) -> String {
     }
     if s.k != paper.k || s.eps_ratio != paper.eps_ratio {
         text += &format!(", k = {}, m = {}", s.k, sig_trim(s.eps_ratio, 3));
+    }
+    if s.repeat {
+        text += ", slew repeating";
     }
     text
 }

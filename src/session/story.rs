@@ -32,10 +32,17 @@ pub struct Story {
     pub re_a4: String,
     pub feed: String,
     pub motor_damping: String,
-    /// What the sign of Re A4 means, in words.
+    /// What the sign of the controller's part and of Re A4 mean, in words.
+    pub feed_says: String,
     pub re_a4_says: String,
-    /// μ at the rest point.
+    /// μ and β = α1 + μ (α1 − α2) at the rest point.
     pub mu: String,
+    pub beta: String,
+    /// The six poles the limit controller places: "−2 1/s (six times)".
+    pub six_poles: String,
+    /// How much faster link 2's law must be for the controller to drain the resonance:
+    /// α2 > α1 (1 + μ)/μ, "4.21 α1".
+    pub alpha2_drain: String,
     /// α* = Bv1/(3 Ir1).
     pub alpha_star: String,
     /// Run A's δ, ρ, ln ρ/δ and its flexible loop pole at that δ.
@@ -77,10 +84,22 @@ pub fn story(run: &Run) -> Option<Story> {
         format!("α1 = {}, α2 = {} 1/s", sig_trim(a1, 3), sig_trim(a2, 3))
     };
     let [open_re, open_im] = report.limit_pair_open[0];
-    let re_a4_says = if r.real_part > 0.0 {
-        "positive: the controller feeds the resonance faster than the motor's damping drains it, so it grows"
+    let feed_says = if r.controller_feed > 0.0 {
+        "the controller feeds the resonance"
+    } else if r.controller_feed < 0.0 {
+        "the controller drains the resonance"
     } else {
-        "negative: the motor's damping drains the resonance faster than the controller feeds it, so it dies out"
+        "the controller neither feeds nor drains the resonance"
+    };
+    let re_a4_says = if r.real_part > 0.0 {
+        "Re A4 > 0: in the limit the pair grows"
+    } else {
+        "Re A4 < 0: in the limit the pair dies out"
+    };
+    let six_poles = if a1 == a2 {
+        format!("{} 1/s (six times)", minus(&sig_trim(-a1, 3)))
+    } else {
+        format!("{} 1/s and {} 1/s (three times each)", minus(&sig_trim(-a1, 3)), minus(&sig_trim(-a2, 3)))
     };
     let loop_pair = match report.flexible_pair()[0].and_then(|i| report.poles[i].continuous) {
         Some([re, im]) => pair_text(re, im),
@@ -106,8 +125,16 @@ pub fn story(run: &Run) -> Option<Story> {
         re_a4: rate(r.real_part),
         feed: rate(r.controller_feed),
         motor_damping: rate(r.motor_damping),
+        feed_says: feed_says.into(),
         re_a4_says: re_a4_says.into(),
         mu: format!("{:.2}", r.mu),
+        beta: rate(r.beta),
+        six_poles,
+        alpha2_drain: if r.mu > 1e-9 {
+            format!("{:.2} α1", (1.0 + r.mu) / r.mu)
+        } else {
+            "∞ (μ = 0 at this rest point)".into()
+        },
         alpha_star: format!("{:.2} 1/s", r.alpha_star),
         delta: format!("{} s", sig_trim(settings.delta, 3)),
         rho: format!("{:.4}", report.spectral_radius),

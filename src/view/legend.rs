@@ -84,8 +84,16 @@ pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure) -> Vec<LegendGr
             items.push(item(Glyph::Plus, PoleStyle::RUN_B.stable, "run B's poles"));
         }
         items.extend([
-            item(Glyph::Halo, palette::POLE_HALO, "the flexible pair (the joint's resonance)"),
-            item(Glyph::Ring, a.a4_open, "A4 without K_pr: where the pair goes as δ → 0"),
+            item(Glyph::Halo, palette::POLE_HALO, "the flexible pair: the joint's resonance in this loop"),
+            item(
+                Glyph::Ring,
+                a.a4_open,
+                if z {
+                    "e^(A4 δ), A4 without K_pr: the pair's δ → 0 limit (not a pole of this loop)"
+                } else {
+                    "A4 without K_pr: where the pair goes as δ → 0"
+                },
+            ),
             item(Glyph::Diamond, a.a4, "A4 with K_pr"),
             item(
                 Glyph::Swatch,

@@ -21,13 +21,18 @@ export function growthDue(previous, next, now) {
   return next.verdict !== previous.verdict || next.measured !== previous.measured || now - previous.shownAt >= GROWTH_REFRESH_MS;
 }
 
-/** @param {string} prefix the element ids' prefix: "verdict" (A) or "verdict-b" (B) */
-export function createRunView(prefix) {
+/**
+ * @param {string} prefix the element ids' prefix: "verdict" (A) or "verdict-b" (B)
+ * @param {string} growthCell the id of the readout of the observed growth, refreshed with the
+ *   observation line so that the two always show the same measurement
+ */
+export function createRunView(prefix, growthCell) {
   const box = byId(prefix);
   const word = byId(`${prefix}-word`);
   const detail = byId(`${prefix}-detail`);
   const observed = byId(`${prefix}-growth`);
   const rho = byId(`${prefix}-rho`);
+  const growth = byId(growthCell);
   const last = { verdict: '', measured: false, shownAt: -Infinity };
   return {
     /** @param {RunStatus} s @param {number} now ms */
@@ -37,6 +42,7 @@ export function createRunView(prefix) {
       setText(detail, s.detail);
       if (growthDue(last, s, now)) {
         setText(observed, s.observed);
+        setText(growth, s.readouts.growth);
         last.shownAt = now;
       }
       last.verdict = s.verdict;

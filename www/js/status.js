@@ -7,7 +7,7 @@ import { createRunView } from './run.js';
 /**
  * @typedef {import('./run.js').RunStatus} RunStatus
  * @typedef {{ runs: RunStatus[], note: string, preset: string, showing: string, ghost: string,
- *   maps: { percent: number, done: boolean, text: string, points: number, shown: boolean },
+ *   maps: { percent: number, done: boolean, text: string, points: number, shown: boolean, title: string },
  *   windows: { text: string, windows: number[][], bands: number[][] } | null,
  *   timeline: import('./timeline.js').TimelineStatus, lesson: import('./lesson.js').LessonStatus | null,
  *   story: Record<string, string> | null }} Status
@@ -36,8 +36,9 @@ export function liveText(story, key) {
 const TRACK = { band: 'var(--band-stable)', rest: 'var(--band-rest)' };
 
 export function createStatus() {
-  const runs = [createRunView('verdict'), createRunView('verdict-b')];
-  const keys = /** @type {const} */ (['time', 'error', 'max_slew', 'max_after', 'growth', 'torque', 'a4']);
+  const runs = [createRunView('verdict', 'ro-growth'), createRunView('verdict-b', 'ro-b-growth')];
+  // The observed growth is written by the run's view, together with its observation line.
+  const keys = /** @type {const} */ (['time', 'error', 'max_slew', 'max_after', 'torque', 'a4']);
   const cell = (/** @type {string} */ run, /** @type {string} */ k) => byId(`ro-${run}${k.replace('_', '-')}`);
   const ro = [Object.fromEntries(keys.map((k) => [k, cell('', k)])), Object.fromEntries(keys.map((k) => [k, cell('b-', k)]))];
   const readouts = byId('readouts');
@@ -51,6 +52,7 @@ export function createStatus() {
   const bControls = byId('b-controls');
   const progress = byId('map-progress');
   const mapTime = byId('map-time');
+  const mapTitle = byId('map-row-title');
   const legend = byId('pair-legend');
   const showing = byId('showing');
   const mapRow = byId('map-row');
@@ -94,6 +96,7 @@ export function createStatus() {
     progress.setAttribute('aria-valuetext', s.maps.done ? 'done' : `${pct} %`);
     progress.dataset.done = s.maps.done ? 'true' : 'false';
     setText(mapTime, s.maps.text);
+    setText(mapTitle, s.maps.title);
     mapRow.hidden = !s.maps.shown;
     for (const node of live) setText(node, liveText(s.story, node.dataset.live ?? ''));
   }

@@ -122,7 +122,11 @@ pub fn simulation_json(
         _ => (None, None),
     };
     let (amplitude, period) = match m.verdict {
-        Verdict::BoundedOscillation { amplitude, period, .. } => (Some(amplitude), Some(period)),
+        Verdict::BoundedOscillation { amplitude, period } => (Some(amplitude), Some(period)),
+        _ => (None, None),
+    };
+    let (slew_amplitude, slew_period) = match m.verdict {
+        Verdict::SlewLocked { amplitude, period } => (Some(amplitude), Some(period)),
         _ => (None, None),
     };
     json!({
@@ -152,6 +156,8 @@ pub fn simulation_json(
         "errors_at_floor": m.errors_at_floor,
         "oscillation_amplitude": amplitude,
         "oscillation_period": period,
+        "slew_response_amplitude": slew_amplitude,
+        "slew_response_period": slew_period,
         "max_torque": m.max_torque,
         "spectral_radius": linear.rho,
         "analysis_rest_q2": linear.q2,

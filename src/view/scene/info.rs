@@ -258,7 +258,7 @@ impl Scene {
                         }
                     }
                 }
-                info.marks = self.flexible_mark(PanelKind::Poles);
+                info.marks = self.flexible_mark();
             }
             PanelKind::ZPlane => {
                 let frame = ZFrame::new(r);
@@ -271,7 +271,7 @@ impl Scene {
                 info.x_ticks = vec![-1.0, 0.0, 1.0];
                 info.y_ticks = vec![-1.0, 0.0, 1.0];
                 info.note = "eigenvalues λ; outside |λ| = 1: grows".into();
-                info.marks = self.flexible_mark(PanelKind::ZPlane);
+                info.marks = self.flexible_mark();
             }
             PanelKind::RhoCurve => {
                 let frame = self.rho_frame(panel, false);
@@ -340,15 +340,14 @@ impl Scene {
         out
     }
 
-    /// "flexible pair" beside run A's upper flexible loop pole, if the plot `kind` shows it.
-    fn flexible_mark(&self, kind: PanelKind) -> Vec<Mark> {
+    /// "flexible pair" beside run A's upper flexible loop pole, if the pole plot shows it.
+    fn flexible_mark(&self) -> Vec<Mark> {
         let poles = self.pole_info();
         let Some(p) = poles.iter().find(|p| p.run == "A" && p.flexible && p.im > 0.0 && p.in_view) else {
             return Vec::new();
         };
         let (Some(x), Some(y)) = (p.x, p.y) else { return Vec::new() };
-        let text = if kind == PanelKind::ZPlane { "flexible pair (→ A4 as δ → 0)" } else { "flexible pair" };
-        vec![Mark { x, y, text: text.into() }]
+        vec![Mark { x, y, text: "flexible pair".into() }]
     }
 
     /// How each shown run is drawn (one entry, or two in pair mode), for the page's legend.
@@ -437,9 +436,11 @@ impl Scene {
             .filter(|(.., d)| *d <= reach)
             .min_by(|a, b| (a.3 + penalty(a.0)).total_cmp(&(b.3 + penalty(b.0))))?;
         let (pole, px, py, _) = best;
+        // Other markers of the same kind on the same spot (those of another kind are named below;
+        // two poles both held at the plot's edge are not "at the same spot").
         let others = poles
             .iter()
-            .filter(|p| !std::ptr::eq(*p, pole))
+            .filter(|p| !std::ptr::eq(*p, pole) && p.kind == pole.kind && p.in_view && pole.in_view)
             .filter_map(at)
             .filter(|(qx, qy)| (qx - px).hypot(qy - py) < 4.0)
             .count();
@@ -454,28 +455,38 @@ impl Scene {
             lines.push(TipLine::plain(format!("damping ratio ζ = {}", format::sig(zeta, 3))));
         }
         lines.push(TipLine::plain(format!("frequency ω = {} rad/s", format::sig(pole.omega, 3))));
-        let [lr, li] = pole.lambda;
-        let lambda = if li.abs() > 1e-12 {
-            format!("λ = {} ± {}j", format::sig(lr, 3), format::sig(li.abs(), 3))
+        if pole.kind == PoleKind::Loop {
+            let [lr, li] = pole.lambda;
+            let lambda = if li.abs() > 1e-12 {
+                format!("λ = {} ± {}j", format::sig(lr, 3), format::sig(li.abs(), 3))
+            } else {
+                format!("λ = {}", format::sig(lr, 4))
+            };
+            lines.push(TipLine::plain(format!(
+                "{lambda}: |λ| = {}, angle {} rad per period",
+                format::sig(pole.modulus, 4),
+                format::sig(pole.angle.abs(), 3)
+            )));
+            if pole.flexible {
+                // One motion, three numbers: say which this is.
+                lines.push(TipLine::plain("the flexible pair: the joint's resonance in this loop, at this δ"));
+            }
+            lines.push(if pole.unstable {
+                TipLine::toned("unstable: |λ| > 1 (Re s > 0), it grows", false)
+            } else {
+                TipLine::toned("stable: |λ| < 1 (Re s < 0), it decays", true)
+            });
         } else {
-            format!("λ = {}", format::sig(lr, 4))
-        };
-        lines.push(TipLine::plain(format!(
-            "{lambda}: |λ| = {}, angle {} rad per period",
-            format::sig(pole.modulus, 4),
-            format::sig(pole.angle.abs(), 3)
-        )));
-        if pole.kind == PoleKind::Loop && pole.flexible {
-            // One motion, three numbers: say which this is.
-            lines.push(TipLine::plain(
-                "the flexible pair: the joint's resonance as the loop has it at this δ (→ A4 as δ → 0)",
-            ));
+            // A limit, not an eigenvalue of this loop: its sign says what happens as δ → 0.
+            if self.layout.panels.iter().any(|p| p.kind == PanelKind::ZPlane) {
+                lines.push(TipLine::plain("drawn at e^(A4 δ): not an eigenvalue of this loop"));
+            }
+            lines.push(if pole.unstable {
+                TipLine::toned("Re s > 0: as δ → 0 the flexible pair grows", false)
+            } else {
+                TipLine::toned("Re s < 0: as δ → 0 the flexible pair dies out", true)
+            });
         }
-        lines.push(if pole.unstable {
-            TipLine::toned("unstable: |λ| > 1 (Re s > 0), it grows", false)
-        } else {
-            TipLine::toned("stable: |λ| < 1 (Re s < 0), it decays", true)
-        });
         if pole.aliased {
             lines.push(TipLine::plain(format!(
                 "aliased: the mode itself is faster than the Nyquist frequency π/δ = {} rad/s",
@@ -533,8 +544,8 @@ impl Scene {
         if let (crate::control::config::PreliminaryFeedbackChoice::Paper, Some(limit)) = (side.feedback(pf), limit) {
             if alpha > limit {
                 lines.push(TipLine::plain(format!(
-                    "above α = {} 1/s the paper's K_pr no longer damps the joint's resonance: its shift of Re A4 is fixed, \
-                     the controller's feed 3α/2 grows",
+                    "above α = {} 1/s the paper's K_pr leaves the δ → 0 pair unstable, so small δ fail: its shift of \
+                     Re A4 is the same at every α, while the controller's feed 3α/2 grows",
                     format::sig(limit, 3)
                 )));
             }
