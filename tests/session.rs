@@ -530,3 +530,21 @@ fn the_verdicts_reasons_are_the_physics() {
         }
     }
 }
+
+/// A steady envelope near rest is not a limit cycle where ρ describes the run: α = 0.5 without
+/// K_pr grows slowly (ρ > 1) while the slew's transient dies out, and the page says it is too
+/// early to tell — never that a nonlinearity bounds it.
+#[test]
+fn a_flat_envelope_near_rest_is_too_early_not_a_limit_cycle() {
+    let mut s = common::session("delta=0.01&alpha=0.5&pf=off&repeat=0");
+    let mut early = false;
+    for _ in 0..8 {
+        common::play(&mut s, 0.5);
+        let st = &s.status().runs[0];
+        assert_eq!(st.headline, "Unstable", "{}", st.observed);
+        assert!(!st.observed.contains("nonlinearity bounds it"), "{}", st.observed);
+        assert!(!st.observed.contains("limit cycle"), "{}", st.observed);
+        early |= st.observed.contains("too early to tell");
+    }
+    assert!(early, "the flat stretch is called too early to tell");
+}

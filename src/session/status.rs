@@ -145,6 +145,16 @@ fn caveat(run: &Run) -> String {
     }
 }
 
+/// Whether a limit cycle the simulation sees can stand against ρ: always where ρ does not describe
+/// the run; where it does, only far from rest — near rest the loop is linear, and a steady
+/// envelope there is a transient's, too early to judge.
+fn credible_cycle(m: &Metrics, applies: bool) -> bool {
+    match m.verdict {
+        Verdict::BoundedOscillation { amplitude, .. } => !applies || amplitude[0].max(amplitude[1]) >= NONLINEAR_ERROR,
+        _ => false,
+    }
+}
+
 /// Where the analysis holds, in words: "at rest at q2 = 0 rad, friction cancelled".
 fn scope_text(report: &crate::analysis::StabilityReport) -> String {
     let q2 = report.rest[1];
@@ -171,11 +181,27 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         return (format!("observed: diverged at t = {at:.2} s ({why}) — {agrees}"), true);
     }
     if let Verdict::BoundedOscillation { amplitude, period } = m.verdict {
+        let amplitude_max = amplitude[0].max(amplitude[1]);
         let amplitude = format!("amplitude {}, {} rad", sci(amplitude[0], 2), sci(amplitude[1], 2));
-        let what =
-            format!("observed: a bounded oscillation (limit cycle) — {amplitude}, period {} s", sig_trim(period, 3));
+        // Near rest the arm is linear: a flat envelope there is not the nonlinearity at work.
+        let near_rest = amplitude_max < NONLINEAR_ERROR;
+        let what = if near_rest && prediction.is_some() {
+            format!("observed: an oscillation of steady size so far — {amplitude}, period {} s", sig_trim(period, 3))
+        } else {
+            format!("observed: a bounded oscillation (limit cycle) — {amplitude}, period {} s", sig_trim(period, 3))
+        };
         let why = match prediction {
+            Some((Prediction::Unstable, rate)) if near_rest => format!(
+                "too early to tell: ρ > 1 predicts growth by e every {} s, which the slew's dying transient can hide \
+                 for a while",
+                sig_trim(1.0 / rate.abs(), 2)
+            ),
             Some((Prediction::Unstable, _)) => "ρ > 1 predicts growth, and the nonlinearity bounds it".to_string(),
+            Some((_, rate)) if near_rest => format!(
+                "too early to tell: near rest the loop is linear, and ρ predicts {} by e every {} s",
+                if rate > 0.0 { "growth" } else { "decay" },
+                sig_trim(1.0 / rate.abs(), 2)
+            ),
             _ => format!("a nonlinear effect ρ cannot show: {}", caveat(run)),
         };
         return (format!("{what}; {why}"), true);
@@ -303,7 +329,9 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     let judged = prediction.filter(|_| applies).map(|p| p.0);
     let (verdict, headline) = match (m.verdict, judged) {
         (Verdict::Diverged { .. }, _) => ("diverged", "Diverged"),
-        (v @ Verdict::BoundedOscillation { .. }, _) => (v.label(), "Bounded oscillation"),
+        (v @ Verdict::BoundedOscillation { .. }, _) if credible_cycle(&m, applies) => {
+            (v.label(), "Bounded oscillation")
+        }
         (_, Some(Prediction::Unstable)) => ("unstable", "Unstable"),
         (_, Some(Prediction::Stable)) => ("stable", "Stable"),
         (_, Some(Prediction::Borderline)) => ("borderline", "Borderline"),
@@ -314,7 +342,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     };
     // Under a headline the simulation decided against ρ, ρ's sentence is the prediction.
     let overridden = match m.verdict {
-        Verdict::BoundedOscillation { .. } => true,
+        Verdict::BoundedOscillation { .. } => credible_cycle(&m, applies),
         Verdict::Diverged { .. } => !matches!(judged, Some(Prediction::Unstable)),
         _ => false,
     };
