@@ -141,7 +141,7 @@ fn small_alpha_and_the_papers_gains_at_large_alpha_are_as_printed() {
     let (s, _) = Session::open("delta=0.01&alpha=0.2&pf=off");
     let mut s = s;
     assert_says("\"a change of α", &format!("at α = 0.2: {}", s.windows().unwrap().describe()));
-    let shift = feedback_shift(&p, 0.0, &paper_gain());
+    let shift = feedback_shift(&p, [2.0, 2.0], 0.0, &paper_gain());
     let row = "(not in the paper) the paper's K_pr at larger α";
     assert_says(row, &fixed(shift, 3));
     assert_says(row, &format!("only for α < {:.3} 1/s", alpha_limit(&p, shift)));

@@ -141,7 +141,7 @@ fn the_unstable_mode_is_motor_against_link_with_link_two_flung_along() {
 #[test]
 fn the_papers_gains_shift_the_pair_by_a_fixed_amount_and_fail_at_large_alpha() {
     let plant = PlantParameters::default();
-    let shift = feedback_shift(&plant, 0.0, &paper_gain());
+    let shift = feedback_shift(&plant, [2.0, 2.0], 0.0, &paper_gain());
     assert!((shift + 5.12).abs() < 0.01, "{shift}");
     for alpha in [0.3, 1.0, 2.0, 3.0, 5.0] {
         let with = numerical(&plant, [alpha, alpha], 0.0, &paper_gain()).eigenvalues[0].re;

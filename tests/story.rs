@@ -86,23 +86,28 @@ fn what_is_said_of_the_preliminary_feedback_is_the_programs() {
         says("twelve times", text, "story");
         says(&format!("= {} N m s/rad", plant.bv1), &text.replace("<sub>v1</sub>", "_v1"), "story");
     }
-    let shift = feedback_shift(&plant, 0.0, &k);
+    let shift = feedback_shift(&plant, [2.0, 2.0], 0.0, &k);
     says(&minus(format!("{shift:.2} 1/s")), LESSON_TEXT, "lesson");
     // Its two parts: T1's and T2's gains on θ̇.
     let t1 = FeedbackGain::from_fn(|r, c| if r == 0 { k[(r, c)] } else { 0.0 });
     let t2 = FeedbackGain::from_fn(|r, c| if r == 1 { k[(r, c)] } else { 0.0 });
-    let (p1, p2) = (feedback_shift(&plant, 0.0, &t1), feedback_shift(&plant, 0.0, &t2));
+    let (p1, p2) = (feedback_shift(&plant, [2.0, 2.0], 0.0, &t1), feedback_shift(&plant, [2.0, 2.0], 0.0, &t2));
     assert!((p1 + p2 - shift).abs() < 1e-12);
+    // Live on the page: the story's parts are these at the paper's settings.
+    let st = common::session("preset=fig5.3").status().story.unwrap();
+    assert_eq!((st.kpr_shift_t1, st.kpr_shift_t2), (minus(format!("{p1:.2} 1/s")), minus(format!("{p2:.2} 1/s"))));
     says(
-        &minus(format!("through T1, twelve times the motor's own B_v1 = 1.4 N m s/rad, gives {p1:.2} 1/s")),
+        "through T1, twelve times the motor's own B_v1 = 1.4 N m s/rad, gives",
         &page.replace("<sub>v1</sub>", "_v1"),
         "page",
     );
     says(
-        &minus(format!("{:.2} N m s/rad through T2 and the links' coupling gives {p2:.2} 1/s", k[(1, 5)])),
+        &format!("{:.2} N m s/rad through T2 and the links' coupling gives", k[(1, 5)]).replace('-', "−"),
         &page,
         "page",
     );
+    let at_pi = feedback_shift(&plant, [2.0, 2.0], PI, &k);
+    says(&minus(format!("({shift:.2} 1/s at q2 = 0, {at_pi:.2} 1/s at q2 = π)")), &page, "page");
     says(&format!("above α = {:.2} 1/s", alpha_limit(&plant, shift)), LESSON_TEXT, "lesson");
     // At α = 5 only a window is left.
     let w = windows(&config(0.01, 5.0, PreliminaryFeedbackChoice::Paper));
@@ -119,31 +124,24 @@ fn what_is_said_of_the_preliminary_feedback_is_the_programs() {
     says(&sampled, &page, "page");
 }
 
-/// ρ is an asymptotic rate: in Fig. 5.2's loop (ρ < 1) a motor turned against the resting links
-/// first pulls the link errors up, in the same unit (rad), before they die out.
+/// ρ is an asymptotic rate: in Fig. 5.2's loop (ρ < 1) the link errors from a link turned off at
+/// rest first grow, in the same unit, before they die out — "the modes' sum can … even grow for a
+/// while".
 #[test]
-fn the_transient_growth_quoted_is_the_loops() {
+fn the_transient_growth_said_is_the_loops() {
     let c = config(0.01, 2.0, PreliminaryFeedbackChoice::Paper);
     let model = LoopModel::new(&LinearSettings::of(&c, None)).unwrap();
     let phi = model.loop_matrix(0.01).unwrap();
-    let rho = model.spectral_radius(0.01).unwrap();
-    assert!(rho < 1.0);
+    assert!(model.spectral_radius(0.01).unwrap() < 1.0);
     let mut x = nalgebra::SVector::<f64, 10>::zeros();
-    x[2] = 1e-3; // θ, rad
-    let (mut peak, mut at) = (0.0, 0);
-    for n in 1..400 {
+    x[0] = 1e-3; // q1, rad
+    let mut peak: f64 = 0.0;
+    for _ in 1..400 {
         x = phi * x;
-        let e = x[0].abs().max(x[1].abs());
-        if e > peak {
-            (peak, at) = (e, n);
-        }
+        peak = peak.max(x[0].abs().max(x[1].abs()));
     }
-    assert!(peak > 1e-3 && x[0].abs().max(x[1].abs()) < 1e-4, "the link errors rise above the push, then die out");
-    let said = format!(
-        "(at Fig. 5.2, ρ = {rho:.3}, a motor turned 1 mrad against the resting links pulls the link errors up to {:.1} mrad over the next {at} periods before they die out)",
-        peak * 1e3
-    );
-    says(&said, &page_text(), "page");
+    assert!(peak > 1e-3 && x[0].abs().max(x[1].abs()) < 1e-4, "peak {peak}");
+    says("until then the modes' sum can move otherwise, even grow for a while", &page_text(), "page");
 }
 
 /// Outside the windows (no K_pr, α = 2) the growing mode below 0.224 s oscillates — the resonance,
@@ -200,6 +198,17 @@ fn a_fast_law_for_link_two_drains_the_resonance() {
     assert_eq!(story.feed_says, "the controller drains the resonance");
     assert_eq!(story.alpha2_drain, format!("{:.2} α1", (1.0 + r.mu) / r.mu));
     assert_eq!(story.six_poles, "−1 1/s and −5 1/s (three times each)");
+    // The paper's K_pr's shift with α1 ≠ α2 is the closed form's, its parts add up, and the pair
+    // they make is the numerical limit's.
+    let mut with = c;
+    with.preliminary_feedback = PreliminaryFeedbackChoice::Paper;
+    let [pre, pim] = analyze(&with, None).unwrap().limit_pair[0];
+    assert_eq!(story.kpr_pair, minus(format!("{pre:.2} ± {:.2}j 1/s", pim.abs())));
+    let open = analyze(&c, None).unwrap().limit_pair_open[0][0];
+    let value = |t: &str| t.trim_end_matches(" 1/s").replace('−', "-").parse::<f64>().unwrap();
+    assert!((value(&story.kpr_shift) - (pre - open)).abs() < 0.006, "{} vs {}", story.kpr_shift, pre - open);
+    assert!((value(&story.kpr_shift_t1) + value(&story.kpr_shift_t2) - value(&story.kpr_shift)).abs() < 0.011);
+    assert!(story.lq_says.starts_with("leaves a stable pair"), "{}", story.lq_says);
 }
 
 #[test]
@@ -250,7 +259,18 @@ fn the_live_numbers_are_the_analysis_numbers() {
     assert_eq!(story.kpr_pair, pair(pre, pim));
     let lq = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Lq), None).unwrap();
     let [qre, qim] = lq.limit_pair[0];
-    assert_eq!(story.lq_pair, pair(qre, qim));
+    assert!(story.lq_says.ends_with(&format!("(here {})", pair(qre, qim))), "{}", story.lq_says);
+    assert!(story.lq_says.starts_with("reflects the unstable pair"));
+    assert_eq!(story.loop_limit, "A4 — the ring in the pole plot");
+    assert_eq!(story.rho_set_by, "the flexible pair");
+    // With K_pr on, the loop's pair tends to A4 with K_pr, and ρ is set by another, slower mode.
+    let s = common::session("preset=fig5.2");
+    let story = s.status().story.unwrap();
+    let report = s.run(0).unwrap().analysis().report().unwrap().clone();
+    let [kre, kim] = report.limit_pair[0];
+    assert_eq!(story.loop_limit, format!("A4 with K_pr, {} — the diamond in the pole plot", pair(kre, kim)));
+    assert!(!report.flexible_pair().contains(&Some(0)));
+    assert!(story.rho_set_by.starts_with("another mode, at s = −1.9"), "{}", story.rho_set_by);
     assert_eq!(
         (story.feed_says.as_str(), story.re_a4_says.as_str()),
         ("the controller feeds the resonance", "Re A4 > 0: in the limit the pair grows")

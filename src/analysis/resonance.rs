@@ -130,16 +130,17 @@ pub fn closed_form_a4(plant: &PlantParameters, alpha: [f64; 2], q2: f64, gain: &
     )
 }
 
-/// How far a preliminary feedback moves Re A4, 1/s (α1 = α2: then independent of α, since it
-/// acts on the pair only through its gains on θ̇): ½ [K_θ̇,1/Ir1 + (A2 + A3 cos q2) K_θ̇,2/(A2 J_eff)].
-pub fn feedback_shift(plant: &PlantParameters, q2: f64, gain: &FeedbackGain) -> f64 {
-    let m = Mass::at(plant, q2);
-    0.5 * (gain[(0, 5)] / plant.ir1 + m.m12 * gain[(1, 5)] / (plant.a2 * m.j_eff))
+/// How far a preliminary feedback moves the pair's real part (half the change of tr A4), 1/s.
+/// For α1 = α2 it does not depend on α: ½ [K_θ̇,1/Ir1 + (A2 + A3 cos q2) K_θ̇,2/(A2 J_eff)],
+/// through its gains on θ̇ alone; with α1 ≠ α2 its T2 part changes with them.
+pub fn feedback_shift(plant: &PlantParameters, alpha: [f64; 2], q2: f64, gain: &FeedbackGain) -> f64 {
+    let open = JointResonance::new(plant, alpha, q2).a4;
+    0.5 * (closed_form_a4(plant, alpha, q2, gain).trace() - open.trace())
 }
 
 /// The largest α (α1 = α2) for which a fixed preliminary feedback with Re-shift `shift` (from
-/// [`feedback_shift`]) keeps the δ → 0 pair stable: 3α/2 − Bv1/(2 Ir1) + shift < 0 (α* itself for
-/// no feedback).
+/// [`feedback_shift`] at α1 = α2) keeps the δ → 0 pair stable: 3α/2 − Bv1/(2 Ir1) + shift < 0 (α*
+/// itself for no feedback).
 pub fn alpha_limit(plant: &PlantParameters, shift: f64) -> f64 {
     (plant.bv1 / (2.0 * plant.ir1) - shift) / 1.5
 }
@@ -223,7 +224,7 @@ impl ResonanceReport {
     pub fn new(plant: &PlantParameters, alpha: [f64; 2], q2: f64, gain: &FeedbackGain, fixed: bool) -> Self {
         let r = JointResonance::new(plant, alpha, q2);
         let own = arm_pair(plant, q2)[0];
-        let shift = feedback_shift(plant, q2, gain);
+        let shift = feedback_shift(plant, alpha, q2, gain);
         let damps = fixed && shift < 0.0;
         Self {
             j_eff: r.j_eff,
@@ -241,7 +242,11 @@ impl ResonanceReport {
             alpha_star: alpha_star(plant),
             feedback_shift: shift,
             feedback_alpha_limit: damps.then(|| alpha_limit(plant, shift)),
-            paper_alpha_limit: alpha_limit(plant, feedback_shift(plant, q2, &crate::control::feedback::paper_gain())),
+            // The limit is for α1 = α2, where the shift does not depend on α.
+            paper_alpha_limit: alpha_limit(
+                plant,
+                feedback_shift(plant, [1.0, 1.0], q2, &crate::control::feedback::paper_gain()),
+            ),
         }
     }
 }

@@ -115,7 +115,11 @@ fn predicted_text(rho: f64, rate: f64) -> String {
     match Prediction::of_rate(rate) {
         Prediction::Unstable => format!("the linear analysis predicts growth {} (ρ = {rho:.4} > 1)", e_folding(rate)),
         Prediction::Stable => format!("the linear analysis predicts decay {} (ρ = {rho:.4} < 1)", e_folding(rate)),
-        Prediction::Borderline => format!("the linear analysis predicts errors about flat (ρ = {rho:.5} ≈ 1)"),
+        Prediction::Borderline => format!(
+            "the linear analysis predicts errors changing only slowly: {} {} (ρ = {rho:.5} ≈ 1)",
+            if rate > 0.0 { "growth" } else { "decay" },
+            e_folding(rate)
+        ),
     }
 }
 
@@ -133,14 +137,17 @@ fn caveat(run: &Run) -> String {
         FrictionCompensation::Continuous => {
             "the analysis is linearized at rest; far from rest the arm is nonlinear".into()
         }
-        FrictionCompensation::Held => {
-            "the analysis takes the friction as cancelled, and held compensation does not cancel it".into()
-        }
+        FrictionCompensation::Held => "the analysis takes the friction as cancelled; held over δ, the \
+                                        compensation leaves the friction's change within each period"
+            .into(),
         FrictionCompensation::Off => format!(
-            "the analysis takes the friction as cancelled; uncompensated, the motor's Dahl friction at rest acts as \
-             a spring of F_c1/ε1 = {} N m/rad, far stiffer than the joint's K1 = {} N m/rad",
+            "the analysis takes the friction as cancelled; uncompensated, the motor's Dahl friction is a spring of \
+             F_c1/ε1 = {} N m/rad for motions well below ε1 = {} rad (the joint's K1 is {} N m/rad) and a torque of \
+             up to F_c1 = {} N m beyond",
             grouped(schema::round_significant(p.fc1 / p.eps1, 3)),
-            grouped(p.k1)
+            sig_trim(p.eps1, 3),
+            grouped(p.k1),
+            sig_trim(p.fc1, 3)
         ),
     }
 }
@@ -165,7 +172,9 @@ fn scope_text(report: &crate::analysis::StabilityReport) -> String {
 /// The observation, compared with the prediction.
 fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) -> (String, bool) {
     // Where ρ does not describe the run, it is never cited as the cause of what is seen.
+    let raw_prediction = prediction;
     let prediction = prediction.filter(|_| analysis_applies(run));
+    let repeating = run.settings().repeat;
     let alone = !analysis_applies(run);
     if let Verdict::Diverged { at, reason } = m.verdict {
         let why = match reason {
@@ -175,7 +184,16 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         };
         let agrees = match prediction {
             Some((Prediction::Unstable, _)) => "as ρ > 1 predicted".to_string(),
-            _ if alone => format!("the linear analysis cannot say why: {}", caveat(run)),
+            // ρ with the friction cancelled, where it is not: it may still point the same way
+            // (far from rest the friction only saturates), but it is not the verdict.
+            _ if alone => match raw_prediction {
+                Some((Prediction::Unstable, _)) => {
+                    "ρ > 1, computed with the friction cancelled, points the same way (far from rest the friction \
+                     is a bounded torque), but it does not describe this run"
+                        .to_string()
+                }
+                _ => format!("not what ρ, computed with the friction cancelled, predicts: {}", caveat(run)),
+            },
             _ => format!("not what ρ predicts: {}", caveat(run)),
         };
         return (format!("observed: diverged at t = {at:.2} s ({why}) — {agrees}"), true);
@@ -197,6 +215,9 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
                 sig_trim(1.0 / rate.abs(), 2)
             ),
             Some((Prediction::Unstable, _)) => "ρ > 1 predicts growth, and the nonlinearity bounds it".to_string(),
+            Some((Prediction::Borderline, _)) if near_rest => {
+                "as ρ ≈ 1 predicts: a mode of the loop that hardly grows or decays".to_string()
+            }
             Some((_, rate)) if near_rest => format!(
                 "too early to tell: near rest the loop is linear, and ρ predicts {} by e every {} s",
                 if rate > 0.0 { "growth" } else { "decay" },
@@ -207,24 +228,33 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         return (format!("{what}; {why}"), true);
     }
     if let Verdict::SlewLocked { amplitude, period } = m.verdict {
+        let across =
+            m.growth_rate.map_or(String::new(), |g| format!(", {} 1/s from slew to slew", minus(&format!("{g:.2}"))));
         let what = format!(
-            "observed: the errors come back with every slew, no larger (up to {}, {} rad, every {} s): the response to \
-             the slews, not an oscillation of the loop's own",
+            "observed: the errors rise between slews and come back about as large after the next (up to {}, {} rad, \
+             every {} s{across})",
             sci(amplitude[0], 2),
             sci(amplitude[1], 2),
             sig_trim(period, 3)
         );
         let why = match prediction {
-            Some((Prediction::Stable | Prediction::Borderline, rate)) if 1.0 / rate.abs() > period => format!(
+            Some((Prediction::Stable, rate)) if 1.0 / rate.abs() > period => format!(
                 "the slowest mode dies out by e only every {} s (ln ρ/δ = {} 1/s), longer than the {} s between slews",
                 sig_trim(1.0 / rate.abs(), 2),
                 minus(&format!("{rate:.2}")),
                 sig_trim(period, 3)
             ),
-            Some((Prediction::Stable | Prediction::Borderline, _)) => {
-                "each slew's transient dies out, as ρ < 1 predicts".into()
-            }
-            Some((Prediction::Unstable, _)) => "ρ > 1 predicts growth from slew to slew, which does not show".into(),
+            Some((Prediction::Stable, _)) => "each slew's transient dies out, as ρ < 1 predicts".into(),
+            Some((Prediction::Borderline, rate)) => format!(
+                "as ρ ≈ 1 predicts: the slowest mode hardly {} ({} by e every {} s), and every slew excites it again",
+                if rate > 0.0 { "grows" } else { "decays" },
+                if rate > 0.0 { "growing" } else { "decaying" },
+                sig_trim(1.0 / rate.abs(), 2)
+            ),
+            Some((Prediction::Unstable, rate)) => format!(
+                "too early to tell: ρ > 1 predicts growth by e every {} s from slew to slew",
+                sig_trim(1.0 / rate.abs(), 2)
+            ),
             None => caveat(run),
         };
         return (format!("{what}; {why}"), true);
@@ -277,7 +307,7 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
             ),
             (false, Prediction::Stable, true) => format!(
                 "{rate} — it decays, as ρ < 1 predicts, slower than ln ρ/δ = {predicted} 1/s: that is the rate in the \
-                 long run, and over the short rests between slews the modes' sum can decay slower"
+                 long run, and over a few seconds the modes' sum can decay slower"
             ),
             (false, Prediction::Borderline, _) => format!("{rate} — about flat, as ln ρ/δ = {predicted} 1/s predicts"),
         }
@@ -291,16 +321,16 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         let why = if predicted.abs() * GROWTH_FIT_SPAN < 1.0 {
             // Too slow to show in the seconds fitted: never blame the nonlinearity for that.
             format!(
-                "too early to see it: at that rate the errors change by e only every {} s, longer than the {} s fitted \
-                 between slews, where the slews' transients still show",
+                "too early to see it: at that rate the errors change by e only every {} s, longer than the {} s fitted, \
+                 where the {} transient still shows",
                 sig_trim(1.0 / predicted.abs(), 2),
-                sig_trim(GROWTH_FIT_SPAN, 2)
+                sig_trim(GROWTH_FIT_SPAN, 2),
+                if repeating { "slews'" } else { "slew's" }
             )
         } else if e[0].abs().max(e[1].abs()) > NONLINEAR_ERROR {
             caveat(run)
         } else {
-            "ln ρ/δ is the rate in the long run; over the short rests between slews the modes' sum can move otherwise"
-                .into()
+            "ln ρ/δ is the rate in the long run; over a few seconds the modes' sum can move otherwise".into()
         };
         format!("{rate} — but ln ρ/δ = {} 1/s predicts {expected}: {why}", minus(&format!("{predicted:.2}")))
     };
@@ -323,6 +353,10 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     };
     let (observed, measured) = observation(&m, prediction, run);
     let applies = analysis_applies(run);
+    let near_rest = s.error[0].abs().max(s.error[1].abs()) < NONLINEAR_ERROR;
+    // A rate that changes the errors by e or more over the span fitted: growth (sign 1) or decay
+    // (−1) the simulation has clearly seen.
+    let clear = |sign: f64| m.growth_rate.is_some_and(|g| sign * g * GROWTH_FIT_SPAN >= 1.0);
     // ρ decides the headline only where it describes the run (the friction cancelled); what the
     // simulation has seen beyond the linear analysis overrides it: a divergence, or a limit
     // cycle (named as the CLI and the JSON name it).
@@ -335,9 +369,15 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         (_, Some(Prediction::Unstable)) => ("unstable", "Unstable"),
         (_, Some(Prediction::Stable)) => ("stable", "Stable"),
         (_, Some(Prediction::Borderline)) => ("borderline", "Borderline"),
-        // Without an analysis that holds, only the simulation can say, once it has seen enough.
-        (Verdict::Unstable { .. }, None) => ("unstable", "Unstable"),
-        (Verdict::Stable | Verdict::SlewLocked { .. }, None) if measured => ("stable", "Stable"),
+        // Without an analysis that holds, only the simulation can say, once it has seen enough: a
+        // growth that has carried the errors far from rest, or a decay that has brought them near
+        // it. Near rest the friction's hunting can grow for a while and then settle into a cycle.
+        (Verdict::Unstable { .. }, None) if !near_rest && clear(1.0) => ("unstable", "Unstable"),
+        (Verdict::Stable | Verdict::SlewLocked { .. }, None)
+            if measured && near_rest && (m.errors_at_floor || clear(-1.0)) =>
+        {
+            ("stable", "Stable")
+        }
         (_, None) => ("observing", "Too early to tell"),
     };
     // Under a headline the simulation decided against ρ, ρ's sentence is the prediction.

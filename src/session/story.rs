@@ -50,13 +50,21 @@ pub struct Story {
     pub rho: String,
     pub growth: String,
     pub loop_pair: String,
-    /// The paper's K_pr on the pair (acting continuously): its shift of Re A4, the pair it makes,
-    /// and the largest α (α1 = α2) it keeps stable.
+    /// What the sampled pair tends to as δ → 0: "A4 — the ring in the pole plot", or with a
+    /// preliminary feedback "A4 with K_pr — the diamond in the pole plot".
+    pub loop_limit: String,
+    /// Which mode sets ρ: "the flexible pair", or "another mode, at s = −1.95 1/s".
+    pub rho_set_by: String,
+    /// The paper's K_pr on the pair (acting continuously): its shift of the pair's real part, the
+    /// parts of it through T1 and T2, the pair it makes, and the largest α (α1 = α2) it keeps
+    /// stable.
     pub kpr_shift: String,
+    pub kpr_shift_t1: String,
+    pub kpr_shift_t2: String,
     pub kpr_pair: String,
     pub kpr_alpha_limit: String,
-    /// The minimum-energy LQ design's pair: the unstable pair mirrored.
-    pub lq_pair: String,
+    /// What the minimum-energy LQ design does to the pair, with the pair it makes.
+    pub lq_says: String,
 }
 
 /// "2.64 ± 29.58j 1/s".
@@ -108,10 +116,32 @@ pub fn story(run: &Run) -> Option<Story> {
     let paper = paper_gain();
     let kpr = closed_form_a4(plant, settings.alpha, q2, &paper).complex_eigenvalues();
     let kpr = if kpr[0].im >= kpr[1].im { kpr[0] } else { kpr[1] };
-    let shift = feedback_shift(plant, q2, &paper);
+    let row =
+        |r: usize| crate::control::feedback::FeedbackGain::from_fn(|i, j| if i == r { paper[(i, j)] } else { 0.0 });
+    let shift_of = |gain: &crate::control::feedback::FeedbackGain| feedback_shift(plant, settings.alpha, q2, gain);
     // The minimum-energy LQ design reflects an unstable pair into the left half-plane and leaves a
     // stable one where it is (tests/resonance.rs checks it against the design).
-    let lq_re = -open_re.abs();
+    let lq_says = if open_re > 0.0 {
+        format!("reflects the unstable pair into the left half-plane (here {})", pair_text(-open_re, open_im))
+    } else {
+        format!("leaves a stable pair where it is (here {})", pair_text(open_re, open_im))
+    };
+    let loop_limit = if settings.pf == crate::control::config::PreliminaryFeedbackChoice::Off {
+        "A4 — the ring in the pole plot".to_string()
+    } else {
+        let [re, im] = report.limit_pair[0];
+        format!("A4 with K_pr, {} — the diamond in the pole plot", pair_text(re, im))
+    };
+    let flexible = report.flexible_pair();
+    let rho_set_by = match report.poles.first() {
+        Some(_) if flexible.contains(&Some(0)) => "the flexible pair".to_string(),
+        Some(p) => match p.continuous {
+            Some([re, im]) if im.abs() > 1e-9 => format!("another pair, at s = {}", pair_text(re, im)),
+            Some([re, _]) => format!("another mode, at s = {}", rate(re)),
+            None => "another mode".into(),
+        },
+        None => "—".into(),
+    };
     Some(Story {
         alpha,
         rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { sig_trim(q2, 3) }),
@@ -140,9 +170,13 @@ pub fn story(run: &Run) -> Option<Story> {
         rho: format!("{:.4}", report.spectral_radius),
         growth: rate(report.growth_rate),
         loop_pair,
-        kpr_shift: rate(shift),
+        loop_limit,
+        rho_set_by,
+        kpr_shift: rate(shift_of(&paper)),
+        kpr_shift_t1: rate(shift_of(&row(0))),
+        kpr_shift_t2: rate(shift_of(&row(1))),
         kpr_pair: pair_text(kpr.re, kpr.im),
         kpr_alpha_limit: format!("{:.2} 1/s", r.paper_alpha_limit),
-        lq_pair: pair_text(lq_re, open_im),
+        lq_says,
     })
 }

@@ -16,9 +16,11 @@ export const GROWTH_REFRESH_MS = 1000;
  */
 
 /** Whether the observation line should be rewritten now (pure): a new verdict, the first
- * measurement, or a second since the last rewrite. */
+ * measurement, a new analysis (its rates are quoted in the line), or a second since the last
+ * rewrite. */
 export function growthDue(previous, next, now) {
-  return next.verdict !== previous.verdict || next.measured !== previous.measured || now - previous.shownAt >= GROWTH_REFRESH_MS;
+  return next.verdict !== previous.verdict || next.measured !== previous.measured || next.rho !== previous.rho
+    || now - previous.shownAt >= GROWTH_REFRESH_MS;
 }
 
 /**
@@ -33,7 +35,7 @@ export function createRunView(prefix, growthCell) {
   const observed = byId(`${prefix}-growth`);
   const rho = byId(`${prefix}-rho`);
   const growth = byId(growthCell);
-  const last = { verdict: '', measured: false, shownAt: -Infinity };
+  const last = { verdict: '', measured: false, rho: '', shownAt: -Infinity };
   return {
     /** @param {RunStatus} s @param {number} now ms */
     render(s, now) {
@@ -47,6 +49,7 @@ export function createRunView(prefix, growthCell) {
       }
       last.verdict = s.verdict;
       last.measured = s.measured;
+      last.rho = s.rho;
       setText(rho, s.rho);
     },
     /** Shown when the wasm crashed. */

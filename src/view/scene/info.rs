@@ -454,7 +454,16 @@ impl Scene {
         if let Some(zeta) = pole.zeta {
             lines.push(TipLine::plain(format!("damping ratio ζ = {}", format::sig(zeta, 3))));
         }
-        lines.push(TipLine::plain(format!("frequency ω = {} rad/s", format::sig(pole.omega, 3))));
+        // The damped frequency it swings at and the natural one, named apart.
+        lines.push(TipLine::plain(if im > 1e-9 {
+            format!(
+                "swings at Im s = {} rad/s (natural frequency |s| = {})",
+                format::sig(im, 4),
+                format::sig(pole.omega, 3)
+            )
+        } else {
+            format!("|s| = {} 1/s (it does not swing)", format::sig(pole.omega, 3))
+        }));
         if pole.kind == PoleKind::Loop {
             let [lr, li] = pole.lambda;
             let lambda = if li.abs() > 1e-12 {
@@ -507,7 +516,11 @@ impl Scene {
             let Some((qx, qy)) = at(q) else { continue };
             if (qx - px).hypot(qy - py) <= A4_BESIDE {
                 let s = format!("{} ± {}j", format::sig(q.re, 3), format::sig(q.im.abs(), 4));
-                lines.push(TipLine::plain(format!("beside it: {} at s = {s} 1/s", pole_name(q.kind))));
+                let line = TipLine::plain(format!("beside it: {} at s = {s} 1/s", pole_name(q.kind)));
+                // Both halves of a conjugate pair can sit beside a real pole: name it once.
+                if !lines.contains(&line) {
+                    lines.push(line);
+                }
             }
         }
         let mut title = pole_name(pole.kind).to_string();
