@@ -363,10 +363,11 @@ fn the_kpr_map_says_why_it_turns_red_above_the_gains_alpha_limit() {
         // α runs up the map logarithmically from 0.1 to 5 1/s.
         let f = (alpha / 0.1).ln() / (5.0f64 / 0.1).ln();
         let probe = scene.probe(map.x + map.width / 2.0, map.y + map.height * (1.0 - f), 0.0).unwrap();
-        probe
-            .lines
-            .iter()
-            .any(|l| l.text.starts_with("above α = 3.65 1/s the paper's K_pr leaves the δ → 0 pair unstable"))
+        probe.lines.iter().any(|l| {
+            l.text.starts_with(
+                "above α = 3.65 1/s the paper's K_pr leaves the δ → 0 pair unstable: at this α the smallest δ fail",
+            )
+        })
     };
     assert!(said(4.5));
     assert!(!said(2.0));

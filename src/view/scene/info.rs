@@ -557,7 +557,7 @@ impl Scene {
         if let (crate::control::config::PreliminaryFeedbackChoice::Paper, Some(limit)) = (side.feedback(pf), limit) {
             if alpha > limit {
                 lines.push(TipLine::plain(format!(
-                    "above α = {} 1/s the paper's K_pr leaves the δ → 0 pair unstable, so small δ fail: its shift of \
+                    "above α = {} 1/s the paper's K_pr leaves the δ → 0 pair unstable: at this α the smallest δ fail; its shift of \
                      Re A4 is the same at every α, while the controller's feed 3α/2 grows",
                     format::sig(limit, 3)
                 )));
