@@ -433,7 +433,7 @@ fn where_rho_does_not_describe_the_run_it_is_not_cited() {
         |text: &str| text.contains("ρ predict") || text.contains("ρ > 1 predicted") || text.contains("matches");
     let mut s = common::session("delta=0.01&alpha=2&pf=off&friction=off&repeat=0");
     let st = &s.status().runs[0];
-    assert_eq!((st.verdict, st.headline), ("observing", "Too early to tell"), "not ρ's 'Unstable'");
+    assert_eq!((st.verdict, st.headline), ("too early to tell", "Too early to tell"), "not ρ's 'Unstable'");
     assert!(
         st.rho.contains("friction cancelled, not this run's friction") && st.rho.contains("q2 = 0 rad"),
         "{}",

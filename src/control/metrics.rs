@@ -145,6 +145,8 @@ pub struct Metrics {
     pub errors_at_floor: bool,
     /// max |T_i| applied, N m.
     pub max_torque: [f64; 2],
+    /// The tracking errors e1, e2 at the last sample, rad.
+    pub error: [f64; 2],
     pub verdict: Verdict,
 }
 
@@ -249,6 +251,8 @@ fn centred_sums(points: impl Iterator<Item = (f64, f64)> + Clone) -> (f64, f64) 
 pub(crate) struct ErrorStats {
     max_slew: [f64; 2],
     max_after: [f64; 2],
+    /// The last error recorded.
+    last: [f64; 2],
     sum_sq: [f64; 2],
     samples: u64,
     max_torque: [f64; 2],
@@ -284,6 +288,7 @@ impl ErrorStats {
             self.max_torque[i] = self.max_torque[i].max(torque[i].abs());
         }
         self.samples += 1;
+        self.last = [e[0], e[1]];
         if self.was_moving && !moving {
             self.rest_phase += 1;
         }
@@ -436,6 +441,7 @@ impl ErrorStats {
             growth_rate,
             errors_at_floor: at_floor,
             max_torque: self.max_torque,
+            error: self.last,
             verdict,
         }
     }

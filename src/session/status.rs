@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::maps::feedback_short;
 use super::run::Run;
-use crate::control::config::FrictionCompensation;
+use crate::control::config::{FrictionCompensation, SimulationConfig};
 use crate::control::metrics::{growth_text, DivergenceReason, Metrics, Verdict, GROWTH_FIT_SPAN, UNSTABLE_GROWTH_RATE};
 
 /// Errors above this (rad) are far enough from rest for the arm's nonlinearity (Coriolis terms,
@@ -123,17 +123,10 @@ fn predicted_text(rho: f64, rate: f64) -> String {
     }
 }
 
-/// True if the linear analysis describes the run: it takes the friction as cancelled, which only
-/// the continuous compensation does. Held over δ or off, the Dahl friction at rest is a stiff
-/// presliding spring (F_c/ε), and only the simulation can judge the run.
-pub fn analysis_applies(run: &Run) -> bool {
-    crate::analysis::describes(run.closed_loop().config())
-}
-
 /// Why the simulation may not follow the linear analysis.
-fn caveat(run: &Run) -> String {
-    let p = run.closed_loop().config().plant;
-    match run.settings().friction {
+fn caveat(config: &SimulationConfig) -> String {
+    let p = config.plant;
+    match config.friction_compensation {
         FrictionCompensation::Continuous => {
             "the analysis is linearized at rest; far from rest the arm is nonlinear".into()
         }
@@ -170,12 +163,18 @@ fn scope_text(report: &crate::analysis::StabilityReport) -> String {
 }
 
 /// The observation, compared with the prediction.
-fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) -> (String, bool) {
+fn observation(
+    m: &Metrics,
+    prediction: Option<(Prediction, f64)>,
+    config: &SimulationConfig,
+    error: [f64; 2],
+) -> (String, bool) {
     // Where ρ does not describe the run, it is never cited as the cause of what is seen.
     let raw_prediction = prediction;
-    let prediction = prediction.filter(|_| analysis_applies(run));
-    let repeating = run.settings().repeat;
-    let alone = !analysis_applies(run);
+    let applies = crate::analysis::describes(config);
+    let prediction = prediction.filter(|_| applies);
+    let repeating = config.reference.repeat_hold.is_some();
+    let alone = !applies;
     if let Verdict::Diverged { at, reason } = m.verdict {
         let why = match reason {
             DivergenceReason::ErrorBound => "an error passed π rad",
@@ -192,9 +191,9 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
                      is a bounded torque), but it does not describe this run"
                         .to_string()
                 }
-                _ => format!("not what ρ, computed with the friction cancelled, predicts: {}", caveat(run)),
+                _ => format!("not what ρ, computed with the friction cancelled, predicts: {}", caveat(config)),
             },
-            _ => format!("not what ρ predicts: {}", caveat(run)),
+            _ => format!("not what ρ predicts: {}", caveat(config)),
         };
         return (format!("observed: diverged at t = {at:.2} s ({why}) — {agrees}"), true);
     }
@@ -223,7 +222,7 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
                 if rate > 0.0 { "growth" } else { "decay" },
                 sig_trim(1.0 / rate.abs(), 2)
             ),
-            _ => format!("a nonlinear effect ρ cannot show: {}", caveat(run)),
+            _ => format!("a nonlinear effect ρ cannot show: {}", caveat(config)),
         };
         return (format!("{what}; {why}"), true);
     }
@@ -255,14 +254,14 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
                 "too early to tell: ρ > 1 predicts growth by e every {} s from slew to slew",
                 sig_trim(1.0 / rate.abs(), 2)
             ),
-            None => caveat(run),
+            None => caveat(config),
         };
         return (format!("{what}; {why}"), true);
     }
     let Some(g) = m.growth_rate else {
         if m.errors_at_floor {
             let agrees = match prediction {
-                Some((Prediction::Unstable, _)) => format!(" — not what ρ predicts: {}", caveat(run)),
+                Some((Prediction::Unstable, _)) => format!(" — not what ρ predicts: {}", caveat(config)),
                 Some(_) => " — nothing left to grow or decay, as ρ < 1 predicts".into(),
                 None => String::new(),
             };
@@ -271,7 +270,7 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
         let text = if alone {
             format!(
                 "observed: measuring how the errors move between slews… (only the simulation can judge: {})",
-                caveat(run)
+                caveat(config)
             )
         } else {
             "observed: measuring how the errors move between slews…".into()
@@ -280,9 +279,9 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
     };
     let rate = format!("observed growth rate {} 1/s", minus(&format!("{g:.2}")));
     if alone {
-        let e = run.closed_loop().snapshot().error;
+        let e = error;
         let now = format!(", errors now {}, {} rad", sci(e[0], 2), sci(e[1], 2));
-        return (format!("{rate}{now} — {}", caveat(run)), true);
+        return (format!("{rate}{now} — {}", caveat(config)), true);
     }
     let Some((p, predicted)) = prediction else { return (rate, true) };
     let seen = Prediction::of_rate(g);
@@ -317,7 +316,7 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
             Prediction::Stable => "decay",
             Prediction::Borderline => "neither",
         };
-        let e = run.closed_loop().snapshot().error;
+        let e = error;
         let why = if predicted.abs() * GROWTH_FIT_SPAN < 1.0 {
             // Too slow to show in the seconds fitted: never blame the nonlinearity for that.
             format!(
@@ -328,7 +327,7 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
                 if repeating { "slews'" } else { "slew's" }
             )
         } else if e[0].abs().max(e[1].abs()) > NONLINEAR_ERROR {
-            caveat(run)
+            caveat(config)
         } else {
             "ln ρ/δ is the rate in the long run; over a few seconds the modes' sum can move otherwise".into()
         };
@@ -337,23 +336,41 @@ fn observation(m: &Metrics, prediction: Option<(Prediction, f64)>, run: &Run) ->
     (text, true)
 }
 
-/// The status of `run`, named `name`.
-pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
-    let sim = run.closed_loop();
-    let m = sim.metrics();
-    let s = sim.snapshot();
-    let report = run.analysis().report();
+/// What a run's status says about it, decided once — the verdict word and headline, the
+/// prediction's sentence, the observation and the analysis line — from the simulation's
+/// metrics, the linear analysis of its settings (or why it failed), its configuration and the
+/// errors now. The page's status and the CLI's summary both say this, so they cannot disagree.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Judgement {
+    /// "stable", "unstable", "borderline", "diverged", "bounded oscillation" or "too early to tell".
+    pub verdict: &'static str,
+    /// The verdict as the headline says it.
+    pub headline: &'static str,
+    pub detail: String,
+    pub observed: String,
+    pub measured: bool,
+    pub rho: String,
+}
+
+/// The judgement of a run (see [`Judgement`]).
+pub fn judge(
+    m: &Metrics,
+    report: Option<&crate::analysis::StabilityReport>,
+    analysis_error: Option<&str>,
+    config: &SimulationConfig,
+    error: [f64; 2],
+) -> Judgement {
     let predicted = report.map(|r| (r.spectral_radius, r.growth_rate)).filter(|(r, g)| r.is_finite() && g.is_finite());
     let (prediction, detail) = match predicted {
         Some((rho, rate)) => {
             let (p, text) = prediction_text(rho, rate);
             (Some((p, rate)), text)
         }
-        None => (None, format!("the linear analysis failed: {}", run.analysis().error().unwrap_or("no report"))),
+        None => (None, format!("the linear analysis failed: {}", analysis_error.unwrap_or("no report"))),
     };
-    let (observed, measured) = observation(&m, prediction, run);
-    let applies = analysis_applies(run);
-    let near_rest = s.error[0].abs().max(s.error[1].abs()) < NONLINEAR_ERROR;
+    let (observed, measured) = observation(m, prediction, config, error);
+    let applies = crate::analysis::describes(config);
+    let near_rest = error[0].abs().max(error[1].abs()) < NONLINEAR_ERROR;
     // A rate that changes the errors by e or more over the span fitted: growth (sign 1) or decay
     // (−1) the simulation has clearly seen.
     let clear = |sign: f64| m.growth_rate.is_some_and(|g| sign * g * GROWTH_FIT_SPAN >= 1.0);
@@ -363,9 +380,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     let judged = prediction.filter(|_| applies).map(|p| p.0);
     let (verdict, headline) = match (m.verdict, judged) {
         (Verdict::Diverged { .. }, _) => ("diverged", "Diverged"),
-        (v @ Verdict::BoundedOscillation { .. }, _) if credible_cycle(&m, applies) => {
-            (v.label(), "Bounded oscillation")
-        }
+        (v @ Verdict::BoundedOscillation { .. }, _) if credible_cycle(m, applies) => (v.label(), "Bounded oscillation"),
         (_, Some(Prediction::Unstable)) => ("unstable", "Unstable"),
         (_, Some(Prediction::Stable)) => ("stable", "Stable"),
         (_, Some(Prediction::Borderline)) => ("borderline", "Borderline"),
@@ -378,11 +393,11 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         {
             ("stable", "Stable")
         }
-        (_, None) => ("observing", "Too early to tell"),
+        (_, None) => ("too early to tell", "Too early to tell"),
     };
     // Under a headline the simulation decided against ρ, ρ's sentence is the prediction.
     let overridden = match m.verdict {
-        Verdict::BoundedOscillation { .. } => credible_cycle(&m, applies),
+        Verdict::BoundedOscillation { .. } => credible_cycle(m, applies),
         Verdict::Diverged { .. } => !matches!(judged, Some(Prediction::Unstable)),
         _ => false,
     };
@@ -415,6 +430,17 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
             }
         }
     };
+    Judgement { verdict, headline, detail, observed, measured, rho: rho_line }
+}
+
+/// The status of `run`, named `name`.
+pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
+    let sim = run.closed_loop();
+    let m = sim.metrics();
+    let s = sim.snapshot();
+    let report = run.analysis().report();
+    let Judgement { verdict, headline, detail, observed, measured, rho } =
+        judge(&m, report, run.analysis().error(), sim.config(), s.error);
     let pair = |v: [f64; 2], unit: &str| format!("{}, {} {unit}", sci(v[0], 3), sci(v[1], 3));
     let readouts = Readouts {
         time: format!("{:.2} s", m.time),
@@ -440,7 +466,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         observed,
         measured,
         finished: sim.is_finished(),
-        rho: rho_line,
+        rho,
         spectral_radius: report.map(|r| r.spectral_radius),
         growth_rate: report.map(|r| r.growth_rate),
         readouts,

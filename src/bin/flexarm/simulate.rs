@@ -5,6 +5,7 @@ use flexarm::analysis;
 use flexarm::control::metrics::growth_text;
 use flexarm::control::{Metrics, TraceEnvelope, Traces, Work};
 use flexarm::schema;
+use flexarm::session::status::{judge, Judgement};
 use flexarm::session::Settings;
 use flexarm::{SimulationConfig, Verdict};
 use serde_json::{json, Value};
@@ -72,10 +73,14 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         out.flush().map_err(|e| cli::write_error("--csv", path, e))?;
     }
 
-    // ρ at the rest point the settings choose, at the end of the run (as the page shows it).
+    // The analysis at the rest point the settings choose, at the end of the run, and the verdict
+    // decided from it and the run as the page decides it.
     let q2 = settings.a.rest.angles(&config, metrics.time)[1];
-    let rho = analysis::spectral_radius(&config, Some(q2)).ok();
-    let linear = Linear { rho, q2, describes: analysis::describes(&config) };
+    let report = analysis::analyze(&config, Some(q2));
+    let rho = report.as_ref().ok().map(|r| r.spectral_radius);
+    let failed = report.as_ref().err().map(|e| e.to_string());
+    let judgement = judge(&metrics, report.as_ref().ok(), failed.as_deref(), &config, metrics.error);
+    let linear = Linear { rho, q2, describes: analysis::describes(&config), judgement };
     let mut out = if json_out {
         simulation_json(&settings, &config, duration, &metrics, &linear).to_string() + "\n"
     } else {
@@ -99,13 +104,15 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     Ok(out)
 }
 
-/// The linear analysis beside a run: ρ, where it was linearized, and whether it describes the run.
+/// The linear analysis beside a run: ρ, where it was linearized, whether it describes the run,
+/// and the verdict decided from both (the page's words).
 pub struct Linear {
     pub rho: Option<f64>,
     /// q2 of the rest point, rad.
     pub q2: f64,
     /// False where the run's friction is not cancelled ([`analysis::describes`]).
     pub describes: bool,
+    pub judgement: Judgement,
 }
 
 /// The run as one JSON object: the settings under their schema keys (and the long names of
@@ -145,7 +152,10 @@ pub fn simulation_json(
         "friction_compensation": c.friction_compensation.name(),
         "duration": duration,
         "simulated_time": m.time,
-        "verdict": m.verdict.label(),
+        "verdict": linear.judgement.verdict,
+        "headline": linear.judgement.headline,
+        "detail": linear.judgement.detail,
+        "observed": linear.judgement.observed,
         "diverged_at": at,
         "divergence_reason": reason,
         "max_error_slew": m.max_error_slew,
@@ -166,7 +176,8 @@ pub fn simulation_json(
 }
 
 fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, linear: &Linear) -> String {
-    let verdict = verdict_text(m.verdict, c.divergence_bound);
+    let j = &linear.judgement;
+    let verdict = format!("{}: {}", j.headline, j.detail);
     let pair = |v: [f64; 2], unit: &str| format!("{:.3e}, {:.3e} {unit}", v[0], v[1]);
     let growth = growth_text(m.growth_rate, m.errors_at_floor);
     let scope = format!("at rest at q2 = {:.4} rad, friction cancelled", linear.q2);
@@ -182,6 +193,9 @@ fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, linear: &Li
     let mut s = format!("flexarm simulate: {duration} s of {slew}\nconfiguration\n{}", describe_config(c));
     s += &format!("result (simulated {:.3} s)\n", m.time);
     s += &format!("  verdict                     {verdict}\n");
+    // What the simulation saw, in the words that go with the verdict (its own label alone could
+    // read as a second verdict: "a limit cycle" while the transient hides a growth ρ predicts).
+    s += &format!("  simulation                  {}\n", j.observed);
     s += &format!("  max |e1|, |e2| during slew  {}\n", pair(m.max_error_slew, "rad"));
     s += &format!("  max |e1|, |e2| after slew   {}\n", pair(m.max_error_after, "rad"));
     s += &format!("  RMS e1, e2                  {}\n", pair(m.rms_error, "rad"));

@@ -10,6 +10,7 @@ use crate::cli::{self, lib_error, parse_number, usage_error, Res};
 use crate::long_work::{self, Progress, TraceSinks};
 use crate::output::linear_verdict;
 use crate::simulate::{simulation_json, Linear};
+use flexarm::session::status::judge;
 
 /// The run settings `sweep` takes besides its lists of δ and α.
 pub const KEYS: &[&str] = &["pf", "friction", "inner", "repeat", "k", "eps_ratio"];
@@ -121,9 +122,11 @@ pub fn run(m: &ArgMatches) -> Res<String> {
                 let sinks = TraceSinks { csv: None, envelope: None };
                 let (m, _) = long_work::run(&c, duration, sinks, &mut quiet)?;
                 let q2 = c.reference.end[1];
-                let linear = Linear { rho: Some(rho), q2, describes: analysis::describes(&c) };
+                let report = analysis::analyze(&c, Some(q2)).map_err(lib_error)?;
+                let judgement = judge(&m, Some(&report), None, &c, m.error);
+                let verdict = judgement.verdict;
+                let linear = Linear { rho: Some(rho), q2, describes: analysis::describes(&c), judgement };
                 row["simulation"] = simulation_json(&point, &c, duration, &m, &linear);
-                let verdict = m.verdict.short_text();
                 let [s1, s2] = m.max_error_slew;
                 let [a1, a2] = m.max_error_after;
                 text += &format!("  {verdict:>28}  {s1:>10.3e} {s2:>10.3e}  {a1:>10.3e} {a2:>10.3e}");
