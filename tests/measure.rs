@@ -372,3 +372,21 @@ fn the_kpr_map_says_why_it_turns_red_above_the_gains_alpha_limit() {
     assert!(said(4.5));
     assert!(!said(2.0));
 }
+
+/// A map's tooltip says what a click runs: the point rounded as the session rounds it (issue 20).
+#[test]
+fn the_map_tooltip_names_the_point_a_click_runs() {
+    let mut s = computed("delta=0.05&pf=off");
+    let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
+    scene.draw_session(&s);
+    let panels = scene.panel_info();
+    let map = info(&panels, "map-off");
+    let (x, y) = (map.x + map.width * 0.37, map.y + map.height * 0.61);
+    let probe = scene.probe(x, y, 0.0).unwrap();
+    let (delta, alpha) = (probe.delta.unwrap(), probe.alpha.unwrap());
+    let said = probe.lines.last().unwrap().text.clone();
+    s.set_from_map(flexarm::session::MapSide::Off, delta, alpha).unwrap();
+    let a = s.settings().a;
+    let fmt = flexarm::schema::format_number;
+    assert_eq!(said, format!("click to run at δ = {} s, α = {} 1/s", fmt(a.delta), fmt(a.alpha[0])));
+}

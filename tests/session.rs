@@ -585,3 +585,15 @@ fn the_headline_never_flips_on_one_behaviour() {
         }
     }
 }
+
+/// A δ typed beyond the slider's span, but within the limits, is taken — and said (issue 20).
+#[test]
+fn a_value_typed_beyond_the_slider_is_taken_and_said() {
+    let mut s = common::session("delta=0.01&pf=paper");
+    s.set("delta", "0.5").unwrap();
+    assert_eq!(s.settings().a.delta, 0.5);
+    let note = s.status().note;
+    assert!(note.contains("δ = 0.5 s is outside the slider's 0.002–0.25 s"), "{note}");
+    s.set("delta", "0.02").unwrap();
+    assert!(!s.status().note.contains("outside the slider"), "{}", s.status().note);
+}

@@ -112,6 +112,12 @@ impl NumberSpec {
         let v = if self.integer { raw.round() } else { round_significant(raw, self.digits) };
         v.clamp(lo, hi)
     }
+
+    /// `v` as a click on a figure sets it: rounded to the control's precision and kept inside its
+    /// span (what a map's tooltip says will run is what runs).
+    pub fn snap(&self, v: f64) -> f64 {
+        self.value_at(self.position(round_significant(v, self.digits)))
+    }
 }
 
 /// The values a logarithmic control steps through with the arrow keys, per decade: 1, 1.2, 1.5,

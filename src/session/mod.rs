@@ -202,7 +202,23 @@ impl Session {
     pub fn set(&mut self, key: &str, text: &str) -> Result<(), Error> {
         let p = schema::param(key).ok_or_else(|| not_a_setting(key))?;
         let v = p.parse(text, false)?;
-        self.set_value(key, v)
+        self.set_value(key, v)?;
+        // A value typed beyond the slider's span is taken (it is within the limits), and said.
+        if let (Some(spec), Value::Number(x)) = (p.number(), v) {
+            if !spec.in_control(x) && self.note.is_empty() {
+                let [lo, hi] = spec.control;
+                self.note = format!(
+                    "{} = {} {} is outside the slider's {}–{} {}: taken as typed; the slider shows its end.",
+                    p.symbol,
+                    schema::format_number(x),
+                    p.unit,
+                    schema::format_number(lo),
+                    schema::format_number(hi),
+                    p.unit
+                );
+            }
+        }
+        Ok(())
     }
 
     /// Sets a numeric parameter from its control's position in [0, 1] (a slider).
@@ -268,9 +284,7 @@ impl Session {
     pub fn set_from_map(&mut self, side: MapSide, delta: f64, alpha: f64) -> Result<(), Error> {
         self.continue_from_here()?;
         let spec = |p: &schema::Param| *p.number().expect("δ and α are numbers");
-        let (ds, al) = (spec(&schema::DELTA), spec(&schema::ALPHA));
-        let d = ds.value_at(ds.position(schema::round_significant(delta, ds.digits)));
-        let a = al.value_at(al.position(schema::round_significant(alpha, al.digits)));
+        let (d, a) = (spec(&schema::DELTA).snap(delta), spec(&schema::ALPHA).snap(alpha));
         let pf = match (side, self.settings.a.pf) {
             (MapSide::Off, _) => PreliminaryFeedbackChoice::Off,
             (MapSide::On, PreliminaryFeedbackChoice::Off) => PreliminaryFeedbackChoice::Paper,

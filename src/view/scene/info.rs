@@ -563,7 +563,15 @@ impl Scene {
                 )));
             }
         }
-        lines.push(TipLine::plain("click to run here"));
+        // What a click runs: the point rounded as the controls round it (the session snaps the
+        // same way), beside the map cell's ρ above.
+        let spec = |p: &crate::schema::Param| *p.number().expect("δ and α are numbers");
+        let (d, a) = (spec(&crate::schema::DELTA).snap(delta), spec(&crate::schema::ALPHA).snap(alpha));
+        lines.push(TipLine::plain(format!(
+            "click to run at δ = {} s, α = {} 1/s",
+            crate::schema::format_number(d),
+            crate::schema::format_number(a)
+        )));
         let title = match side.feedback(pf) {
             crate::control::config::PreliminaryFeedbackChoice::Off => "without preliminary feedback".to_string(),
             f => format!("with {}", feedback_short(f)),
