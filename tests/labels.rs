@@ -81,3 +81,32 @@ fn texts_that_do_not_fit_are_shortened_not_spilled() {
     assert!(short.ends_with('…') && bold_width(&short, font::NOTE) <= 120.0, "{short}");
     assert_eq!(fit("anything", 5.0, font::NOTE), "");
 }
+
+/// A title or note is never cut off mid-clause where there is room for its first clause: clauses
+/// that do not fit are dropped whole (the key says what they said), so no label of a figure 600 px
+/// wide or more ends in "…" (issue 20); the aliasing warning outlives the Nyquist line's name.
+#[test]
+fn titles_drop_whole_clauses_instead_of_an_ellipsis() {
+    for view in VIEWS {
+        let mut s = session(&format!("preset=fig5.3&{view}"));
+        play(&mut s, 1.5);
+        s.refresh();
+        for w in WIDTHS.iter().filter(|w| **w >= 600.0) {
+            for h in HEIGHTS {
+                let mut scene = Scene::new(ViewOptions::default(), *w, h, 1.0);
+                scene.draw_session(&s);
+                for l in scene.labels() {
+                    if matches!(l.class, LabelClass::Title | LabelClass::Note) {
+                        assert!(!l.text.ends_with('…'), "{view} {w}×{h}: {}", describe(&l));
+                    }
+                }
+            }
+        }
+    }
+    let mut s = session("delta=0.15&pf=off&mode=full&map=0&rho=0");
+    play(&mut s, 0.5);
+    let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
+    scene.draw_session(&s);
+    let texts: Vec<String> = scene.labels().iter().map(|l| l.text.clone()).collect();
+    assert!(texts.iter().any(|t| t.contains("aliased")), "{texts:?}");
+}

@@ -201,7 +201,7 @@ fn rho_of_delta_becomes_the_rate_with_zero_as_the_border() {
     assert_eq!((curve.x_label, curve.y_label, curve.x_scale), ("δ [s]", "ln ρ/δ [1/s]", "log"));
     assert!(curve.y_range[0] <= -1.0 && curve.y_range[1] >= 1.0, "{:?}", curve.y_range);
     assert!(curve.y_range.iter().all(|v| v.fract() == 0.0), "whole 1/s: {:?}", curve.y_range);
-    assert!(curve.note.starts_with("ln ρ/δ at α = 2 1/s"), "{}", curve.note);
+    assert!(curve.note.starts_with("rate at α = 2 1/s"), "{}", curve.note);
     // Without K_pr at α = 2 the smallest δ grows at about the δ → 0 pair's rate, 2.4 1/s: it is
     // on the axis (ρ = 1.005 would sit on the line ρ = 1).
     assert!(curve.y_range[1] >= 3.0, "{:?}", curve.y_range);
@@ -213,8 +213,8 @@ fn rho_of_delta_becomes_the_rate_with_zero_as_the_border() {
     assert!((probe.delta.unwrap() / 0.05 - 1.0).abs() < 0.01);
     assert!(probe.lines[1].text.starts_with("ρ = 0.") && probe.lines[1].tone == "good", "{:?}", probe.lines);
     assert!(probe.lines[2].text.starts_with("ln ρ/δ = −") && probe.lines[2].text.ends_with("1/s (per second)"));
-    assert_eq!(info(&panels, "map-off").note, "ln ρ/δ without K_pr");
-    assert_eq!(info(&panels, "map-on").note, "ln ρ/δ with paper K_pr");
+    assert_eq!(info(&panels, "map-off").note, "rate, no Kₚᵣ");
+    assert_eq!(info(&panels, "map-on").note, "rate, paper Kₚᵣ");
     // The key and the figure's words say which.
     let key = scene.legend();
     assert_eq!(key.iter().map(|g| g.title).collect::<Vec<_>>(), ["pole plot", "ln ρ/δ along δ", "stability maps"]);
@@ -281,7 +281,7 @@ fn switching_the_measure_redraws_the_maps_and_the_curve() {
     s.set("measure", "rate").unwrap();
     let svg = s.svg_maps().unwrap();
     assert!(svg.contains("Rate ln ρ/δ") && svg.contains("ln ρ/δ (1/s), per second"), "{}", &svg[..300]);
-    assert!(svg.contains(">ln ρ/δ without K_pr<") && svg.contains(">ln ρ/δ with paper K_pr<"), "the panels' captions");
+    assert!(svg.contains(">rate, no Kₚᵣ<") && svg.contains(">rate, paper Kₚᵣ<"), "the panels' captions");
 }
 
 // ----------------------------------------------------------------------- the state string

@@ -57,15 +57,18 @@ impl MapSide {
         self as usize
     }
 
-    /// "ρ without K_pr", "ρ with paper K_pr" ("ln ρ/δ without K_pr" … when the maps show the rate).
+    /// "ρ, no Kₚᵣ", "ρ, paper Kₚᵣ" ("ln ρ/δ, no Kₚᵣ" … when the maps show the rate): short enough
+    /// for a narrow map's title, with K_pr's subscript as the page's controls write it.
     pub fn caption(self, pf: PreliminaryFeedbackChoice, measure: Measure) -> String {
+        // The quantity by its short name: the colour bar and the row's title give it in full.
         let what = match measure {
             Measure::Rho => "ρ",
-            Measure::Rate => "ln ρ/δ",
+            Measure::Rate => "rate",
         };
         match self.feedback(pf) {
-            PreliminaryFeedbackChoice::Off => format!("{what} without K_pr"),
-            f => format!("{what} with {}", feedback_short(f)),
+            PreliminaryFeedbackChoice::Off => format!("{what}, no Kₚᵣ"),
+            PreliminaryFeedbackChoice::Paper => format!("{what}, paper Kₚᵣ"),
+            PreliminaryFeedbackChoice::Lq => format!("{what}, LQ Kₚᵣ"),
         }
     }
 }

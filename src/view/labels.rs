@@ -126,6 +126,25 @@ pub fn fit(text: &str, width: f64, size: f64) -> String {
     format!("{out}…")
 }
 
+/// A note or title made of clauses separated by "; ", most important first: as many whole
+/// clauses as fit, never a clause cut short (the key or a tooltip says the rest); only a title
+/// whose first clause is too long on its own is shortened with "…" (a note is then left out).
+pub fn fit_clauses(text: &str, width: f64, size: f64) -> String {
+    let mut out = String::new();
+    for clause in text.split("; ") {
+        let next = if out.is_empty() { clause.to_string() } else { format!("{out}; {clause}") };
+        if bold_width(&next, size) > width {
+            break;
+        }
+        out = next;
+    }
+    if out.is_empty() {
+        fit(text.split("; ").next().unwrap_or(""), width, size)
+    } else {
+        out
+    }
+}
+
 /// Where a value sits along an axis from `r0` to `r1` (0 at the start, 1 at the end).
 fn fraction(v: f64, range: [f64; 2], log: bool) -> f64 {
     if log {
@@ -166,7 +185,7 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
             (p.x - if kind.is_analysis() { margins::ANALYSIS_LEFT } else { margins::PLOT_LEFT }, p.x + p.width);
         if kind.is_analysis() {
             // Header row 1: what the panel shows; row 2: the y axis; below the ticks: the x axis.
-            let title = fit(&p.note, right - left, font::TITLE);
+            let title = fit_clauses(&p.note, right - left, font::TITLE);
             let row1 = p.y - margins::ANALYSIS_TOP + 2.0;
             out.push(label(LabelClass::Title, title, left, row1, [0.0, 0.0], font::TITLE));
             let x_label = fit(p.x_label, p.width, font::TITLE);
@@ -197,7 +216,9 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
             ));
             if !p.note.is_empty() {
                 let room = p.width - x_w - y_w - 36.0;
-                let note = fit(&p.note, room, font::NOTE);
+                // A note says what the key says too: left out rather than cut.
+                let note = fit_clauses(&p.note, room, font::NOTE);
+                let note = if note.ends_with('…') { String::new() } else { note };
                 let at = p.x - TICK_GAP + y_w + 16.0;
                 out.push(label(LabelClass::Note, note, at, p.y - 2.0, [0.0, 1.0], font::NOTE));
             }

@@ -64,11 +64,19 @@ fn item(glyph: Glyph, color: Color, text: &str) -> LegendItem {
 }
 
 /// The key to the panels `kinds`, with run B's markers when two runs are compared; ρ(δ) and the
-/// maps show `measure`.
-pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure) -> Vec<LegendGroup> {
+/// maps show `measure`; `log_errors`: the error plots are log |e|, with the predicted slope.
+pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure, log_errors: bool) -> Vec<LegendGroup> {
     let rate = measure == Measure::Rate;
     let mut groups = Vec::new();
     let has = |k: PanelKind| kinds.contains(&k);
+    if log_errors && has(PanelKind::Error1) {
+        // The panel's note names the line only where there is room; the key always does.
+        groups.push(LegendGroup {
+            title: "log |e|",
+            items: vec![item(Glyph::Dashed, palette::PREDICTED, "the slope ln ρ/δ the linear analysis predicts")],
+            scale: None,
+        });
+    }
     let z = has(PanelKind::ZPlane);
     if has(PanelKind::Poles) || z {
         let a = PoleStyle::RUN_A;

@@ -64,7 +64,7 @@ pub struct PanelInfo {
     pub y_label: &'static str,
     /// A caption for panels without axis titles ("arm, top view").
     pub title: String,
-    /// A note inside the panel ("ρ without K_pr").
+    /// A note inside the panel ("ρ, no Kₚᵣ").
     pub note: String,
     pub x_range: [f64; 2],
     pub y_range: [f64; 2],
@@ -176,7 +176,7 @@ impl Scene {
     /// The key to the panels shown (see [`crate::view::legend`]).
     pub fn legend(&self) -> Vec<crate::view::legend::LegendGroup> {
         let kinds: Vec<PanelKind> = self.layout.panels.iter().map(|p| p.kind).collect();
-        crate::view::legend::legend(&kinds, self.pair, self.options.measure)
+        crate::view::legend::legend(&kinds, self.pair, self.options.measure, self.options.log_errors)
     }
 
     /// Every text over the canvas, placed (see [`crate::view::labels`]).
@@ -234,7 +234,7 @@ impl Scene {
                     info.y_ticks = Decades::new(info.y_range[0], info.y_range[1]).collect();
                     info.y_labels = log_labels(&info.y_ticks, info.y_range, r.h, LOG_LABEL_SPACING[1]);
                     if panel.kind == PanelKind::Error1 {
-                        info.note = "dashed: the slope ln ρ/δ predicts".into();
+                        info.note = "dashed: slope ln ρ/δ; as the analysis predicts".into();
                     }
                 } else {
                     info.y_ticks = y_ticks.collect();
@@ -248,14 +248,16 @@ impl Scene {
                 info.y_range = IM_RANGE;
                 info.x_ticks = x_ticks.collect();
                 info.y_ticks = y_ticks.collect();
-                info.note = "loop poles s = ln λ / δ".into();
+                info.note = "poles s = ln λ/δ".into();
                 if let Some(report) = &self.runs[0].report {
                     let w = nyquist(report.sampling_period);
                     if w < IM_RANGE[1] {
-                        info.note += &format!("; dashed: π/δ = {} rad/s", format::sig(w, 3));
+                        // The warning first: a narrow panel keeps it and drops the line's name
+                        // (the key names it).
                         if flexible_aliased(report) {
-                            info.note += " — the flexible mode is faster: aliased";
+                            info.note += "; aliased: the flexible mode is faster than π/δ";
                         }
+                        info.note += &format!("; dashed: π/δ = {} rad/s", format::sig(w, 3));
                     }
                 }
                 info.marks = self.flexible_mark();
@@ -288,7 +290,7 @@ impl Scene {
                 let alpha = self.runs[0].config.map_or(f64::NAN, |c| c.controller.alpha[0]);
                 let alpha = format::sig_trim(alpha, 3);
                 info.note = if rate {
-                    format!("ln ρ/δ at α = {alpha} 1/s; shaded: < 0")
+                    format!("rate at α = {alpha} 1/s; shaded: < 0")
                 } else {
                     format!("ρ(δ) at α = {alpha} 1/s; shaded: ρ < 1")
                 };
@@ -347,7 +349,8 @@ impl Scene {
             return Vec::new();
         };
         let (Some(x), Some(y)) = (p.x, p.y) else { return Vec::new() };
-        vec![Mark { x, y, text: "flexible pair".into() }]
+        let text = if p.aliased { "flexible pair, aliased" } else { "flexible pair" };
+        vec![Mark { x, y, text: text.into() }]
     }
 
     /// How each shown run is drawn (one entry, or two in pair mode), for the page's legend.
