@@ -259,9 +259,14 @@ fn drop_collisions(labels: Vec<Label>) -> Vec<Label> {
     labels.into_iter().zip(keep).filter_map(|(l, k)| k.then_some(l)).collect()
 }
 
-/// Boxes that overlap by more than half a pixel.
+/// Labels closer than this (CSS px) read as one ("ρ" against "1.10"): a tick, note or mark that
+/// near a kept label is left out.
+pub const LABEL_GAP: f64 = 2.0;
+
+/// Boxes closer than [`LABEL_GAP`].
 fn overlaps(a: &Rect, b: &Rect) -> bool {
-    a.x < b.right() - 0.5 && b.x < a.right() - 0.5 && a.y < b.bottom() - 0.5 && b.y < a.bottom() - 0.5
+    let g = LABEL_GAP;
+    a.x < b.right() + g && b.x < a.right() + g && a.y < b.bottom() + g && b.y < a.bottom() + g
 }
 
 /// The tick labels left of and below a plot.
