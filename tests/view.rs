@@ -1145,3 +1145,30 @@ fn options_include_the_analysis_panels() {
     assert_eq!(Color::hex(0x1f5fc4).css(), "#1f5fc4");
     assert_eq!(Color::hex(0xffffff).with_alpha(0.5).css(), "rgba(255, 255, 255, 0.5)");
 }
+
+/// The key follows the dark scheme as the canvas does (issue 20): every glyph's and every colour
+/// bar stop's dark colour is the light one with its lightness inverted, as the shader inverts it.
+#[test]
+fn the_key_has_the_dark_schemes_colours_too() {
+    use flexarm::plot::Color;
+    let parse = |s: &str| {
+        let v = u32::from_str_radix(s.trim_start_matches('#'), 16).unwrap();
+        Color::hex(v)
+    };
+    // The same colour to a byte (the CSS text is rounded to bytes).
+    let same = |a: Color, b: Color| a.0.iter().zip(b.0).all(|(x, y)| (x - y).abs() <= 1.5 / 255.0);
+    let kinds = [flexarm::view::PanelKind::Poles, flexarm::view::PanelKind::MapOff, flexarm::view::PanelKind::Error1];
+    for group in flexarm::view::legend::legend(&kinds, true, flexarm::plot::color::Measure::Rho, true) {
+        for it in &group.items {
+            if it.color.starts_with('#') {
+                assert!(same(parse(&it.dark), parse(&it.color).for_dark()), "{}: {} vs {}", it.text, it.dark, it.color);
+            }
+        }
+        if let Some(scale) = &group.scale {
+            for ((p, light), (q, dark)) in scale.stops.iter().zip(&scale.dark_stops) {
+                assert_eq!(p, q);
+                assert!(same(parse(dark), parse(light).for_dark()), "{dark} vs {light}");
+            }
+        }
+    }
+}

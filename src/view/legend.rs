@@ -33,8 +33,10 @@ pub enum Glyph {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct LegendItem {
     pub glyph: Glyph,
-    /// CSS colour.
+    /// CSS colour, and the same in the dark scheme (lightness inverted, as the canvas's shader
+    /// inverts it: [`Color::for_dark`]).
     pub color: String,
+    pub dark: String,
     pub text: String,
 }
 
@@ -47,6 +49,8 @@ pub struct MapScale {
     /// The bar in words, for screen readers.
     pub label: String,
     pub stops: Vec<(f64, String)>,
+    /// The stops in the dark scheme.
+    pub dark_stops: Vec<(f64, String)>,
     pub ticks: Vec<(f64, String)>,
 }
 
@@ -60,7 +64,7 @@ pub struct LegendGroup {
 }
 
 fn item(glyph: Glyph, color: Color, text: &str) -> LegendItem {
-    LegendItem { glyph, color: color.css(), text: text.to_string() }
+    LegendItem { glyph, color: color.css(), dark: color.for_dark().css(), text: text.to_string() }
 }
 
 /// The key to the panels `kinds`, with run B's markers when two runs are compared; ρ(δ) and the
@@ -156,12 +160,16 @@ pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure, log_errors: boo
 /// The maps' colour bar for `measure`, from the ramp the maps are drawn with.
 pub fn map_scale(measure: Measure) -> MapScale {
     const STOPS: usize = 17;
-    let stops = (0..STOPS)
-        .map(|i| {
-            let p = i as f64 / (STOPS - 1) as f64;
-            (p, ramp_color(p).css())
-        })
-        .collect();
+    let stops_in = |dark: bool| {
+        (0..STOPS)
+            .map(|i| {
+                let p = i as f64 / (STOPS - 1) as f64;
+                let c = ramp_color(p);
+                (p, if dark { c.for_dark() } else { c }.css())
+            })
+            .collect::<Vec<_>>()
+    };
+    let (stops, dark_stops) = (stops_in(false), stops_in(true));
     let values = match measure {
         Measure::Rho => [RHO_SHOWN[0], 0.95, 1.0, 1.05, RHO_SHOWN[1]],
         Measure::Rate => [-RATE_SHOWN, -1.0, 0.0, 1.0, RATE_SHOWN],
@@ -184,5 +192,5 @@ pub fn map_scale(measure: Measure) -> MapScale {
         measure.symbol(),
         ticks.iter().map(|t| t.1.as_str()).collect::<Vec<_>>().join(", ")
     );
-    MapScale { name: measure.symbol(), label, stops, ticks }
+    MapScale { name: measure.symbol(), label, stops, dark_stops, ticks }
 }

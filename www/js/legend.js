@@ -4,8 +4,9 @@
 import { byId, make } from './dom.js';
 
 /**
- * @typedef {{ glyph: string, color: string, text: string }} Item
- * @typedef {{ name: string, label: string, stops: [number, string][], ticks: [number, string][] }} Scale
+ * @typedef {{ glyph: string, color: string, dark: string, text: string }} Item
+ * @typedef {{ name: string, label: string, stops: [number, string][], dark_stops: [number, string][],
+ *   ticks: [number, string][] }} Scale
  * @typedef {{ title: string, items: Item[], scale: Scale | null }} Group
  */
 
@@ -28,18 +29,27 @@ export function glyphSvg(glyph, color) {
   return `<svg xmlns="${SVG}" width="14" height="14" viewBox="0 0 14 14" aria-hidden="true">${shapes[/** @type {keyof typeof shapes} */ (glyph)] ?? ''}</svg>`;
 }
 
-/** A CSS gradient for the colour bar (pure). @param {Scale} scale */
-export function scaleGradient(scale) {
-  return `linear-gradient(to right, ${scale.stops.map(([p, c]) => `${c} ${(100 * p).toFixed(1)}%`).join(', ')})`;
+/** A CSS gradient for the colour bar (pure), in the dark scheme's colours when `dark`.
+ * @param {Scale} scale @param {boolean} [dark] */
+export function scaleGradient(scale, dark = false) {
+  const stops = dark ? scale.dark_stops : scale.stops;
+  return `linear-gradient(to right, ${stops.map(([p, c]) => `${c} ${(100 * p).toFixed(1)}%`).join(', ')})`;
 }
 
 export function createLegend() {
   const key = byId('figure-key');
   let shown = '';
+  // The key follows the system's colour scheme, as the canvas does (its colours come from Rust).
+  const scheme = matchMedia('(prefers-color-scheme: dark)');
+  /** @type {Group[]} */
+  let last = [];
+  scheme.addEventListener('change', () => render(last));
 
   /** @param {Group[]} groups */
   function render(groups) {
-    const id = JSON.stringify(groups);
+    last = groups;
+    const dark = scheme.matches;
+    const id = JSON.stringify(groups) + String(dark);
     if (id === shown) return;
     shown = id;
     key.hidden = groups.length === 0;
@@ -47,13 +57,13 @@ export function createLegend() {
       ...groups.map((g) => {
         const items = g.items.map((it) => {
           const glyph = make('span', { class: 'glyph' });
-          glyph.innerHTML = glyphSvg(it.glyph, it.color);
+          glyph.innerHTML = glyphSvg(it.glyph, dark ? it.dark : it.color);
           return make('li', {}, [glyph, make('span', { text: it.text })]);
         });
         const parts = [make('h3', { text: g.title }), make('ul', {}, items)];
         if (g.scale) {
           const bar = make('div', { class: 'rho-bar', role: 'img', 'aria-label': g.scale.label });
-          bar.style.background = scaleGradient(g.scale);
+          bar.style.background = scaleGradient(g.scale, dark);
           const ticks = make('div', { class: 'rho-ticks', 'aria-hidden': 'true' }, g.scale.ticks.map(([p, t]) => {
             const span = make('span', { text: t });
             span.style.left = `${(100 * p).toFixed(1)}%`;
