@@ -320,10 +320,14 @@ impl Settings {
             }
         }
         let compare = pairs.iter().rev().find(|(k, _)| k == "compare").map(|(_, v)| v.as_str());
+        let mut listed = false;
         for (key, _) in &pairs {
             // `lesson` is the session's (which step of the lesson is open), not a setting.
             if !matches!(key.as_str(), "preset" | "lesson" | "views") && schema::param(key).is_none() {
-                fail(key, unknown(key))?;
+                // The settings there are are listed once, with the first unknown key.
+                let e = if listed { unknown_again(key) } else { unknown(key) };
+                listed = true;
+                fail(key, e)?;
             }
         }
         for p in schema::PARAMS {
@@ -454,6 +458,15 @@ fn unknown(key: &str) -> Error {
     })
 }
 
+/// A second key that names no setting, in a list of notices that named the known ones already.
+fn unknown_again(key: &str) -> Error {
+    Error::Parse(ParseError {
+        key: "setting".into(),
+        text: key.into(),
+        expected: "a known setting (listed above)".into(),
+    })
+}
+
 fn preset_error(id: &str) -> Error {
     let ids: Vec<&str> = PRESETS.iter().map(|p| p.id).collect();
     Error::Parse(ParseError { key: "preset".into(), text: id.into(), expected: format!("one of {}", ids.join(" | ")) })
@@ -494,10 +507,12 @@ mod tests {
     #[test]
     fn the_page_skips_bad_values_with_notices_the_cli_refuses_them() {
         let mut s = Settings::page_start();
-        let notices = s.read("?delta=abc&pf=maybe&alpha=0.5&bogus=1", Source::Page).unwrap();
+        let notices = s.read("?delta=abc&pf=maybe&alpha=0.5&bogus=1&junk=2", Source::Page).unwrap();
         let keys: Vec<&str> = notices.iter().map(|n| n.key.as_str()).collect();
-        assert_eq!(keys, ["bogus", "delta", "pf"]);
+        assert_eq!(keys, ["bogus", "junk", "delta", "pf"]);
         assert!(notices[0].text.starts_with("invalid setting = 'bogus': expected a known setting: preset, delta"));
+        // The list of settings is said once, not on every line.
+        assert_eq!(notices[1].text, "invalid setting = 'junk': expected a known setting (listed above)");
         assert_eq!(s.a.alpha, [0.5, 0.5]);
         assert_eq!(s.a.delta, 0.01);
         assert!(Settings::default().read("delta=abc", Source::CommandLine).is_err());
