@@ -68,6 +68,9 @@ pub struct Label {
     pub time: Option<f64>,
     /// The estimated width of the text, CSS px (what the overlap checks use).
     pub width: f64,
+    /// The whole text where `text` is shortened to fit (the page gives it as the label's title),
+    /// else empty.
+    pub full: String,
 }
 
 impl Label {
@@ -168,15 +171,19 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
             size,
             time: None,
             width: 0.0,
+            full: String::new(),
+        };
+        // A label shortened from `full` carries it.
+        let whole = |mut l: Label, full: &str| {
+            if l.text != full {
+                l.full = full.to_string();
+            }
+            l
         };
         if kind.is_stage() {
-            out.push(label(
-                LabelClass::Title,
-                fit(&p.title, p.width, font::TITLE),
-                p.x,
-                p.y - 3.0,
-                [0.0, 1.0],
-                font::TITLE,
+            out.push(whole(
+                label(LabelClass::Title, fit(&p.title, p.width, font::TITLE), p.x, p.y - 3.0, [0.0, 1.0], font::TITLE),
+                &p.title,
             ));
             continue;
         }
@@ -187,25 +194,31 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
             // Header row 1: what the panel shows; row 2: the y axis; below the ticks: the x axis.
             let title = fit_clauses(&p.note, right - left, font::TITLE);
             let row1 = p.y - margins::ANALYSIS_TOP + 2.0;
-            out.push(label(LabelClass::Title, title, left, row1, [0.0, 0.0], font::TITLE));
+            out.push(whole(label(LabelClass::Title, title, left, row1, [0.0, 0.0], font::TITLE), &p.note));
             let x_label = fit(p.x_label, p.width, font::TITLE);
             let below = p.y + p.height + TICK_GAP + font::TICK * LINE_HEIGHT;
-            out.push(label(LabelClass::Axis, x_label.clone(), right, below, [1.0, 0.0], font::TITLE));
+            out.push(whole(label(LabelClass::Axis, x_label.clone(), right, below, [1.0, 0.0], font::TITLE), p.x_label));
             let y_room = p.width + TICK_GAP;
-            out.push(label(
-                LabelClass::Axis,
-                fit(p.y_label, y_room, font::TITLE),
-                p.x - TICK_GAP,
-                p.y - 2.0,
-                [0.0, 1.0],
-                font::TITLE,
+            out.push(whole(
+                label(
+                    LabelClass::Axis,
+                    fit(p.y_label, y_room, font::TITLE),
+                    p.x - TICK_GAP,
+                    p.y - 2.0,
+                    [0.0, 1.0],
+                    font::TITLE,
+                ),
+                p.y_label,
             ));
         } else {
             // The header row: the y label left, the x label right, a note between if it fits.
             let x_w = bold_width(p.x_label, font::TITLE);
             let y_label = fit(p.y_label, p.width - x_w - 12.0, font::TITLE);
             let y_w = bold_width(&y_label, font::TITLE);
-            out.push(label(LabelClass::Axis, y_label, p.x - TICK_GAP, p.y - 2.0, [0.0, 1.0], font::TITLE));
+            out.push(whole(
+                label(LabelClass::Axis, y_label, p.x - TICK_GAP, p.y - 2.0, [0.0, 1.0], font::TITLE),
+                p.y_label,
+            ));
             out.push(label(
                 LabelClass::Axis,
                 p.x_label.to_string(),
@@ -220,7 +233,7 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
                 let note = fit_clauses(&p.note, room, font::NOTE);
                 let note = if note.ends_with('…') { String::new() } else { note };
                 let at = p.x - TICK_GAP + y_w + 16.0;
-                out.push(label(LabelClass::Note, note, at, p.y - 2.0, [0.0, 1.0], font::NOTE));
+                out.push(whole(label(LabelClass::Note, note, at, p.y - 2.0, [0.0, 1.0], font::NOTE), &p.note));
             }
         }
         marks(p, &mut out);
@@ -284,6 +297,7 @@ fn ticks(kind: &PanelKind, p: &PanelInfo, out: &mut Vec<Label>) {
             size: font::TICK,
             time: None,
             width: 0.0,
+            full: String::new(),
         });
     }
     for t in &p.x_labels {
@@ -298,6 +312,7 @@ fn ticks(kind: &PanelKind, p: &PanelInfo, out: &mut Vec<Label>) {
             size: font::TICK,
             time: kind.is_time_plot().then_some(t.value),
             width: 0.0,
+            full: String::new(),
         });
     }
 }
@@ -312,6 +327,7 @@ fn marks(p: &PanelInfo, out: &mut Vec<Label>) {
         let up = m.y - 9.0 - h >= p.y;
         let (x, ax) = if right { (m.x + 9.0, 0.0) } else { ((m.x - 9.0).max(p.x + w), 1.0) };
         let (y, ay) = if up { (m.y - 9.0, 1.0) } else { ((m.y + 9.0).min(p.y + p.height - h), 0.0) };
+        let full = if text != m.text { m.text.clone() } else { String::new() };
         out.push(Label {
             panel: p.id,
             class: LabelClass::Mark,
@@ -322,6 +338,7 @@ fn marks(p: &PanelInfo, out: &mut Vec<Label>) {
             size: font::NOTE,
             time: None,
             width: 0.0,
+            full,
         });
     }
 }

@@ -14,7 +14,7 @@ const EDGE_PX = 14;
  *   x_labels: TickLabel[], y_labels: TickLabel[], x_scale: string, y_scale: string,
  *   scrolls: boolean, marks: { x: number, y: number, text: string }[] }} Panel
  * @typedef {{ panel: string, class: string, text: string, x: number, y: number, align: number[],
- *   size: number, time: number | null, width: number }} Label
+ *   size: number, time: number | null, width: number, full: string }} Label
  * @typedef {{ generation: number, panels: Panel[], mode: string, series: any[], poles: any[],
  *   spring_magnification: number, backend: string, labels: Label[],
  *   tabs: { id: string, label: string, selected: boolean }[] }} Layout
@@ -46,6 +46,8 @@ export function createOverlays() {
       if (!l) return;
       span.className = `label ${l.class}`;
       setText(span, l.text);
+      // A label shortened to fit carries its whole text as its title.
+      if (span.title !== l.full) span.title = l.full;
       span.style.fontSize = `${l.size}px`;
       span.dataset.estimate = l.width.toFixed(1);
       span.style.transform = placement(l);
