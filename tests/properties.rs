@@ -167,7 +167,7 @@ proptest! {
         let v: serde_json::Value = serde_json::from_str(&stdout).map_err(|e| TestCaseError::fail(format!("{e}: {stdout}")))?;
         let verdict = v["verdict"].as_str().unwrap_or("");
         prop_assert!(
-            ["stable", "unstable", "borderline", "bounded oscillation", "diverged", "too early to tell"].contains(&verdict),
+            ["stable", "unstable", "borderline", "bounded", "bounded oscillation", "diverged", "too early to tell"].contains(&verdict),
             "{verdict}"
         );
         prop_assert!(v["spectral_radius"].as_f64().is_some_and(f64::is_finite), "{stdout}");

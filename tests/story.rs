@@ -112,7 +112,7 @@ fn what_is_said_of_the_preliminary_feedback_is_the_programs() {
     // At α = 5 only a window is left.
     let w = windows(&config(0.01, 5.0, PreliminaryFeedbackChoice::Paper));
     assert_eq!(w.len(), 1);
-    says(&format!("at α = 5 1/s only δ from {:.3} to {:.3} s is stable", w[0][0], w[0][1]), &page, "page");
+    says(&format!("at q2 = 0 and α = 5 1/s only δ from {:.3} to {:.3} s is stable", w[0][0], w[0][1]), &page, "page");
     // Sampled at δ: two windows, the first from the smallest δ.
     let mut c = config(0.01, 2.0, PreliminaryFeedbackChoice::Paper);
     c.inner_loop = InnerLoop::Sampled;
@@ -217,7 +217,7 @@ fn what_rho_certifies_is_said_with_the_programs_numbers() {
     let page = page_text();
     let spring = flexarm::plot::format::grouped(flexarm::schema::round_significant(plant.fc1 / plant.eps1, 3));
     says(
-        &format!("= {spring} N m/rad, about forty times K1"),
+        &format!("= {spring} N m/rad at rest, about forty times K1"),
         &page.replace("<sub>c1</sub>/ε<sub>1</sub>", "_c1/ε1"),
         "page",
     );
@@ -251,7 +251,7 @@ fn the_live_numbers_are_the_analysis_numbers() {
     let [re, im] = report.limit_pair_open[0];
     assert_eq!(story.a4, pair(re, im));
     let [lre, lim] = report.poles[report.flexible_pair()[0].unwrap()].continuous.unwrap();
-    assert_eq!(story.loop_pair, pair(lre, lim));
+    assert_eq!(story.loop_pair, format!("s = {}", pair(lre, lim)));
     assert_eq!(story.rho, format!("{:.4}", report.spectral_radius));
     assert_eq!(story.rest, "q2 = 0 rad");
     let paper = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Paper), None).unwrap();
@@ -287,4 +287,25 @@ fn the_live_numbers_are_the_analysis_numbers() {
         let key = &part[..part.find('"').unwrap()];
         assert!(fields.get(key).is_some(), "data-live=\"{key}\" is not a story field");
     }
+}
+
+/// The third cold trial's cases: at δ = 0.103 s (no K_pr) the resonance sits at the Nyquist
+/// frequency as two real negative eigenvalues — the growing one among them — and is named so;
+/// at α = 5 the paper's K_pr does not make every small δ work, and the text says so.
+#[test]
+fn the_resonance_at_the_nyquist_frequency_and_kpr_beyond_its_limit_are_named_right() {
+    let s = common::session("delta=0.103&pf=off");
+    let report = s.run(0).unwrap().analysis().report().unwrap().clone();
+    let [a, b] = report.flexible_pair();
+    let (a, b) = (report.poles[a.unwrap()].discrete, report.poles[b.unwrap()].discrete);
+    assert!(a[0] < 0.0 && a[1].abs() < 1e-9 && b[0] < 0.0 && b[1].abs() < 1e-9, "{a:?} {b:?}");
+    assert!(report.flexible_pair().contains(&Some(0)), "the growing eigenvalue is the resonance's");
+    let story = s.status().story.unwrap();
+    assert!(story.loop_pair.starts_with("the Nyquist frequency π/δ = 30.5 rad/s"), "{}", story.loop_pair);
+    assert_eq!(story.rho_set_by, "the flexible pair");
+    let s = common::session("alpha=5&pf=paper");
+    let story = s.status().story.unwrap();
+    assert!(story.kpr_works.starts_with("not here"), "{}", story.kpr_works);
+    let s = common::session("alpha=2&pf=paper");
+    assert!(s.status().story.unwrap().kpr_works.starts_with("every small δ works"));
 }

@@ -230,34 +230,63 @@ pub struct StabilityReport {
 }
 
 impl StabilityReport {
-    /// The indices (into `poles`) of the flexible pair, the joint's resonance in the sampled loop:
-    /// the complex pair (λ not real) with the largest |Im s|.
+    /// The indices (into `poles`) of the flexible pair, the joint's resonance in the sampled loop.
+    /// It swings at about ω = |Im A4| (the δ → 0 pair with the loop's own preliminary feedback),
+    /// so over one period its eigenvalues turn by ωδ — seen folded into [0, π]: aliased beyond the
+    /// Nyquist frequency π/δ, and at it split into two real negative eigenvalues. The pair is the
+    /// eigenvalue whose angle is nearest that, with its conjugate (or, real, its real twin).
     pub fn flexible_pair(&self) -> [Option<usize>; 2] {
-        let mut best: Option<(usize, f64)> = None;
-        for (i, p) in self.poles.iter().enumerate() {
-            let Some(s) = p.continuous else { continue };
-            let [lr, li] = p.discrete;
-            if li.abs() <= 1e-12 * lr.hypot(li) || li <= 0.0 {
-                continue;
+        let omega = self.limit_pair[0][1].abs();
+        let turn = (omega * self.sampling_period).rem_euclid(core::f64::consts::TAU);
+        let target = if turn > core::f64::consts::PI { core::f64::consts::TAU - turn } else { turn };
+        let angle = |p: &Pole| p.discrete[1].atan2(p.discrete[0]).abs();
+        let modulus = |p: &Pole| p.discrete[0].hypot(p.discrete[1]);
+        let score = |p: &Pole| (angle(p) - target).abs();
+        let real = |p: &Pole| p.discrete[1].abs() <= 1e-12 * modulus(p);
+        let candidates =
+            || self.poles.iter().enumerate().filter(|(_, p)| modulus(p) > 0.0 && p.discrete[1] >= -1e-12 * modulus(p));
+        // Nearest angle first; of two as near, the larger |λ|.
+        let better = |a: &Pole, b: &Pole| {
+            let (sa, sb) = (score(a), score(b));
+            if (sa - sb).abs() > 1e-9 {
+                sa < sb
+            } else {
+                modulus(a) > modulus(b)
             }
-            if best.is_none_or(|(_, im)| s[1].abs() > im) {
-                best = Some((i, s[1].abs()));
+        };
+        let mut best: Option<usize> = None;
+        for (i, p) in candidates() {
+            if best.is_none_or(|j| better(p, &self.poles[j])) {
+                best = Some(i);
             }
         }
-        let Some((i, _)) = best else { return [None, None] };
-        let [lr, li] = self.poles[i].discrete;
-        // Its conjugate: the pole with λ nearest to conj(λ).
-        let partner = self
-            .poles
-            .iter()
-            .enumerate()
-            .filter(|(j, _)| *j != i)
-            .min_by(|(_, a), (_, b)| {
-                let da = (a.discrete[0] - lr).hypot(a.discrete[1] + li);
-                let db = (b.discrete[0] - lr).hypot(b.discrete[1] + li);
-                da.total_cmp(&db)
-            })
-            .map(|(j, _)| j);
+        let Some(i) = best else { return [None, None] };
+        let p = &self.poles[i];
+        let partner = if real(p) {
+            // Its real twin: the next real eigenvalue of the same sign nearest the angle.
+            let mut twin: Option<usize> = None;
+            for (j, q) in
+                candidates().filter(|(j, q)| *j != i && real(q) && q.discrete[0].signum() == p.discrete[0].signum())
+            {
+                if twin.is_none_or(|k| better(q, &self.poles[k])) {
+                    twin = Some(j);
+                }
+            }
+            twin
+        } else {
+            // Its conjugate: the pole with λ nearest to conj(λ).
+            let [lr, li] = p.discrete;
+            self.poles
+                .iter()
+                .enumerate()
+                .filter(|(j, _)| *j != i)
+                .min_by(|(_, a), (_, b)| {
+                    let da = (a.discrete[0] - lr).hypot(a.discrete[1] + li);
+                    let db = (b.discrete[0] - lr).hypot(b.discrete[1] + li);
+                    da.total_cmp(&db)
+                })
+                .map(|(j, _)| j)
+        };
         [Some(i), partner]
     }
 }

@@ -61,24 +61,48 @@ impl StableWindows {
 }
 
 /// The intervals of δ in `range` where ρ < 1 for `settings` (its δ is ignored): ρ on a
-/// logarithmic scan of [`SCAN_POINTS`] points, then each change of sign of ρ − 1 bisected to
-/// [`EDGE_TOLERANCE`]. Windows narrower than the scan's spacing can be missed.
+/// logarithmic scan of [`SCAN_POINTS`] points; then every local extremum of ρ near 1 that the
+/// scan's points straddle is searched for (golden section), so that a narrow window — or a
+/// narrow gap between two, as at α = 0.5 without K_pr near δ = 0.105 s, where the flexible pair
+/// meets the Nyquist frequency — is not stepped over; then each change of sign of ρ − 1 is
+/// bisected to [`EDGE_TOLERANCE`].
 pub fn stable_windows(settings: &LinearSettings, range: [f64; 2]) -> Result<StableWindows, Error> {
     let model = LoopModel::new(settings)?;
     let deltas = super::map::log_space(range[0], range[1], SCAN_POINTS);
     // A cell whose linear algebra fails counts as not stable.
+    let rho_at = |d: f64| -> Result<f64, Error> {
+        match model.spectral_radius(d) {
+            Ok(r) => Ok(r),
+            Err(Error::Analysis(_)) => Ok(f64::NAN),
+            Err(e) => Err(e),
+        }
+    };
     let stable = |d: f64| model.spectral_radius(d).map(|r| r < 1.0);
-    let mut flags = Vec::with_capacity(deltas.len());
     let mut scan = Vec::with_capacity(deltas.len());
     for &d in &deltas {
-        let rho = match model.spectral_radius(d) {
-            Ok(r) => r,
-            Err(Error::Analysis(_)) => f64::NAN,
-            Err(e) => return Err(e),
-        };
-        flags.push(rho < 1.0);
-        scan.push([d, rho]);
+        scan.push([d, rho_at(d)?]);
     }
+    // Between scan points the curve can dip across 1 and back: look inside every bracket whose
+    // middle point is an extremum close to 1 on the same side as its neighbours.
+    let mut samples = scan.clone();
+    for i in 1..scan.len().saturating_sub(1) {
+        let (l, m, r) = (scan[i - 1][1], scan[i][1], scan[i + 1][1]);
+        if !(l.is_finite() && m.is_finite() && r.is_finite()) || (l < 1.0) != (m < 1.0) || (m < 1.0) != (r < 1.0) {
+            continue;
+        }
+        let peak = m >= l && m >= r && m < 1.0 && m > 1.0 - NEAR;
+        let dip = m <= l && m <= r && m >= 1.0 && m < 1.0 + NEAR;
+        if !(peak || dip) {
+            continue;
+        }
+        let sign = if peak { 1.0 } else { -1.0 };
+        let (d, value) = golden_extremum(|d| rho_at(d).map(|v| sign * v), scan[i - 1][0], scan[i + 1][0])?;
+        if (sign * value < 1.0) != (m < 1.0) {
+            samples.push([d, sign * value]);
+        }
+    }
+    crate::sort::sort_by(&mut samples, |a, b| a[0].total_cmp(&b[0]));
+    let flags: Vec<bool> = samples.iter().map(|p| p[1] < 1.0).collect();
     // The crossing between a (stability `sa`) and b, by bisection.
     let edge = |mut a: f64, mut b: f64, sa: bool| -> f64 {
         while b - a > EDGE_TOLERANCE {
@@ -91,22 +115,50 @@ pub fn stable_windows(settings: &LinearSettings, range: [f64; 2]) -> Result<Stab
         }
         0.5 * (a + b)
     };
+    let at = |i: usize| samples[i][0];
     let mut windows = Vec::new();
     let mut start: Option<f64> = None;
-    for i in 0..deltas.len() {
+    for i in 0..samples.len() {
         match (flags[i], start) {
-            (true, None) => start = Some(if i == 0 { deltas[0] } else { edge(deltas[i - 1], deltas[i], false) }),
+            (true, None) => start = Some(if i == 0 { at(0) } else { edge(at(i - 1), at(i), false) }),
             (false, Some(s)) => {
-                windows.push([s, edge(deltas[i - 1], deltas[i], true)]);
+                windows.push([s, edge(at(i - 1), at(i), true)]);
                 start = None;
             }
             _ => {}
         }
     }
     if let Some(s) = start {
-        windows.push([s, deltas[deltas.len() - 1]]);
+        windows.push([s, at(samples.len() - 1)]);
     }
     Ok(StableWindows { range, windows, tolerance: EDGE_TOLERANCE, scan })
+}
+
+/// An extremum of ρ within this of 1 between scan points is searched for a crossing.
+const NEAR: f64 = 0.05;
+
+/// The maximum of `f` on [a, b] (assumed unimodal there) by golden section in log δ, to a
+/// relative width of 1e-4: its δ and value.
+fn golden_extremum(f: impl Fn(f64) -> Result<f64, Error>, a: f64, b: f64) -> Result<(f64, f64), Error> {
+    const G: f64 = 0.618_033_988_749_894_8;
+    let (mut lo, mut hi) = (a.ln(), b.ln());
+    let mut x1 = hi - G * (hi - lo);
+    let mut x2 = lo + G * (hi - lo);
+    let (mut f1, mut f2) = (f(x1.exp())?, f(x2.exp())?);
+    while hi - lo > 1e-4 {
+        if f1 >= f2 {
+            hi = x2;
+            (x2, f2) = (x1, f1);
+            x1 = hi - G * (hi - lo);
+            f1 = f(x1.exp())?;
+        } else {
+            lo = x1;
+            (x1, f1) = (x2, f2);
+            x2 = lo + G * (hi - lo);
+            f2 = f(x2.exp())?;
+        }
+    }
+    Ok(if f1 >= f2 { (x1.exp(), f1) } else { (x2.exp(), f2) })
 }
 
 /// The δ intervals of one grid row where ρ < 1: runs of stable cells whose ends are moved to the

@@ -120,7 +120,8 @@ impl Verdict {
 /// (errors at their floor)", or "n/a (run too short)".
 pub fn growth_text(growth_rate: Option<f64>, at_floor: bool) -> String {
     match (growth_rate, at_floor) {
-        (Some(g), _) => format!("{g:.2} 1/s"),
+        // Never "-0.00".
+        (Some(g), _) => format!("{:.2} 1/s", if g.abs() < 0.005 { 0.0 } else { g }),
         (None, true) => "none (errors at their floor)".into(),
         (None, false) => "n/a (run too short)".into(),
     }

@@ -156,8 +156,8 @@ pub const REST: Param = Param {
     scope: Scope::Run,
     help: "The analysis (ρ, the poles, the windows of δ, the maps) holds for small motions about one rest point, \
            with the friction cancelled: where the slew ends, or the end of the slew under way, \
-           which under the repeating slew alternates between q2 = 0 and 3π/2 rad (the paper: linearize about \
-           an operating point that is updated if necessary).",
+           which under the repeating slew alternates between q2 = 0 and 3π/2 rad (the paper asks the same of \
+           the preliminary feedback's design: a linearization about an operating point updated if necessary).",
 };
 
 /// The repeating there-and-back slew.

@@ -86,6 +86,15 @@ pub struct RunStatus {
     pub settings: String,
 }
 
+/// A rate with two decimals and a real minus sign, never "−0.00".
+fn two(v: f64) -> String {
+    if v.abs() < 0.005 {
+        "0.00".into()
+    } else {
+        minus(&format!("{v:.2}"))
+    }
+}
+
 /// "by e every 0.42 s" for a rate (1/s).
 fn e_folding(rate: f64) -> String {
     format!("by e every {} s", sig_trim(1.0 / rate.abs(), 2))
@@ -135,8 +144,8 @@ fn caveat(config: &SimulationConfig) -> String {
             .into(),
         FrictionCompensation::Off => format!(
             "the analysis takes the friction as cancelled; uncompensated, the motor's Dahl friction is a spring of \
-             F_c1/ε1 = {} N m/rad for motions well below ε1 = {} rad (the joint's K1 is {} N m/rad) and a torque of \
-             up to F_c1 = {} N m beyond",
+             F_c1/ε1 = {} N m/rad at rest (up to twice that after a reversal) for motions well below ε1 = {} rad — \
+             the joint's K1 is {} N m/rad — and a torque of up to F_c1 = {} N m beyond; joint 2's likewise",
             grouped(schema::round_significant(p.fc1 / p.eps1, 3)),
             sig_trim(p.eps1, 3),
             grouped(p.k1),
@@ -227,11 +236,9 @@ fn observation(
         return (format!("{what}; {why}"), true);
     }
     if let Verdict::SlewLocked { amplitude, period } = m.verdict {
-        let across =
-            m.growth_rate.map_or(String::new(), |g| format!(", {} 1/s from slew to slew", minus(&format!("{g:.2}"))));
+        let across = m.growth_rate.map_or(String::new(), |g| format!(", {} 1/s from slew to slew", two(g)));
         let what = format!(
-            "observed: the errors rise between slews and come back about as large after the next (up to {}, {} rad, \
-             every {} s{across})",
+            "observed: the errors come back about as large after every slew (up to {}, {} rad, every {} s{across})",
             sci(amplitude[0], 2),
             sci(amplitude[1], 2),
             sig_trim(period, 3)
@@ -240,7 +247,7 @@ fn observation(
             Some((Prediction::Stable, rate)) if 1.0 / rate.abs() > period => format!(
                 "the slowest mode dies out by e only every {} s (ln ρ/δ = {} 1/s), longer than the {} s between slews",
                 sig_trim(1.0 / rate.abs(), 2),
-                minus(&format!("{rate:.2}")),
+                two(rate),
                 sig_trim(period, 3)
             ),
             Some((Prediction::Stable, _)) => "each slew's transient dies out, as ρ < 1 predicts".into(),
@@ -267,17 +274,18 @@ fn observation(
             };
             return (format!("observed: the errors have settled at their floor{agrees}"), true);
         }
+        let when = if repeating { "between slews" } else { "since the slew" };
         let text = if alone {
             format!(
-                "observed: measuring how the errors move between slews… (only the simulation can judge: {})",
+                "observed: measuring how the errors move {when}… (only the simulation can judge: {})",
                 caveat(config)
             )
         } else {
-            "observed: measuring how the errors move between slews…".into()
+            format!("observed: measuring how the errors move {when}…")
         };
         return (text, false);
     };
-    let rate = format!("observed growth rate {} 1/s", minus(&format!("{g:.2}")));
+    let rate = format!("observed growth rate {} 1/s", two(g));
     if alone {
         let e = error;
         let now = format!(", errors now {}, {} rad", sci(e[0], 2), sci(e[1], 2));
@@ -288,7 +296,7 @@ fn observation(
     let text = if seen == p {
         let close = (g - predicted).abs() <= 0.25 * predicted.abs().max(0.2);
         let slower = g > predicted;
-        let predicted = minus(&format!("{predicted:.2}"));
+        let predicted = two(predicted);
         match (close, p, slower) {
             (true, _, _) => format!("{rate} — matches ln ρ/δ = {predicted} 1/s"),
             // The sign agrees but not the rate: say so, and why that can be. ln ρ/δ is the rate of
@@ -314,7 +322,7 @@ fn observation(
         let expected = match p {
             Prediction::Unstable => "growth",
             Prediction::Stable => "decay",
-            Prediction::Borderline => "neither",
+            Prediction::Borderline => "neither growth nor decay",
         };
         let e = error;
         let why = if predicted.abs() * GROWTH_FIT_SPAN < 1.0 {
@@ -331,7 +339,7 @@ fn observation(
         } else {
             "ln ρ/δ is the rate in the long run; over a few seconds the modes' sum can move otherwise".into()
         };
-        format!("{rate} — but ln ρ/δ = {} 1/s predicts {expected}: {why}", minus(&format!("{predicted:.2}")))
+        format!("{rate} — but ln ρ/δ = {} 1/s predicts {expected}: {why}", two(predicted))
     };
     (text, true)
 }
@@ -387,12 +395,11 @@ pub fn judge(
         // Without an analysis that holds, only the simulation can say, once it has seen enough: a
         // growth that has carried the errors far from rest, or a decay that has brought them near
         // it. Near rest the friction's hunting can grow for a while and then settle into a cycle.
+        (_, None) if m.errors_at_floor => ("stable", "Stable"),
         (Verdict::Unstable { .. }, None) if !near_rest && clear(1.0) => ("unstable", "Unstable"),
-        (Verdict::Stable | Verdict::SlewLocked { .. }, None)
-            if measured && near_rest && (m.errors_at_floor || clear(-1.0)) =>
-        {
-            ("stable", "Stable")
-        }
+        // Near rest the friction can hold the errors, let them creep, or hunt: bounded so far,
+        // and said no more firmly than that.
+        (_, None) if measured && near_rest => ("bounded", "Bounded"),
         (_, None) => ("too early to tell", "Too early to tell"),
     };
     // Under a headline the simulation decided against ρ, ρ's sentence is the prediction.
@@ -412,7 +419,7 @@ pub fn judge(
         None => "linear analysis: ρ = —".into(),
         Some(r) => {
             let growth = if r.growth_rate.is_finite() {
-                format!(" (ln ρ/δ = {} 1/s)", minus(&format!("{:.2}", r.growth_rate)))
+                format!(" (ln ρ/δ = {} 1/s)", two(r.growth_rate))
             } else {
                 String::new()
             };
@@ -446,11 +453,18 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         time: format!("{:.2} s", m.time),
         error: error_pair(s.error),
         max_slew: pair(m.max_error_slew, "rad"),
-        max_after: pair(m.max_error_after, "rad"),
+        // Nothing to show until the reference has rested once.
+        max_after: if m.time <= sim.config().reference.slew_time {
+            "— (the slew is under way)".into()
+        } else {
+            pair(m.max_error_after, "rad")
+        },
         torque: format!("{}, {} N m", sig(m.max_torque[0], 3), sig(m.max_torque[1], 3)),
-        growth: match m.growth_rate {
-            None if !m.errors_at_floor => "measuring…".into(),
-            g => minus(&growth_text(g, m.errors_at_floor)),
+        growth: match (m.verdict, m.growth_rate) {
+            // The last fit before a divergence is no rate of the run's.
+            (Verdict::Diverged { .. }, _) => "— (diverged)".into(),
+            (_, None) if !m.errors_at_floor => "measuring…".into(),
+            (_, g) => minus(&growth_text(g, m.errors_at_floor)),
         },
         a4: report.map_or("—".into(), |r| {
             let [re, im] = r.limit_pair[0];

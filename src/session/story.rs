@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use super::run::Run;
 use crate::analysis::resonance::{closed_form_a4, feedback_shift};
+use crate::analysis::Pole;
 use crate::control::feedback::paper_gain;
 use crate::plot::format::{minus, sig_trim};
 
@@ -65,6 +66,8 @@ pub struct Story {
     pub kpr_alpha_limit: String,
     /// What the minimum-energy LQ design does to the pair, with the pair it makes.
     pub lq_says: String,
+    /// Whether the paper's K_pr makes every small δ work at these α: what the pair it makes says.
+    pub kpr_works: String,
 }
 
 /// "2.64 ± 29.58j 1/s".
@@ -86,6 +89,11 @@ pub fn story(run: &Run) -> Option<Story> {
     let r = &report.resonance;
     let q2 = report.rest[1];
     let [a1, a2] = settings.alpha;
+    let alpha_text = if a1 == a2 {
+        format!("α = {} 1/s", sig_trim(a1, 3))
+    } else {
+        format!("α1 = {}, α2 = {} 1/s", sig_trim(a1, 3), sig_trim(a2, 3))
+    };
     let alpha = if a1 == a2 {
         format!("α = {} 1/s", sig_trim(a1, 3))
     } else {
@@ -109,9 +117,22 @@ pub fn story(run: &Run) -> Option<Story> {
     } else {
         format!("{} 1/s and {} 1/s (three times each)", minus(&sig_trim(-a1, 3)), minus(&sig_trim(-a2, 3)))
     };
-    let loop_pair = match report.flexible_pair()[0].and_then(|i| report.poles[i].continuous) {
-        Some([re, im]) => pair_text(re, im),
-        None => "—".into(),
+    let [first, second] = report.flexible_pair();
+    let loop_pair = match first.map(|i| report.poles[i]) {
+        // At the Nyquist frequency the pair is two real negative eigenvalues, each flipping sign
+        // every period.
+        Some(p) if p.discrete[0] < 0.0 && p.discrete[1].abs() <= 1e-12 * p.discrete[0].abs() => {
+            let lambda =
+                |i: Option<usize>| i.map_or("—".into(), |i| minus(&format!("{:.3}", report.poles[i].discrete[0])));
+            format!(
+                "the Nyquist frequency π/δ = {:.1} rad/s, as two real eigenvalues λ = {} and {} that flip sign every period",
+                core::f64::consts::PI / settings.delta,
+                lambda(first),
+                lambda(second)
+            )
+        }
+        Some(Pole { continuous: Some([re, im]), .. }) => format!("s = {}", pair_text(re, im)),
+        _ => "—".into(),
     };
     let paper = paper_gain();
     let kpr = closed_form_a4(plant, settings.alpha, q2, &paper).complex_eigenvalues();
@@ -167,7 +188,12 @@ pub fn story(run: &Run) -> Option<Story> {
         },
         alpha_star: format!("{:.2} 1/s", r.alpha_star),
         delta: format!("{} s", sig_trim(settings.delta, 3)),
-        rho: format!("{:.4}", report.spectral_radius),
+        // As the verdict prints it: five decimals where it is nearly 1.
+        rho: if (report.spectral_radius - 1.0).abs() < 5e-4 {
+            format!("{:.5}", report.spectral_radius)
+        } else {
+            format!("{:.4}", report.spectral_radius)
+        },
         growth: rate(report.growth_rate),
         loop_pair,
         loop_limit,
@@ -178,5 +204,10 @@ pub fn story(run: &Run) -> Option<Story> {
         kpr_pair: pair_text(kpr.re, kpr.im),
         kpr_alpha_limit: format!("{:.2} 1/s", r.paper_alpha_limit),
         lq_says,
+        kpr_works: if kpr.re < 0.0 {
+            "every small δ works — smaller δ even gives smaller errors".into()
+        } else {
+            format!("not here: at {} that pair is in the right half-plane, and the smallest δ fail", alpha_text)
+        },
     })
 }

@@ -71,8 +71,8 @@ pub const RUN_VERTEX_BUDGET: usize = MAX_LOOP_POLES * (128 * 3 + 2 * 6 + 18) + 4
 /// The background: panel tinted outside the unit circle (where |λ| > 1 grows), grid lines at
 /// ±1 and ±½, the axes, and the unit circle emphasised.
 pub fn draw_zplane_background(painter: &mut Painter, frame: &ZFrame, dpr: f64) {
-    painter.rect(frame.rect, palette::PANEL);
-    painter.rect(frame.square, palette::UNSTABLE_REGION);
+    // All of the plane outside the circle is unstable, not only the square around it.
+    painter.rect(frame.rect, palette::UNSTABLE_REGION);
     let c = frame.point([0.0, 0.0]);
     painter.circle(c, frame.scale(), palette::PANEL);
     let grid = dpr.max(1.0);

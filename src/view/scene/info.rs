@@ -443,12 +443,17 @@ impl Scene {
         // two poles both held at the plot's edge are not "at the same spot").
         let others = poles
             .iter()
-            .filter(|p| !std::ptr::eq(*p, pole) && p.kind == pole.kind && p.in_view && pole.in_view)
+            .filter(|p| !std::ptr::eq(*p, pole) && p.kind == pole.kind && p.in_view == pole.in_view)
             .filter_map(at)
             .filter(|(qx, qy)| (qx - px).hypot(qy - py) < 4.0)
             .count();
         let im = pole.im.abs();
-        let s = if im > 1e-9 {
+        // A real negative λ is one eigenvalue flipping sign every period, not a ± pair.
+        let [lr, li] = pole.lambda;
+        let flips = pole.kind == PoleKind::Loop && lr < 0.0 && li.abs() <= 1e-12 * lr.abs();
+        let s = if flips {
+            format!("s = {} + jπ/δ 1/s: λ real and negative", format::sig(pole.re, 3))
+        } else if im > 1e-9 {
             format!("s = {} ± {}j 1/s", format::sig(pole.re, 3), format::sig(im, 4))
         } else {
             format!("s = {} 1/s", format::sig(pole.re, 3))
@@ -458,7 +463,9 @@ impl Scene {
             lines.push(TipLine::plain(format!("damping ratio ζ = {}", format::sig(zeta, 3))));
         }
         // The damped frequency it swings at and the natural one, named apart.
-        lines.push(TipLine::plain(if im > 1e-9 {
+        lines.push(TipLine::plain(if flips {
+            format!("it flips sign every period: a swing at the Nyquist frequency π/δ = {} rad/s", format::sig(im, 4))
+        } else if im > 1e-9 {
             format!(
                 "swings at Im s = {} rad/s (natural frequency |s| = {})",
                 format::sig(im, 4),
@@ -509,10 +516,8 @@ impl Scene {
             lines.push(TipLine::plain("outside the shown range (marked at the edge)"));
         }
         if others > 0 {
-            lines.push(TipLine::plain(format!(
-                "({others} more pole{} at the same spot)",
-                if others > 1 { "s" } else { "" }
-            )));
+            let place = if pole.in_view { "at the same spot" } else { "beyond the same edge" };
+            lines.push(TipLine::plain(format!("({others} more pole{} {place})", if others > 1 { "s" } else { "" })));
         }
         // A different kind of marker right beside this one is named too, so neither hides the other.
         for q in poles.iter().filter(|q| q.kind != pole.kind && q.run == pole.run) {
