@@ -93,6 +93,9 @@ impl Painter {
     }
 
     /// One filled triangle.
+    // The drawing primitives are called from many places: kept out of line, they cost the page's
+    // module a few kB less, and drawing is nowhere near the frame's budget.
+    #[inline(never)]
     pub fn triangle(&mut self, a: Point, b: Point, c: Point, color: Color) {
         self.vertex(a, color);
         self.vertex(b, color);
@@ -100,18 +103,21 @@ impl Painter {
     }
 
     /// A filled convex quadrilateral with corners `a, b, c, d` in order around it.
+    #[inline(never)]
     pub fn quad(&mut self, a: Point, b: Point, c: Point, d: Point, color: Color) {
         self.triangle(a, b, c, color);
         self.triangle(a, c, d, color);
     }
 
     /// A filled axis-aligned rectangle.
+    #[inline(never)]
     pub fn rect(&mut self, r: Rect, color: Color) {
         let (x0, y0, x1, y1) = (r.x, r.y, r.right(), r.bottom());
         self.quad([x0, y0], [x1, y0], [x1, y1], [x0, y1], color);
     }
 
     /// The outline of a rectangle, `width` pixels thick, drawn inside the rectangle.
+    #[inline(never)]
     pub fn rect_outline(&mut self, r: Rect, width: f64, color: Color) {
         let w = width.min(r.w / 2.0).min(r.h / 2.0).max(0.0);
         self.rect(Rect::new(r.x, r.y, r.w, w), color);
@@ -121,6 +127,7 @@ impl Painter {
     }
 
     /// A straight segment `width` pixels thick with square-cut ends.
+    #[inline(never)]
     pub fn line(&mut self, a: Point, b: Point, width: f64, color: Color) {
         if let Some(n) = unit_normal(a, b) {
             let h = width / 2.0;
@@ -138,6 +145,7 @@ impl Painter {
     }
 
     /// A dashed straight line: `dash` pixels drawn, `gap` pixels left out, from `a` to `b`.
+    #[inline(never)]
     pub fn dashed_line(&mut self, a: Point, b: Point, width: f64, dash: f64, gap: f64, color: Color) {
         let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
         let length = dx.hypot(dy);
@@ -176,6 +184,7 @@ impl Painter {
     }
 
     /// A filled disc.
+    #[inline(never)]
     pub fn circle(&mut self, center: Point, r: f64, color: Color) {
         if !(r > 0.0 && r.is_finite()) {
             return;
@@ -190,6 +199,7 @@ impl Painter {
     }
 
     /// An × marker: two diagonals of half-size `r` (pixels) through `center`.
+    #[inline(never)]
     pub fn cross(&mut self, center: Point, r: f64, width: f64, color: Color) {
         let [x, y] = center;
         self.line([x - r, y - r], [x + r, y + r], width, color);
@@ -197,6 +207,7 @@ impl Painter {
     }
 
     /// A + marker: a horizontal and a vertical bar of half-length `r` through `center`.
+    #[inline(never)]
     pub fn plus(&mut self, center: Point, r: f64, width: f64, color: Color) {
         let [x, y] = center;
         self.line([x - r, y], [x + r, y], width, color);
@@ -204,6 +215,7 @@ impl Painter {
     }
 
     /// The outline of a diamond (a square on its corner) with half-diagonal `r`.
+    #[inline(never)]
     pub fn diamond(&mut self, center: Point, r: f64, width: f64, color: Color) {
         let [x, y] = center;
         let corners = [[x, y - r], [x + r, y], [x, y + r], [x - r, y], [x, y - r], [x + r, y]];
@@ -216,6 +228,7 @@ impl Painter {
 
     /// A chevron (an open arrow head) of size `r` at `center`, pointing along `direction`
     /// (any non-zero vector in pixel space; nothing is drawn for a zero or non-finite one).
+    #[inline(never)]
     pub fn chevron(&mut self, center: Point, direction: Point, r: f64, width: f64, color: Color) {
         let len = direction[0].hypot(direction[1]);
         if !(len > 0.0 && len.is_finite()) {
@@ -230,12 +243,14 @@ impl Painter {
     }
 
     /// A circle outline `width` pixels thick, centred on radius `r`.
+    #[inline(never)]
     pub fn ring(&mut self, center: Point, r: f64, width: f64, color: Color) {
         self.arc(center, r, 0.0, core::f64::consts::TAU, width, color);
     }
 
     /// An arc of radius `r` from angle `a0` to `a1` (radians, measured as on screen: from +x
     /// towards +y, i.e. clockwise because y points down), `width` pixels thick.
+    #[inline(never)]
     pub fn arc(&mut self, center: Point, r: f64, a0: f64, a1: f64, width: f64, color: Color) {
         if !(r > 0.0 && r.is_finite() && a0.is_finite() && a1.is_finite()) {
             return;
