@@ -81,7 +81,9 @@ test('the SVG figures: the errors at once, the maps once they are computed', { t
   console.log(`# SVG maps ${kB(maps.bytes)}`);
   assert.equal(maps.name, 'flexarm-maps.svg');
   assert.ok(mapsText.startsWith('<svg'), mapsText.slice(0, 80));
-  assert.match(mapsText, /without K_pr/);
+  // Both panels name their feedback (the map titles come from src/session/maps.rs).
+  assert.match(mapsText, /ρ, no Kₚᵣ/);
+  assert.match(mapsText, /ρ, paper Kₚᵣ/);
   assert.deepEqual(problems, []);
   await close();
 });
