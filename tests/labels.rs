@@ -119,3 +119,29 @@ fn titles_drop_whole_clauses_instead_of_an_ellipsis() {
     let texts: Vec<String> = scene.labels().iter().map(|l| l.text.clone()).collect();
     assert!(texts.iter().any(|t| t.contains("aliased")), "{texts:?}");
 }
+
+/// A log δ axis of a narrow analysis panel (the maps and ρ(δ) are about 150 px wide in the full
+/// view at 1280 × 800) still reads: at least two δ labels, among them the decade at its right
+/// end, 0.1 s (issue 20: it was left out for touching the axis title under it).
+#[test]
+fn narrow_log_axes_keep_two_labels_and_their_right_decade() {
+    for view in ["mode=full", "mode=full&measure=rate", "embed=1&views=arm,traces,map"] {
+        let mut s = session(&format!("preset=fig5.3&{view}"));
+        play(&mut s, 0.5);
+        s.refresh();
+        for (w, h) in [(1024.0, 700.0), (1280.0, 800.0), (1440.0, 900.0), (700.0, 500.0)] {
+            let mut scene = Scene::new(ViewOptions::default(), w, h, 1.0);
+            scene.draw_session(&s);
+            let labels = scene.labels();
+            for panel in ["map-off", "map-on", "rho-curve"] {
+                let Some(p) = scene.panel_info().into_iter().find(|p| p.id == panel) else { continue };
+                let below: Vec<&str> = labels
+                    .iter()
+                    .filter(|l| l.panel == panel && l.class == LabelClass::Tick && l.y > p.y + p.height)
+                    .map(|l| l.text.as_str())
+                    .collect();
+                assert!(below.len() >= 2 && below.contains(&"0.1"), "{view} {w}×{h} {panel} ({} px): {below:?}", p.width);
+            }
+        }
+    }
+}

@@ -1001,6 +1001,19 @@ fn preliminary_feedback_moves_the_flexible_pair_across_the_imaginary_axis() {
                 assert!((x - frame.x(p.re)).abs() < 1e-9 && (y - frame.y(p.im)).abs() < 1e-9);
             }
         }
+        // One keyboard stop per ± pair (a readout names both halves); a real λ is a stop of its own.
+        for p in &poles {
+            let twin = poles.iter().any(|q| q.kind == p.kind && (q.lambda[0] - p.lambda[0]).abs() < 1e-9 && (q.lambda[1] + p.lambda[1]).abs() < 1e-9 && q.lambda[1] != 0.0);
+            if p.lambda[1] == 0.0 {
+                assert!(p.keyboard_stop, "{p:?}");
+            } else {
+                assert!(twin, "every complex pole has its conjugate: {p:?}");
+                assert_eq!(p.keyboard_stop, p.lambda[1] > 0.0, "{p:?}");
+            }
+        }
+        let stops = poles.iter().filter(|p| p.keyboard_stop).count();
+        let real = poles.iter().filter(|p| p.lambda[1] == 0.0).count();
+        assert_eq!(2 * stops, poles.len() + real);
         let far: Vec<_> = loops.iter().filter(|p| p.re < -100.0).collect();
         assert_eq!(far.len(), 2, "the poles at −300 and −700 1/s");
         assert!(far.iter().all(|p| !p.in_view && p.x.unwrap() < panel.x + 10.0));

@@ -196,7 +196,8 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
             let row1 = p.y - margins::ANALYSIS_TOP + 2.0;
             out.push(whole(label(LabelClass::Title, title, left, row1, [0.0, 0.0], font::TITLE), &p.note));
             let x_label = fit(p.x_label, p.width, font::TITLE);
-            let below = p.y + p.height + TICK_GAP + font::TICK * LINE_HEIGHT;
+            // Under the tick row with a gap, so that a tick at the right end (0.1 s) keeps its label.
+            let below = p.y + p.height + TICK_GAP + font::TICK * LINE_HEIGHT + LABEL_GAP;
             out.push(whole(label(LabelClass::Axis, x_label.clone(), right, below, [1.0, 0.0], font::TITLE), p.x_label));
             let y_room = p.width + TICK_GAP;
             out.push(whole(

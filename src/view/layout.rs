@@ -259,7 +259,7 @@ pub mod margins {
     /// Above an analysis panel: its title, then its y label.
     pub const ANALYSIS_TOP: f64 = 40.0;
     /// Below an analysis panel: the tick labels, then its x label.
-    pub const ANALYSIS_BOTTOM: f64 = 38.0;
+    pub const ANALYSIS_BOTTOM: f64 = 40.0;
     /// Above the stage: room for a caption such as "arm, top view".
     pub const STAGE_TOP: f64 = 22.0;
 }

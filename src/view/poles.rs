@@ -63,6 +63,9 @@ pub struct PoleInfo {
     pub y: Option<f64>,
     /// False if the pole lies outside the shown range (drawn as a chevron at the edge).
     pub in_view: bool,
+    /// One keyboard stop per ± pair (its readout names both): the upper half (Im λ ≥ 0), so a
+    /// real λ is a stop of its own.
+    pub keyboard_stop: bool,
 }
 
 /// The pole plot's data area in physical pixels and the s-plane region mapped onto it.
@@ -259,6 +262,7 @@ pub fn describe_poles(report: &StabilityReport, run: &'static str, view: PoleVie
             x: pos.map(|p| p[0]),
             y: pos.map(|p| p[1]),
             in_view,
+            keyboard_stop: lambda[1] >= 0.0,
         });
     };
     for (i, pole) in report.poles.iter().enumerate() {

@@ -147,7 +147,7 @@ impl Renderer {
     /// The frame, for HTML labels over the canvas (CSS pixels, origin top-left of the canvas):
     /// `{generation, panels: [{id, x, y, width, height, x_label, y_label, title, note, x_range,
     /// y_range, x_ticks, y_ticks, x_labels: [{value, text}], y_labels, x_scale, y_scale}], mode,
-    /// series: [...], poles: [{run, kind, re, im, zeta, omega, unstable, flexible, x, y, in_view}],
+    /// series: [...], poles: [{run, kind, re, im, zeta, omega, unstable, flexible, x, y, in_view, keyboard_stop}],
     /// spring_magnification, backend}`. For plots the rectangle is the data area: x_range spans
     /// its width and y_range its height (lo at the bottom), logarithmically where the scale is
     /// "log".

@@ -87,3 +87,38 @@ for (const size of SIZES) {
     }
   }
 }
+
+/** Visible controls smaller than a 44-px touch target (a checkbox counts with its row). */
+const smallTargets = (page) => page.evaluate(() => [...document.querySelectorAll('button, input, select, summary, [tabindex="0"]')]
+  .filter((el) => el.getBoundingClientRect().height > 0 && getComputedStyle(el).visibility !== 'hidden')
+  .map((el) => {
+    const row = el.type === 'checkbox' || el.type === 'radio' ? el.closest('.field, .choice, label') : null;
+    const r = (row ?? el).getBoundingClientRect();
+    return { what: `${el.tagName.toLowerCase()}#${el.id} "${(el.textContent || el.getAttribute('aria-label') || '').trim().slice(0, 40)}"`, w: r.width, h: r.height };
+  })
+  .filter((t) => t.w < 44 || t.h < 44)
+  .map((t) => `${t.what} ${Math.round(t.w)}×${Math.round(t.h)}`));
+
+for (const [state, query] of [['controls', '?preset=fig5.3&mode=full'], ['lesson', '?lesson=4']]) {
+  test(`a phone with the sheet open (${state}): the figure stays in view above it, every control is a 44-px target`, { timeout: 90000 }, async () => {
+    const { name, ...options } = SIZES[0];
+    const { page, problems, close } = await openPage(env.browser, env.server.base, query, options);
+    await page.waitForSelector('#sheet-toggle');
+    if (state === 'controls') await page.tap('#sheet-toggle');
+    await page.waitForFunction(() => document.getElementById('panel').classList.contains('open'));
+    await page.waitForTimeout(600);
+    const view = await page.evaluate(() => {
+      const canvas = document.getElementById('canvas').getBoundingClientRect();
+      const sheet = document.getElementById('panel').getBoundingClientRect();
+      const first = document.querySelector('#panel .open, #lesson:not([hidden]) h2, #verdict')?.getBoundingClientRect();
+      return { canvasTop: canvas.top, canvasBottom: canvas.bottom, canvasHeight: canvas.height, sheetTop: sheet.top, firstBottom: first?.bottom ?? 0, height: window.innerHeight };
+    });
+    assert.ok(view.canvasTop >= 0 && view.canvasBottom <= view.sheetTop + 1, `the figure (${Math.round(view.canvasTop)}–${Math.round(view.canvasBottom)} px) lies above the sheet (from ${Math.round(view.sheetTop)} px)`);
+    assert.ok(view.canvasHeight >= 0.25 * view.height, `the figure keeps a useful height (${Math.round(view.canvasHeight)} px)`);
+    assert.ok(view.firstBottom <= view.height, 'the sheet shows its first lines');
+    assert.deepEqual(await smallTargets(page), [], 'controls smaller than 44 px');
+    await page.screenshot({ path: path.join(shots, `phone-sheet-${state}.png`) });
+    assert.deepEqual(problems, []);
+    await close();
+  });
+}

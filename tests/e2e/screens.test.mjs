@@ -148,6 +148,18 @@ test('by keyboard: the map point moves with the arrows, the poles read out, exac
   await page.press('#delta-number', 'Enter');
   await page.waitForFunction(() => new URLSearchParams(location.search).get('delta') === '0.04');
   assert.equal(await page.textContent('#delta-value'), '0.0400 s');
+  // The slider moves on: the typed field follows it, and a value typed but not committed is dropped.
+  const slider = await page.locator('#delta').boundingBox();
+  await page.mouse.click(slider.x + 0.2 * slider.width, slider.y + slider.height / 2);
+  await page.waitForFunction(() => new URLSearchParams(location.search).get('delta') !== '0.04');
+  const afterSlider = new URL(page.url()).searchParams.get('delta');
+  assert.equal(await page.inputValue('#delta-number'), afterSlider, 'the field shows the slider\'s δ');
+  await page.fill('#delta-number', '0.07');
+  await page.mouse.click(slider.x + 0.6 * slider.width, slider.y + slider.height / 2);
+  await page.waitForFunction((before) => new URLSearchParams(location.search).get('delta') !== before, afterSlider);
+  const second = new URL(page.url()).searchParams.get('delta');
+  assert.notEqual(second, '0.07', 'the slider, moved last, sets δ');
+  assert.equal(await page.inputValue('#delta-number'), second);
   await page.fill('#delta-number', '-1');
   await page.press('#delta-number', 'Enter');
   await page.waitForSelector('#error:not([hidden])');

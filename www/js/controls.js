@@ -54,13 +54,18 @@ function buildField(p, slot, on) {
   const input = make('input', {
     type: 'range', id, min: '0', max: String(STEPS), step: '1', 'aria-describedby': helpId,
   });
-  input.addEventListener('input', () => on.onPosition(p.key, Number(/** @type {HTMLInputElement} */ (input).value) / STEPS));
+  input.addEventListener('input', () => {
+    // The slider moved: what was typed and not committed is dropped, and the field follows.
+    delete exact.dataset.typing;
+    on.onPosition(p.key, Number(/** @type {HTMLInputElement} */ (input).value) / STEPS);
+  });
   // Arrow keys step through round values the session chooses (0.01 → 0.012 → 0.015 s), not
   // through slider positions that round back to the same value.
   input.addEventListener('keydown', (ev) => {
     const steps = KEY_STEPS[/** @type {KeyboardEvent} */ (ev).key];
     if (!steps) return;
     ev.preventDefault();
+    delete exact.dataset.typing;
     on.onStep(p.key, steps);
   });
   const span = p.control ? `${p.allowed}${p.scale === 'log' ? ', logarithmic scale' : ''}` : p.allowed;
@@ -73,8 +78,12 @@ function buildField(p, slot, on) {
     if (Number.isFinite(p.limits[0])) exact.min = String(p.limits[0]);
     if (Number.isFinite(p.limits[1])) exact.max = String(p.limits[1]);
   }
+  // Only a value the user typed is set (a change event can come after the slider has moved on).
+  exact.addEventListener('input', () => { exact.dataset.typing = '1'; });
   exact.addEventListener('change', () => {
-    if (exact.value.trim() !== '') on.onSet(p.key, exact.value.trim());
+    const typed = exact.dataset.typing === '1';
+    delete exact.dataset.typing;
+    if (typed && exact.value.trim() !== '') on.onSet(p.key, exact.value.trim());
   });
   const exactRow = make('span', { class: 'exact-row' }, [exact, make('span', { class: 'unit', text: p.unit, 'aria-hidden': 'true' })]);
   slot.append(label, output, input, make('small', { id: helpId, class: 'help', text: span }), exactRow);
@@ -108,8 +117,8 @@ export function buildControls(schema, on) {
           if (input.value !== pos) input.value = pos;
           if (f.output) setText(f.output, v.text);
           if (input.getAttribute('aria-valuetext') !== v.text) input.setAttribute('aria-valuetext', v.text);
-          // The typed field shows the value as set, unless the user is typing in it.
-          if (f.exact && document.activeElement !== f.exact && f.exact.value !== v.value) f.exact.value = v.value;
+          // The typed field shows the value as set, unless the user is typing in it (not yet committed).
+          if (f.exact && f.exact.dataset.typing !== '1' && f.exact.value !== v.value) f.exact.value = v.value;
         } else if (input.value !== v.value) {
           input.value = v.value;
         }

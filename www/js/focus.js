@@ -83,7 +83,7 @@ export function createFocus(on) {
       region(p).hidden = false;
     }
     for (const [id, el] of regions) if (!ids.has(id)) el.hidden = true;
-    poles = (layout.poles ?? []).filter((/** @type {any} */ q) => q.in_view && q.x != null);
+    poles = (layout.poles ?? []).filter((/** @type {any} */ q) => q.in_view && q.x != null && q.keyboard_stop);
     poleIndex = Math.min(poleIndex, Math.max(0, poles.length - 1));
   }
 

@@ -166,8 +166,13 @@ async function main() {
   // On a phone the controls (and the lesson) live in a sheet over the bottom of the page.
   const sheet = byId('panel');
   const sheetToggle = byId('sheet-toggle');
+  const phone = window.matchMedia('(max-width: 700px)');
+  const stage = /** @type {HTMLElement} */ (document.querySelector('.stage'));
   const openSheet = (/** @type {boolean} */ open) => {
     sheet.classList.toggle('open', open);
+    document.body.classList.toggle('sheet-open', open);
+    // The figure, shrunk by the stylesheet, goes to the top of the screen above the sheet.
+    if (open && phone.matches) requestAnimationFrame(() => stage.scrollIntoView({ block: 'start' }));
     sheetToggle.setAttribute('aria-expanded', String(open));
     setText(sheetToggle, open ? 'Close ▾' : document.body.classList.contains('in-lesson') ? 'The lesson, controls and verdict ▴' : 'Controls, verdict and lesson ▴');
   };
