@@ -73,9 +73,9 @@ fn horizon_must_lie_between_one_and_two_sampling_periods() {
 #[test]
 fn plant_parameters_are_checked() {
     expect_config_error(with(|c| c.plant.k1 = 0.0), "K1", "> 0");
-    expect_config_error(with(|c| c.plant.ir1 = -1.0), "Ir1", "> 0");
-    expect_config_error(with(|c| c.plant.bv1 = -0.1), "Bv1", "≥ 0");
-    expect_config_error(with(|c| c.plant.fc2 = f64::NAN), "Fc2", "finite");
+    expect_config_error(with(|c| c.plant.ir1 = -1.0), "I_r1", "> 0");
+    expect_config_error(with(|c| c.plant.bv1 = -0.1), "B_v1", "≥ 0");
+    expect_config_error(with(|c| c.plant.fc2 = f64::NAN), "F_c2", "finite");
     expect_config_error(with(|c| c.plant.eps1 = 0.0), "ε1", "> 0");
     expect_config_error(with(|c| c.plant.a3 = 2.0), "A3", "positive definite");
 }

@@ -84,7 +84,7 @@ impl Derived {
     fn new(config: &SimulationConfig) -> Result<Self, Error> {
         config.validate()?;
         let delta = config.controller.sampling_period;
-        let steps_per_period = (delta / config.plant_step_max).ceil().max(1.0) as usize;
+        let steps_per_period = (delta / config.plant_step()).ceil().max(1.0) as usize;
         let plant_step = delta / steps_per_period as f64;
         let output_every = (config.output_interval / plant_step).round().max(1.0) as usize;
         Ok(Self {

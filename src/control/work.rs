@@ -42,7 +42,7 @@ impl Work {
     pub fn of_run(config: &SimulationConfig, duration: f64) -> Work {
         let delta = config.controller.sampling_period;
         let periods = (duration / delta).ceil().max(0.0);
-        let steps_per_period = (delta / config.plant_step_max).ceil().max(1.0);
+        let steps_per_period = (delta / config.plant_step()).ceil().max(1.0);
         let plant_steps = periods * steps_per_period;
         let per_period = SECONDS_PER_PERIOD + config.controller.horizon_steps as f64 * SECONDS_PER_PREDICTION_STEP;
         Work {

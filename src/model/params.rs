@@ -60,29 +60,72 @@ impl PlantParameters {
         Self { bv1: 0.0, bv2: 0.0, fc1: 0.0, fc2: 0.0, ..Self::default() }
     }
 
+    /// The values in the order of [`crate::schema::ARM_PARAMS`].
+    pub fn values(&self) -> [f64; 11] {
+        [self.a1, self.a2, self.a3, self.ir1, self.bv1, self.bv2, self.fc1, self.fc2, self.eps1, self.eps2, self.k1]
+    }
+
+    /// The value of an arm parameter by its schema key (`k1`).
+    pub fn get(&self, key: &str) -> Option<f64> {
+        let i = crate::schema::ARM_PARAMS.iter().position(|p| p.key == key)?;
+        Some(self.values()[i])
+    }
+
+    /// Sets an arm parameter by its schema key; false if `key` is not one.
+    pub fn set(&mut self, key: &str, v: f64) -> bool {
+        let slot = match key {
+            "a1" => &mut self.a1,
+            "a2" => &mut self.a2,
+            "a3" => &mut self.a3,
+            "ir1" => &mut self.ir1,
+            "bv1" => &mut self.bv1,
+            "bv2" => &mut self.bv2,
+            "fc1" => &mut self.fc1,
+            "fc2" => &mut self.fc2,
+            "eps1" => &mut self.eps1,
+            "eps2" => &mut self.eps2,
+            "k1" => &mut self.k1,
+            _ => return false,
+        };
+        *slot = v;
+        true
+    }
+
+    /// Each value within its schema limits, then the one condition across them: the mass matrix
+    /// M2 = [[A1 + 2 A3 c, A2 + A3 c], [A2 + A3 c, A2]] (c = cos q2) has determinant
+    /// A1 A2 − A2² − A3² c², which must stay positive for every q2.
     pub fn validate(&self) -> Result<(), ConfigError> {
-        positive("plant.a1 (A1)", self.a1)?;
-        positive("plant.a2 (A2)", self.a2)?;
-        finite("plant.a3 (A3)", self.a3)?;
-        // M2 = [[A1 + 2 A3 c, A2 + A3 c], [A2 + A3 c, A2]] has determinant A1 A2 − A2² − A3² c²,
-        // which must stay positive for every q2.
-        let det_min = self.a1 * self.a2 - self.a2 * self.a2 - self.a3 * self.a3;
-        if det_min <= 0.0 {
-            return Err(ConfigError::new(
-                "plant.a3 (A3)",
-                self.a3,
-                "the mass matrix must be positive definite for every q2: A1·A2 − A2² − A3² > 0",
-            ));
+        for (p, v) in crate::schema::ARM_PARAMS.iter().zip(self.values()) {
+            p.check(v)?;
         }
-        positive("plant.ir1 (Ir1)", self.ir1)?;
-        non_negative("plant.bv1 (Bv1)", self.bv1)?;
-        non_negative("plant.bv2 (Bv2)", self.bv2)?;
-        non_negative("plant.fc1 (Fc1)", self.fc1)?;
-        non_negative("plant.fc2 (Fc2)", self.fc2)?;
-        positive("plant.eps1 (ε1)", self.eps1)?;
-        positive("plant.eps2 (ε2)", self.eps2)?;
-        positive("plant.k1 (K1)", self.k1)?;
+        let room = self.a1 * self.a2 - self.a2 * self.a2;
+        if self.a3 * self.a3 >= room {
+            let reason = format!(
+                "too large for A1 = {} and A2 = {} kg m²: the mass matrix must be positive definite for every q2, \
+                 which needs A3² < A1·A2 − A2² = {}",
+                crate::schema::format_number(self.a1),
+                crate::schema::format_number(self.a2),
+                crate::plot::format::sig(room, 3)
+            );
+            return Err(ConfigError::new(crate::schema::A3.name, self.a3, &reason));
+        }
         Ok(())
+    }
+
+    /// The largest rate of the arm's mechanics, 1/s: the joint's resonance
+    /// √(K1 (1/I_r1 + 1/J_eff)) at its stiffest posture, the motor's damping B_v1/I_r1 and
+    /// joint 2's B_v2 (M⁻¹)₂₂, whichever is largest (the simulation's step follows it).
+    pub fn fastest_rate(&self) -> f64 {
+        let mut rate = self.bv1 / self.ir1;
+        for i in 0..=20 {
+            let c = -1.0 + 0.1 * i as f64;
+            let det = self.a1 * self.a2 - self.a2 * self.a2 - self.a3 * self.a3 * c * c;
+            // The links as one body seen from the spring: J_eff = det / A2 (link 2 free to follow).
+            let j_eff = det / self.a2;
+            let m22_inv = (self.a1 + 2.0 * self.a3 * c) / det;
+            rate = rate.max((self.k1 * (1.0 / self.ir1 + 1.0 / j_eff)).sqrt()).max(self.bv2 * m22_inv);
+        }
+        rate
     }
 }
 

@@ -378,9 +378,11 @@ impl Param {
     }
 }
 
+mod arm;
 mod params;
 mod view;
 
+pub use arm::*;
 pub use params::*;
 pub use view::*;
 

@@ -31,7 +31,7 @@ pub use controls::{display, ControlValue};
 pub use export::EMBED_SIZE;
 pub use lesson::{LessonProgress, LessonStatus, QuestionStatus};
 pub use maps::{MapSide, Maps};
-pub use presets::{preset, Preset, PRESETS};
+pub use presets::{arm, preset, Preset, ARMS, PRESETS};
 pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS, HISTORY_SECONDS};
 pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source, ViewSettings};
 pub use status::{run_status, RunStatus};
@@ -53,6 +53,8 @@ pub struct Status {
     pub note: String,
     /// The preset the settings match ("" if none).
     pub preset: String,
+    /// The arm preset the arm is ("" for an arm of its own).
+    pub arm: String,
     /// What the page shows, in words: the preset's title, or run A's settings.
     pub showing: String,
     pub maps: maps::MapStatus,
@@ -251,8 +253,17 @@ impl Session {
             next.view.log = true;
         }
         // The reference jumping under a moving arm would be a kick, not the setting: start over.
-        let restart = key == "repeat" && next.a.repeat != self.settings.a.repeat;
-        let why = if restart { "The reference changed, so the run restarted from rest." } else { "" };
+        let new_reference = key == "repeat" && next.a.repeat != self.settings.a.repeat;
+        // Another arm is another run: it starts from rest (the old state is not this arm's).
+        let new_arm = next.a.plant != self.settings.a.plant;
+        let restart = new_reference || new_arm;
+        let why = if new_arm {
+            "The arm changed, so the run restarted from rest."
+        } else if new_reference {
+            "The reference changed, so the run restarted from rest."
+        } else {
+            ""
+        };
         self.apply(next, restart, why)
     }
 
@@ -555,6 +566,7 @@ impl Session {
             runs,
             note: self.note.clone(),
             preset: self.preset().map_or(String::new(), |p| p.id.to_string()),
+            arm: self.settings.arm_preset().map_or(String::new(), |p| p.id.to_string()),
             showing: self.preset().map_or_else(
                 || format!("your settings — {}", status::describe(&self.a)),
                 // A preset names the paper's figure; the paper slews once.

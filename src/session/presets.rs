@@ -14,35 +14,52 @@ pub struct Preset {
 }
 
 /// All presets, in the order a student meets them. Each names every setting the paper's model
-/// fixes (friction compensated continuously, the inner loop continuous, k = 12, ε = δ/8), so a
-/// preset restores them and the page names a figure only when they hold.
+/// fixes (the paper's arm, friction compensated continuously, the inner loop continuous, k = 12,
+/// ε = δ/8), so a preset restores them and the page names a figure only when they hold.
 pub const PRESETS: [Preset; 5] = [
     Preset {
         id: "fig5.1",
         title: "Fig. 5.1: δ = 0.04 s with preliminary feedback (satisfactory errors)",
-        state: "delta=0.04&alpha=2&pf=paper&friction=continuous&inner=continuous&k=12&eps_ratio=8",
+        state: "arm=paper&delta=0.04&alpha=2&pf=paper&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "fig5.2",
         title: "Fig. 5.2: δ = 0.01 s with preliminary feedback (smaller errors)",
-        state: "delta=0.01&alpha=2&pf=paper&friction=continuous&inner=continuous&k=12&eps_ratio=8",
+        state: "arm=paper&delta=0.01&alpha=2&pf=paper&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "fig5.3",
         title: "Fig. 5.3: δ = 0.01 s without preliminary feedback (unstable)",
-        state: "delta=0.01&alpha=2&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
+        state: "arm=paper&delta=0.01&alpha=2&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "large-delta",
         title: "Large δ works without preliminary feedback (δ = 0.06 s)",
-        state: "delta=0.06&alpha=2&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
+        state: "arm=paper&delta=0.06&alpha=2&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "small-alpha",
         title: "Smaller α slows the growth (α = 0.5, no preliminary feedback)",
-        state: "delta=0.01&alpha=0.5&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
+        state: "arm=paper&delta=0.01&alpha=0.5&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
 ];
+
+/// Arms a teacher reaches for, each the paper's arm with one part changed (`arm=ID` in a state
+/// string, `--arm ID` on the command line; the arm's own keys then change it further).
+pub const ARMS: [Preset; 6] = [
+    Preset { id: "paper", title: "The paper's arm", state: "" },
+    Preset { id: "stiffer", title: "Stiffer spring (K1 × 4)", state: "k1=4610.4" },
+    Preset { id: "softer", title: "Softer spring (K1 ÷ 4)", state: "k1=288.15" },
+    Preset { id: "lighter", title: "Lighter motor (I_r1 ÷ 4)", state: "ir1=0.48475" },
+    Preset { id: "heavier", title: "Heavier motor (I_r1 × 4)", state: "ir1=7.756" },
+    // B_v1 > 3 α I_r1 = 11.6 N m s/rad at α = 2 makes Re A4 < 0 (story::damping_needed).
+    Preset { id: "damped", title: "Damped motor (B_v1 = 15 N m s/rad)", state: "bv1=15" },
+];
+
+/// The arm preset with identifier `id`.
+pub fn arm(id: &str) -> Option<&'static Preset> {
+    ARMS.iter().find(|p| p.id == id)
+}
 
 /// The preset with identifier `id`.
 pub fn preset(id: &str) -> Option<&'static Preset> {

@@ -6,13 +6,14 @@
 //! setting so a shared link means the same thing everywhere; [`Settings::command_line`] writes the
 //! `flexarm simulate …` that reproduces run A.
 
-use super::presets::{preset, Preset, PRESETS};
+use super::presets::{arm, preset, Preset, ARMS, PRESETS};
 use super::query::join_query;
 pub use super::query::split_query;
 pub use super::view::ViewSettings;
 use super::view::VIEW_PARAMS;
 use crate::control::config::{FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
 use crate::error::{Error, ParseError};
+use crate::model::PlantParameters;
 use crate::schema::{self, Param, Scope, Value};
 
 /// The preset the page opens with when its URL names none.
@@ -59,9 +60,12 @@ impl RestPoint {
     }
 }
 
-/// Run settings left out of the state string while at their defaults, so that links, CSV and
-/// SVG headers written before they existed still read the same.
-const QUIET_AT_DEFAULT: &[&str] = &["rest"];
+/// Run settings left out of the state string while at their defaults (the rest point and the
+/// arm's parameters), so that links, CSV and SVG headers written before they existed still read
+/// the same.
+fn quiet_at_default(key: &str) -> bool {
+    key == "rest" || schema::ARM_PARAMS.iter().any(|p| p.key == key)
+}
 
 /// The settings of one run, keyed by the schema's run parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -81,6 +85,8 @@ pub struct RunSettings {
     pub eps_ratio: f64,
     /// Where the analysis linearizes the loop.
     pub rest: RestPoint,
+    /// The arm (the paper's table by default).
+    pub plant: PlantParameters,
 }
 
 impl Default for RunSettings {
@@ -98,14 +104,16 @@ impl Default for RunSettings {
             k: number(&schema::K) as usize,
             eps_ratio: number(&schema::EPS_RATIO),
             rest: RestPoint::from_name(choice(&schema::REST)).unwrap_or_default(),
+            plant: PlantParameters::default(),
         }
     }
 }
 
 impl RunSettings {
-    /// The configuration of a run with these settings (the paper's plant and slew).
+    /// The configuration of a run with these settings (the paper's slew).
     pub fn config(&self) -> SimulationConfig {
         let mut c = SimulationConfig::default();
+        c.plant = self.plant;
         c.controller.sampling_period = self.delta;
         c.controller.alpha = self.alpha;
         c.controller.horizon_steps = self.k;
@@ -130,6 +138,7 @@ impl RunSettings {
             k: c.controller.horizon_steps,
             eps_ratio: c.controller.eps_ratio,
             rest: RestPoint::default(),
+            plant: c.plant,
         }
     }
 
@@ -146,7 +155,7 @@ impl RunSettings {
             "k" => Value::Number(self.k as f64),
             "eps_ratio" => Value::Number(self.eps_ratio),
             "rest" => Value::Choice(self.rest.name()),
-            _ => return None,
+            _ => return self.plant.get(key).map(Value::Number),
         })
     }
 
@@ -167,6 +176,7 @@ impl RunSettings {
             ("k", Value::Number(x)) => self.k = x as usize,
             ("eps_ratio", Value::Number(x)) => self.eps_ratio = x,
             ("rest", Value::Choice(s)) => self.rest = RestPoint::from_name(s).unwrap_or(self.rest),
+            (_, Value::Number(x)) => return self.plant.set(key, x),
             _ => return false,
         }
         true
@@ -314,6 +324,12 @@ impl Settings {
                 None => fail("preset", preset_error(id))?,
             }
         }
+        // `arm=ID`: the paper's arm with one part changed, before the arm's own keys.
+        if let Some((_, id)) = pairs.iter().rev().find(|(k, _)| k == "arm") {
+            if let Err(e) = self.set_arm(id) {
+                fail("arm", e)?;
+            }
+        }
         if let Some((_, list)) = pairs.iter().rev().find(|(k, _)| k == "views") {
             if let Err(e) = self.view.read_views(list) {
                 fail("views", e)?;
@@ -323,7 +339,7 @@ impl Settings {
         let mut listed = false;
         for (key, _) in &pairs {
             // `lesson` is the session's (which step of the lesson is open), not a setting.
-            if !matches!(key.as_str(), "preset" | "lesson" | "views") && schema::param(key).is_none() {
+            if !matches!(key.as_str(), "preset" | "arm" | "lesson" | "views") && schema::param(key).is_none() {
                 // The settings there are are listed once, with the first unknown key.
                 let e = if listed { unknown_again(key) } else { unknown(key) };
                 listed = true;
@@ -361,6 +377,26 @@ impl Settings {
     /// Applies a preset's settings over these.
     pub fn apply_preset(&mut self, p: &Preset) -> Result<(), Error> {
         self.read(p.state, Source::CommandLine).map(|_| ())
+    }
+
+    /// Makes the arm the arm preset named `id` (an error lists the arms there are).
+    pub fn set_arm(&mut self, id: &str) -> Result<(), Error> {
+        let p = arm(id).ok_or_else(|| arm_error(id))?;
+        self.apply_arm(p)
+    }
+
+    /// Makes the arm the paper's with the one change of arm preset `p`.
+    pub fn apply_arm(&mut self, p: &Preset) -> Result<(), Error> {
+        self.a.plant = PlantParameters::default();
+        self.read(p.state, Source::CommandLine).map(|_| ())
+    }
+
+    /// The arm preset these settings' arm is, if any.
+    pub fn arm_preset(&self) -> Option<&'static Preset> {
+        ARMS.iter().find(|p| {
+            let mut s = *self;
+            s.apply_arm(p).is_ok() && s.a.plant == self.a.plant
+        })
     }
 
     /// True if these settings already have every value `p` sets.
@@ -438,7 +474,7 @@ fn run_pairs(a: &RunSettings, changed_only: bool) -> Vec<(&'static str, String)>
         }
         let v = a.get(p.key).expect("run keys have values");
         let headline = matches!(p.key, "delta" | "alpha" | "alpha1" | "alpha2" | "pf");
-        let quiet = changed_only || QUIET_AT_DEFAULT.contains(&p.key);
+        let quiet = changed_only || quiet_at_default(p.key);
         if quiet && !headline && defaults.get(p.key) == Some(v) {
             continue;
         }
@@ -454,7 +490,7 @@ fn unknown(key: &str) -> Error {
     Error::Parse(ParseError {
         key: "setting".into(),
         text: key.into(),
-        expected: format!("a known setting: preset, {}", known.join(", ")),
+        expected: format!("a known setting: preset, arm, {}", known.join(", ")),
     })
 }
 
@@ -465,6 +501,11 @@ fn unknown_again(key: &str) -> Error {
         text: key.into(),
         expected: "a known setting (listed above)".into(),
     })
+}
+
+fn arm_error(id: &str) -> Error {
+    let ids: Vec<&str> = ARMS.iter().map(|p| p.id).collect();
+    Error::Parse(ParseError { key: "arm".into(), text: id.into(), expected: format!("one of {}", ids.join(" | ")) })
 }
 
 fn preset_error(id: &str) -> Error {
@@ -510,7 +551,7 @@ mod tests {
         let notices = s.read("?delta=abc&pf=maybe&alpha=0.5&bogus=1&junk=2", Source::Page).unwrap();
         let keys: Vec<&str> = notices.iter().map(|n| n.key.as_str()).collect();
         assert_eq!(keys, ["bogus", "junk", "delta", "pf"]);
-        assert!(notices[0].text.starts_with("invalid setting = 'bogus': expected a known setting: preset, delta"));
+        assert!(notices[0].text.starts_with("invalid setting = 'bogus': expected a known setting: preset, arm, delta"));
         // The list of settings is said once, not on every line.
         assert_eq!(notices[1].text, "invalid setting = 'junk': expected a known setting (listed above)");
         assert_eq!(s.a.alpha, [0.5, 0.5]);

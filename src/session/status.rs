@@ -516,6 +516,9 @@ pub fn describe(run: &Run) -> String {
     if s.k != paper.k || s.eps_ratio != paper.eps_ratio {
         text += &format!(", k = {}, m = {}", s.k, sig_trim(s.eps_ratio, 3));
     }
+    if s.plant != paper.plant {
+        text += &format!(", arm: {}", crate::schema::arm_text(&s.plant.values()));
+    }
     if s.repeat {
         text += ", slew repeating";
     }

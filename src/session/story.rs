@@ -68,6 +68,14 @@ pub struct Story {
     pub lq_says: String,
     /// Whether the paper's K_pr makes every small δ work at these α: what the pair it makes says.
     pub kpr_works: String,
+    /// The arm, only what differs from the paper's: "the paper's arm", "K1 = 4610.4 N m/rad (paper: 1152.6)".
+    pub arm: String,
+    /// The motor damping that makes Re A4 < 0 with no preliminary feedback, B_v1 > 3β I_r1
+    /// (3α I_r1 when α1 = α2), and this arm's.
+    pub damping_needed: String,
+    /// Next to the K_pr control: the paper's gains were designed for the paper's arm at α = 2;
+    /// empty where that is what runs.
+    pub kpr_note: String,
 }
 
 /// "2.64 ± 29.58j 1/s".
@@ -204,6 +212,28 @@ pub fn story(run: &Run) -> Option<Story> {
         kpr_pair: pair_text(kpr.re, kpr.im),
         kpr_alpha_limit: format!("{:.2} 1/s", r.paper_alpha_limit),
         lq_says,
+        arm: crate::schema::arm_text(&plant.values()),
+        damping_needed: format!(
+            "B_v1 > {} I_r1 = {:.1} N m s/rad (this arm: {} N m s/rad)",
+            if a1 == a2 { "3α" } else { "3β" },
+            3.0 * r.beta * plant.ir1,
+            crate::schema::format_number(plant.bv1)
+        ),
+        kpr_note: {
+            let arm = *plant != crate::model::PlantParameters::default();
+            let alpha = settings.alpha != [2.0, 2.0];
+            let differs = match (arm, alpha) {
+                (true, true) => "the arm and α differ",
+                (true, false) => "the arm differs",
+                (false, true) => "α differs",
+                (false, false) => "",
+            };
+            if differs.is_empty() {
+                String::new()
+            } else {
+                format!("The paper's Kₚᵣ was designed for the paper's arm at α = 2 1/s; here {differs} (the LQ design is redone for them).")
+            }
+        },
         kpr_works: if kpr.re < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()
         } else {

@@ -74,6 +74,12 @@ pub fn presets() -> Result<JsValue, JsError> {
     to_js(&PRESETS)
 }
 
+/// `[{id, title, state}]` of every arm preset (`arm=ID` in a state string).
+#[wasm_bindgen]
+pub fn arms() -> Result<JsValue, JsError> {
+    to_js(&crate::session::ARMS)
+}
+
 /// ρ of the settings in a state string (over the CLI's defaults), without a session.
 #[wasm_bindgen(js_name = spectralRadius)]
 pub fn spectral_radius(state: &str) -> Result<f64, JsError> {

@@ -57,6 +57,25 @@ fn larger_delta_is_stable_without_feedback() {
     assert_eq!(verdict(&run(0.04, "off", 6.0)), "stable");
 }
 
+/// Another arm (issue 18): a motor damped enough (B_v1 > 3 α I_r1, Re A4 < 0) is stable at
+/// δ = 0.01 s with no preliminary feedback, where the paper's arm (Fig. 5.3) is not; the session
+/// restarts from rest when the arm changes.
+#[wasm_bindgen_test]
+fn a_damped_motor_is_stable_without_feedback() {
+    let mut session = WebSession::new(&format!("arm=damped&{}", state(0.01, 2.0, "off")));
+    assert!(session.state_string().contains("bv1=15"), "{}", session.state_string());
+    while session.time() < 6.0 - 1e-9 && !session.is_finished() {
+        session.advance(0.1).map_err(JsValue::from).unwrap();
+    }
+    assert_eq!(verdict(&session.metrics(0).map_err(JsValue::from).unwrap()), "stable");
+    let rho = number(&session.analysis(0).map_err(JsValue::from).unwrap(), "spectral_radius");
+    assert!(rho < 1.0, "ρ = {rho}");
+    session.set("bv1", "1.4").map_err(JsValue::from).unwrap();
+    assert!(session.time() < 1e-9, "another arm starts from rest");
+    let rho = number(&session.analysis(0).map_err(JsValue::from).unwrap(), "spectral_radius");
+    assert!(rho > 1.0, "the paper's arm at δ = 0.01 s without K_pr: ρ = {rho}");
+}
+
 /// Figs. 5.1–5.2: with preliminary feedback the errors at δ = 0.01 s are smaller than at 0.04 s.
 #[wasm_bindgen_test]
 fn errors_shrink_with_delta() {

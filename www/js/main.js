@@ -107,6 +107,12 @@ async function main() {
 
   const presetSelect = /** @type {HTMLSelectElement} */ (byId('preset'));
   for (const p of wasm.presets()) presetSelect.append(make('option', { value: p.id, text: p.title }));
+  // The arm: the paper's with one part changed (arm=ID), restarting from rest.
+  const armSelect = /** @type {HTMLSelectElement} */ (byId('arm-preset'));
+  for (const a of wasm.arms()) armSelect.append(make('option', { value: a.id, text: a.title }));
+  armSelect.addEventListener('change', () => {
+    if (armSelect.value) change(() => session.readState(`arm=${armSelect.value}`));
+  });
   presetSelect.addEventListener('change', () => {
     if (presetSelect.value) change(() => session.applyPreset(presetSelect.value));
     store.dispatch({ type: 'play' });

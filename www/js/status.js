@@ -49,6 +49,7 @@ export function createStatus() {
   let bandsKey = '';
   const note = byId('run-note');
   const preset = /** @type {HTMLSelectElement} */ (byId('preset'));
+  const arm = /** @type {HTMLSelectElement} */ (byId('arm-preset'));
   const bControls = byId('b-controls');
   const progress = byId('map-progress');
   const mapTime = byId('map-time');
@@ -88,6 +89,7 @@ export function createStatus() {
     setText(note, s.note);
     note.hidden = s.note === '';
     if (preset.value !== s.preset) preset.value = s.preset;
+    if (arm.value !== s.arm) arm.value = s.arm;
     const pct = String(s.maps.percent);
     if (progress.getAttribute('aria-valuenow') !== pct) {
       progress.setAttribute('aria-valuenow', pct);

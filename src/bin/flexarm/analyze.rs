@@ -40,6 +40,10 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         v["inner"] = json!(config.inner_loop.name());
         v["preliminary_feedback"] = json!(config.preliminary_feedback.name());
         v["inner_loop"] = json!(config.inner_loop.name());
+        // The whole arm under its schema keys (the text output names only what differs).
+        let arm: serde_json::Map<String, serde_json::Value> =
+            schema::ARM_PARAMS.iter().zip(config.plant.values()).map(|(p, x)| (p.key.to_string(), json!(x))).collect();
+        v["arm"] = serde_json::Value::Object(arm);
         v["stable_windows"] =
             json!({ "range": windows.range, "windows": windows.windows, "tolerance": windows.tolerance });
         return Ok(v.to_string() + "\n");

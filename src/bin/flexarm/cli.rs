@@ -82,9 +82,24 @@ pub fn param_arg(p: &'static Param) -> Arg {
     }
 }
 
-/// The flags of these run parameters, and `--state`.
+/// True for the arm's parameters: every command that runs or analyses the loop takes them.
+fn is_arm(p: &Param) -> bool {
+    schema::ARM_PARAMS.iter().any(|q| q.key == p.key)
+}
+
+/// The flags of these run parameters, `--arm` and the arm's own, and `--state`.
 pub fn run_args(keys: &[&str]) -> Vec<Arg> {
     let mut args: Vec<Arg> = keys.iter().filter_map(|k| schema::param(k)).map(param_arg).collect();
+    let arms: Vec<&str> = flexarm::session::ARMS.iter().map(|a| a.id).collect();
+    args.push(option(
+        "arm",
+        "ID",
+        format!(
+            "Start from one of these arms: {} (the paper's arm with one part changed; the arm's own flags change it further)",
+            arms.join(" | ")
+        ),
+    ));
+    args.extend(schema::ARM_PARAMS.iter().copied().map(param_arg));
     args.push(
         Arg::new("state")
             .long("state")
@@ -105,7 +120,10 @@ pub fn read_settings(m: &ArgMatches, keys: &[&str]) -> Res<Settings> {
     if let Some(state) = m.get_one::<String>("state") {
         settings.read(state, Source::CommandLine).map_err(|e| usage_error(format!("--state: {}", lib_error(e).0)))?;
     }
-    for p in schema::PARAMS.iter().filter(|p| keys.contains(&p.key)) {
+    if let Some(id) = m.get_one::<String>("arm") {
+        settings.set_arm(id).map_err(lib_error)?;
+    }
+    for p in schema::PARAMS.iter().filter(|p| keys.contains(&p.key) || is_arm(p)) {
         let text = match p.kind {
             Kind::Switch { .. } => m.get_flag(p.key).then(|| "1".to_string()),
             _ => m.get_one::<String>(p.key).cloned(),

@@ -22,7 +22,7 @@ pub fn describe_config(c: &SimulationConfig) -> String {
     let k = &c.controller;
     format!(
         "  δ = {} s, α1 = {} 1/s, α2 = {} 1/s, k = {}, m = {} (ε = {:.3e} s, τ = kε = {:.3e} s)\n  \
-         preliminary feedback {}, inner loop {}, friction compensation {}\n",
+         preliminary feedback {}, inner loop {}, friction compensation {}\n  arm: {}\n",
         k.sampling_period,
         k.alpha[0],
         k.alpha[1],
@@ -32,7 +32,8 @@ pub fn describe_config(c: &SimulationConfig) -> String {
         k.horizon(),
         c.preliminary_feedback.name(),
         c.inner_loop.name(),
-        c.friction_compensation.name()
+        c.friction_compensation.name(),
+        flexarm::schema::arm_text(&c.plant.values())
     )
 }
 

@@ -1,0 +1,191 @@
+//! The arm's parameters (the paper's table, eq. (4.1)) as settings like δ: key, symbol, unit, what
+//! each means physically, the paper's value as the default, the slider's span (at least a tenth
+//! to ten times the paper's value; damping and friction from 0) and the hard limits with why.
+//!
+//! Limits common to all: a mass, an inertia, a spring or a presliding length must be positive;
+//! damping and friction may vanish. The upper limits keep the arm within a thousand times the
+//! paper's (ten for the coupling A3, which the mass matrix bounds anyway): the simulation's step
+//! follows the arm's fastest motion (see `Plant::fastest_rate`), and a stiffer, lighter arm
+//! costs proportionally more steps per simulated second. Whether the three link inertias make a
+//! mass matrix that is positive definite for every q2 is a check across parameters
+//! (`PlantParameters::validate`), refused with a one-line reason.
+
+use super::{Kind, NumberSpec, Param, Scale, Scope};
+
+/// A number of the arm: positive (`min_inclusive` false at 0) or from 0, paper's value `default`.
+const fn spec(default: f64, control: [f64; 2], scale: Scale, max: f64, from_zero: bool, allowed: &'static str) -> NumberSpec {
+    NumberSpec {
+        min: 0.0,
+        min_inclusive: from_zero,
+        max,
+        allowed: Some(allowed),
+        control,
+        scale,
+        digits: 3,
+        integer: false,
+        default,
+    }
+}
+
+const fn arm(key: &'static str, label: &'static str, symbol: &'static str, unit: &'static str, name: &'static str, spec: NumberSpec, help: &'static str) -> Param {
+    Param { key, label, symbol, unit, name, kind: Kind::Number(spec), scope: Scope::Run, help }
+}
+
+const INERTIA: &str = "must be > 0 (an inertia) and at most a thousand times the paper's value";
+const STIFFNESS: &str = "must be > 0 (a spring) and at most a thousand times the paper's value";
+const DAMPING: &str = "must be ≥ 0 (damping takes energy out) and at most a thousand times the paper's value";
+const COULOMB: &str = "must be ≥ 0 (a friction level) and at most a thousand times the paper's value";
+const LENGTH: &str = "must be > 0 (the friction's presliding length) and at most 0.1 rad";
+
+/// A1, kg m².
+pub const A1: Param = arm(
+    "a1",
+    "Link inertia A1",
+    "A1",
+    "kg m²",
+    "a1 (A1)",
+    spec(4.984, [0.4, 50.0], Scale::Log, 4984.0, false, INERTIA),
+    "Inertia of both links about joint 1 (with link 2 folded back: A1 + 2 A3 cos q2 is the whole term).",
+);
+
+/// A2, kg m².
+pub const A2: Param = arm(
+    "a2",
+    "Link-2 inertia A2",
+    "A2",
+    "kg m²",
+    "a2 (A2)",
+    spec(0.247, [0.024, 2.5], Scale::Log, 247.0, false, INERTIA),
+    "Inertia of link 2 about its own joint.",
+);
+
+/// A3, kg m².
+pub const A3: Param = arm(
+    "a3",
+    "Coupling A3",
+    "A3",
+    "kg m²",
+    "a3 (A3)",
+    spec(
+        0.328,
+        [0.0, 3.28],
+        Scale::Linear,
+        3.28,
+        true,
+        "must be ≥ 0 and at most ten times the paper's value, and A3² < A1·A2 − A2² (the mass matrix positive definite)",
+    ),
+    "How strongly the links push on each other (A3 cos q2 in the mass matrix): 0 decouples them.",
+);
+
+/// Ir1, kg m².
+pub const IR1: Param = arm(
+    "ir1",
+    "Motor inertia I_r1",
+    "I_r1",
+    "kg m²",
+    "ir1 (I_r1)",
+    spec(1.939, [0.19, 20.0], Scale::Log, 1939.0, false, INERTIA),
+    "Inertia of the motor (its rotor and gear) on the motor side of the spring.",
+);
+
+/// Bv1, N m s/rad.
+pub const BV1: Param = arm(
+    "bv1",
+    "Motor damping B_v1",
+    "B_v1",
+    "N m s/rad",
+    "bv1 (B_v1)",
+    spec(1.40, [0.0, 20.0], Scale::Linear, 1400.0, true, DAMPING),
+    "Viscous damping of the motor: a torque against its speed. Re A4 = 3α/2 − B_v1/(2 I_r1): enough of it damps \
+     the swing with no preliminary feedback.",
+);
+
+/// Bv2, N m s/rad.
+pub const BV2: Param = arm(
+    "bv2",
+    "Joint-2 damping B_v2",
+    "B_v2",
+    "N m s/rad",
+    "bv2 (B_v2)",
+    spec(0.20, [0.0, 2.0], Scale::Linear, 200.0, true, DAMPING),
+    "Viscous damping of joint 2.",
+);
+
+/// Fc1, N m.
+pub const FC1: Param = arm(
+    "fc1",
+    "Motor friction F_c1",
+    "F_c1",
+    "N m",
+    "fc1 (F_c1)",
+    spec(4.82, [0.0, 50.0], Scale::Linear, 4820.0, true, COULOMB),
+    "Coulomb level of the motor's Dahl friction: the torque it takes to keep the motor sliding.",
+);
+
+/// Fc2, N m.
+pub const FC2: Param = arm(
+    "fc2",
+    "Joint-2 friction F_c2",
+    "F_c2",
+    "N m",
+    "fc2 (F_c2)",
+    spec(1.15, [0.0, 12.0], Scale::Linear, 1150.0, true, COULOMB),
+    "Coulomb level of joint 2's Dahl friction.",
+);
+
+/// ε1, rad.
+pub const EPS1: Param = arm(
+    "eps1",
+    "Motor presliding ε1",
+    "ε1",
+    "rad",
+    "eps1 (ε1)",
+    spec(1e-4, [1e-5, 1e-3], Scale::Log, 0.1, false, LENGTH),
+    "How far the motor turns before its friction reaches the Coulomb level (Dahl's presliding).",
+);
+
+/// ε2, rad.
+pub const EPS2: Param = arm(
+    "eps2",
+    "Joint-2 presliding ε2",
+    "ε2",
+    "rad",
+    "eps2 (ε2)",
+    spec(1e-4, [1e-5, 1e-3], Scale::Log, 0.1, false, LENGTH),
+    "How far joint 2 turns before its friction reaches the Coulomb level.",
+);
+
+/// K1, N m/rad.
+pub const K1: Param = arm(
+    "k1",
+    "Joint stiffness K1",
+    "K1",
+    "N m/rad",
+    "k1 (K1)",
+    spec(1152.6, [115.0, 12000.0], Scale::Log, 1.1526e6, false, STIFFNESS),
+    "Stiffness of the spring between the motor and link 1 (the flexible joint).",
+);
+
+/// The arm's parameters in the paper's order.
+pub const ARM_PARAMS: [&Param; 11] = [&A1, &A2, &A3, &IR1, &BV1, &BV2, &FC1, &FC2, &EPS1, &EPS2, &K1];
+
+/// The arm in words, only what differs from the paper's: "the paper's arm", or
+/// "B_v1 = 15 N m s/rad (paper: 1.4)" with every changed part, joined by ", ".
+pub fn arm_text(values: &[f64; 11]) -> String {
+    let changed: Vec<String> = ARM_PARAMS
+        .iter()
+        .zip(values)
+        .filter_map(|(p, &v)| {
+            let n = p.number()?;
+            (v != n.default).then(|| {
+                let f = super::format_number;
+                format!("{} = {} {} (paper: {})", p.symbol, f(v), p.unit, f(n.default))
+            })
+        })
+        .collect();
+    if changed.is_empty() {
+        "the paper's arm".to_string()
+    } else {
+        changed.join(", ")
+    }
+}
