@@ -1,5 +1,5 @@
 //! The guided lesson: its steps, texts, questions and goals are data, written for teachers in
-//! `lesson.md` (a small Markdown format that file explains), read here into [`Lesson`]. What a
+//! `www/lessons/paper.md` (a small Markdown format that file explains), read here into [`Lesson`]. What a
 //! step does to the simulator is a state string, the same text as the page's URL; the session
 //! ([`crate::session`]) walks the steps.
 //!
@@ -10,8 +10,14 @@ use serde::Serialize;
 
 use crate::error::Error;
 
-/// The lesson as the page ships it.
-pub const LESSON_TEXT: &str = include_str!("lesson.md");
+/// The lesson as the page ships it: `www/lessons/paper.md`, which the page fetches beside the
+/// module and hands to the session (the text is not compiled into the wasm: 5 kB gzip less), and
+/// which the native build reads at compile time.
+#[cfg(not(target_arch = "wasm32"))]
+pub const LESSON_TEXT: &str = include_str!("../../www/lessons/paper.md");
+
+/// Where the page finds the built-in lesson, relative to the page.
+pub const LESSON_PATH: &str = "lessons/paper.md";
 
 /// A lesson: a title and its steps.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -75,6 +81,7 @@ pub struct Goal {
 pub const GOAL_VERDICTS: [&str; 5] = ["stable", "unstable", "borderline", "diverged", "bounded oscillation"];
 
 /// The built-in lesson ([`LESSON_TEXT`]).
+#[cfg(not(target_arch = "wasm32"))]
 pub fn builtin() -> Result<Lesson, Error> {
     parse(LESSON_TEXT)
 }

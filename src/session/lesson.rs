@@ -89,7 +89,14 @@ impl Session {
     /// Opens the lesson at `step` (0-based; the last step if beyond): the step's settings, run from rest.
     pub fn lesson_open(&mut self, step: usize) -> Result<(), Error> {
         if self.lesson.is_none() {
-            self.lesson = Some(LessonProgress::new(lesson::builtin()?));
+            let parsed = match &self.lesson_text {
+                Some(text) => lesson::parse(text)?,
+                #[cfg(not(target_arch = "wasm32"))]
+                None => lesson::builtin()?,
+                #[cfg(target_arch = "wasm32")]
+                None => return Err(Error::NotReady("the lesson's text did not load (lessons/paper.md, beside the page)")),
+            };
+            self.lesson = Some(LessonProgress::new(parsed));
         }
         let progress = self.lesson.as_mut().expect("just made");
         progress.active = true;

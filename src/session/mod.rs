@@ -31,7 +31,7 @@ pub use controls::{display, ControlValue};
 pub use export::EMBED_SIZE;
 pub use lesson::{LessonProgress, LessonStatus, QuestionStatus};
 pub use maps::{MapSide, Maps};
-pub use presets::{arm, preset, Preset, ARMS, PRESETS};
+pub use presets::{arm, preset, ArmPreset, Preset, ARMS, PRESETS};
 pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS, HISTORY_SECONDS};
 pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source, ViewSettings};
 pub use status::{run_status, RunStatus};
@@ -114,6 +114,8 @@ pub struct Session {
     viewing: Option<f64>,
     /// The guided lesson, once opened.
     lesson: Option<LessonProgress>,
+    /// The lesson's text (the page fetches it; the native build has it built in).
+    lesson_text: Option<String>,
 }
 
 impl Session {
@@ -132,6 +134,7 @@ impl Session {
             trace_seconds: DEFAULT_TRACE_SECONDS,
             viewing: None,
             lesson: None,
+            lesson_text: None,
         };
         session.maps.show(&session.linear_settings());
         session.maps.enabled = settings.view.shown().map;
@@ -141,15 +144,22 @@ impl Session {
     /// The page's session for a URL query: the page's start settings with the query read over
     /// them. Bad values become notices; settings that cannot run together fall back to the start.
     pub fn open(query: &str) -> (Self, Vec<Notice>) {
+        Self::open_with_lesson(query, None)
+    }
+
+    /// [`Session::open`] with the lesson's text (the page fetches it; `None`: the built-in
+    /// lesson where the build has one).
+    pub fn open_with_lesson(query: &str, lesson_text: Option<String>) -> (Self, Vec<Notice>) {
         let mut settings = Settings::page_start();
         let mut notices = settings.read(query, Source::Page).unwrap_or_default();
         let mut session = match Self::new(settings) {
             Ok(s) => s,
             Err(e) => {
                 notices.push(Notice { key: "state".into(), text: format!("{e}; using the defaults") });
-                Self::new(Settings::page_start()).expect("the page's start settings are valid")
+                Self::new(Settings::page_start()).unwrap_or_else(|e| panic!("the page's start settings are valid: {e}"))
             }
         };
+        session.lesson_text = lesson_text;
         // `lesson=3` opens the lesson at that step, with the URL's settings over the step's.
         match session.open_lesson_from(query) {
             Ok(notice) => notices.extend(notice),

@@ -44,20 +44,40 @@ pub const PRESETS: [Preset; 5] = [
     },
 ];
 
-/// Arms a teacher reaches for, each the paper's arm with one part changed (`arm=ID` in a state
-/// string, `--arm ID` on the command line; the arm's own keys then change it further).
-pub const ARMS: [Preset; 6] = [
-    Preset { id: "paper", title: "The paper's arm", state: "" },
-    Preset { id: "stiffer", title: "Stiffer spring (K1 × 4)", state: "k1=4610.4" },
-    Preset { id: "softer", title: "Softer spring (K1 ÷ 4)", state: "k1=288.15" },
-    Preset { id: "lighter", title: "Lighter motor (I_r1 ÷ 4)", state: "ir1=0.48475" },
-    Preset { id: "heavier", title: "Heavier motor (I_r1 × 4)", state: "ir1=7.756" },
-    // B_v1 > 3 α I_r1 = 11.6 N m s/rad at α = 2 makes Re A4 < 0 (story::damping_needed).
-    Preset { id: "damped", title: "Damped motor (B_v1 = 15 N m s/rad)", state: "bv1=15" },
+/// An arm a teacher reaches for: the paper's arm with one part changed.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct ArmPreset {
+    /// `arm=ID` in a state string, `--arm ID` on the command line.
+    pub id: &'static str,
+    pub title: &'static str,
+    /// The arm parameters it changes from the paper's (schema keys).
+    pub set: &'static [(&'static str, f64)],
+}
+
+impl ArmPreset {
+    /// The arm: the paper's with this preset's changes.
+    pub fn plant(&self) -> crate::model::PlantParameters {
+        let mut p = crate::model::PlantParameters::default();
+        for (key, v) in self.set {
+            p.set(key, *v);
+        }
+        p
+    }
+}
+
+/// The arm presets (the arm's own keys change an arm further).
+pub const ARMS: [ArmPreset; 6] = [
+    ArmPreset { id: "paper", title: "The paper's arm", set: &[] },
+    ArmPreset { id: "stiffer", title: "Stiffer spring (K1 × 4)", set: &[("k1", 4610.4)] },
+    ArmPreset { id: "softer", title: "Softer spring (K1 ÷ 4)", set: &[("k1", 288.15)] },
+    ArmPreset { id: "lighter", title: "Lighter motor (I_r1 ÷ 4)", set: &[("ir1", 0.48475)] },
+    ArmPreset { id: "heavier", title: "Heavier motor (I_r1 × 4)", set: &[("ir1", 7.756)] },
+    // B_v1 > 3 α I_r1 = 11.6 N m s/rad at α = 2 makes Re A4 < 0 (the story's damping_needed).
+    ArmPreset { id: "damped", title: "Damped motor (B_v1 = 15 N m s/rad)", set: &[("bv1", 15.0)] },
 ];
 
 /// The arm preset with identifier `id`.
-pub fn arm(id: &str) -> Option<&'static Preset> {
+pub fn arm(id: &str) -> Option<&'static ArmPreset> {
     ARMS.iter().find(|p| p.id == id)
 }
 

@@ -6,7 +6,7 @@
 //! setting so a shared link means the same thing everywhere; [`Settings::command_line`] writes the
 //! `flexarm simulate …` that reproduces run A.
 
-use super::presets::{arm, preset, Preset, ARMS, PRESETS};
+use super::presets::{arm, preset, ArmPreset, Preset, ARMS, PRESETS};
 use super::query::join_query;
 pub use super::query::split_query;
 pub use super::view::ViewSettings;
@@ -255,7 +255,9 @@ impl Settings {
     pub fn page_start() -> Self {
         let mut s = Self::default();
         s.a.repeat = true;
-        s.apply_preset(preset(PAGE_START_PRESET).expect("the start preset exists")).expect("presets are valid");
+        if let Err(e) = s.apply_preset(preset(PAGE_START_PRESET).expect("the start preset exists")) {
+            panic!("presets are valid: {e}");
+        }
         s
     }
 
@@ -386,17 +388,14 @@ impl Settings {
     }
 
     /// Makes the arm the paper's with the one change of arm preset `p`.
-    pub fn apply_arm(&mut self, p: &Preset) -> Result<(), Error> {
-        self.a.plant = PlantParameters::default();
-        self.read(p.state, Source::CommandLine).map(|_| ())
+    pub fn apply_arm(&mut self, p: &ArmPreset) -> Result<(), Error> {
+        self.a.plant = p.plant();
+        Ok(())
     }
 
     /// The arm preset these settings' arm is, if any.
-    pub fn arm_preset(&self) -> Option<&'static Preset> {
-        ARMS.iter().find(|p| {
-            let mut s = *self;
-            s.apply_arm(p).is_ok() && s.a.plant == self.a.plant
-        })
+    pub fn arm_preset(&self) -> Option<&'static ArmPreset> {
+        ARMS.iter().find(|p| p.plant() == self.a.plant)
     }
 
     /// True if these settings already have every value `p` sets.

@@ -322,7 +322,9 @@ fn observation(
         let expected = match p {
             Prediction::Unstable => "growth",
             Prediction::Stable => "decay",
-            Prediction::Borderline => "neither growth nor decay",
+            // A rate within the borderline band is a slow growth or decay, not none.
+            Prediction::Borderline if predicted < 0.0 => "a decay too slow to tell in a run",
+            Prediction::Borderline => "a growth too slow to tell in a run",
         };
         let e = error;
         let why = if predicted.abs() * GROWTH_FIT_SPAN < 1.0 {
@@ -427,9 +429,17 @@ pub fn judge(
             if applies {
                 // The same judgement as the headline's, in the same words.
                 let (digits, verdict) = match Prediction::of_rate(r.growth_rate) {
-                    Prediction::Stable => (4, "< 1 ⇒ stable"),
-                    Prediction::Unstable => (4, "> 1 ⇒ unstable"),
-                    Prediction::Borderline => (5, "≈ 1 ⇒ borderline"),
+                    Prediction::Stable => (4, "< 1 ⇒ stable".to_string()),
+                    Prediction::Unstable => (4, "> 1 ⇒ unstable".to_string()),
+                    // Borderline is decided by the rate, not by how near ρ is to 1: say so.
+                    Prediction::Borderline => (
+                        5,
+                        format!(
+                            "≈ 1 ⇒ borderline: |ln ρ/δ| < {} 1/s, the errors would change by e only every {} s or more",
+                            UNSTABLE_GROWTH_RATE,
+                            sig_trim(1.0 / UNSTABLE_GROWTH_RATE, 2)
+                        ),
+                    ),
                 };
                 format!("linear analysis ({scope}): ρ = {:.digits$} {verdict}{growth}", r.spectral_radius)
             } else {

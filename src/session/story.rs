@@ -97,11 +97,6 @@ pub fn story(run: &Run) -> Option<Story> {
     let r = &report.resonance;
     let q2 = report.rest[1];
     let [a1, a2] = settings.alpha;
-    let alpha_text = if a1 == a2 {
-        format!("α = {} 1/s", sig_trim(a1, 3))
-    } else {
-        format!("α1 = {}, α2 = {} 1/s", sig_trim(a1, 3), sig_trim(a2, 3))
-    };
     let alpha = if a1 == a2 {
         format!("α = {} 1/s", sig_trim(a1, 3))
     } else {
@@ -172,7 +167,7 @@ pub fn story(run: &Run) -> Option<Story> {
         None => "—".into(),
     };
     Some(Story {
-        alpha,
+        alpha: alpha.clone(),
         rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { sig_trim(q2, 3) }),
         arm_pair: pair_text(r.arm_pair[0], r.arm_pair[1]),
         omega_joint: format!("{:.1} rad/s", r.omega_joint),
@@ -237,7 +232,7 @@ pub fn story(run: &Run) -> Option<Story> {
         kpr_works: if kpr.re < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()
         } else {
-            format!("not here: at {} that pair is in the right half-plane, and the smallest δ fail", alpha_text)
+            format!("not here: at {alpha} that pair is in the right half-plane, and the smallest δ fail")
         },
     })
 }

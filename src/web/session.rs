@@ -122,10 +122,11 @@ impl WebSession {
 #[wasm_bindgen(js_class = Session)]
 impl WebSession {
     /// The page's session for a URL query (`?delta=0.01&pf=off`, or ""): the page's start with the
-    /// query over it. Values it could not take are in `notices()`.
+    /// query over it, and the lesson's text the page fetched (`lessons/paper.md`; without it the
+    /// lesson cannot open). Values it could not take are in `notices()`.
     #[wasm_bindgen(constructor)]
-    pub fn new(query: &str) -> WebSession {
-        let (inner, notices) = Session::open(query);
+    pub fn new(query: &str, lesson_text: Option<String>) -> WebSession {
+        let (inner, notices) = Session::open_with_lesson(query, lesson_text);
         WebSession { inner, notices }
     }
 

@@ -2,7 +2,7 @@
 // session through `onSet` / `onPosition`. The page decides where a control goes (a placeholder
 // `[data-param=key]`); the schema decides what it is.
 
-import { make, setText } from './dom.js';
+import { make, setSymbols, setText } from './dom.js';
 
 /** Slider resolution: positions 0…STEPS map onto the control's span. */
 export const STEPS = 1000;
@@ -25,6 +25,13 @@ function labelText(p) {
   return p.label;
 }
 
+/** A parameter's label, its symbol's subscript set as such (B_v1 → B<sub>v1</sub>). @param {Param} p @param {string} id */
+function labelOf(p, id) {
+  const label = make('label', { for: id, title: p.help });
+  setSymbols(label, labelText(p));
+  return label;
+}
+
 /**
  * Builds the field for one parameter inside `slot`.
  * @param {Param} p @param {HTMLElement} slot
@@ -38,10 +45,10 @@ function buildField(p, slot, on) {
     slot.classList.add('check');
     const input = /** @type {HTMLInputElement} */ (make('input', { type: 'checkbox', id }));
     input.addEventListener('change', () => on.onSet(p.key, input.checked ? '1' : '0'));
-    slot.append(input, make('label', { for: id, text: labelText(p), title: p.help }));
+    slot.append(input, labelOf(p, id));
     return { input, output: null, exact: null };
   }
-  const label = make('label', { for: id, text: labelText(p), title: p.help });
+  const label = labelOf(p, id);
   if (p.kind === 'choice') {
     const select = /** @type {HTMLSelectElement} */ (make('select', { id }));
     for (const [value, text] of p.options) select.append(make('option', { value, text }));

@@ -40,3 +40,26 @@ export function messageOf(e) {
     return String(e);
   }
 }
+
+/** The parts of a text with the paper's subscripts ("B_v1" → "B", sub "v1"): [text, isSubscript][] (pure).
+ * @param {string} text @returns {[string, boolean][]} */
+export function symbolParts(text) {
+  /** @type {[string, boolean][]} */
+  const parts = [];
+  let last = 0;
+  for (const m of text.matchAll(/(?<=[A-Za-zα-ωΑ-Ω])_([a-z0-9]+)/g)) {
+    const at = m.index ?? 0;
+    parts.push([text.slice(last, at), false], [m[1], true]);
+    last = at + m[0].length;
+  }
+  parts.push([text.slice(last), false]);
+  return parts.filter(([t]) => t !== '');
+}
+
+/** Sets an element's text with the paper's subscripts as <sub> (B_v1 → B<sub>v1</sub>), only
+ * when it changed. @param {Element} node @param {string} text */
+export function setSymbols(node, text) {
+  const parts = symbolParts(text);
+  if (node.textContent === parts.map(([t]) => t).join('') && node.childElementCount === parts.filter(([, s]) => s).length) return;
+  node.replaceChildren(...parts.map(([t, sub]) => (sub ? make('sub', { text: t }) : document.createTextNode(t))));
+}

@@ -1,6 +1,6 @@
 // The guided lesson's panel: the step the session says is open — its text, terms, task, question
 // and (once answered) the answer — and the buttons that walk it. Which step, what it sets up and
-// what counts as done are the session's (Rust, src/lesson/lesson.md); this only shows and routes.
+// what counts as done are the session's (Rust; the text is www/lessons/paper.md); this only shows and routes.
 
 import { byId, make, setText } from './dom.js';
 

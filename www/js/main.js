@@ -34,6 +34,10 @@ async function main() {
   performance.mark('flexarm:main-start');
   const transport = ['play', 'step', 'reset', 'poke', 'export-csv', 'copy-command'].map(byId);
   transport.forEach((b) => (/** @type {HTMLButtonElement} */ (b).disabled = true));
+  // The lesson is a file beside the page (the session parses it), fetched while the module loads.
+  const lessonText = fetch('lessons/paper.md')
+    .then((r) => (r.ok ? r.text() : undefined))
+    .catch(() => undefined);
   let wasm;
   try {
     wasm = await loadWasm();
@@ -47,7 +51,7 @@ async function main() {
   performance.mark('flexarm:renderer-start');
   const rendererReady = wasm.Renderer.create(/** @type {HTMLCanvasElement} */ (byId('canvas')));
   rendererReady.catch(() => {}); // handled where it is awaited
-  const session = new wasm.Session(window.location.search);
+  const session = new wasm.Session(window.location.search, await lessonText);
   performance.mark('flexarm:session-ready');
   showNotices(session.notices());
   const status = createStatus();

@@ -1,7 +1,7 @@
 // Everything the page says about the session besides the verdicts: the readouts, the note under
 // the verdict, the maps' progress, which run is which, the preset in force.
 
-import { byId, make, setText } from './dom.js';
+import { byId, make, setText, setSymbols } from './dom.js';
 import { createRunView } from './run.js';
 
 /**
@@ -100,7 +100,7 @@ export function createStatus() {
     setText(mapTime, s.maps.text);
     setText(mapTitle, s.maps.title);
     mapRow.hidden = !s.maps.shown;
-    for (const node of live) setText(node, liveText(s.story, node.dataset.live ?? ''));
+    for (const node of live) setSymbols(node, liveText(s.story, node.dataset.live ?? ''));
   }
 
   /** The stable windows of δ: in words under the slider, and as bands on its track (none while

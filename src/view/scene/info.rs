@@ -287,12 +287,17 @@ impl Scene {
                 info.x_ticks = x_ticks;
                 info.y_ticks = y_ticks;
                 info.x_scale = "log";
-                let alpha = self.runs[0].config.map_or(f64::NAN, |c| c.controller.alpha[0]);
-                let alpha = format::sig_trim(alpha, 3);
-                info.note = if rate {
-                    format!("rate at α = {alpha} 1/s; shaded: < 0")
+                // Both α when they differ: the curve is the loop's with α1 and α2 as set.
+                let [a1, a2] = self.runs[0].config.map_or([f64::NAN; 2], |c| c.controller.alpha);
+                let alpha = if a1 == a2 {
+                    format!("α = {}", format::sig_trim(a1, 3))
                 } else {
-                    format!("ρ(δ) at α = {alpha} 1/s; shaded: ρ < 1")
+                    format!("α1 = {}, α2 = {}", format::sig_trim(a1, 3), format::sig_trim(a2, 3))
+                };
+                info.note = if rate {
+                    format!("rate at {alpha} 1/s; shaded: < 0")
+                } else {
+                    format!("ρ(δ) at {alpha} 1/s; shaded: ρ < 1")
                 };
             }
             PanelKind::MapOff | PanelKind::MapOn => {
