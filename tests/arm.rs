@@ -172,3 +172,16 @@ fn an_impossible_arm_is_refused_with_a_reason() {
     let notices = Settings::page_start().read("k1=1e9&arm=rubber", Source::Page).unwrap();
     assert_eq!(notices.len(), 2, "{notices:?}");
 }
+
+/// The README's numbers about the arm come from the physics: the damping that kills the swing
+/// at α = 2 on the paper's arm, and the damped preset's two terms of Re A4.
+#[test]
+fn the_readme_quotes_the_arms_numbers() {
+    let readme = include_str!("../README.md").replace('\n', " ").replace("  ", " ");
+    let p = PlantParameters::default();
+    let needed = format!("B_v1 > 3α I_r1 ({:.1} N m s/rad on the paper's arm at α = 2)", 3.0 * 2.0 * p.ir1);
+    assert!(readme.contains(&needed), "README should say {needed:?}");
+    let damped = flexarm::session::arm("damped").unwrap().plant();
+    let terms = format!("Re A4 = {} − {:.2} < 0", 1.5 * 2.0, damped.bv1 / (2.0 * damped.ir1));
+    assert!(readme.contains(&terms), "README should say {terms:?}");
+}

@@ -309,3 +309,20 @@ fn the_resonance_at_the_nyquist_frequency_and_kpr_beyond_its_limit_are_named_rig
     let s = common::session("alpha=2&pf=paper");
     assert!(s.status().story.unwrap().kpr_works.starts_with("every small δ works"));
 }
+
+/// The paper's K_pr as the page and the lesson quote it: the T1 row's four gains, as the code has
+/// them (trial 4 found "≈ 16 (q̇1 − θ̇)" beside "−17 N m s/rad" without the exact row).
+#[test]
+fn the_quoted_kpr_row_is_the_papers() {
+    let k = flexarm::control::feedback::paper_gain();
+    let row = format!(
+        "{} q1 − {} θ + {} q̇1 − {} θ̇",
+        k[(0, 0)],
+        format!("{:.1}", -k[(0, 2)]),
+        k[(0, 3)],
+        format!("{:.1}", -k[(0, 5)])
+    );
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/www/index.html")).unwrap().replace("\n              ", " ");
+    assert!(page.contains(&row), "the page should quote {row:?}");
+    assert!(LESSON_TEXT.contains(&row), "the lesson should quote {row:?}");
+}

@@ -31,7 +31,7 @@ fn pair(obj: &JsValue, key: &str) -> [f64; 2] {
 
 /// Runs `seconds` of simulated time in browser-sized frames and returns run A's metrics.
 fn run(delta: f64, pf: &str, seconds: f64) -> JsValue {
-    let mut session = WebSession::new(&state(delta, 2.0, pf, None));
+    let mut session = WebSession::new(&state(delta, 2.0, pf), None);
     while session.time() < seconds - 1e-9 && !session.is_finished() {
         session.advance(0.1).map_err(JsValue::from).unwrap();
     }
@@ -62,7 +62,7 @@ fn larger_delta_is_stable_without_feedback() {
 /// restarts from rest when the arm changes.
 #[wasm_bindgen_test]
 fn a_damped_motor_is_stable_without_feedback() {
-    let mut session = WebSession::new(&format!("arm=damped&{}", state(0.01, 2.0, "off", None)));
+    let mut session = WebSession::new(&format!("arm=damped&{}", state(0.01, 2.0, "off")), None);
     assert!(session.state_string().contains("bv1=15"), "{}", session.state_string());
     while session.time() < 6.0 - 1e-9 && !session.is_finished() {
         session.advance(0.1).map_err(JsValue::from).unwrap();
@@ -94,7 +94,7 @@ fn spectral_radius_matches_the_native_core() {
             "δ = {delta}, α = {alpha}, {pf}: wasm {wasm} vs native {native}"
         );
         // The session's analysis reports the same ρ.
-        let session = WebSession::new(&state(delta, alpha, pf, None));
+        let session = WebSession::new(&state(delta, alpha, pf), None);
         let report = session.analysis(0).map_err(JsValue::from).unwrap();
         assert!((number(&report, "spectral_radius") - native).abs() <= 1e-9 * native);
     }
@@ -110,7 +110,7 @@ fn error_message(e: wasm_bindgen::JsError) -> String {
 /// nothing.
 #[wasm_bindgen_test]
 fn bad_settings_throw_a_readable_error() {
-    let mut session = WebSession::new(&state(0.01, 2.0, "paper", None));
+    let mut session = WebSession::new(&state(0.01, 2.0, "paper"), None);
     let msg = error_message(session.set("delta", "-0.01").err().expect("δ < 0 is rejected"));
     assert!(msg.contains("sampling_period") && msg.contains("from 1e-5 s to 10 s"), "{msg}");
     let msg = error_message(session.set("pf", "maybe").err().expect("unknown PF is rejected"));
@@ -154,7 +154,7 @@ fn traces_are_typed_arrays() {
 #[wasm_bindgen_test]
 fn stability_map_in_chunks() {
     // The full view shows (and computes) the maps; the intro does not.
-    let mut session = WebSession::new(&format!("{}&mode=full", state(0.01, 2.0, "off", None)));
+    let mut session = WebSession::new(&format!("{}&mode=full", state(0.01, 2.0, "off")), None);
     let deltas = session.map_deltas().to_vec();
     let alphas = session.map_alphas().to_vec();
     let mut steps = 0;
