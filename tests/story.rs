@@ -76,7 +76,7 @@ fn what_is_said_of_the_preliminary_feedback_is_the_programs() {
     let plant = PlantParameters::default();
     let k = paper_gain();
     let page = page_text();
-    let twist = format!("≈ {:.0} (q1 − θ) + {:.0} (q̇1 − θ̇)", k[(0, 0)], k[(0, 3)]);
+    let twist = format!("nearly {:.0} (q1 − θ) + {:.0} (q̇1 − θ̇)", k[(0, 0)], k[(0, 3)]);
     let motor = minus(format!("{:.0} N m s/rad", k[(0, 5)]));
     let times = (k[(0, 5)].abs() / plant.bv1).round();
     assert_eq!(times, 12.0, "the page says twelve times");
