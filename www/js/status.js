@@ -6,7 +6,7 @@ import { createRunView } from './run.js';
 
 /**
  * @typedef {import('./run.js').RunStatus} RunStatus
- * @typedef {{ runs: RunStatus[], note: string, preset: string, showing: string, ghost: string,
+ * @typedef {{ runs: RunStatus[], note: string, preset: string, arm: string, showing: string, ghost: string,
  *   maps: { percent: number, done: boolean, text: string, points: number, shown: boolean, title: string },
  *   windows: { text: string, windows: number[][], bands: number[][] } | null,
  *   timeline: import('./timeline.js').TimelineStatus, lesson: import('./lesson.js').LessonStatus | null,
