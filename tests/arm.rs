@@ -10,7 +10,6 @@
 //!   fixed K_pr is not scaled and would change).
 //! - An impossible arm is refused with a reason, never a NaN or a panic.
 
-
 use flexarm::analysis::{analyze, spectral_radius, stable_windows, LinearSettings};
 use flexarm::session::{Settings, Source};
 use flexarm::*;
@@ -100,7 +99,11 @@ fn an_arm_scaled_as_a_whole_moves_the_same_for_proportional_torques() {
                 let run_c = simulate(&other, 3.0).unwrap();
                 for i in 0..2 {
                     let (a, b) = (run.metrics.max_error_slew[i], run_c.metrics.max_error_slew[i]);
-                    assert!((a - b).abs() <= 1e3 * tol * a.abs().max(1e-6), "{pf:?} δ = {delta}, c = {c}: e{} {a} against {b}", i + 1);
+                    assert!(
+                        (a - b).abs() <= 1e3 * tol * a.abs().max(1e-6),
+                        "{pf:?} δ = {delta}, c = {c}: e{} {a} against {b}",
+                        i + 1
+                    );
                     let (ta, tb) = (run.metrics.max_torque[i], run_c.metrics.max_torque[i]);
                     assert!((tb / (c * ta) - 1.0).abs() <= 1e3 * tol, "{pf:?}: torque {tb} is not {c} × {ta}");
                 }
@@ -109,7 +112,10 @@ fn an_arm_scaled_as_a_whole_moves_the_same_for_proportional_torques() {
     }
     // The windows of δ without K_pr are the arm's too, not its size's.
     let range = [0.002, 0.25];
-    let w = |c: f64| stable_windows(&LinearSettings::of(&config(scaled(c), 2.0, 0.01, PreliminaryFeedbackChoice::Off), None), range).unwrap();
+    let w = |c: f64| {
+        stable_windows(&LinearSettings::of(&config(scaled(c), 2.0, 0.01, PreliminaryFeedbackChoice::Off), None), range)
+            .unwrap()
+    };
     let (one, three) = (w(1.0), w(3.0));
     assert_eq!(one.windows.len(), three.windows.len());
     for (a, b) in one.windows.iter().zip(&three.windows) {
@@ -151,7 +157,8 @@ fn the_arm_is_in_the_state_string_only_where_it_differs_from_the_papers() {
         let mut t = Settings::default();
         t.set_arm(a.id).unwrap();
         assert_eq!(t.arm_preset().map(|p| p.id), Some(a.id));
-        let changed = schema::ARM_PARAMS.iter().filter(|p| t.a.plant.get(p.key) != Some(p.number().unwrap().default)).count();
+        let changed =
+            schema::ARM_PARAMS.iter().filter(|p| t.a.plant.get(p.key) != Some(p.number().unwrap().default)).count();
         assert_eq!(changed, usize::from(a.id != "paper"), "{}", a.id);
     }
 }

@@ -140,7 +140,11 @@ fn narrow_log_axes_keep_two_labels_and_their_right_decade() {
                     .filter(|l| l.panel == panel && l.class == LabelClass::Tick && l.y > p.y + p.height)
                     .map(|l| l.text.as_str())
                     .collect();
-                assert!(below.len() >= 2 && below.contains(&"0.1"), "{view} {w}×{h} {panel} ({} px): {below:?}", p.width);
+                assert!(
+                    below.len() >= 2 && below.contains(&"0.1"),
+                    "{view} {w}×{h} {panel} ({} px): {below:?}",
+                    p.width
+                );
             }
         }
     }

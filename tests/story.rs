@@ -322,7 +322,9 @@ fn the_quoted_kpr_row_is_the_papers() {
         k[(0, 3)],
         format!("{:.1}", -k[(0, 5)])
     );
-    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/www/index.html")).unwrap().replace("\n              ", " ");
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/www/index.html"))
+        .unwrap()
+        .replace("\n              ", " ");
     assert!(page.contains(&row), "the page should quote {row:?}");
     assert!(LESSON_TEXT.contains(&row), "the lesson should quote {row:?}");
 }

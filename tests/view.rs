@@ -1003,7 +1003,12 @@ fn preliminary_feedback_moves_the_flexible_pair_across_the_imaginary_axis() {
         }
         // One keyboard stop per ± pair (a readout names both halves); a real λ is a stop of its own.
         for p in &poles {
-            let twin = poles.iter().any(|q| q.kind == p.kind && (q.lambda[0] - p.lambda[0]).abs() < 1e-9 && (q.lambda[1] + p.lambda[1]).abs() < 1e-9 && q.lambda[1] != 0.0);
+            let twin = poles.iter().any(|q| {
+                q.kind == p.kind
+                    && (q.lambda[0] - p.lambda[0]).abs() < 1e-9
+                    && (q.lambda[1] + p.lambda[1]).abs() < 1e-9
+                    && q.lambda[1] != 0.0
+            });
             if p.lambda[1] == 0.0 {
                 assert!(p.keyboard_stop, "{p:?}");
             } else {

@@ -13,7 +13,14 @@
 use super::{Kind, NumberSpec, Param, Scale, Scope};
 
 /// A number of the arm: positive (`min_inclusive` false at 0) or from 0, paper's value `default`.
-const fn spec(default: f64, control: [f64; 2], scale: Scale, max: f64, from_zero: bool, allowed: &'static str) -> NumberSpec {
+const fn spec(
+    default: f64,
+    control: [f64; 2],
+    scale: Scale,
+    max: f64,
+    from_zero: bool,
+    allowed: &'static str,
+) -> NumberSpec {
     NumberSpec {
         min: 0.0,
         min_inclusive: from_zero,
@@ -27,7 +34,15 @@ const fn spec(default: f64, control: [f64; 2], scale: Scale, max: f64, from_zero
     }
 }
 
-const fn arm(key: &'static str, label: &'static str, symbol: &'static str, unit: &'static str, name: &'static str, spec: NumberSpec, help: &'static str) -> Param {
+const fn arm(
+    key: &'static str,
+    label: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+    name: &'static str,
+    spec: NumberSpec,
+    help: &'static str,
+) -> Param {
     Param { key, label, symbol, unit, name, kind: Kind::Number(spec), scope: Scope::Run, help }
 }
 

@@ -94,7 +94,9 @@ impl Session {
                 #[cfg(not(target_arch = "wasm32"))]
                 None => lesson::builtin()?,
                 #[cfg(target_arch = "wasm32")]
-                None => return Err(Error::NotReady("the lesson's text did not load (lessons/paper.md, beside the page)")),
+                None => {
+                    return Err(Error::NotReady("the lesson's text did not load (lessons/paper.md, beside the page)"))
+                }
             };
             self.lesson = Some(LessonProgress::new(parsed));
         }

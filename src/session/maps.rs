@@ -184,7 +184,8 @@ impl Maps {
                         Ok(job) => (job, None),
                         // An empty job that reports the problem (the map panel stays grey).
                         Err(e) => (
-                            MapJob::new(&key, Vec::new(), Vec::new()).unwrap_or_else(|e| panic!("an empty job is valid: {e}")),
+                            MapJob::new(&key, Vec::new(), Vec::new())
+                                .unwrap_or_else(|e| panic!("an empty job is valid: {e}")),
                             Some(e.to_string()),
                         ),
                     };

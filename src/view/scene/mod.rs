@@ -12,6 +12,7 @@
 mod draw;
 pub mod info;
 mod plots;
+mod probe;
 
 use plots::{plot_series, plot_tick_counts, plot_ticks, pole_tick_counts, pole_ticks, y_label};
 
@@ -34,7 +35,8 @@ use crate::plot::{palette, Color};
 use crate::session::{MapSide, Run, Session, ViewSettings};
 
 pub use super::options::{OptionsUpdate, ViewOptions, MAX_SPRING_MAGNIFICATION, MAX_TIME_WINDOW};
-pub use info::{PanelInfo, Probe, SeriesInfo, TickLabel, TipLine};
+pub use info::{PanelInfo, SeriesInfo, TickLabel};
+pub use probe::{Probe, TipLine};
 
 /// The state of one run that the scene draws.
 #[derive(Clone, Copy, Debug)]
