@@ -14,6 +14,7 @@ pub mod maps;
 pub mod presets;
 pub mod query;
 pub mod run;
+mod run_settings;
 pub mod settings;
 pub mod status;
 pub mod story;
