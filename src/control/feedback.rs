@@ -28,6 +28,9 @@ use crate::model::params::PlantParameters;
 
 pub use crate::control::predictive::FeedbackGain;
 
+/// The α the paper designed its K_pr for (on its own arm), 1/s.
+pub const PAPER_GAIN_ALPHA: f64 = 2.0;
+
 /// The paper's K_pr (section 4), acting on the absolute state.
 pub fn paper_gain() -> FeedbackGain {
     FeedbackGain::from_row_slice(&[

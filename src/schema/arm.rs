@@ -184,6 +184,11 @@ pub const K1: Param = arm(
 /// The arm's parameters in the paper's order.
 pub const ARM_PARAMS: [&Param; 11] = [&A1, &A2, &A3, &IR1, &BV1, &BV2, &FC1, &FC2, &EPS1, &EPS2, &K1];
 
+/// True if `key` is one of the arm's parameters.
+pub fn is_arm(key: &str) -> bool {
+    ARM_PARAMS.iter().any(|p| p.key == key)
+}
+
 /// The arm in words, only what differs from the paper's: "the paper's arm", or
 /// "B_v1 = 15 N m s/rad (paper: 1.4)" with every changed part, joined by ", ".
 pub fn arm_text(values: &[f64; 11]) -> String {

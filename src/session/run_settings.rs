@@ -52,7 +52,7 @@ impl RestPoint {
 /// arm's parameters), so that links, CSV and SVG headers written before they existed still read
 /// the same.
 pub(super) fn quiet_at_default(key: &str) -> bool {
-    key == "rest" || schema::ARM_PARAMS.iter().any(|p| p.key == key)
+    key == "rest" || schema::is_arm(key)
 }
 
 /// The settings of one run, keyed by the schema's run parameters.

@@ -198,11 +198,6 @@ impl Settings {
     /// Makes the arm the arm preset named `id` (an error lists the arms there are).
     pub fn set_arm(&mut self, id: &str) -> Result<(), Error> {
         let p = arm(id).ok_or_else(|| arm_error(id))?;
-        self.apply_arm(p)
-    }
-
-    /// Makes the arm the paper's with the one change of arm preset `p`.
-    pub fn apply_arm(&mut self, p: &ArmPreset) -> Result<(), Error> {
         self.a.plant = p.plant();
         Ok(())
     }

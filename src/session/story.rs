@@ -216,7 +216,7 @@ pub fn story(run: &Run) -> Option<Story> {
         ),
         kpr_note: {
             let arm = *plant != crate::model::PlantParameters::default();
-            let alpha = settings.alpha != [2.0, 2.0];
+            let alpha = settings.alpha != [crate::control::feedback::PAPER_GAIN_ALPHA; 2];
             let differs = match (arm, alpha) {
                 (true, true) => "the arm and α differ",
                 (true, false) => "the arm differs",

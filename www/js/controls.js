@@ -20,15 +20,10 @@ export const inputId = (key) => key.replace(/_/g, '-');
  * @typedef {{ key: string, value: string, position?: number | null, text: string }} ControlValue
  */
 
-/** The label's HTML-free text with "K_pr" as it is. @param {Param} p */
-function labelText(p) {
-  return p.label;
-}
-
 /** A parameter's label, its symbol's subscript set as such (B_v1 → B<sub>v1</sub>). @param {Param} p @param {string} id */
 function labelOf(p, id) {
   const label = make('label', { for: id, title: p.help });
-  setSymbols(label, labelText(p));
+  setSymbols(label, p.label);
   return label;
 }
 

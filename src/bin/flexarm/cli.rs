@@ -82,12 +82,8 @@ pub fn param_arg(p: &'static Param) -> Arg {
     }
 }
 
-/// True for the arm's parameters: every command that runs or analyses the loop takes them.
-fn is_arm(p: &Param) -> bool {
-    schema::ARM_PARAMS.iter().any(|q| q.key == p.key)
-}
-
-/// The flags of these run parameters, `--arm` and the arm's own, and `--state`.
+/// The flags of these run parameters, `--arm` and the arm's own (every command that runs or
+/// analyses the loop takes them), and `--state`.
 pub fn run_args(keys: &[&str]) -> Vec<Arg> {
     let mut args: Vec<Arg> = keys.iter().filter_map(|k| schema::param(k)).map(param_arg).collect();
     let arms: Vec<&str> = flexarm::session::ARMS.iter().map(|a| a.id).collect();
@@ -123,7 +119,7 @@ pub fn read_settings(m: &ArgMatches, keys: &[&str]) -> Res<Settings> {
     if let Some(id) = m.get_one::<String>("arm") {
         settings.set_arm(id).map_err(lib_error)?;
     }
-    for p in schema::PARAMS.iter().filter(|p| keys.contains(&p.key) || is_arm(p)) {
+    for p in schema::PARAMS.iter().filter(|p| keys.contains(&p.key) || schema::is_arm(p.key)) {
         let text = match p.kind {
             Kind::Switch { .. } => m.get_flag(p.key).then(|| "1".to_string()),
             _ => m.get_one::<String>(p.key).cloned(),
