@@ -192,3 +192,18 @@ fn the_readme_quotes_the_arms_numbers() {
     let terms = format!("Re A4 = {} − {:.2} < 0", 1.5 * 2.0, damped.bv1 / (2.0 * damped.ir1));
     assert!(readme.contains(&terms), "README should say {terms:?}");
 }
+
+/// Run B may have another arm (`b_arm`): the paper's Fig. 5.3 beside the same controller on the
+/// damped motor — one grows, the other does not; the link keeps B's arm.
+#[test]
+fn run_b_may_have_another_arm() {
+    let (s, notices) = flexarm::session::Session::open("preset=fig5.3&compare=1&b_pf=off&b_delta=0.01&b_arm=damped");
+    assert!(notices.is_empty(), "{notices:?}");
+    let rho = |i: usize| spectral_radius(s.run(i).unwrap().closed_loop().config(), None).unwrap();
+    assert!(rho(0) > 1.0 && rho(1) < 1.0, "A {} B {}", rho(0), rho(1));
+    assert_eq!(s.run(1).unwrap().closed_loop().config().plant.bv1, 15.0);
+    assert_eq!(s.run(0).unwrap().closed_loop().config().plant, PlantParameters::default());
+    assert!(s.settings().to_query().contains("b_arm=damped"));
+    let (plain, _) = flexarm::session::Session::open("preset=fig5.3&compare=1");
+    assert!(!plain.settings().to_query().contains("b_arm"), "B on A's arm writes no b_arm");
+}

@@ -313,7 +313,7 @@ pub const COMPARE: Param = Param {
     name: "compare",
     kind: Kind::Switch { default: false },
     scope: Scope::Page,
-    help: "Run B beside run A: B shares the slew, friction compensation and inner loop, with its own K_pr, δ and α.",
+    help: "Run B beside run A: B shares the slew, friction compensation and inner loop, with its own K_pr, δ, α and, if chosen, arm.",
 };
 
 /// Run B's preliminary feedback.
@@ -327,6 +327,29 @@ pub const B_DELTA: Param =
 /// Run B's α1 = α2.
 pub const B_ALPHA: Param =
     Param { key: "b_alpha", label: "B: error decay rate α1 = α2", scope: Scope::Compare, name: "b_alpha", ..ALPHA };
+
+/// Run B's arm: A's, or one of the arm presets (`session::ARMS`).
+pub const B_ARM: Param = Param {
+    key: "b_arm",
+    label: "B: the arm",
+    symbol: "",
+    unit: "",
+    name: "b_arm",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "same", label: "A's arm" },
+            Choice { value: "paper", label: "the paper's arm" },
+            Choice { value: "stiffer", label: "stiffer spring (K1 × 4)" },
+            Choice { value: "softer", label: "softer spring (K1 ÷ 4)" },
+            Choice { value: "lighter", label: "lighter motor (I_r1 ÷ 4)" },
+            Choice { value: "heavier", label: "heavier motor (I_r1 × 4)" },
+            Choice { value: "damped", label: "damped motor (B_v1 = 15 N m s/rad)" },
+        ],
+        default: "same",
+    },
+    scope: Scope::Compare,
+    help: "Run B on another arm: was it luck that the controller worked on the paper's robot?",
+};
 
 /// Every parameter, in the order the page shows them and `--help` lists them.
 pub const PARAMS: &[&Param] = &[
@@ -360,6 +383,7 @@ pub const PARAMS: &[&Param] = &[
     &B_PF,
     &B_DELTA,
     &B_ALPHA,
+    &B_ARM,
     &super::MODE,
     &super::EMBED,
     &super::TAB,

@@ -61,7 +61,8 @@ impl Session {
         // The reference jumping under a moving arm would be a kick, not the setting: start over.
         let new_reference = key == "repeat" && next.a.repeat != self.settings.a.repeat;
         // Another arm is another run: it starts from rest (the old state is not this arm's).
-        let new_arm = next.a.plant != self.settings.a.plant;
+        let b_plant = |s: &Settings| s.b.map(|b| b.run(&s.a).plant);
+        let new_arm = next.a.plant != self.settings.a.plant || b_plant(&next) != b_plant(&self.settings);
         let restart = new_reference || new_arm;
         let why = if new_arm {
             "The arm changed, so the run restarted from rest."

@@ -177,6 +177,8 @@ pub struct CompareSettings {
     pub pf: PreliminaryFeedbackChoice,
     pub delta: f64,
     pub alpha: [f64; 2],
+    /// B's own arm: an arm preset's id, or `None` for A's arm.
+    pub arm: Option<&'static str>,
 }
 
 impl CompareSettings {
@@ -186,11 +188,12 @@ impl CompareSettings {
             PreliminaryFeedbackChoice::Off => PreliminaryFeedbackChoice::Paper,
             _ => PreliminaryFeedbackChoice::Off,
         };
-        Self { pf, delta: a.delta, alpha: a.alpha }
+        Self { pf, delta: a.delta, alpha: a.alpha, arm: None }
     }
 
-    /// Run B's settings: A's with B's own preliminary feedback, δ and α.
+    /// Run B's settings: A's with B's own preliminary feedback, δ, α and arm.
     pub fn run(&self, a: &RunSettings) -> RunSettings {
-        RunSettings { pf: self.pf, delta: self.delta, alpha: self.alpha, ..*a }
+        let plant = self.arm.and_then(super::presets::arm).map_or(a.plant, |p| p.plant());
+        RunSettings { pf: self.pf, delta: self.delta, alpha: self.alpha, plant, ..*a }
     }
 }

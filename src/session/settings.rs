@@ -83,6 +83,7 @@ impl Settings {
             "b_pf" => self.b.map(|b| Value::Choice(b.pf.name())),
             "b_delta" => self.b.map(|b| Value::Number(b.delta)),
             "b_alpha" => self.b.map(|b| Value::Number(b.alpha[0])),
+            "b_arm" => self.b.map(|b| Value::Choice(b.arm.unwrap_or("same"))),
             _ => self.view.get(key).or_else(|| self.a.get(key)),
         }
     }
@@ -97,6 +98,7 @@ impl Settings {
             ("b_pf", Value::Choice(s)) => self.b_mut().pf = PreliminaryFeedbackChoice::from_name(s).unwrap_or_default(),
             ("b_delta", Value::Number(x)) => self.b_mut().delta = x,
             ("b_alpha", Value::Number(x)) => self.b_mut().alpha = [x, x],
+            ("b_arm", Value::Choice(s)) => self.b_mut().arm = (s != "same").then_some(s),
             _ => {
                 if !self.view.set(key, v) && !self.a.set(key, v) {
                     return Err(unknown(key));
@@ -222,6 +224,10 @@ impl Settings {
             pairs.push(("b_pf", b.pf.name().into()));
             pairs.push(("b_delta", Value::Number(b.delta).text()));
             pairs.push(("b_alpha", Value::Number(b.alpha[0]).text()));
+            // B's arm only when it is not A's: links to comparisons stay as they were.
+            if let Some(arm) = b.arm {
+                pairs.push(("b_arm", arm.into()));
+            }
         }
         // The view's keys only where they differ from the defaults: links stay short.
         let defaults = ViewSettings::default();
@@ -347,7 +353,7 @@ mod tests {
         let mut s = Settings::page_start();
         s.read("delta=0.04&alpha1=1&alpha2=3&pf=off&friction=held&inner=sampled&k=10&eps_ratio=6", Source::Page)
             .unwrap();
-        s.b = Some(CompareSettings { pf: PreliminaryFeedbackChoice::Lq, delta: 0.02, alpha: [0.5, 0.5] });
+        s.b = Some(CompareSettings { pf: PreliminaryFeedbackChoice::Lq, delta: 0.02, alpha: [0.5, 0.5], arm: Some("damped") });
         let q = s.to_query();
         let mut back = Settings::default();
         assert!(back.read(&q, Source::Page).unwrap().is_empty(), "{q}");

@@ -97,7 +97,9 @@ impl Session {
         if let Some(b) = self.b.as_mut().filter(|b| b.closed_loop().time() > t) {
             b.branch_at(t)?;
             let s = *b.settings();
-            self.settings.b = Some(CompareSettings { pf: s.pf, delta: s.delta, alpha: s.alpha });
+            // B keeps its arm (the arm is not changed by looking back).
+            let arm = self.settings.b.and_then(|b| b.arm);
+            self.settings.b = Some(CompareSettings { pf: s.pf, delta: s.delta, alpha: s.alpha, arm });
         }
         let what = if self.b.is_some() { "both runs continue" } else { "the run continues" };
         self.note = format!("Continued from t = {t:.2} s: {what} from there; what followed is the faint grey ghost.");
