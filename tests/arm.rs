@@ -207,3 +207,36 @@ fn run_b_may_have_another_arm() {
     let (plain, _) = flexarm::session::Session::open("preset=fig5.3&compare=1");
     assert!(!plain.settings().to_query().contains("b_arm"), "B on A's arm writes no b_arm");
 }
+
+/// The lesson's steps on other arms quote the physics: ρ at δ = 0.05 s on the softer spring, its
+/// A4 and windows, where the stiffer spring's first window starts, and the damped motor's Re A4
+/// with the damping it needs (checked against the analysis, not copied from it).
+#[test]
+fn the_lesson_quotes_the_arms_numbers() {
+    let lesson = flexarm::lesson::LESSON_TEXT;
+    let says = |what: String| assert!(lesson.contains(&what), "the lesson should say {what:?}");
+    let on = |id: &str, delta: f64| config(flexarm::session::arm(id).unwrap().plant(), 2.0, delta, PreliminaryFeedbackChoice::Off);
+    let range = [0.002, 0.25];
+    let soft = analyze(&on("softer", 0.05), None).unwrap();
+    assert!(soft.spectral_radius > 1.0);
+    says(format!("ρ = {:.3} at δ = 0.05 s", soft.spectral_radius));
+    let pair = |r: &flexarm::analysis::StabilityReport| format!("{:.2} ± {:.2}j", r.limit_pair_open[0][0], r.limit_pair_open[0][1].abs());
+    let paper = analyze(&on("paper", 0.05), None).unwrap();
+    assert!(paper.spectral_radius < 1.0, "δ = 0.05 s works on the paper's arm");
+    says(format!("A4 at {} 1/s instead of {}", pair(&soft), pair(&paper)));
+    let w = stable_windows(&LinearSettings::of(&on("softer", 0.05), None), range).unwrap().windows;
+    assert_eq!(w.len(), 2, "{w:?}");
+    says(format!("now from {:.3} s to {:.3} s and from {:.3} s to {:.3} s", w[0][0], w[0][1], w[1][0], w[1][1]));
+    let stiff = stable_windows(&LinearSettings::of(&on("stiffer", 0.05), None), range).unwrap().windows;
+    says(format!("starting at {:.3} s", stiff[0][0]));
+    // The damped motor: Re A4's two terms from the analysis's A4, the damping needed from the law.
+    let damped = flexarm::session::arm("damped").unwrap().plant();
+    let d = analyze(&on("damped", 0.01), None).unwrap();
+    let feed = 1.5 * 2.0;
+    let take = damped.bv1 / (2.0 * damped.ir1);
+    assert!((d.limit_pair_open[0][0] - (feed - take)).abs() < 1e-6);
+    says(format!("= {} − {:.2} = {} 1/s", feed, take, format!("{:.2}", feed - take).replace('-', "−")));
+    says(format!("B_v1 > 3α I_r1 = {:.1} N m s/rad", 3.0 * 2.0 * PlantParameters::default().ir1));
+    let w = stable_windows(&LinearSettings::of(&on("damped", 0.01), None), range).unwrap();
+    assert_eq!(w.windows, vec![range], "stable at every δ of the slider");
+}
