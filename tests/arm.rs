@@ -46,21 +46,35 @@ proptest! {
     #![proptest_config(cases(48))]
 
     /// The δ → 0 pair A4 of the linearized loop (computed from the predictor's gain, not from the
-    /// closed form) has Re A4 = 3α/2 − B_v1/(2 I_r1) for every arm; at a small δ the loop grows
-    /// (ρ > 1) exactly when that is positive.
+    /// closed form) has the mean of its two eigenvalues, trace/2, at 3α/2 − B_v1/(2 I_r1) for every
+    /// arm: Re A4 when the pair swings. Stability needs more than that sign: a motor damped so much
+    /// that the pair no longer swings (two real eigenvalues) turns unstable again once
+    /// det A4 < 0, i.e. B_v1 > I_r1 (K1/I_r1 + K1/J_eff + 6α²)/(3α) — a slow real mode grows. At
+    /// a small δ the loop grows (ρ > 1) exactly when A4's larger eigenvalue is positive.
     #[test]
     fn re_a4_is_the_controllers_negative_damping_against_the_motors(plant in arms(), log_alpha in -1.0f64..0.7) {
         let alpha = 10f64.powf(log_alpha);
         let c = config(plant, alpha, 0.002, PreliminaryFeedbackChoice::Off);
         let report = analyze(&c, None).unwrap();
-        let re = report.limit_pair_open[0][0];
+        let [first, second] = report.limit_pair_open;
+        let mean = 0.5 * (first[0] + second[0]);
         let law = 1.5 * alpha - plant.bv1 / (2.0 * plant.ir1);
-        prop_assert!((re - law).abs() <= 1e-6 * (1.0 + law.abs()), "Re A4 {re} against {law} for {plant:?}");
+        prop_assert!((mean - law).abs() <= 1e-6 * (1.0 + law.abs()), "trace/2 of A4 {mean} against {law} for {plant:?}");
+        if first[1].abs() > 1e-9 {
+            prop_assert!((first[0] - law).abs() <= 1e-6 * (1.0 + law.abs()), "Re A4 {} against {law}", first[0]);
+        }
+        // det A4 from its eigenvalues, against the closed form's stiffness term.
+        let r = &report.resonance;
+        let stiffness = plant.k1 / plant.ir1 + plant.k1 / r.j_eff + 6.0 * alpha * alpha;
+        let det = first[0] * second[0] + first[1] * second[1].abs();
+        let det_law = stiffness - 3.0 * alpha * plant.bv1 / plant.ir1;
+        prop_assert!((det - det_law).abs() <= 1e-6 * (1.0 + det_law.abs()), "det A4 {det} against {det_law} for {plant:?}");
         prop_assert!(report.spectral_radius.is_finite() && report.poles.iter().all(|p| p.discrete.iter().all(|v| v.is_finite())));
         // The sampled loop at δ = 2 ms follows its limit where the limit is clear of the axis
         // (the sampling's own effect on the pair is a fraction of 1/s here).
-        if law.abs() > 1.0 {
-            prop_assert_eq!(report.spectral_radius > 1.0, law > 0.0, "ρ = {} with Re A4 = {} for {:?}", report.spectral_radius, law, plant);
+        let largest = first[0].max(second[0]);
+        if largest.abs() > 1.0 {
+            prop_assert_eq!(report.spectral_radius > 1.0, largest > 0.0, "ρ = {} with A4's largest {} for {:?}", report.spectral_radius, largest, plant);
         }
     }
 }
@@ -191,6 +205,10 @@ fn the_readme_quotes_the_arms_numbers() {
     let damped = flexarm::session::arm("damped").unwrap().plant();
     let terms = format!("Re A4 = {} − {:.2} < 0", 1.5 * 2.0, damped.bv1 / (2.0 * damped.ir1));
     assert!(readme.contains(&terms), "README should say {terms:?}");
+    let j_eff = analyze(&config(p, 2.0, 0.01, PreliminaryFeedbackChoice::Off), None).unwrap().resonance.j_eff;
+    let high = (p.k1 / p.ir1 + p.k1 / j_eff + 6.0 * 4.0) * p.ir1 / 6.0;
+    let bound = format!("below {high:.0} N m s/rad");
+    assert!(readme.contains(&bound), "README should say {bound:?}");
 }
 
 /// Run B may have another arm (`b_arm`): the paper's Fig. 5.3 beside the same controller on the
@@ -239,4 +257,27 @@ fn the_lesson_quotes_the_arms_numbers() {
     says(format!("B_v1 > 3α I_r1 = {:.1} N m s/rad", 3.0 * 2.0 * PlantParameters::default().ir1));
     let w = stable_windows(&LinearSettings::of(&on("damped", 0.01), None), range).unwrap();
     assert_eq!(w.windows, vec![range], "stable at every δ of the slider");
+}
+
+/// Damping has a window too: the story's bounds on B_v1 are where A4's trace and determinant
+/// change sign, and the sampled loop at a small δ (1e-4 s) agrees on both sides of each.
+#[test]
+fn the_motor_damping_that_kills_the_swing_has_two_bounds() {
+    let s = common_session("arm=damped&pf=off&mode=full");
+    let text = s.status().story.unwrap().damping_needed;
+    let p = PlantParameters::default();
+    let j_eff = analyze(&config(p, 2.0, 0.01, PreliminaryFeedbackChoice::Off), None).unwrap().resonance.j_eff;
+    let low = 3.0 * 2.0 * p.ir1;
+    let high = (p.k1 / p.ir1 + p.k1 / j_eff + 6.0 * 4.0) * p.ir1 / (3.0 * 2.0);
+    assert!(text.starts_with(&format!("B_v1 > 3α I_r1 = {low:.1} N m s/rad, and (as δ → 0) below {high:.0} N m s/rad")), "{text}");
+    assert!(text.ends_with("(this arm: 15 N m s/rad)"), "{text}");
+    let rho = |bv1: f64| spectral_radius(&config(PlantParameters { bv1, ..p }, 2.0, 1e-4, PreliminaryFeedbackChoice::Off), None).unwrap();
+    assert!(rho(0.9 * low) > 1.0 && rho(1.1 * low) < 1.0, "the lower bound");
+    assert!(rho(0.9 * high) < 1.0 && rho(1.1 * high) > 1.0, "the upper bound: {} {}", rho(0.9 * high), rho(1.1 * high));
+}
+
+fn common_session(query: &str) -> flexarm::session::Session {
+    let (s, notices) = flexarm::session::Session::open(query);
+    assert!(notices.is_empty(), "{notices:?}");
+    s
 }

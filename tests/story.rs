@@ -97,7 +97,7 @@ fn what_is_said_of_the_preliminary_feedback_is_the_programs() {
     let st = common::session("preset=fig5.3").status().story.unwrap();
     assert_eq!((st.kpr_shift_t1, st.kpr_shift_t2), (minus(format!("{p1:.2} 1/s")), minus(format!("{p2:.2} 1/s"))));
     says(
-        "through T1, twelve times the motor's own B_v1 = 1.4 N m s/rad, gives",
+        "through T1, twelve times the paper's motor damping B_v1 = 1.4 N m s/rad, gives",
         &page.replace("<sub>v1</sub>", "_v1"),
         "page",
     );

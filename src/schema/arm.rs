@@ -110,7 +110,7 @@ pub const BV1: Param = arm(
     "B_v1",
     "N m s/rad",
     "bv1 (B_v1)",
-    spec(1.40, [0.0, 20.0], Scale::Linear, 1400.0, true, DAMPING),
+    spec(1.40, [0.0, 50.0], Scale::Linear, 1400.0, true, DAMPING),
     "Viscous damping of the motor: a torque against its speed. Re A4 = 3α/2 − B_v1/(2 I_r1): enough of it damps \
      the swing with no preliminary feedback.",
 );

@@ -85,7 +85,9 @@ impl Session {
         })?;
         let mut next = self.settings;
         next.apply_preset(p)?;
-        self.apply(next, true, &format!("Preset applied; the run restarted: {}.", p.title))
+        // A figure is the paper's: say so when it brings the paper's arm back.
+        let arm = if next.a.plant != self.settings.a.plant { " It runs on the paper's arm, as the paper did." } else { "" };
+        self.apply(next, true, &format!("Preset applied; the run restarted: {}.{arm}", p.title))
     }
 
     /// Reads a state string (a URL query) over the current settings and restarts from rest.
@@ -137,10 +139,7 @@ impl Session {
     /// they had diverged; the comparison starts and stops here. Invalid settings change nothing.
     pub(super) fn apply(&mut self, next: Settings, restart: bool, why: &str) -> Result<(), Error> {
         // Validate everything first, so a failure leaves the session as it was.
-        next.a.config().validate()?;
-        if let Some(b) = next.b {
-            b.run(&next.a).config().validate()?;
-        }
+        next.validate()?;
         // Hidden maps do no work.
         self.maps.enabled = next.view.shown().map;
         if !restart && next.a == self.settings.a && next.b == self.settings.b {

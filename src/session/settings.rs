@@ -116,8 +116,19 @@ impl Settings {
     /// Reads `key=text` as the schema says and sets it.
     pub fn set_text(&mut self, key: &str, text: &str, source: Source) -> Result<(), Error> {
         let p = schema::param(key).ok_or_else(|| unknown(key))?;
-        let v = p.parse(text, source != Source::CommandLine)?;
+        // A lesson stays on the controls' spans; a URL may hold what the page wrote for a value
+        // typed beyond a slider (within the hard limits), so that a reload reproduces it.
+        let v = p.parse(text, source == Source::Lesson)?;
         self.set(key, v)
+    }
+
+    /// Whether run A (and B) can run with these settings.
+    pub fn validate(&self) -> Result<(), Error> {
+        self.a.config().validate()?;
+        if let Some(b) = self.b {
+            b.run(&self.a).config().validate()?;
+        }
+        Ok(())
     }
 
     /// Reads a state string over `self`. The page ([`Source::Page`]) is lenient: a bad value is
@@ -185,7 +196,18 @@ impl Settings {
             if p.scope == Scope::Compare && !matches!(compare, Some("1" | "true" | "on" | "yes")) {
                 continue;
             }
-            if let Err(e) = self.set_text(p.key, text, source) {
+            let before = *self;
+            let taken = self.set_text(p.key, text, source).and_then(|()| {
+                // The page takes a value only if the settings can still run together (an arm
+                // whose mass matrix fails, a k that does not fit m): that key alone is skipped.
+                if source == Source::Page {
+                    self.validate()
+                } else {
+                    Ok(())
+                }
+            });
+            if let Err(e) = taken {
+                *self = before;
                 fail(p.key, e)?;
             }
         }
@@ -372,7 +394,14 @@ mod tests {
         assert_eq!(s.a.alpha, [0.5, 0.5]);
         assert_eq!(s.a.delta, 0.01);
         assert!(Settings::default().read("delta=abc", Source::CommandLine).is_err());
-        assert!(Settings::default().read("delta=5", Source::Page).unwrap().len() == 1, "outside the slider");
+        assert!(Settings::default().read("delta=5", Source::Page).unwrap().is_empty(), "outside the slider, as the page writes a typed δ");
+        assert!(Settings::default().read("delta=50", Source::Page).unwrap().len() == 1, "beyond the hard limits");
+        // A value that cannot run with the others is skipped alone; the rest of the link holds.
+        let mut s = Settings::page_start();
+        let notices = s.read("delta=0.05&a3=2&k1=4610.4", Source::Page).unwrap();
+        assert_eq!(notices.iter().map(|n| n.key.as_str()).collect::<Vec<_>>(), ["a3"]);
+        assert!(notices[0].text.contains("positive definite"), "{}", notices[0].text);
+        assert_eq!((s.a.delta, s.a.plant.k1, s.a.plant.a3), (0.05, 4610.4, 0.328));
         assert!(Settings::default().read("delta=5", Source::CommandLine).unwrap().is_empty(), "inside the limits");
         // The page's own keys mean nothing to the CLI.
         let mut c = Settings::default();

@@ -208,12 +208,27 @@ pub fn story(run: &Run) -> Option<Story> {
         kpr_alpha_limit: format!("{:.2} 1/s", r.paper_alpha_limit),
         lq_says,
         arm: crate::schema::arm_text(&plant.values()),
-        damping_needed: format!(
-            "B_v1 > {} I_r1 = {:.1} N m s/rad (this arm: {} N m s/rad)",
-            if a1 == a2 { "3α" } else { "3β" },
-            3.0 * r.beta * plant.ir1,
-            crate::schema::format_number(plant.bv1)
-        ),
+        damping_needed: if r.beta > 0.0 {
+            // trace A4 < 0 needs B_v1 > 3β I_r1; det A4 > 0 needs B_v1 below the stiffness term
+            // over 3β (a motor damped beyond it stops swinging, and as δ → 0 a slow real mode grows).
+            let stiffness = r.determinant + 3.0 * r.beta * plant.bv1 / plant.ir1;
+            format!(
+                "B_v1 > {} I_r1 = {:.1} N m s/rad, and (as δ → 0) below {:.0} N m s/rad, beyond which the motor \
+                 no longer swings and a slow real mode grows (this arm: {} N m s/rad)",
+                // With α1 ≠ α2 the pair is fed 3β/2, β = α1 + μ (α1 − α2) (the explanation derives it).
+                if a1 == a2 { "3α".to_string() } else { format!("3β (β = α1 + μ (α1 − α2) = {:.2} 1/s)", r.beta) },
+                3.0 * r.beta * plant.ir1,
+                stiffness * plant.ir1 / (3.0 * r.beta),
+                crate::schema::format_number(plant.bv1)
+            )
+        } else {
+            format!(
+                "none at these α: the controller drains the resonance (β = {:.2} 1/s ≤ 0; this arm: {} N m s/rad)",
+                r.beta,
+                crate::schema::format_number(plant.bv1)
+            )
+        },
+        // Beside the feedback's selector while the paper's gains run on another arm or α.
         kpr_note: {
             let arm = *plant != crate::model::PlantParameters::default();
             let alpha = settings.alpha != [crate::control::feedback::PAPER_GAIN_ALPHA; 2];
@@ -223,10 +238,13 @@ pub fn story(run: &Run) -> Option<Story> {
                 (false, true) => "α differs",
                 (false, false) => "",
             };
-            if differs.is_empty() {
+            if differs.is_empty() || settings.pf != crate::control::config::PreliminaryFeedbackChoice::Paper {
                 String::new()
             } else {
-                format!("The paper's Kₚᵣ was designed for the paper's arm at α = 2 1/s; here {differs} (the LQ design is redone for them).")
+                format!(
+                    "The paper's Kₚᵣ keeps its fixed gains, designed for the paper's arm at α = 2 1/s; here {differs}. \
+                     The LQ design is redone for the arm and α set."
+                )
             }
         },
         kpr_works: if kpr.re < 0.0 {
