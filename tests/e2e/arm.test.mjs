@@ -84,8 +84,11 @@ test('an arm preset and an impossible arm: the damped motor is stable without K_
   const s = await story(page);
   assert.match(s.damping_needed, /^B_v1 > 3α I_r1 = 11\.6 N m s\/rad, and .* \(this arm: 15 N m s\/rad\)$/);
   assert.match(s.re_a4, /^−/, `Re A4 < 0: ${s.re_a4}`);
-  assert.match(await page.textContent('.kpr-note'), /designed for the paper's arm/);
   await page.screenshot({ path: path.join(shots, 'arm-damped.png') });
+  // Under the paper's gains on another arm, the page says they stay fixed (none without K_pr).
+  assert.equal(await page.textContent('.kpr-note'), '');
+  await page.selectOption('#pf', 'paper');
+  await page.waitForFunction(() => /keeps its fixed gains, designed for the paper's arm/.test(document.querySelector('.kpr-note').textContent));
   // An impossible arm: refused with its reason, and the page goes on with the arm it had.
   await page.fill('#a3-number', '2');
   await page.press('#a3-number', 'Enter');
