@@ -116,9 +116,15 @@ impl Settings {
     /// Reads `key=text` as the schema says and sets it.
     pub fn set_text(&mut self, key: &str, text: &str, source: Source) -> Result<(), Error> {
         let p = schema::param(key).ok_or_else(|| unknown(key))?;
-        // A lesson stays on the controls' spans; a URL may hold what the page wrote for a value
-        // typed beyond a slider (within the hard limits), so that a reload reproduces it.
-        let v = p.parse(text, source == Source::Lesson)?;
+        // A lesson stays on the controls' spans, and so does a URL's playback and view; a URL's
+        // run settings may hold what the page wrote for a value typed beyond a slider (within
+        // the hard limits), so that a reload reproduces it.
+        let on_spans = match source {
+            Source::Lesson => true,
+            Source::Page => p.scope == Scope::Page,
+            Source::CommandLine => false,
+        };
+        let v = p.parse(text, on_spans)?;
         self.set(key, v)
     }
 
@@ -208,6 +214,13 @@ impl Settings {
             });
             if let Err(e) = taken {
                 *self = before;
+                // A link's notice names the key and the text it holds, as for a value it cannot read.
+                let e = match e {
+                    Error::Config(c) if source == Source::Page => {
+                        Error::Parse(ParseError { key: p.key.into(), text: text.clone(), expected: c.allowed })
+                    }
+                    e => e,
+                };
                 fail(p.key, e)?;
             }
         }
