@@ -47,6 +47,10 @@ impl Generator {
         self.line("#[allow(unused_mut, unused_variables, clippy::all)]");
         self.line("pub fn module() -> naga::Module {");
         self.line("use naga::*;");
+        // One out-of-line call per expression and statement instead of an inlined arena push
+        // each: the page's module is smaller.
+        self.line("#[inline(never)] fn ex(f: &mut Function, e: Expression) -> Handle<Expression> { f.expressions.append(e, Span::UNDEFINED) }");
+        self.line("#[inline(never)] fn st(b: &mut Block, s: Statement) { b.push(s, Span::UNDEFINED) }");
         self.line("let mut m = Module::default();");
         for (h, ty) in m.types.iter() {
             let inner = self.type_inner(&ty.inner)?;
@@ -175,7 +179,7 @@ impl Generator {
         }
         for (h, e) in f.expressions.iter() {
             let e = expression(e)?;
-            self.line(&format!("let e{} = f.expressions.append({e}, Span::UNDEFINED);", h.index()));
+            self.line(&format!("let e{} = ex(&mut f, {e});", h.index()));
         }
         for (h, v) in f.local_variables.iter() {
             if let Some(init) = v.init {
@@ -220,7 +224,7 @@ impl Generator {
                 ),
                 other => return Err(format!("statement {other:?} is not supported by build.rs")),
             };
-            write!(code, "b.push({s}, Span::UNDEFINED); ").expect("writing to a String");
+            write!(code, "st(&mut b, {s}); ").expect("writing to a String");
         }
         code.push_str("b }");
         Ok(code)
