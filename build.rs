@@ -51,6 +51,11 @@ impl Generator {
         // each: the page's module is smaller.
         self.line("#[inline(never)] fn ex(f: &mut Function, e: Expression) -> Handle<Expression> { f.expressions.append(e, Span::UNDEFINED) }");
         self.line("#[inline(never)] fn st(b: &mut Block, s: Statement) { b.push(s, Span::UNDEFINED) }");
+        // The commonest expressions as calls with their operands only.
+        self.line("#[inline(never)] fn acc(f: &mut Function, base: Handle<Expression>, index: u32) -> Handle<Expression> { ex(f, Expression::AccessIndex { base, index }) }");
+        self.line("#[inline(never)] fn bin(f: &mut Function, op: BinaryOperator, left: Handle<Expression>, right: Handle<Expression>) -> Handle<Expression> { ex(f, Expression::Binary { op, left, right }) }");
+        self.line("#[inline(never)] fn f32l(f: &mut Function, bits: u32) -> Handle<Expression> { ex(f, Expression::Literal(Literal::F32(f32::from_bits(bits)))) }");
+        self.line("#[inline(never)] fn load(f: &mut Function, pointer: Handle<Expression>) -> Handle<Expression> { ex(f, Expression::Load { pointer }) }");
         self.line("let mut m = Module::default();");
         for (h, ty) in m.types.iter() {
             let inner = self.type_inner(&ty.inner)?;
@@ -178,8 +183,16 @@ impl Generator {
             ));
         }
         for (h, e) in f.expressions.iter() {
-            let e = expression(e)?;
-            self.line(&format!("let e{} = ex(&mut f, {e});", h.index()));
+            let call = match e {
+                Expression::AccessIndex { base, index } => format!("acc(&mut f, e{}, {index})", base.index()),
+                Expression::Binary { op, left, right } => {
+                    format!("bin(&mut f, BinaryOperator::{op:?}, e{}, e{})", left.index(), right.index())
+                }
+                Expression::Literal(Literal::F32(v)) => format!("f32l(&mut f, {:#010x}) /* {v:?} */", v.to_bits()),
+                Expression::Load { pointer } => format!("load(&mut f, e{})", pointer.index()),
+                other => format!("ex(&mut f, {})", expression(other)?),
+            };
+            self.line(&format!("let e{} = {call};", h.index()));
         }
         for (h, v) in f.local_variables.iter() {
             if let Some(init) = v.init {

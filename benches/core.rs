@@ -1,8 +1,8 @@
 //! Benchmarks of the core, as a plain bench binary (no timed tests):
 //!
 //! `cargo bench --bench core` times one controller sample (k = 12 Newton-solved backward-Euler
-//! steps), a 10-s closed-loop run at δ = 0.01 s and one spectral-radius evaluation, and prints
-//! medians over repeated batches. `cargo bench --bench core -- --python` also runs the
+//! steps), a 10-s closed-loop run at δ = 0.01 s, one spectral-radius evaluation, an arm change
+//! to ρ, A4 and the windows, and both maps after it, and prints medians over repeated batches. `cargo bench --bench core -- --python` also runs the
 //! Python/NumPy/SciPy baseline of the same loop (bench/run_python.sh) and reports the ratio.
 
 use std::hint::black_box;
@@ -63,6 +63,25 @@ fn main() {
         black_box(spectral_radius(black_box(&config), None).unwrap());
     });
 
+    // Dragging an arm slider (issue 18): one change of K1 to ρ, A4 (the story) and the windows of
+    // δ recomputed, as the page's session does it; then both maps of the new arm to the end.
+    let (mut session, _) = flexarm::session::Session::open("preset=fig5.3&mode=full");
+    let mut k1 = 1000.0;
+    let (arm_med, arm_min) = time_it(15, 5, || {
+        k1 = if k1 > 1800.0 { 1000.0 } else { k1 + 37.0 };
+        session.set("k1", &k1.to_string()).unwrap();
+        session.windows().unwrap();
+        black_box(session.status().story.unwrap());
+    });
+    let clock = Instant::now();
+    let (maps_med, maps_min) = time_it(5, 1, || {
+        k1 = if k1 > 1800.0 { 1000.0 } else { k1 + 37.0 };
+        session.set("k1", &k1.to_string()).unwrap();
+        let a = flexarm::analysis::LinearSettings::of(&session.settings().a.config(), None);
+        session.maps_mut().show(&a);
+        while session.maps_mut().work(&mut || clock.elapsed().as_secs_f64() * 1e3, 1e9) {}
+    });
+
     println!("flexarm core benchmarks (median of batches; min in parentheses)");
     println!("| what | median | min |");
     println!("|---|---|---|");
@@ -87,6 +106,17 @@ fn main() {
         "| one spectral radius ρ (10×10 loop, k-step pencil sweep, expm, eig) | {:.1} µs | {:.1} µs |",
         rho_med * 1e6,
         rho_min * 1e6
+    );
+
+    println!(
+        "| an arm change (K1) to ρ, A4 and the windows of δ (the page's goal: ≤ 16 ms in wasm) | {:.2} ms | {:.2} ms |",
+        arm_med * 1e3,
+        arm_min * 1e3
+    );
+    println!(
+        "| both maps (ρ over δ × α, no K_pr and paper K_pr) after an arm change (goal: ≤ 0.5 s in wasm) | {:.0} ms | {:.0} ms |",
+        maps_med * 1e3,
+        maps_min * 1e3
     );
 
     if python {

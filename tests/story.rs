@@ -328,3 +328,26 @@ fn the_quoted_kpr_row_is_the_papers() {
     assert!(page.contains(&row), "the page should quote {row:?}");
     assert!(LESSON_TEXT.contains(&row), "the lesson should quote {row:?}");
 }
+
+/// With a model error (`model = paper` on a stiffer arm) the texts keep A4 for what the closed
+/// form describes (a controller that knows the arm: eigenvalues from its trace and determinant)
+/// and name the pair the loop does tend to, the ring in the pole plot.
+#[test]
+fn a_model_error_is_named_with_both_pairs() {
+    let pair = |re: f64, im: f64| minus(format!("{re:.2} ± {:.2}j 1/s", im.abs()));
+    let s = common::session("preset=fig5.3&arm=stiffer&model=paper");
+    let story = s.status().story.unwrap();
+    let report = s.run(0).unwrap().analysis().report().unwrap().clone();
+    let r = &report.resonance;
+    let (mean, im) = (r.trace / 2.0, (r.determinant - r.trace * r.trace / 4.0).sqrt());
+    assert_eq!(story.a4, pair(mean, im));
+    let [re, lim] = report.limit_pair_open[0];
+    let moved = pair(re, lim);
+    assert_ne!(moved, story.a4, "a stiffer arm the controller does not know moves the pair");
+    assert!(story.model_note.contains(&moved) && story.model_note.contains(&story.a4), "{}", story.model_note);
+    assert!(story.loop_limit.starts_with(&moved), "{}", story.loop_limit);
+    assert!(story.lq_says.contains("paper's arm"), "{}", story.lq_says);
+    // Without the error there is no note.
+    let s = common::session("preset=fig5.3&arm=stiffer");
+    assert_eq!(s.status().story.unwrap().model_note, "");
+}

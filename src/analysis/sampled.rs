@@ -10,7 +10,9 @@ use nalgebra::{Complex, SMatrix};
 use serde::{Deserialize, Serialize};
 
 use super::resonance::ResonanceReport;
-use crate::control::config::{ControllerParameters, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
+use crate::control::config::{
+    ControllerModel, ControllerParameters, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig,
+};
 use crate::control::feedback::{resolve_gain, FeedbackGain};
 use crate::control::linear::{expm, limit_pair, linearize_at_rest, predictor_gain, LinearModel, Mat10, Mat8};
 use crate::error::Error;
@@ -30,6 +32,8 @@ pub struct LinearSettings {
     pub inner_loop: InnerLoop,
     /// Operating point q2 of the LQ design, rad.
     pub lq_design_q2: f64,
+    /// The arm the controller assumes.
+    pub model: ControllerModel,
 }
 
 impl LinearSettings {
@@ -42,6 +46,7 @@ impl LinearSettings {
             preliminary_feedback: config.preliminary_feedback,
             inner_loop: config.inner_loop,
             lq_design_q2: config.lq_design_q2,
+            model: config.model,
         }
     }
 
@@ -66,6 +71,7 @@ impl LinearSettings {
             preliminary_feedback: self.preliminary_feedback,
             inner_loop: self.inner_loop,
             lq_design_q2: self.lq_design_q2,
+            model: self.model,
             ..SimulationConfig::default()
         };
         c.reference.end = self.rest;
@@ -78,7 +84,11 @@ impl LinearSettings {
 #[derive(Clone, Debug)]
 pub struct LoopModel {
     settings: LinearSettings,
+    /// The arm linearized: what the sampled plant is.
     model: LinearModel,
+    /// The controller's model linearized: what the predictor integrates (the same as `model`
+    /// unless the controller assumes another arm).
+    predictor: LinearModel,
     gain: FeedbackGain,
 }
 
@@ -89,7 +99,8 @@ impl LoopModel {
         config.validate()?;
         let gain = resolve_gain(&config)?;
         let model = linearize_at_rest(&settings.plant, settings.controller.alpha, settings.rest);
-        Ok(Self { settings: *settings, model, gain })
+        let predictor = linearize_at_rest(&config.model_plant(), settings.controller.alpha, settings.rest);
+        Ok(Self { settings: *settings, model, predictor, gain })
     }
 
     /// The settings at the model's own δ.
@@ -102,7 +113,7 @@ impl LoopModel {
         let mut controller = self.settings.controller;
         controller.sampling_period = delta;
         controller.validate()?;
-        sampled_loop_matrix(&self.model, &self.gain, &controller, self.settings.inner_loop)
+        sampled_loop_matrix(&self.model, &self.predictor, &self.gain, &controller, self.settings.inner_loop)
     }
 
     /// ρ at sampling period `delta`.
@@ -144,8 +155,10 @@ impl LoopModel {
                 }),
             })
             .collect();
-        let open = limit_pair(&self.model, &FeedbackGain::zeros())?;
-        let with_pf = limit_pair(&self.model, &self.gain)?;
+        // The controller's model where it is not the arm.
+        let error = self.settings.config().has_model_error().then_some(&self.predictor);
+        let open = limit_pair_with_model(&self.model, error, &FeedbackGain::zeros())?;
+        let with_pf = limit_pair_with_model(&self.model, error, &self.gain)?;
         let fixed = self.settings.preliminary_feedback == PreliminaryFeedbackChoice::Paper;
         let resonance = ResonanceReport::new(
             &self.settings.plant,
@@ -160,8 +173,8 @@ impl LoopModel {
             spectral_radius,
             growth_rate: spectral_radius.ln() / delta,
             poles,
-            limit_pair_open: pair(&open.eigenvalues),
-            limit_pair: pair(&with_pf.eigenvalues),
+            limit_pair_open: pair(&open),
+            limit_pair: pair(&with_pf),
             resonance,
         })
     }
@@ -169,17 +182,19 @@ impl LoopModel {
 
 /// The sampled closed loop linearized at rest, as a map of ζ = (x(t_ρ), v on [t_ρ, t_ρ+1)):
 /// x_{ρ+1} = Φ x_ρ + Γ v_ρ (+ Γ K x_ρ for a sampled inner loop), v_{ρ+1} = K_pred x_ρ
-/// (the prediction from x(t_ρ) is applied one period later, Fig. 2.1).
+/// (the prediction from x(t_ρ) is applied one period later, Fig. 2.1). Φ and Γ come from the
+/// arm (`model`), K_pred from the controller's model of it (`predictor`, usually the same).
 pub fn sampled_loop_matrix(
     model: &LinearModel,
+    predictor: &LinearModel,
     gain: &FeedbackGain,
     controller: &ControllerParameters,
     inner_loop: InnerLoop,
 ) -> Result<Mat10, Error> {
     let delta = controller.sampling_period;
-    let k_pred = predictor_gain(model, gain, controller)?;
+    let k_pred = predictor_gain(predictor, gain, controller)?;
     let a_plant = match inner_loop {
-        InnerLoop::Continuous => model.a + model.b * gain,
+        InnerLoop::Continuous => model.with_feedback(gain),
         InnerLoop::Sampled => model.a,
     };
     let mut aug = Mat10::zeros();
@@ -291,6 +306,42 @@ impl StabilityReport {
     }
 }
 
+/// The δ → 0 pair when the controller's model of the arm (`predictor`) differs from the arm
+/// (`plant`): the predictor's limit feedback K_lim, computed on its model, closes the real arm,
+/// ẋ = (A + B(K + K_lim)) x, and the sampled loop's s = ln λ/δ tend to its eigenvalues as δ → 0
+/// (`tests/model.rs` checks that at δ = 1e-4 s). With the model exact this is A4 on the
+/// quotient, [`limit_pair`]; with a model error the six poles at −α move too and no quotient
+/// separates the pair, so it is picked from all eight: the complex pair swinging fastest (the
+/// joint's resonance), or, if none swings, the two rightmost.
+pub fn limit_pair_with_model(
+    plant: &LinearModel,
+    predictor: Option<&LinearModel>,
+    gain: &FeedbackGain,
+) -> Result<[Complex<f64>; 2], Error> {
+    let Some(predictor) = predictor else { return Ok(limit_pair(plant, gain)?.eigenvalues) };
+    let limit = limit_pair(predictor, gain)?;
+    let closed = plant.with_feedback(&(gain + limit.k_lim));
+    // The sampled loop's 10×10 eigen-solver, with two padding eigenvalues beyond every eigenvalue
+    // of the 8×8 block (|λ| ≤ 8 max |a_ij|): they come first by modulus and are dropped.
+    let mut padded = Mat10::from_diagonal_element(-(1.0 + 16.0 * closed.amax()));
+    padded.fixed_view_mut::<8, 8>(0, 0).copy_from(&closed);
+    let ev = loop_eigenvalues(&padded);
+    let ev = &ev[2..];
+    if ev.iter().any(|l| !l.norm().is_finite()) {
+        return Err(Error::Analysis("the loop with the controller's model error has no finite eigenvalues"));
+    }
+    let swinging = ev.iter().filter(|l| l.im > 1e-9 * l.norm()).max_by(|a, b| a.im.total_cmp(&b.im));
+    if let Some(l) = swinging {
+        return Ok([*l, l.conj()]);
+    }
+    // All real: the two rightmost.
+    let rightmost = |skip: Option<usize>| {
+        (0..ev.len()).filter(|&i| Some(i) != skip).max_by(|&i, &j| ev[i].re.total_cmp(&ev[j].re)).unwrap_or(0)
+    };
+    let first = rightmost(None);
+    Ok([ev[first], ev[rightmost(Some(first))]])
+}
+
 fn pair(c: &[Complex<f64>; 2]) -> [[f64; 2]; 2] {
     [[c[0].re, c[0].im], [c[1].re, c[1].im]]
 }
@@ -306,8 +357,13 @@ pub fn loop_eigenvalues(m: &Mat10) -> Vec<Complex<f64>> {
 /// which only the continuous compensation does. Held over δ or left off, the Dahl friction at rest
 /// acts as a presliding spring F_c/ε (≈ 48 000 N m/rad on the motor, forty times K1), which no
 /// linearization with the friction cancelled contains: only the simulation can judge such a run.
+/// With `model = paper` on an arm whose friction differs from the paper's, the observer cancels
+/// the paper's friction, not the arm's: the rest is again a presliding spring only the
+/// simulation has.
 pub fn describes(config: &SimulationConfig) -> bool {
+    let friction = |p: &PlantParameters| [p.fc1, p.fc2, p.eps1, p.eps2];
     config.friction_compensation == crate::control::config::FrictionCompensation::Continuous
+        && friction(&config.model_plant()) == friction(&config.plant)
 }
 
 /// Analyses `config` linearized at rest at its final configuration, or at link-2 angle `q2`.

@@ -71,6 +71,9 @@ pub fn simulate_in_chunks<E: From<Error>>(
 #[derive(Clone, Copy, Debug)]
 struct Derived {
     plant: Plant,
+    /// The arm the controller assumes (its predictor and friction observer): the plant's own
+    /// parameters unless `model = paper`.
+    model: crate::model::params::PlantParameters,
     reference: Reference,
     predictor: Predictor,
     gain: FeedbackGain,
@@ -90,7 +93,8 @@ impl Derived {
         Ok(Self {
             plant: Plant::new(config.plant),
             reference: Reference::new(config.reference),
-            predictor: Predictor::new(&config.plant, &config.controller),
+            model: config.model_plant(),
+            predictor: Predictor::new(&config.model_plant(), &config.controller),
             gain: resolve_gain(config)?,
             plant_step,
             steps_per_period,
@@ -391,7 +395,7 @@ impl ClosedLoop {
         }
         let d = self.derived;
         let h = d.plant_step;
-        let p = &d.plant.params;
+        let p = &d.model;
         let t0 = self.time;
 
         self.observer.advance(p, self.plant_state.qdot[2], self.plant_state.qdot[1], 0.5 * h);

@@ -110,6 +110,18 @@ pub enum InnerLoop {
     Sampled,
 }
 
+/// The arm the controller's model assumes (section 4 designs the predictor, the friction observer
+/// and the preliminary feedback on one model of the arm): the real arm, or the paper's table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum ControllerModel {
+    /// The controller knows the arm exactly.
+    #[default]
+    Arm,
+    /// The controller keeps the paper's arm whatever the real one is: a model error.
+    Paper,
+}
+
 /// The words the enums have in URLs, on the command line and in JSON (the [`crate::schema`]
 /// choices), both ways.
 macro_rules! named {
@@ -131,6 +143,7 @@ macro_rules! named {
 named!(FrictionCompensation { Continuous => "continuous", Held => "held", Off => "off" });
 named!(PreliminaryFeedbackChoice { Off => "off", Paper => "paper", Lq => "lq" });
 named!(InnerLoop { Continuous => "continuous", Sampled => "sampled" });
+named!(ControllerModel { Arm => "arm", Paper => "paper" });
 
 /// Everything a closed-loop run needs.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -150,6 +163,9 @@ pub struct SimulationConfig {
     pub divergence_bound: f64,
     /// Operating point q2 at which the LQ preliminary feedback is designed, rad.
     pub lq_design_q2: f64,
+    /// The arm the controller assumes (its predictor, friction observer and LQ design): this
+    /// arm, or the paper's while the real one differs.
+    pub model: ControllerModel,
 }
 
 impl Default for SimulationConfig {
@@ -165,6 +181,7 @@ impl Default for SimulationConfig {
             output_interval: 0.002,
             divergence_bound: DEFAULT_DIVERGENCE_BOUND,
             lq_design_q2: 0.0,
+            model: ControllerModel::Arm,
         }
     }
 }
@@ -180,6 +197,19 @@ impl SimulationConfig {
     /// motion (resonance, damping) RK4 would not follow at that step (ω h ≤ 0.3).
     pub fn plant_step(&self) -> f64 {
         self.plant_step_max.min(0.3 / self.plant.fastest_rate())
+    }
+
+    /// The arm the controller assumes: the plant itself, or the paper's (`model = paper`).
+    pub fn model_plant(&self) -> PlantParameters {
+        match self.model {
+            ControllerModel::Arm => self.plant,
+            ControllerModel::Paper => PlantParameters::default(),
+        }
+    }
+
+    /// True if the controller assumes an arm other than the real one.
+    pub fn has_model_error(&self) -> bool {
+        self.model_plant() != self.plant
     }
 
     /// Checks every parameter; the first invalid one is reported.

@@ -96,7 +96,7 @@ pub fn resolve_gain(config: &SimulationConfig) -> Result<FeedbackGain, Error> {
         PreliminaryFeedbackChoice::Paper => Ok(paper_gain()),
         PreliminaryFeedbackChoice::Lq => {
             let q_rest = [config.reference.end[0], config.lq_design_q2];
-            Ok(design_lq(&config.plant, config.controller.alpha, q_rest, &LqWeights::default())?.gain)
+            Ok(design_lq(&config.model_plant(), config.controller.alpha, q_rest, &LqWeights::default())?.gain)
         }
     }
 }

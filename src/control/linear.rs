@@ -75,10 +75,20 @@ pub fn linearize_at_rest(plant: &PlantParameters, alpha: [f64; 2], q_rest: [f64;
     LinearModel { a, b, c, d, rest }
 }
 
+impl LinearModel {
+    /// A + B K: the arm's matrix with the state feedback u = K x folded in. Out of line, so one
+    /// copy of the unrolled product serves the pencil, the limit and the sampled loop (the page's
+    /// module is smaller).
+    #[inline(never)]
+    pub fn with_feedback(&self, k: &FeedbackGain) -> Mat8 {
+        self.a + self.b * k
+    }
+}
+
 /// The pencil (E, F) of the linear DAE E ż = F z, z = (x, v), for the plant with the
 /// preliminary feedback u = K x + v folded in: F = [[A + BK, B], [C + DK, D]], E = diag(I8, 0).
 pub(crate) fn pencil(model: &LinearModel, gain: &FeedbackGain) -> (Mat10, Mat10) {
-    let a = model.a + model.b * gain;
+    let a = model.with_feedback(gain);
     let c = model.c + model.d * gain;
     let mut f = Mat10::zeros();
     f.fixed_view_mut::<8, 8>(0, 0).copy_from(&a);
@@ -193,7 +203,7 @@ pub fn limit_pair(model: &LinearModel, gain: &FeedbackGain) -> Result<LimitPair,
     for r in [0, 1, 3, 4, 6, 7] {
         off_motor_residual = off_motor_residual.max(complement.row(r).amax());
     }
-    let closed = model.a + model.b * (gain + k_lim);
+    let closed = model.with_feedback(&(gain + k_lim));
     let projected = coordinates * closed;
     let a4 = Matrix2::new(projected[(0, 2)], projected[(0, 5)], projected[(1, 2)], projected[(1, 5)]);
     let b2 = coordinates * model.b;

@@ -10,7 +10,7 @@
 //! mass matrix that is positive definite for every q2 is a check across parameters
 //! (`PlantParameters::validate`), refused with a one-line reason.
 
-use super::{Kind, NumberSpec, Param, Scale, Scope};
+use super::{Choice, Kind, NumberSpec, Param, Scale, Scope};
 
 /// A number of the arm: positive (`min_inclusive` false at 0) or from 0, paper's value `default`.
 const fn spec(
@@ -188,6 +188,25 @@ pub const ARM_PARAMS: [&Param; 11] = [&A1, &A2, &A3, &IR1, &BV1, &BV2, &FC1, &FC
 pub fn is_arm(key: &str) -> bool {
     ARM_PARAMS.iter().any(|p| p.key == key)
 }
+
+/// The arm the controller assumes: a model error is the next question after "another arm".
+pub const MODEL: Param = Param {
+    key: "model",
+    label: "The controller assumes",
+    symbol: "",
+    unit: "",
+    name: "the controller's model of the arm (model)",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "arm", label: "this arm (an exact model)" },
+            Choice { value: "paper", label: "the paper's arm (a model error)" },
+        ],
+        default: "arm",
+    },
+    scope: Scope::Run,
+    help: "What the predictor, the friction observer and the LQ design know: this arm exactly, or the paper's arm \
+           while the real one differs. The paper's Kₚᵣ is fixed either way. Is the loop robust to a wrong stiffness?",
+};
 
 /// The arm in words, only what differs from the paper's: "the paper's arm", or
 /// "B_v1 = 15 N m s/rad (paper: 1.4)" with every changed part, joined by ", ".

@@ -375,6 +375,7 @@ pub const PARAMS: &[&Param] = &[
     &super::EPS1,
     &super::EPS2,
     &super::K1,
+    &super::MODEL,
     &DURATION,
     &OUTPUT_INTERVAL,
     &Q2,

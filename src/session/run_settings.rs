@@ -3,7 +3,9 @@
 //! schema's run parameters, and the configuration they make. Run B of a comparison has its own
 //! δ, α and feedback over A's.
 
-use crate::control::config::{FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
+use crate::control::config::{
+    ControllerModel, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig,
+};
 use crate::model::PlantParameters;
 use crate::schema::{self, Param, Value};
 
@@ -48,11 +50,11 @@ impl RestPoint {
     }
 }
 
-/// Run settings left out of the state string while at their defaults (the rest point and the
-/// arm's parameters), so that links, CSV and SVG headers written before they existed still read
-/// the same.
+/// Run settings left out of the state string while at their defaults (the rest point, the
+/// arm's parameters and the controller's model of it), so that links, CSV and SVG headers
+/// written before they existed still read the same.
 pub(super) fn quiet_at_default(key: &str) -> bool {
-    key == "rest" || schema::is_arm(key)
+    key == "rest" || key == "model" || schema::is_arm(key)
 }
 
 /// The settings of one run, keyed by the schema's run parameters.
@@ -75,6 +77,8 @@ pub struct RunSettings {
     pub rest: RestPoint,
     /// The arm (the paper's table by default).
     pub plant: PlantParameters,
+    /// The arm the controller assumes.
+    pub model: ControllerModel,
 }
 
 impl Default for RunSettings {
@@ -93,6 +97,7 @@ impl Default for RunSettings {
             eps_ratio: number(&schema::EPS_RATIO),
             rest: RestPoint::from_name(choice(&schema::REST)).unwrap_or_default(),
             plant: PlantParameters::default(),
+            model: ControllerModel::from_name(choice(&schema::MODEL)).unwrap_or_default(),
         }
     }
 }
@@ -110,6 +115,7 @@ impl RunSettings {
         c.friction_compensation = self.friction;
         c.inner_loop = self.inner;
         c.reference.repeat_hold = self.repeat.then_some(REPEAT_HOLD);
+        c.model = self.model;
         c
     }
 
@@ -127,6 +133,7 @@ impl RunSettings {
             eps_ratio: c.controller.eps_ratio,
             rest: RestPoint::default(),
             plant: c.plant,
+            model: c.model,
         }
     }
 
@@ -143,6 +150,7 @@ impl RunSettings {
             "k" => Value::Number(self.k as f64),
             "eps_ratio" => Value::Number(self.eps_ratio),
             "rest" => Value::Choice(self.rest.name()),
+            "model" => Value::Choice(self.model.name()),
             _ => return self.plant.get(key).map(Value::Number),
         })
     }
@@ -164,6 +172,7 @@ impl RunSettings {
             ("k", Value::Number(x)) => self.k = x as usize,
             ("eps_ratio", Value::Number(x)) => self.eps_ratio = x,
             ("rest", Value::Choice(s)) => self.rest = RestPoint::from_name(s).unwrap_or(self.rest),
+            ("model", Value::Choice(s)) => self.model = ControllerModel::from_name(s).unwrap_or(self.model),
             (_, Value::Number(x)) => return self.plant.set(key, x),
             _ => return false,
         }

@@ -76,11 +76,26 @@ pub struct Story {
     /// Next to the K_pr control: the paper's gains were designed for the paper's arm at α = 2;
     /// empty where that is what runs.
     pub kpr_note: String,
+    /// Where the controller assumes the paper's arm on another arm (`model = paper`): where the
+    /// loop goes as δ → 0 instead of A4, which the closed forms describe for a controller that
+    /// knows the arm. Empty without a model error.
+    pub model_note: String,
 }
 
 /// "2.64 ± 29.58j 1/s".
 fn pair_text(re: f64, im: f64) -> String {
     minus(&format!("{re:.2} ± {:.2}j 1/s", im.abs()))
+}
+
+/// The eigenvalues of a real 2×2 matrix from its trace and determinant: "2.64 ± 29.58j 1/s", or
+/// "−1.00 and −5.00 1/s" where they are real.
+fn pair_of(trace: f64, det: f64) -> String {
+    let (mean, disc) = (trace / 2.0, trace * trace / 4.0 - det);
+    if disc < 0.0 {
+        pair_text(mean, (-disc).sqrt())
+    } else {
+        minus(&format!("{:.2} and {:.2} 1/s", mean + disc.sqrt(), mean - disc.sqrt()))
+    }
 }
 
 /// "2.64 1/s" with a minus sign where negative.
@@ -103,6 +118,9 @@ pub fn story(run: &Run) -> Option<Story> {
         format!("α1 = {}, α2 = {} 1/s", sig_trim(a1, 3), sig_trim(a2, 3))
     };
     let [open_re, open_im] = report.limit_pair_open[0];
+    // With a model error the loop's δ → 0 pair is not A4 (the closed forms are for a controller
+    // that knows the arm): the texts name both.
+    let model_error = config.has_model_error();
     let feed_says = if r.controller_feed > 0.0 {
         "the controller feeds the resonance"
     } else if r.controller_feed < 0.0 {
@@ -145,16 +163,23 @@ pub fn story(run: &Run) -> Option<Story> {
     let shift_of = |gain: &crate::control::feedback::FeedbackGain| feedback_shift(plant, settings.alpha, q2, gain);
     // The minimum-energy LQ design reflects an unstable pair into the left half-plane and leaves a
     // stable one where it is (tests/resonance.rs checks it against the design).
-    let lq_says = if open_re > 0.0 {
+    let lq_says = if model_error {
+        "is designed on the controller's model, the paper's arm, where it reflects that arm's unstable pair into \
+         the left half-plane"
+            .to_string()
+    } else if open_re > 0.0 {
         format!("reflects the unstable pair into the left half-plane (here {})", pair_text(-open_re, open_im))
     } else {
         format!("leaves a stable pair where it is (here {})", pair_text(open_re, open_im))
     };
-    let loop_limit = if settings.pf == crate::control::config::PreliminaryFeedbackChoice::Off {
-        "A4 — the ring in the pole plot".to_string()
-    } else {
-        let [re, im] = report.limit_pair[0];
-        format!("A4 with K_pr, {} — the diamond in the pole plot", pair_text(re, im))
+    let loop_limit = match (settings.pf == crate::control::config::PreliminaryFeedbackChoice::Off, model_error) {
+        (true, false) => "A4 — the ring in the pole plot".to_string(),
+        (true, true) => format!("{} — the ring in the pole plot (not A4: the model error moves it)", pair_text(open_re, open_im)),
+        (false, _) => {
+            let [re, im] = report.limit_pair[0];
+            let error = if model_error { " and the model error" } else { "" };
+            format!("A4 with K_pr{error}, {} — the diamond in the pole plot", pair_text(re, im))
+        }
     };
     let flexible = report.flexible_pair();
     let rho_set_by = match report.poles.first() {
@@ -173,7 +198,7 @@ pub fn story(run: &Run) -> Option<Story> {
         omega_joint: format!("{:.1} rad/s", r.omega_joint),
         omega_clamped: format!("{:.1} rad/s", r.omega_clamped),
         j_eff: format!("{:.2} kg m²", r.j_eff),
-        a4: pair_text(open_re, open_im),
+        a4: if model_error { pair_of(r.trace, r.determinant) } else { pair_text(open_re, open_im) },
         a4_trace: rate(r.trace),
         a4_det: format!("{:.0} 1/s²", r.determinant),
         re_a4: rate(r.real_part),
@@ -246,6 +271,23 @@ pub fn story(run: &Run) -> Option<Story> {
                      The LQ design is redone for the arm and α set."
                 )
             }
+        },
+        model_note: if model_error {
+            let [re, im] = report.limit_pair[0];
+            let with = if settings.pf == crate::control::config::PreliminaryFeedbackChoice::Off {
+                String::new()
+            } else {
+                format!(", and {} with its preliminary feedback", pair_text(re, im))
+            };
+            format!(
+                "The controller assumes the paper's arm, not this one: its predictor, friction observer and LQ design \
+                 work on the paper's numbers. As δ → 0 the loop tends to {} without Kₚᵣ{with} — not to A4 = {}, \
+                 which the formulas here give for a controller that knows this arm.",
+                pair_text(open_re, open_im),
+                pair_of(r.trace, r.determinant)
+            )
+        } else {
+            String::new()
         },
         kpr_works: if kpr.re < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()

@@ -44,11 +44,15 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         let arm: serde_json::Map<String, serde_json::Value> =
             schema::ARM_PARAMS.iter().zip(config.plant.values()).map(|(p, x)| (p.key.to_string(), json!(x))).collect();
         v["arm"] = serde_json::Value::Object(arm);
+        v["model"] = json!(config.model.name());
         v["stable_windows"] =
             json!({ "range": windows.range, "windows": windows.windows, "tolerance": windows.tolerance });
         return Ok(v.to_string() + "\n");
     }
     let mut text = analysis_text(&config, &report);
+    if config.has_model_error() {
+        text += "(the closed form below is for a controller that knows this arm; the pairs above include the model error)\n";
+    }
     text += &resonance_text(&report.resonance);
     text +=
         &format!("stable windows of δ at these α (edges within {:.0e} s): {}\n", windows.tolerance, windows.describe());
@@ -87,11 +91,13 @@ fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
         };
     }
     let pair = |p: [[f64; 2]; 2]| format!("{:.4} ± {:.4}j 1/s", p[0][0], p[0][1].abs());
-    s += &format!("δ → 0 pair A4 without preliminary feedback: {}\n", pair(r.limit_pair_open));
+    // With a model error the limit pair is no longer A4 (the controller's model is not the arm).
+    let name = if c.has_model_error() { "pair (with the model error)" } else { "pair A4" };
+    s += &format!("δ → 0 {name} without preliminary feedback: {}\n", pair(r.limit_pair_open));
     // With the feedback off the two lines would repeat one pair under a misleading label.
     if r.limit_pair != r.limit_pair_open {
         s += &format!(
-            "δ → 0 pair A4 with preliminary feedback ({}): {}\n",
+            "δ → 0 {name} with preliminary feedback ({}): {}\n",
             c.preliminary_feedback.name(),
             pair(r.limit_pair)
         );

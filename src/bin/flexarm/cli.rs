@@ -82,7 +82,7 @@ pub fn param_arg(p: &'static Param) -> Arg {
     }
 }
 
-/// The flags of these run parameters, `--arm` and the arm's own (every command that runs or
+/// The flags of these run parameters, `--arm`, the arm's own and `--model` (every command that runs or
 /// analyses the loop takes them), and `--state`.
 pub fn run_args(keys: &[&str]) -> Vec<Arg> {
     let mut args: Vec<Arg> = keys.iter().filter_map(|k| schema::param(k)).map(param_arg).collect();
@@ -95,7 +95,7 @@ pub fn run_args(keys: &[&str]) -> Vec<Arg> {
             arms.join(" | ")
         ),
     ));
-    args.extend(schema::ARM_PARAMS.iter().copied().map(param_arg));
+    args.extend(schema::ARM_PARAMS.iter().copied().chain([&schema::MODEL]).map(param_arg));
     args.push(
         Arg::new("state")
             .long("state")
@@ -119,7 +119,7 @@ pub fn read_settings(m: &ArgMatches, keys: &[&str]) -> Res<Settings> {
     if let Some(id) = m.get_one::<String>("arm") {
         settings.set_arm(id).map_err(lib_error)?;
     }
-    for p in schema::PARAMS.iter().filter(|p| keys.contains(&p.key) || schema::is_arm(p.key)) {
+    for p in schema::PARAMS.iter().filter(|p| keys.contains(&p.key) || schema::is_arm(p.key) || p.key == schema::MODEL.key) {
         let text = match p.kind {
             Kind::Switch { .. } => m.get_flag(p.key).then(|| "1".to_string()),
             _ => m.get_one::<String>(p.key).cloned(),
