@@ -217,7 +217,7 @@ fn the_numbers_the_lesson_quotes_are_the_programs() {
     let w = flexible.continuous.unwrap()[1];
     says(&format!("about {w:.0} rad/s ({:.1} Hz)", w / std::f64::consts::TAU));
     let slow = analyze(&config(0.01, 0.5, PreliminaryFeedbackChoice::Off), None).unwrap();
-    says(&format!("grow by e every {:.1} s", 1.0 / slow.growth_rate));
+    says(&format!("grow by a factor e every {:.1} s", 1.0 / slow.growth_rate));
     let re_half = slow.limit_pair_open[0][0];
     says(&format!("≈ {re_half:.2} 1/s is still positive"));
     let paper = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Paper), None).unwrap();

@@ -1,11 +1,13 @@
 //! Linear stability analysis of the sampled loop: its one-period map linearized at rest, the
 //! eigenvalues and spectral radius ρ ([`sampled`]), stability maps ρ(δ, α) as resumable jobs
 //! ([`map`]), the stable windows of δ ([`windows`]), and the flexible joint's resonance, the pair
-//! A4, in closed form ([`resonance`]).
+//! A4, in closed form ([`resonance`]), and why some larger δ work without preliminary feedback: the
+//! lag of the held torque behind the swing ([`lag`]).
 //!
 //! Architecture invariant: `analysis` reads the controller (`control`) and the arm (`model`) and
 //! is read by the session, the CLI and the figures; it never runs the nonlinear simulation.
 
+pub mod lag;
 pub mod map;
 pub mod resonance;
 pub mod sampled;

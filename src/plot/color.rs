@@ -143,6 +143,8 @@ pub mod palette {
     /// The stable windows of δ: bands on the ρ(δ) plot, marks on the map.
     pub const WINDOW_BAND: Color = Color::hex(0xd9ecf7);
     pub const WINDOW_MARK: Color = Color::hex(0x0b6e3a);
+    /// The lag law's window of δ over the ρ(δ) plot ([`crate::analysis::lag`]).
+    pub const LAG_BAND: Color = Color::hex(0xc27c0e);
     /// The Nyquist frequency ±π/δ in the s-plane.
     pub const NYQUIST: Color = Color::hex(0x8c5a00);
     /// The unit circle of the z-plane.

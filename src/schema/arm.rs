@@ -199,7 +199,7 @@ pub const MODEL: Param = Param {
     kind: Kind::Choice {
         options: &[
             Choice { value: "arm", label: "this arm (an exact model)" },
-            Choice { value: "paper", label: "the paper's arm (a model error)" },
+            Choice { value: "paper", label: "the paper's arm (a model error where this arm differs)" },
         ],
         default: "arm",
     },

@@ -80,6 +80,14 @@ pub struct Story {
     /// loop goes as δ → 0 instead of A4, which the closed forms describe for a controller that
     /// knows the arm. Empty without a model error.
     pub model_note: String,
+    /// Why some larger δ work (the lag law, [`crate::analysis::lag`]): ω = |Im A4| in rad/s and
+    /// Hz, how far the swing turns per period (ωδ) and by the time the torque acts (1.5 ωδ),
+    /// the growth the law predicts, and its window of δ.
+    pub omega_a4: String,
+    pub turn: String,
+    pub lag: String,
+    pub lag_growth: String,
+    pub lag_window: String,
 }
 
 /// "2.64 ± 29.58j 1/s".
@@ -132,6 +140,16 @@ pub fn story(run: &Run) -> Option<Story> {
         "Re A4 > 0: in the limit the pair grows"
     } else {
         "Re A4 < 0: in the limit the pair dies out"
+    };
+    // With a model error A4 is what a controller that knew the arm would leave: say so.
+    let re_a4_says = if model_error {
+        format!(
+            "{re_a4_says} — for a controller that knew this arm; with the model error the pair goes to {}, where it {}",
+            pair_text(open_re, open_im),
+            if open_re > 0.0 { "grows" } else { "dies out" }
+        )
+    } else {
+        re_a4_says.to_string()
     };
     let six_poles = if a1 == a2 {
         format!("{} 1/s (six times)", minus(&sig_trim(-a1, 3)))
@@ -191,6 +209,29 @@ pub fn story(run: &Run) -> Option<Story> {
         },
         None => "—".into(),
     };
+    let law = crate::analysis::lag::LagLaw::of(report);
+    let delta = settings.delta;
+    let pi = core::f64::consts::PI;
+    let lag_growth = if law.turn(delta) < pi {
+        minus(&format!(
+            "(3β/2) cos φ − B_v1/(2 I_r1) = {:.2} × {:.2} − {:.2} = {:.2} 1/s",
+            law.feed,
+            law.lag(delta).cos(),
+            law.damping,
+            law.growth(delta)
+        ))
+    } else {
+        "— beyond ωδ = π the swing is aliased and the law says nothing".into()
+    };
+    let lag_window = match law.window() {
+        Some([lo, hi]) => format!(
+            "ωδ from {:.2} to π, that is δ from {} to {} s",
+            law.turn(lo),
+            sig_trim(lo, 2),
+            sig_trim(hi, 3)
+        ),
+        None => "every small δ — the motor's damping outweighs the feed, no window needed".into(),
+    };
     Some(Story {
         alpha: alpha.clone(),
         rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { sig_trim(q2, 3) }),
@@ -205,7 +246,7 @@ pub fn story(run: &Run) -> Option<Story> {
         feed: rate(r.controller_feed),
         motor_damping: rate(r.motor_damping),
         feed_says: feed_says.into(),
-        re_a4_says: re_a4_says.into(),
+        re_a4_says,
         mu: format!("{:.2}", r.mu),
         beta: rate(r.beta),
         six_poles,
@@ -289,6 +330,11 @@ pub fn story(run: &Run) -> Option<Story> {
         } else {
             String::new()
         },
+        omega_a4: format!("{:.2} rad/s ({:.2} Hz)", law.omega, law.omega / (2.0 * pi)),
+        turn: format!("{:.2} rad ({:.3} of a turn)", law.turn(delta), law.turn(delta) / (2.0 * pi)),
+        lag: format!("{:.2} rad ({:.0}°)", law.lag(delta), law.lag(delta).to_degrees()),
+        lag_growth,
+        lag_window,
         kpr_works: if kpr.re < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()
         } else {

@@ -5,7 +5,9 @@
 
 use super::layout::Rect;
 use super::painter::{Painter, Point};
-use crate::analysis::StableWindows;
+use crate::analysis::lag::LagLaw;
+use crate::analysis::{StabilityReport, StableWindows};
+use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
 use crate::plot::color::Measure;
 use crate::plot::ticks::log_ticks;
 use crate::plot::{palette, Color, Ticks};
@@ -76,13 +78,21 @@ pub fn rho_ticks(rect_css: Rect, frame: &RhoFrame) -> (Vec<f64>, Vec<f64>) {
     (log_ticks(frame.x_range[0], frame.x_range[1], nx), Ticks::new(frame.y_range[0], frame.y_range[1], ny).collect())
 }
 
+/// The lag law's window of δ for a run without preliminary feedback (what the law explains: the
+/// controller alone); `None` with one, without an analysis, or where no window is needed.
+pub fn lag_band(config: Option<&SimulationConfig>, report: Option<&StabilityReport>) -> Option<[f64; 2]> {
+    let off = config?.preliminary_feedback == PreliminaryFeedbackChoice::Off;
+    off.then(|| LagLaw::of(report?).window()).flatten()
+}
+
 /// The static part: background, the windows shaded, grid lines, the border of stability (ρ = 1
-/// or ln ρ/δ = 0), and the curve of `measure`. Allocates nothing itself, but is drawn only when
-/// the windows or the layout change.
+/// or ln ρ/δ = 0), the curve of `measure`, and along the top the lag law's window (`lag`).
+/// Allocates nothing itself, but is drawn only when the windows or the layout change.
 pub fn draw_rho_static(
     painter: &mut Painter,
     frame: &RhoFrame,
     windows: Option<&StableWindows>,
+    lag: Option<[f64; 2]>,
     ticks: (&[f64], &[f64]),
     measure: Measure,
     dpr: f64,
@@ -113,6 +123,13 @@ pub fn draw_rho_static(
     for [d, rho] in &w.scan {
         let v = measure.value(*rho, *d);
         stroke.to(if v.is_finite() { [frame.x(*d), frame.y(v)] } else { [f64::NAN, f64::NAN] });
+    }
+    drop(stroke);
+    if let Some([lo, hi]) = lag {
+        let (x0, x1) = (frame.x(lo).max(r.x), frame.x(hi).min(r.right()));
+        if x1 > x0 {
+            painter.rect(Rect::new(x0, r.y, x1 - x0, 4.0 * dpr), palette::LAG_BAND);
+        }
     }
 }
 
