@@ -63,6 +63,27 @@ test('an arm slider moves A4, ρ and the windows; the URL keeps the arm and a re
     return out;
   });
   console.log(`# arm change to ρ, A4 and the windows of δ: median ${median(ms).toFixed(1)} ms over ${ms.length} changes of K1 (goal ≤ 16 ms)`);
+  // A drag of the stiffness slider for about three seconds, as a hand makes it: the page's main
+  // thread should not block (long tasks over 50 ms are counted, not asserted: a figure).
+  await page.evaluate(() => {
+    window.__longTasks = [];
+    new PerformanceObserver((list) => { for (const e of list.getEntries()) window.__longTasks.push(e.duration); })
+      .observe({ type: 'longtask', buffered: false });
+  });
+  const box = await page.locator('#k1').boundingBox();
+  await page.mouse.move(box.x + box.width * 0.3, box.y + box.height / 2);
+  await page.mouse.down();
+  for (let i = 0; i <= 90; i++) {
+    await page.mouse.move(box.x + box.width * (0.3 + 0.4 * Math.sin(i / 15) ** 2), box.y + box.height / 2);
+    await page.waitForTimeout(33);
+  }
+  await page.mouse.up();
+  await page.waitForTimeout(300);
+  const long = await page.evaluate(() => window.__longTasks);
+  const observed = await page.evaluate(() => PerformanceObserver.supportedEntryTypes.includes('longtask'));
+  assert.ok(observed, 'this Chromium reports long tasks');
+  assert.notEqual(new URL(page.url()).searchParams.get('k1'), k1, 'the drag moved K1');
+  console.log(`# a 3-s drag of K1: ${long.length} main-thread tasks over 50 ms${long.length ? ` (longest ${Math.max(...long).toFixed(0)} ms)` : ''} (goal: none)`);
   // Both maps after a change made as a user makes it (the page schedules their work then).
   await page.fill('#k1-number', '2000');
   // The maps' line names the times of the maps it shows: a new line, done, is the new arm's.

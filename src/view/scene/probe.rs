@@ -83,6 +83,16 @@ impl Scene {
             .unwrap_or([delta, f64::NAN]);
         let mut lines = vec![TipLine::plain(format!("δ = {} s", format::sig(delta, 3)))];
         stability_lines(rho, scan_delta, &mut lines);
+        // The second reading of δ: how far the joint's swing turns in a period, and how late the
+        // torque acts on it (the lag law, analysis::lag).
+        if let Some(law) = self.runs[0].report.as_ref().map(crate::analysis::lag::LagLaw::of) {
+            lines.push(TipLine::plain(format!(
+                "the swing turns ωδ = {:.2} rad per period ({:.2} of a turn); the torque acts 1.5 ωδ = {:.0}° later",
+                law.turn(delta),
+                law.turn(delta) / core::f64::consts::TAU,
+                law.lag(delta).to_degrees()
+            )));
+        }
         lines.push(TipLine::plain("click or drag to run at this δ"));
         let title = if self.options.measure == Measure::Rate { "ln ρ/δ at this α" } else { "ρ(δ) at this α" };
         Some(Probe { kind: "rho", title: title.into(), lines, x, y, map: None, delta: Some(delta), alpha: None })
