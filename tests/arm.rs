@@ -233,12 +233,16 @@ fn run_b_may_have_another_arm() {
 fn the_lesson_quotes_the_arms_numbers() {
     let lesson = flexarm::lesson::LESSON_TEXT;
     let says = |what: String| assert!(lesson.contains(&what), "the lesson should say {what:?}");
-    let on = |id: &str, delta: f64| config(flexarm::session::arm(id).unwrap().plant(), 2.0, delta, PreliminaryFeedbackChoice::Off);
+    let on = |id: &str, delta: f64| {
+        config(flexarm::session::arm(id).unwrap().plant(), 2.0, delta, PreliminaryFeedbackChoice::Off)
+    };
     let range = [0.002, 0.25];
     let soft = analyze(&on("softer", 0.05), None).unwrap();
     assert!(soft.spectral_radius > 1.0);
     says(format!("ρ = {:.3} at δ = 0.05 s", soft.spectral_radius));
-    let pair = |r: &flexarm::analysis::StabilityReport| format!("{:.2} ± {:.2}j", r.limit_pair_open[0][0], r.limit_pair_open[0][1].abs());
+    let pair = |r: &flexarm::analysis::StabilityReport| {
+        format!("{:.2} ± {:.2}j", r.limit_pair_open[0][0], r.limit_pair_open[0][1].abs())
+    };
     let paper = analyze(&on("paper", 0.05), None).unwrap();
     assert!(paper.spectral_radius < 1.0, "δ = 0.05 s works on the paper's arm");
     says(format!("A4 at {} 1/s instead of {}", pair(&soft), pair(&paper)));
@@ -269,9 +273,14 @@ fn the_motor_damping_that_kills_the_swing_has_two_bounds() {
     let j_eff = analyze(&config(p, 2.0, 0.01, PreliminaryFeedbackChoice::Off), None).unwrap().resonance.j_eff;
     let low = 3.0 * 2.0 * p.ir1;
     let high = (p.k1 / p.ir1 + p.k1 / j_eff + 6.0 * 4.0) * p.ir1 / (3.0 * 2.0);
-    assert!(text.starts_with(&format!("B_v1 > 3α I_r1 = {low:.1} N m s/rad, and (as δ → 0) below {high:.0} N m s/rad")), "{text}");
+    assert!(
+        text.starts_with(&format!("B_v1 > 3α I_r1 = {low:.1} N m s/rad, and (as δ → 0) below {high:.0} N m s/rad")),
+        "{text}"
+    );
     assert!(text.ends_with("(this arm: 15 N m s/rad)"), "{text}");
-    let rho = |bv1: f64| spectral_radius(&config(PlantParameters { bv1, ..p }, 2.0, 1e-4, PreliminaryFeedbackChoice::Off), None).unwrap();
+    let rho = |bv1: f64| {
+        spectral_radius(&config(PlantParameters { bv1, ..p }, 2.0, 1e-4, PreliminaryFeedbackChoice::Off), None).unwrap()
+    };
     assert!(rho(0.9 * low) > 1.0 && rho(1.1 * low) < 1.0, "the lower bound");
     assert!(rho(0.9 * high) < 1.0 && rho(1.1 * high) > 1.0, "the upper bound: {} {}", rho(0.9 * high), rho(1.1 * high));
 }

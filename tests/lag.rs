@@ -43,7 +43,11 @@ fn the_controller_alone_works_where_the_lagged_feed_brakes_the_swing_below_half_
                     continue;
                 };
                 // The true window the law describes: the first one reaching past its lower edge.
-                let w = windows.windows.iter().find(|w| w[1] > lo).unwrap_or_else(|| panic!("{case}: no window above {lo} s"));
+                let w = windows
+                    .windows
+                    .iter()
+                    .find(|w| w[1] > lo)
+                    .unwrap_or_else(|| panic!("{case}: no window above {lo} s"));
                 let (ratio, upper) = (w[0] / lo, law.turn(w[1]));
                 let merged = w[1] > 1.1 * hi;
                 rows.push(format!(
@@ -81,8 +85,13 @@ fn the_controller_alone_works_where_the_lagged_feed_brakes_the_swing_below_half_
         high_turn / pi
     );
     // The law is worth stating: in δ the same windows spread far wider than in ωδ.
-    let spread = first_windows.iter().cloned().fold(0.0, f64::max) / first_windows.iter().cloned().fold(f64::INFINITY, f64::min);
-    assert!(first_windows.len() >= 40 && spread > 50.0, "{} cases, lower edges in δ spread ×{spread:.1}", first_windows.len());
+    let spread =
+        first_windows.iter().cloned().fold(0.0, f64::max) / first_windows.iter().cloned().fold(f64::INFINITY, f64::min);
+    assert!(
+        first_windows.len() >= 40 && spread > 50.0,
+        "{} cases, lower edges in δ spread ×{spread:.1}",
+        first_windows.len()
+    );
 }
 
 /// The law's growth σ ≈ (3β/2) cos(1.5 ωδ) − B_v1/(2 I_r1) has the sign of ln ρ/δ for the paper's
@@ -113,7 +122,8 @@ fn the_lag_laws_growth_has_the_sign_of_the_loops() {
 #[test]
 fn the_page_states_the_law_with_the_tested_tolerances() {
     let page = include_str!("../www/index.html").split_whitespace().collect::<Vec<_>>().join(" ");
-    for said in ["within −2 … +16 % of the law's", "between 0.94 π and π", "3β/2 ≤ ω/4", "by a factor of more than 50"] {
+    for said in ["within −2 … +16 % of the law's", "between 0.94 π and π", "3β/2 ≤ ω/4", "by a factor of more than 50"]
+    {
         assert!(page.contains(said), "the page should say {said:?}");
     }
 }
@@ -142,4 +152,22 @@ fn the_lesson_quotes_the_laws_numbers() {
     }
     // At that δ the law and the loop agree: the swing is braked.
     assert!(law.growth(0.05) < 0.0 && report.spectral_radius < 1.0);
+}
+
+/// The README quotes the law on the paper's arm at α = 2 with the numbers of this module.
+#[test]
+fn the_readme_quotes_the_law() {
+    let readme = include_str!("../README.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    let c = config(1.0, 1.0, 2.0);
+    let law = LagLaw::of(&analyze(&c, None).unwrap());
+    let [lo, hi] = law.window().unwrap();
+    let first = stable_windows(&LinearSettings::of(&c, None), [0.002, 0.25]).unwrap().windows[0];
+    let said = format!(
+        "{:.2} to π on the paper's arm at α = 2, δ from {lo:.3} to {hi:.3} s against the true {:.3}–{:.3} s",
+        law.turn(lo),
+        first[0],
+        first[1]
+    );
+    assert!(readme.contains(&said), "README should say {said:?}");
+    assert!(readme.contains("within −2 … +16 % of the law's and the upper between 0.94 π and π wherever 3β/2 ≤ ω/4"));
 }

@@ -68,7 +68,10 @@ fn with_a_model_error_the_loop_tends_to_the_real_arm_under_the_models_limit_feed
                     .filter_map(|p| p.continuous)
                     .map(|[sr, si]| (sr - re).hypot(si - im.abs()))
                     .fold(f64::INFINITY, f64::min);
-                assert!(nearest <= 0.01 * re.hypot(im) + 0.05, "{state}: pair {re} ± {im}j, nearest pole {nearest} away");
+                assert!(
+                    nearest <= 0.01 * re.hypot(im) + 0.05,
+                    "{state}: pair {re} ± {im}j, nearest pole {nearest} away"
+                );
                 // …and where the pair grows it sets ρ: ρ ≈ e^{Re δ}.
                 if re > 0.0 {
                     let predicted = (re * delta).exp();
@@ -78,7 +81,11 @@ fn with_a_model_error_the_loop_tends_to_the_real_arm_under_the_models_limit_feed
                         r.spectral_radius
                     );
                 } else {
-                    assert!(r.spectral_radius < 1.0, "{state}: pair {re} ± {im}j in the left half-plane, ρ {}", r.spectral_radius);
+                    assert!(
+                        r.spectral_radius < 1.0,
+                        "{state}: pair {re} ± {im}j in the left half-plane, ρ {}",
+                        r.spectral_radius
+                    );
                 }
             }
         }
@@ -103,7 +110,10 @@ fn the_simulation_agrees_with_the_linear_verdict_under_a_model_error() {
         // Where it grows without diverging, at the rate the linear analysis gives.
         if let Verdict::Unstable { growth_rate } = m.verdict {
             let predicted = rho.ln() / c.controller.sampling_period;
-            assert!((growth_rate / predicted - 1.0).abs() <= 0.2, "{state}: grows at {growth_rate} against {predicted} 1/s");
+            assert!(
+                (growth_rate / predicted - 1.0).abs() <= 0.2,
+                "{state}: grows at {growth_rate} against {predicted} 1/s"
+            );
         }
         let grows = match m.verdict {
             Verdict::Stable | Verdict::SlewLocked { .. } => false,

@@ -60,6 +60,12 @@ fn the_lessons_resonance_numbers_are_the_programs() {
     let off = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Off), None).unwrap();
     let [re, im] = off.poles[off.flexible_pair()[0].unwrap()].continuous.unwrap();
     says(&format!("the loop's pair is at {re:.2} ± {im:.2}j 1/s"), LESSON_TEXT, "lesson");
+    // One name per frequency: the loop's pole at this δ, its limit A4, the arm alone.
+    let tau = core::f64::consts::TAU;
+    says(&format!("the loop's pole at this δ swings at {im:.2} rad/s ({:.2} Hz)", im / tau), LESSON_TEXT, "lesson");
+    let a4 = off.limit_pair_open[0][1];
+    says(&format!("it tends to A4, the ring, at {a4:.2} rad/s ({:.2} Hz)", a4 / tau), LESSON_TEXT, "lesson");
+    says(&format!("would ring at {:.2} rad/s", own.im), LESSON_TEXT, "lesson");
     says(&format!("α* = B_v1/(3 I_r1) ≈ {:.2} 1/s", alpha_star(&plant)), LESSON_TEXT, "lesson");
     says(&format!("rings near this frequency ({:.1} rad/s)", r.omega_joint), LESSON_TEXT, "lesson");
     let slow = analyze(&config(0.01, 0.5, PreliminaryFeedbackChoice::Off), None).unwrap();

@@ -86,7 +86,8 @@ impl Session {
         let mut next = self.settings;
         next.apply_preset(p)?;
         // A figure is the paper's: say so when it brings the paper's arm back.
-        let arm = if next.a.plant != self.settings.a.plant { " It runs on the paper's arm, as the paper did." } else { "" };
+        let arm =
+            if next.a.plant != self.settings.a.plant { " It runs on the paper's arm, as the paper did." } else { "" };
         self.apply(next, true, &format!("Preset applied; the run restarted: {}.{arm}", p.title))
     }
 

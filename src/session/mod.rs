@@ -8,6 +8,7 @@
 
 mod changes;
 pub mod controls;
+pub mod equations;
 pub mod export;
 pub mod lesson;
 pub mod maps;

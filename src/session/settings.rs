@@ -388,7 +388,12 @@ mod tests {
         let mut s = Settings::page_start();
         s.read("delta=0.04&alpha1=1&alpha2=3&pf=off&friction=held&inner=sampled&k=10&eps_ratio=6", Source::Page)
             .unwrap();
-        s.b = Some(CompareSettings { pf: PreliminaryFeedbackChoice::Lq, delta: 0.02, alpha: [0.5, 0.5], arm: Some("damped") });
+        s.b = Some(CompareSettings {
+            pf: PreliminaryFeedbackChoice::Lq,
+            delta: 0.02,
+            alpha: [0.5, 0.5],
+            arm: Some("damped"),
+        });
         let q = s.to_query();
         let mut back = Settings::default();
         assert!(back.read(&q, Source::Page).unwrap().is_empty(), "{q}");
@@ -407,7 +412,10 @@ mod tests {
         assert_eq!(s.a.alpha, [0.5, 0.5]);
         assert_eq!(s.a.delta, 0.01);
         assert!(Settings::default().read("delta=abc", Source::CommandLine).is_err());
-        assert!(Settings::default().read("delta=5", Source::Page).unwrap().is_empty(), "outside the slider, as the page writes a typed δ");
+        assert!(
+            Settings::default().read("delta=5", Source::Page).unwrap().is_empty(),
+            "outside the slider, as the page writes a typed δ"
+        );
         assert!(Settings::default().read("delta=50", Source::Page).unwrap().len() == 1, "beyond the hard limits");
         // A value that cannot run with the others is skipped alone; the rest of the link holds.
         let mut s = Settings::page_start();

@@ -88,6 +88,13 @@ pub struct Story {
     pub lag: String,
     pub lag_growth: String,
     pub lag_window: String,
+    /// The same numbers as equations (MathML, [`super::equations`]) for the page's `data-math`
+    /// elements: the law (4.3), Re A4, ρ, ln ρ/δ and the lag law.
+    pub math_constraint: String,
+    pub math_re_a4: String,
+    pub math_rho: String,
+    pub math_growth: String,
+    pub math_lag: String,
 }
 
 /// "2.64 ± 29.58j 1/s".
@@ -192,7 +199,9 @@ pub fn story(run: &Run) -> Option<Story> {
     };
     let loop_limit = match (settings.pf == crate::control::config::PreliminaryFeedbackChoice::Off, model_error) {
         (true, false) => "A4 — the ring in the pole plot".to_string(),
-        (true, true) => format!("{} — the ring in the pole plot (not A4: the model error moves it)", pair_text(open_re, open_im)),
+        (true, true) => {
+            format!("{} — the ring in the pole plot (not A4: the model error moves it)", pair_text(open_re, open_im))
+        }
         (false, _) => {
             let [re, im] = report.limit_pair[0];
             let error = if model_error { " and the model error" } else { "" };
@@ -211,6 +220,7 @@ pub fn story(run: &Run) -> Option<Story> {
     };
     let law = crate::analysis::lag::LagLaw::of(report);
     let delta = settings.delta;
+    let equations = super::equations::equations(report, settings.alpha, delta);
     let pi = core::f64::consts::PI;
     let lag_growth = if law.turn(delta) < pi {
         minus(&format!(
@@ -224,12 +234,9 @@ pub fn story(run: &Run) -> Option<Story> {
         "— beyond ωδ = π the swing is aliased and the law says nothing".into()
     };
     let lag_window = match law.window() {
-        Some([lo, hi]) => format!(
-            "ωδ from {:.2} to π, that is δ from {} to {} s",
-            law.turn(lo),
-            sig_trim(lo, 2),
-            sig_trim(hi, 3)
-        ),
+        Some([lo, hi]) => {
+            format!("ωδ from {:.2} to π, that is δ from {} to {} s", law.turn(lo), sig_trim(lo, 2), sig_trim(hi, 3))
+        }
         None => "every small δ — the motor's damping outweighs the feed, no window needed".into(),
     };
     Some(Story {
@@ -282,7 +289,11 @@ pub fn story(run: &Run) -> Option<Story> {
                 "B_v1 > {} I_r1 = {:.1} N m s/rad, and (as δ → 0) below {:.0} N m s/rad, beyond which the motor \
                  no longer swings and a slow real mode grows (this arm: {} N m s/rad)",
                 // With α1 ≠ α2 the pair is fed 3β/2, β = α1 + μ (α1 − α2) (the explanation derives it).
-                if a1 == a2 { "3α".to_string() } else { format!("3β (β = α1 + μ (α1 − α2) = {:.2} 1/s)", r.beta) },
+                if a1 == a2 {
+                    "3α".to_string()
+                } else {
+                    format!("3β (β = α1 + μ (α1 − α2) = {:.2} 1/s)", r.beta)
+                },
                 3.0 * r.beta * plant.ir1,
                 stiffness * plant.ir1 / (3.0 * r.beta),
                 crate::schema::format_number(plant.bv1)
@@ -335,6 +346,11 @@ pub fn story(run: &Run) -> Option<Story> {
         lag: format!("{:.2} rad ({:.0}°)", law.lag(delta), law.lag(delta).to_degrees()),
         lag_growth,
         lag_window,
+        math_constraint: equations.constraint,
+        math_re_a4: equations.re_a4,
+        math_rho: equations.rho,
+        math_growth: equations.growth,
+        math_lag: equations.lag,
         kpr_works: if kpr.re < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()
         } else {

@@ -136,7 +136,11 @@ pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure, log_errors: boo
                 item(Glyph::Swatch, palette::WINDOW_BAND, band),
                 item(Glyph::Line, palette::POLE_STABLE, border),
                 // Drawn only without preliminary feedback: the law explains the controller alone.
-                item(Glyph::Line, palette::LAG_BAND, "no Kₚᵣ: the window the lag law gives, ωδ up to π (see “Why some larger δ work”)"),
+                item(
+                    Glyph::Line,
+                    palette::LAG_BAND,
+                    "no Kₚᵣ: the window the lag law gives, ωδ up to π (see “Why some larger δ work”)",
+                ),
             ],
             scale: None,
         });

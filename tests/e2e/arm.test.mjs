@@ -20,6 +20,10 @@ test('an arm slider moves A4, ρ and the windows; the URL keeps the arm and a re
   await page.waitForFunction(() => window.flexarm.session.status().windows != null, null, { timeout: 20000 });
   const paper = { story: await story(page), windows: await windowsText(page) };
   assert.equal(paper.story.arm, "the paper's arm");
+  // The equations are MathML in the page, with the sentence's numbers.
+  await page.waitForFunction(() => document.querySelector('[data-math="re_a4"] math') != null);
+  const re = await page.$eval('[data-math="re_a4"]', (e) => e.textContent);
+  assert.ok(re.includes(paper.story.re_a4.replace(' 1/s', '')), `${re} has ${paper.story.re_a4}`);
   // By keyboard: open the group, Tab to the stiffness slider, arrow keys up through round values.
   await page.focus('#arm-details > summary');
   await page.keyboard.press('Enter');

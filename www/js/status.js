@@ -61,6 +61,9 @@ export function createStatus() {
 
   // The explanation's numbers: each `data-live` element shows the story's entry of that name.
   const live = /** @type {HTMLElement[]} */ ([...document.querySelectorAll('[data-live]')]);
+  const math = /** @type {HTMLElement[]} */ ([...document.querySelectorAll('[data-math]')]);
+  /** @type {Map<HTMLElement, string>} */
+  const shownMath = new Map();
   const strip = byId('verdict-strip');
   const embedVerdict = byId('embed-verdict');
   /** @param {Status} s @param {number} now */
@@ -101,6 +104,14 @@ export function createStatus() {
     setText(mapTitle, s.maps.title);
     mapRow.hidden = !s.maps.shown;
     for (const node of live) setSymbols(node, liveText(s.story, node.dataset.live ?? ''));
+    // The equations: MathML the story writes (from Rust's own numbers, no user text in them).
+    for (const node of math) {
+      const html = s.story?.[`math_${node.dataset.math}`] ?? '';
+      if (shownMath.get(node) !== html) {
+        shownMath.set(node, html);
+        node.innerHTML = html;
+      }
+    }
   }
 
   /** The stable windows of δ: in words under the slider, and as bands on its track (none while

@@ -34,7 +34,11 @@ pub fn describe_config(c: &SimulationConfig) -> String {
         c.inner_loop.name(),
         c.friction_compensation.name(),
         flexarm::schema::arm_text(&c.plant.values())
-    ) + if c.has_model_error() { "  the controller assumes the paper's arm (model = paper): a model error\n" } else { "" }
+    ) + if c.has_model_error() {
+        "  the controller assumes the paper's arm (model = paper): a model error\n"
+    } else {
+        ""
+    }
 }
 
 /// "δ = 0.01 s, α = 2 1/s" (or α1, α2 when they differ).

@@ -145,8 +145,9 @@ impl Scene {
             format!("it flips sign every period: a swing at the Nyquist frequency π/δ = {} rad/s", format::sig(im, 4))
         } else if im > 1e-9 {
             format!(
-                "swings at Im s = {} rad/s (natural frequency |s| = {})",
+                "swings at Im s = {} rad/s = {} Hz (natural frequency |s| = {} rad/s)",
                 format::sig(im, 4),
+                format::sig(im / core::f64::consts::TAU, 3),
                 format::sig(pole.omega, 3)
             )
         } else {
