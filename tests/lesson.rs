@@ -215,7 +215,7 @@ fn the_numbers_the_lesson_quotes_are_the_programs() {
     // The sampled pair's frequency at δ = 0.01 s.
     let flexible = off.poles.iter().find(|p| p.continuous.is_some_and(|c| c[1] > 20.0)).unwrap();
     let w = flexible.continuous.unwrap()[1];
-    says(&format!("about {w:.0} rad/s ({:.1} Hz)", w / std::f64::consts::TAU));
+    says(&format!("swings at {w:.2} rad/s ({:.2} Hz)", w / std::f64::consts::TAU));
     let slow = analyze(&config(0.01, 0.5, PreliminaryFeedbackChoice::Off), None).unwrap();
     says(&format!("grow by a factor e every {:.1} s", 1.0 / slow.growth_rate));
     let re_half = slow.limit_pair_open[0][0];
