@@ -209,7 +209,7 @@ fn the_numbers_the_lesson_quotes_are_the_programs() {
     let says = |what: &str| assert!(LESSON_TEXT.contains(what), "the lesson should say {what:?}");
     let off = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Off), None).unwrap();
     says(&format!("ρ = {:.4} > 1", off.spectral_radius));
-    says(&format!("by a factor e every {:.2} s", 1.0 / off.growth_rate));
+    says(&format!("e-fold every {:.2} s", 1.0 / off.growth_rate));
     let [re, im] = off.limit_pair_open[0];
     says(&format!("A4 ≈ {re:.2} ± {:.2}j", im.abs()));
     // The sampled pair's frequency at δ = 0.01 s.
@@ -217,7 +217,7 @@ fn the_numbers_the_lesson_quotes_are_the_programs() {
     let w = flexible.continuous.unwrap()[1];
     says(&format!("swings at {w:.2} rad/s ({:.2} Hz)", w / std::f64::consts::TAU));
     let slow = analyze(&config(0.01, 0.5, PreliminaryFeedbackChoice::Off), None).unwrap();
-    says(&format!("grow by a factor e every {:.1} s", 1.0 / slow.growth_rate));
+    says(&format!("grow e-fold every {:.1} s", 1.0 / slow.growth_rate));
     let re_half = slow.limit_pair_open[0][0];
     says(&format!("≈ {re_half:.2} 1/s is still positive"));
     let paper = analyze(&config(0.01, 2.0, PreliminaryFeedbackChoice::Paper), None).unwrap();

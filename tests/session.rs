@@ -219,7 +219,7 @@ fn fig_5_3_is_called_unstable_from_the_first_frame_and_the_simulation_confirms_i
     let first = s.status().runs[0].clone();
     assert_eq!((first.verdict, first.headline), ("unstable", "Unstable"));
     assert!(
-        first.detail.starts_with("ρ = 1.0239 > 1 — in the long run the errors grow by a factor e every 0.42 s"),
+        first.detail.starts_with("ρ = 1.0239 > 1 — in the long run the errors grow e-fold every 0.42 s"),
         "{}",
         first.detail
     );
@@ -259,7 +259,7 @@ fn a_stable_run_is_confirmed_and_a_borderline_one_is_called_so() {
     }
     let st = &s.status().runs[0];
     assert_eq!(st.verdict, "stable");
-    assert!(st.detail.contains("shrink by a factor e every"), "{}", st.detail);
+    assert!(st.detail.contains("shrink e-fold every"), "{}", st.detail);
     assert!(st.observed.contains("1/s —") && !st.observed.contains("but"), "{}", st.observed);
     // ρ within a hair of 1: neither word. (At α = 2 without K_pr, near the window's edge.)
     let mut s = session("delta=0.03501&pf=off&alpha=2");

@@ -65,7 +65,7 @@ pub struct RunStatus {
     /// The verdict as the headline says it: "Unstable", "Stable", "Borderline", "Diverged",
     /// "Bounded oscillation".
     pub headline: &'static str,
-    /// The prediction in a sentence: "ρ = 1.0239 > 1 — in the long run the errors grow by a factor e every
+    /// The prediction in a sentence: "ρ = 1.0239 > 1 — in the long run the errors grow e-fold every
     /// 0.42 s".
     pub detail: String,
     /// What the simulation has observed, and whether it agrees.
@@ -95,9 +95,9 @@ fn two(v: f64) -> String {
     }
 }
 
-/// "by a factor e every 0.42 s" for a rate (1/s).
+/// "e-fold every 0.42 s" for a rate (1/s).
 fn e_folding(rate: f64) -> String {
-    format!("by a factor e every {} s", sig_trim(1.0 / rate.abs(), 2))
+    format!("e-fold every {} s", sig_trim(1.0 / rate.abs(), 2))
 }
 
 /// The prediction's sentence.
@@ -218,7 +218,7 @@ fn observation(
         };
         let why = match prediction {
             Some((Prediction::Unstable, rate)) if near_rest => format!(
-                "too early to tell: ρ > 1 predicts growth by a factor e every {} s, which the slew's dying transient can hide \
+                "too early to tell: ρ > 1 predicts growth e-fold every {} s, which the slew's dying transient can hide \
                  for a while",
                 sig_trim(1.0 / rate.abs(), 2)
             ),
@@ -227,7 +227,7 @@ fn observation(
                 "as ρ ≈ 1 predicts: a mode of the loop that hardly grows or decays".to_string()
             }
             Some((_, rate)) if near_rest => format!(
-                "too early to tell: near rest the loop is linear, and ρ predicts {} by a factor e every {} s",
+                "too early to tell: near rest the loop is linear, and ρ predicts {} e-fold every {} s",
                 if rate > 0.0 { "growth" } else { "decay" },
                 sig_trim(1.0 / rate.abs(), 2)
             ),
@@ -252,13 +252,13 @@ fn observation(
             ),
             Some((Prediction::Stable, _)) => "each slew's transient dies out, as ρ < 1 predicts".into(),
             Some((Prediction::Borderline, rate)) => format!(
-                "as ρ ≈ 1 predicts: the slowest mode hardly {} ({} by a factor e every {} s), and every slew excites it again",
+                "as ρ ≈ 1 predicts: the slowest mode hardly {} ({} e-fold every {} s), and every slew excites it again",
                 if rate > 0.0 { "grows" } else { "decays" },
                 if rate > 0.0 { "growing" } else { "decaying" },
                 sig_trim(1.0 / rate.abs(), 2)
             ),
             Some((Prediction::Unstable, rate)) => format!(
-                "too early to tell: ρ > 1 predicts growth by a factor e every {} s from slew to slew",
+                "too early to tell: ρ > 1 predicts growth e-fold every {} s from slew to slew",
                 sig_trim(1.0 / rate.abs(), 2)
             ),
             None => caveat(config),

@@ -272,7 +272,7 @@ test('Fig. 5.3 is called unstable from the first second and never "stable"; the 
   const first = await verdictText(page);
   const wall = Date.now() - opened;
   console.log(`# Fig. 5.3 called unstable ${wall} ms after the page's controls were up: "${first}"`);
-  assert.match(first, /Unstable ρ = 1\.0239 > 1 — in the long run the errors grow by a factor e every 0\.42 s/);
+  assert.match(first, /Unstable ρ = 1\.0239 > 1 — in the long run the errors grow e-fold every 0\.42 s/);
   assert.ok(!/\bstable\b/i.test(first), first);
   // Screenshots at 0.5 s and 3 s of simulated time; the status never says "stable".
   const shots9 = { 0.5: 'fig5.3-at-0.5s.png', 3: 'fig5.3-at-3s.png' };
