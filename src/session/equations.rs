@@ -144,22 +144,20 @@ pub fn equations(report: &StabilityReport, alpha: [f64; 2], delta: f64) -> Equat
         ]
         .concat(),
     );
-    let phase = [
-        mi("φ"),
-        mo("="),
-        mn("1.5"),
+    // Two short lines, so that a narrow column shows them whole: the turn per period, the lag.
+    let turn = [
         mi("ω"),
         mi("δ"),
         mo("="),
-        mn("1.5"),
-        mo("×"),
         quantity(&fixed2(law.omega), "rad/s"),
         mo("×"),
         quantity(&sig_trim(delta, 3), "s"),
         mo("="),
-        quantity(&fixed2(law.lag(delta)), "rad"),
+        quantity(&fixed2(law.turn(delta)), "rad"),
     ]
     .concat();
+    let phase =
+        [mi("φ"), mo("="), mn("1.5"), mi("ω"), mi("δ"), mo("="), quantity(&fixed2(law.lag(delta)), "rad")].concat();
     // The growth on a line of its own (a narrow column does not have to scroll); beyond ωδ = π the
     // law has nothing to say.
     let growth_by_law = if law.turn(delta) >= core::f64::consts::PI {
@@ -178,5 +176,5 @@ pub fn equations(report: &StabilityReport, alpha: [f64; 2], delta: f64) -> Equat
         ]
         .concat()
     };
-    Equations { constraint, re_a4, rho, growth, lag: [math(&phase), math(&growth_by_law)].concat() }
+    Equations { constraint, re_a4, rho, growth, lag: [math(&turn), math(&phase), math(&growth_by_law)].concat() }
 }

@@ -224,20 +224,25 @@ pub fn story(run: &Run) -> Option<Story> {
     let pi = core::f64::consts::PI;
     let lag_growth = if law.turn(delta) < pi {
         minus(&format!(
-            "(3β/2) cos φ − B_v1/(2 I_r1) = {:.2} × {:.2} − {:.2} = {:.2} 1/s",
+            "σ ≈ (3β/2) cos φ − B_v1/(2 I_r1) = {:.2} × {:.2} − {:.2} = {:.2} 1/s",
             law.feed,
             law.lag(delta).cos(),
             law.damping,
             law.growth(delta)
         ))
     } else {
-        "— beyond ωδ = π the swing is aliased and the law says nothing".into()
+        "none here: beyond ωδ = π the swing is aliased and the law says nothing".into()
     };
     let lag_window = match law.window() {
         Some([lo, hi]) => {
-            format!("ωδ from {:.2} to π, that is δ from {} to {} s", law.turn(lo), sig_trim(lo, 2), sig_trim(hi, 3))
+            format!(
+                "ωδ from arccos(B_v1/(3β I_r1))/1.5 = {:.2}, where σ = 0, up to π: δ from {} to {} s",
+                law.turn(lo),
+                sig_trim(lo, 2),
+                sig_trim(hi, 3)
+            )
         }
-        None => "every small δ — the motor's damping outweighs the feed, no window needed".into(),
+        None => "every small δ: here the motor's damping outweighs the feed, and no lag is needed".into(),
     };
     Some(Story {
         alpha: alpha.clone(),
