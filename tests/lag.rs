@@ -162,6 +162,20 @@ fn the_lesson_quotes_the_laws_numbers() {
     ] {
         assert!(lesson.contains(&said), "the lesson should say {said:?}");
     }
+    // The next step's softer spring (K1 ÷ 4) at the same δ: too little lag.
+    let mut soft = config(0.25, 1.0, 2.0);
+    soft.controller.sampling_period = 0.05;
+    let soft_report = analyze(&soft, None).unwrap();
+    let soft_law = LagLaw::of(&soft_report);
+    let [soft_lo, _] = soft_law.window().unwrap();
+    let said = format!(
+        "at {:.2} rad/s the softer arm's swing turns only ωδ = {:.2} rad per period at δ = 0.05 s, short of the {:.2}",
+        soft_law.omega,
+        soft_law.turn(0.05),
+        soft_law.turn(soft_lo)
+    );
+    assert!(lesson.contains(&said), "the lesson should say {said:?}");
+    assert!(soft_law.turn(0.05) < soft_law.turn(soft_lo) && soft_report.spectral_radius > 1.0);
     // At that δ the law and the loop agree: the swing is braked.
     assert!(law.growth(0.05) < 0.0 && report.spectral_radius < 1.0);
 }
