@@ -290,3 +290,17 @@ fn common_session(query: &str) -> flexarm::session::Session {
     assert!(notices.is_empty(), "{notices:?}");
     s
 }
+
+/// Run B's arm choices are the arm presets, in their order (the schema cannot read the session's
+/// list at compile time, so the two are held together here).
+#[test]
+fn run_bs_arm_choices_are_the_arm_presets() {
+    let schema::Kind::Choice { options, .. } = schema::B_ARM.kind else { panic!("b_arm is a choice") };
+    assert_eq!(options[0].value, "same");
+    let ids: Vec<&str> = options[1..].iter().map(|c| c.value).collect();
+    let presets: Vec<&str> = flexarm::session::ARMS.iter().map(|a| a.id).collect();
+    assert_eq!(ids, presets);
+    for (choice, preset) in options[1..].iter().zip(flexarm::session::ARMS.iter()) {
+        assert_eq!(choice.label.to_lowercase(), preset.title.to_lowercase(), "{}", preset.id);
+    }
+}

@@ -86,9 +86,9 @@ pub struct LoopModel {
     settings: LinearSettings,
     /// The arm linearized: what the sampled plant is.
     model: LinearModel,
-    /// The controller's model linearized: what the predictor integrates (the same as `model`
-    /// unless the controller assumes another arm).
-    predictor: LinearModel,
+    /// The controller's model linearized, where it is not the arm (`model = paper` on another
+    /// arm): what the predictor integrates instead of `model`.
+    predictor: Option<LinearModel>,
     gain: FeedbackGain,
 }
 
@@ -99,7 +99,9 @@ impl LoopModel {
         config.validate()?;
         let gain = resolve_gain(&config)?;
         let model = linearize_at_rest(&settings.plant, settings.controller.alpha, settings.rest);
-        let predictor = linearize_at_rest(&config.model_plant(), settings.controller.alpha, settings.rest);
+        let predictor = config
+            .has_model_error()
+            .then(|| linearize_at_rest(&config.model_plant(), settings.controller.alpha, settings.rest));
         Ok(Self { settings: *settings, model, predictor, gain })
     }
 
@@ -113,7 +115,8 @@ impl LoopModel {
         let mut controller = self.settings.controller;
         controller.sampling_period = delta;
         controller.validate()?;
-        sampled_loop_matrix(&self.model, &self.predictor, &self.gain, &controller, self.settings.inner_loop)
+        let predictor = self.predictor.as_ref().unwrap_or(&self.model);
+        sampled_loop_matrix(&self.model, predictor, &self.gain, &controller, self.settings.inner_loop)
     }
 
     /// ρ at sampling period `delta`.
@@ -155,8 +158,7 @@ impl LoopModel {
                 }),
             })
             .collect();
-        // The controller's model where it is not the arm.
-        let error = self.settings.config().has_model_error().then_some(&self.predictor);
+        let error = self.predictor.as_ref();
         let open = limit_pair_with_model(&self.model, error, &FeedbackGain::zeros())?;
         let with_pf = limit_pair_with_model(&self.model, error, &self.gain)?;
         let fixed = self.settings.preliminary_feedback == PreliminaryFeedbackChoice::Paper;

@@ -78,10 +78,10 @@ fn quantity(v: &str, unit: &str) -> String {
     [mn(v), mi(&format!("&#8201;{unit}"))].concat()
 }
 
-/// The equations of run A's analysis at sampling period `delta` under α.
-pub fn equations(report: &StabilityReport, alpha: [f64; 2], delta: f64) -> Equations {
+/// The equations of run A's analysis (`report`, its lag law `law`) at sampling period `delta`
+/// under α.
+pub fn equations(report: &StabilityReport, law: &LagLaw, alpha: [f64; 2], delta: f64) -> Equations {
     let r = &report.resonance;
-    let law = LagLaw::of(report);
     let n = |v: f64| mn(&sig_trim(v, 4));
     // (4.3) written out per link; one line for both where α1 = α2.
     let line = |i: &str, a: f64| {
@@ -127,12 +127,7 @@ pub fn equations(report: &StabilityReport, alpha: [f64; 2], delta: f64) -> Equat
         ]
         .concat(),
     );
-    // As the verdict prints ρ: five decimals where it is nearly 1.
-    let rho_text = if (report.spectral_radius - 1.0).abs() < 5e-4 {
-        format!("{:.5}", report.spectral_radius)
-    } else {
-        format!("{:.4}", report.spectral_radius)
-    };
+    let rho_text = super::story::rho_text(report.spectral_radius);
     let rho = math(&[mi("ρ"), mo("="), mi("max"), mo("|"), mi("λ"), mo("|"), mo("="), mn(&rho_text)].concat());
     let growth = math(
         &[

@@ -118,6 +118,15 @@ fn rate(v: f64) -> String {
     minus(&format!("{v:.2} 1/s"))
 }
 
+/// ρ as the verdict prints it: five decimals where it is nearly 1.
+pub(super) fn rho_text(rho: f64) -> String {
+    if (rho - 1.0).abs() < 5e-4 {
+        format!("{rho:.5}")
+    } else {
+        format!("{rho:.4}")
+    }
+}
+
 /// The story of run A's settings; `None` while its analysis is missing (the page keeps "—").
 pub fn story(run: &Run) -> Option<Story> {
     let report = run.analysis().report()?;
@@ -220,7 +229,7 @@ pub fn story(run: &Run) -> Option<Story> {
     };
     let law = crate::analysis::lag::LagLaw::of(report);
     let delta = settings.delta;
-    let equations = super::equations::equations(report, settings.alpha, delta);
+    let equations = super::equations::equations(report, &law, settings.alpha, delta);
     let pi = core::f64::consts::PI;
     let lag_growth = if law.turn(delta) < pi {
         minus(&format!(
@@ -269,12 +278,7 @@ pub fn story(run: &Run) -> Option<Story> {
         },
         alpha_star: format!("{:.2} 1/s", r.alpha_star),
         delta: format!("{} s", sig_trim(settings.delta, 3)),
-        // As the verdict prints it: five decimals where it is nearly 1.
-        rho: if (report.spectral_radius - 1.0).abs() < 5e-4 {
-            format!("{:.5}", report.spectral_radius)
-        } else {
-            format!("{:.4}", report.spectral_radius)
-        },
+        rho: rho_text(report.spectral_radius),
         growth: rate(report.growth_rate),
         loop_pair,
         loop_limit,
