@@ -110,6 +110,16 @@ impl LoopModel {
         &self.settings
     }
 
+    /// The arm linearized (what the sampled plant is).
+    pub(crate) fn arm(&self) -> &LinearModel {
+        &self.model
+    }
+
+    /// The preliminary feedback's gain K.
+    pub(crate) fn gain(&self) -> &FeedbackGain {
+        &self.gain
+    }
+
     /// The one-period map at sampling period `delta` (validated against the schema's range).
     pub fn loop_matrix(&self, delta: f64) -> Result<Mat10, Error> {
         let mut controller = self.settings.controller;
@@ -145,7 +155,11 @@ impl LoopModel {
 
     /// The whole report at the model's own δ.
     pub fn report(&self) -> Result<StabilityReport, Error> {
-        let delta = self.settings.controller.sampling_period;
+        self.report_at(self.settings.controller.sampling_period)
+    }
+
+    /// The whole report at sampling period `delta`.
+    pub fn report_at(&self, delta: f64) -> Result<StabilityReport, Error> {
         let ev = loop_eigenvalues(&self.loop_matrix(delta)?);
         let spectral_radius = ev.first().map(|c| c.norm()).unwrap_or(0.0);
         let poles = ev

@@ -1,0 +1,133 @@
+//! The mechanism behind the windows (issue 19, beyond the paper): the swing's energy over one
+//! period, `flexarm::analysis::energy`, checked against ρ over arms (K1 and I_r1 from a quarter to
+//! four times the paper's, the damped motor) and α.
+
+use flexarm::analysis::energy::{swing_energy, SwingEnergy};
+use flexarm::analysis::{stable_windows, LinearSettings, LoopModel, StabilityReport};
+use flexarm::*;
+use nalgebra::Complex;
+
+fn config(k1: f64, ir1: f64, bv1: Option<f64>, alpha: f64, pf: PreliminaryFeedbackChoice) -> SimulationConfig {
+    let mut c = SimulationConfig::default();
+    c.plant.k1 *= k1;
+    c.plant.ir1 *= ir1;
+    if let Some(b) = bv1 {
+        c.plant.bv1 = b;
+    }
+    c.controller.alpha = [alpha; 2];
+    c.preliminary_feedback = pf;
+    c
+}
+
+const ARMS: [(f64, f64, Option<f64>); 6] = [
+    (1.0, 1.0, None),
+    (0.25, 1.0, None),
+    (4.0, 1.0, None),
+    (1.0, 0.25, None),
+    (1.0, 4.0, None),
+    (1.0, 1.0, Some(15.0)),
+];
+
+/// The flexible pair's eigenvalue and its energy at δ.
+fn energy_at(model: &LoopModel, delta: f64) -> (StabilityReport, Complex<f64>, SwingEnergy) {
+    let report = model.report_at(delta).unwrap();
+    let [Some(i), _] = report.flexible_pair() else { panic!("no flexible pair at δ = {delta}") };
+    let [re, im] = report.poles[i].discrete;
+    let lambda = Complex::new(re, im);
+    let energy = swing_energy(model, delta, lambda).unwrap();
+    (report, lambda, energy)
+}
+
+/// The work–energy theorem over one period: the held torque's work, the preliminary feedback's
+/// and the damping's loss add up to the change of the swing's energy, |λ|² − 1 — for every arm,
+/// α, preliminary feedback and δ (including past the Nyquist frequency). Without preliminary
+/// feedback the held torque's lag behind the motor's velocity gives its work's sign.
+#[test]
+fn the_swings_energy_balance_is_exact() {
+    let mut checked = 0;
+    for (k1, ir1, bv1) in ARMS {
+        for alpha in [1.0, 2.0, 3.0] {
+            for pf in [PreliminaryFeedbackChoice::Off, PreliminaryFeedbackChoice::Paper, PreliminaryFeedbackChoice::Lq] {
+                let c = config(k1, ir1, bv1, alpha, pf);
+                let model = LoopModel::new(&LinearSettings::of(&c, None)).unwrap();
+                for delta in [0.002, 0.007, 0.02, 0.05, 0.09, 0.15, 0.24] {
+                    let (_, lambda, e) = energy_at(&model, delta);
+                    let case = format!("K1×{k1} Ir1×{ir1} Bv1 {bv1:?} α={alpha} {pf:?} δ={delta}");
+                    let expected = lambda.norm_sqr() - 1.0;
+                    assert!((e.net() - expected).abs() <= 1e-5 * (1.0 + expected.abs()), "{case}: {e:?} vs {expected}");
+                    assert!(e.damping >= 0.0, "{case}");
+                    if pf == PreliminaryFeedbackChoice::Off {
+                        assert_eq!(e.preliminary_feedback, 0.0, "{case}");
+                        // The phase says which: it pushes while less than a quarter turn behind the
+                        // motor's velocity (or more than three), where its work is clear of 0.
+                        if e.held_torque.abs() > 0.01 {
+                            assert_eq!(e.held_torque > 0.0, e.lag.cos() > 0.0, "{case}: {e:?}");
+                        }
+                    }
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(checked, 6 * 3 * 3 * 7);
+}
+
+/// Every edge of the controller's stable windows of δ (no preliminary feedback) where the swing
+/// is the loop's largest pole is an edge of the swing's energy balance: there the held torque's
+/// work crosses the damping's loss. The other edges, at the far end (ωδ past π, δ ≥ 0.14 s on
+/// this grid), are set by a slow mode (|s| < 1 1/s), not by the swing.
+#[test]
+fn every_window_edge_of_the_swing_is_where_the_held_torque_stops_or_starts_feeding_it() {
+    let (mut swing_edges, mut slow_edges) = (Vec::new(), Vec::new());
+    for (k1, ir1, bv1) in ARMS {
+        for alpha in [1.0, 2.0, 3.0] {
+            let c = config(k1, ir1, bv1, alpha, PreliminaryFeedbackChoice::Off);
+            let settings = LinearSettings::of(&c, None);
+            let model = LoopModel::new(&settings).unwrap();
+            let windows = stable_windows(&settings, [0.002, 0.25]).unwrap();
+            for w in &windows.windows {
+                for edge in *w {
+                    if edge <= windows.range[0] * 1.0001 || edge >= windows.range[1] * 0.9999 {
+                        continue; // the end of the range, not an edge
+                    }
+                    let case = format!("K1×{k1} Ir1×{ir1} Bv1 {bv1:?} α={alpha}, edge δ = {edge:.4} s");
+                    let (below, above) = (energy_at(&model, edge * 0.995), energy_at(&model, edge * 1.005));
+                    // The unstable side's largest pole: is it the swing?
+                    let unstable = [&below, &above].into_iter().find(|(r, _, _)| r.spectral_radius > 1.0);
+                    let Some((report, lambda, _)) = unstable else {
+                        continue; // ρ touches 1 within ±0.5 %: too close to call
+                    };
+                    if (lambda.norm() - report.spectral_radius).abs() < 1e-9 {
+                        let surplus = |e: &SwingEnergy| e.held_torque - e.damping;
+                        assert!(surplus(&below.2).signum() != surplus(&above.2).signum(), "{case}: {below:?} {above:?}");
+                        swing_edges.push(edge);
+                    } else {
+                        let [re, im] = report.poles[0].continuous.unwrap();
+                        assert!(re.hypot(im) < 1.0 && edge >= 0.14, "{case}: set by s = {re} ± {im}j");
+                        slow_edges.push(edge);
+                    }
+                }
+            }
+        }
+    }
+    println!("swing edges {swing_edges:?}\nslow edges {slow_edges:?}");
+    assert!(swing_edges.len() >= 40, "{} swing edges", swing_edges.len());
+}
+
+/// What the page says at δ = 0.01, 0.05 and 0.15 s on the paper's arm at α = 2, no preliminary
+/// feedback: the held torque feeds, brakes, feeds the swing — and the lag it has behind the
+/// motor's velocity says why (less than a quarter turn: pushes; between a quarter and three
+/// quarters: brakes).
+#[test]
+fn on_the_papers_arm_the_held_torque_feeds_brakes_and_feeds_again() {
+    let c = config(1.0, 1.0, None, 2.0, PreliminaryFeedbackChoice::Off);
+    let model = LoopModel::new(&LinearSettings::of(&c, None)).unwrap();
+    for (delta, stable) in [(0.01, false), (0.05, true), (0.15, false)] {
+        let (report, _, e) = energy_at(&model, delta);
+        assert_eq!(report.spectral_radius < 1.0, stable, "δ = {delta}");
+        let pushes = e.lag.cos() > 0.0;
+        assert_eq!(pushes, !stable, "δ = {delta}: lag {:.2} rad", e.lag);
+        assert_eq!(e.held_torque > 0.0, pushes, "δ = {delta}: {e:?}");
+        println!("δ = {delta}: {e:?}");
+    }
+}
