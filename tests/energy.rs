@@ -130,4 +130,42 @@ fn on_the_papers_arm_the_held_torque_feeds_brakes_and_feeds_again() {
         assert_eq!(e.held_torque > 0.0, pushes, "δ = {delta}: {e:?}");
         println!("δ = {delta}: {e:?}");
     }
+    // In the narrow gap near the Nyquist frequency the swing is two real eigenvalues, flipping sign
+    // every period, and the held torque pushes the larger one in phase.
+    let (report, lambda, e) = energy_at(&model, 0.104);
+    assert!(report.spectral_radius > 1.0 && lambda.re < -1.0 && lambda.im == 0.0, "{lambda}");
+    assert!(e.lag.cos() > 0.99 && e.held_torque > e.damping, "{e:?}");
+}
+
+/// The page says what these tests check, and the story's sentence carries the report's numbers.
+#[test]
+fn the_page_states_the_mechanism_as_tested() {
+    let page = include_str!("../www/index.html").split_whitespace().collect::<Vec<_>>().join(" ");
+    for said in [
+        "Checked over six arms (K1 and I<sub>r1</sub> ×¼ and ×4, a damped motor) and α = 1, 2, 3 1/s",
+        "every edge of the windows of the controller alone where the swing sets ρ is where W<sub>v</sub> crosses D",
+        "at δ ≥ 0.14 s, belong to a slow mode (|s| &lt; 1 1/s)",
+    ] {
+        assert!(page.contains(said), "the page should say {said:?}");
+    }
+}
+
+mod common;
+
+/// The story's sentence agrees with the pole it describes: it pushes and the swing grows where
+/// |λ| > 1 for the flexible pair, it brakes and the swing dies out where |λ| < 1.
+#[test]
+fn the_storys_mechanism_agrees_with_the_flexible_pair() {
+    for (delta, pushes, grows) in [(0.01, true, true), (0.05, false, false), (0.15, true, true)] {
+        let s = common::session(&format!("preset=fig5.3&pf=off&delta={delta}"));
+        let story = s.status().story.unwrap();
+        println!("{}", story.energy);
+        assert!(story.energy.contains(if pushes { "it pushes" } else { "it brakes" }), "{}", story.energy);
+        assert!(story.energy.ends_with(if grows { "so it grows." } else { "so it dies out." }), "{}", story.energy);
+        assert!(story.math_energy.starts_with("<math"), "{}", story.math_energy);
+    }
+    let s = common::session("preset=fig5.2&delta=0.01");
+    let story = s.status().story.unwrap();
+    println!("{}", story.energy);
+    assert!(story.energy.contains("Kₚᵣ takes"), "{}", story.energy);
 }

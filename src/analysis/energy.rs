@@ -20,6 +20,7 @@
 //! velocity and brakes beyond — the lag law of [`super::lag`], here computed, not estimated.
 
 use nalgebra::{Complex, SMatrix, Vector3};
+use serde::{Deserialize, Serialize};
 
 use super::sampled::LoopModel;
 use crate::control::config::InnerLoop;
@@ -36,10 +37,8 @@ type CVec10 = SMatrix<Complex<f64>, 10, 1>;
 type CVec3 = Vector3<Complex<f64>>;
 
 /// The flexible pair's energy over one sampling period, each as a fraction of its energy at t_n.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SwingEnergy {
-    /// λ of the flexible pair (the one with Im λ ≥ 0).
-    pub eigenvalue: Complex<f64>,
     /// Work of the held (predicted) torque v: > 0 feeds the swing, < 0 brakes it.
     pub held_torque: f64,
     /// Work of the preliminary feedback's torque K x (0 without it).
@@ -122,7 +121,6 @@ pub fn swing_energy(loop_model: &LoopModel, delta: f64, lambda: Complex<f64>) ->
     // Phasors e^{st}: a torque lagging the velocity by φ is the velocity's phase minus φ.
     let lag = (mean_motor_velocity / v[0]).arg().rem_euclid(core::f64::consts::TAU);
     Ok(SwingEnergy {
-        eigenvalue: lambda,
         held_torque: held * scale,
         preliminary_feedback: pf * scale,
         damping: loss * scale,

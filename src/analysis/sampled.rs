@@ -183,7 +183,7 @@ impl LoopModel {
             &self.gain,
             fixed,
         );
-        Ok(StabilityReport {
+        let mut report = StabilityReport {
             sampling_period: delta,
             rest: self.settings.rest,
             spectral_radius,
@@ -192,7 +192,13 @@ impl LoopModel {
             limit_pair_open: pair(&open),
             limit_pair: pair(&with_pf),
             resonance,
-        })
+            swing_energy: None,
+        };
+        if let [Some(i), _] = report.flexible_pair() {
+            let [re, im] = report.poles[i].discrete;
+            report.swing_energy = super::energy::swing_energy(self, delta, Complex::new(re, im)).ok();
+        }
+        Ok(report)
     }
 }
 
@@ -258,6 +264,9 @@ pub struct StabilityReport {
     pub limit_pair: [[f64; 2]; 2],
     /// The joint's resonance in closed form at the rest point (what A4 is made of).
     pub resonance: ResonanceReport,
+    /// The flexible pair's energy over one period: who feeds it, who takes it out
+    /// ([`super::energy`]); `None` without a flexible pair.
+    pub swing_energy: Option<super::energy::SwingEnergy>,
 }
 
 impl StabilityReport {

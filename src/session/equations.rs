@@ -22,6 +22,9 @@ pub struct Equations {
     pub growth: String,
     /// φ = 1.5 ωδ = … rad; σ ≈ (3β/2) cos φ − B_v1/(2 I_r1) = … 1/s.
     pub lag: String,
+    /// The swing's energy over one period: |λ|² − 1 = W_v (+ W_K) − D = … (empty without a
+    /// flexible pair).
+    pub energy: String,
 }
 
 fn mi(x: &str) -> String {
@@ -171,5 +174,37 @@ pub fn equations(report: &StabilityReport, law: &LagLaw, alpha: [f64; 2], delta:
         ]
         .concat()
     };
-    Equations { constraint, re_a4, rho, growth, lag: [math(&turn), math(&phase), math(&growth_by_law)].concat() }
+    let energy = report.swing_energy.map_or(String::new(), |e| {
+        let percent = |v: f64| mn(&format!("{}&#8201;%", crate::plot::format::minus(&format!("{:.1}", 100.0 * v))));
+        let signed = |v: f64| if v < 0.0 { [mo("−"), percent(-v)].concat() } else { [mo("+"), percent(v)].concat() };
+        let with_feedback = e.preliminary_feedback != 0.0;
+        let mut terms = vec![sub(&mi("W"), &mi("v"))];
+        let mut values = vec![percent(e.held_torque)];
+        if with_feedback {
+            terms.extend([mo("+"), sub(&mi("W"), &mi("K"))]);
+            values.push(signed(e.preliminary_feedback));
+        }
+        terms.extend([mo("−"), mi("D")]);
+        values.push([mo("−"), percent(e.damping)].concat());
+        math(
+            &[
+                frac(&[mi("ΔE"), mo("/"), mi("E")].concat(), &mi("period")),
+                mo("="),
+                terms.concat(),
+                mo("="),
+                values.concat(),
+                mo("="),
+                percent(e.net()),
+            ]
+            .concat(),
+        )
+    });
+    Equations {
+        constraint,
+        re_a4,
+        rho,
+        growth,
+        lag: [math(&turn), math(&phase), math(&growth_by_law)].concat(),
+        energy,
+    }
 }

@@ -88,6 +88,10 @@ pub struct Story {
     pub lag: String,
     pub lag_growth: String,
     pub lag_window: String,
+    /// The mechanism at this δ, computed ([`crate::analysis::energy`]): how far the held torque
+    /// lags the swing and what share of the swing's energy it, the preliminary feedback and the
+    /// arm's damping put in or take out each period. Empty without a flexible pair.
+    pub energy: String,
     /// The same numbers as equations (MathML, [`super::equations`]) for the page's `data-math`
     /// elements: the law (4.3), Re A4, ρ, ln ρ/δ and the lag law.
     pub math_constraint: String,
@@ -95,6 +99,7 @@ pub struct Story {
     pub math_rho: String,
     pub math_growth: String,
     pub math_lag: String,
+    pub math_energy: String,
 }
 
 /// "2.64 ± 29.58j 1/s".
@@ -125,6 +130,54 @@ pub(super) fn rho_text(rho: f64) -> String {
     } else {
         format!("{rho:.4}")
     }
+}
+
+/// "1.5 %" (one decimal, U+2212 for minus).
+fn percent(v: f64) -> String {
+    minus(&format!("{:.1} %", 100.0 * v))
+}
+
+/// The swing's energy over one period at δ, in words (`law_lag`: the lag law's φ, for comparison).
+fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f64) -> String {
+    // The lag in (−180°, 180°]: beyond half a turn behind, the torque is ahead.
+    let mut lag = e.lag.to_degrees();
+    if lag > 180.0 {
+        lag -= 360.0;
+    }
+    let phase = if lag >= 0.0 {
+        format!("lags the motor's velocity by {lag:.0}°")
+    } else {
+        format!("runs {:.0}° ahead of the motor's velocity", -lag)
+    };
+    let role = if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
+    let law = if law_lag < core::f64::consts::PI * 1.5 {
+        format!(" (the law's φ: {:.0}°)", law_lag.to_degrees())
+    } else {
+        String::new()
+    };
+    let share = |v: f64, whose: &str| {
+        if v >= 0.0 {
+            format!("puts {}{whose} in", percent(v))
+        } else {
+            format!("takes {}{whose} out", percent(-v))
+        }
+    };
+    let feedback = if e.preliminary_feedback != 0.0 {
+        format!(", Kₚᵣ {}", share(e.preliminary_feedback, ""))
+    } else {
+        String::new()
+    };
+    let net = e.net();
+    format!(
+        "At δ = {} s the held torque {phase}{law} — {role}. Over each period it {}{feedback}, and the arm's damping \
+         takes {} out: the swing's energy changes by {}{} a period, so it {}.",
+        sig_trim(delta, 3),
+        share(e.held_torque, " of the swing's energy"),
+        percent(e.damping),
+        if net > 0.0 { "+" } else { "" },
+        percent(net),
+        if net > 0.0 { "grows" } else { "dies out" }
+    )
 }
 
 /// The story of run A's settings; `None` while its analysis is missing (the page keeps "—").
@@ -360,6 +413,8 @@ pub fn story(run: &Run) -> Option<Story> {
         math_rho: equations.rho,
         math_growth: equations.growth,
         math_lag: equations.lag,
+        math_energy: equations.energy,
+        energy: report.swing_energy.map_or(String::new(), |e| energy_text(&e, law.lag(delta), delta)),
         kpr_works: if kpr.re < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()
         } else {
