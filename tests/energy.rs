@@ -34,7 +34,9 @@ fn energy_at(model: &LoopModel, delta: f64) -> (StabilityReport, Complex<f64>, S
     let [Some(i), _] = report.flexible_pair() else { panic!("no flexible pair at δ = {delta}") };
     let [re, im] = report.poles[i].discrete;
     let lambda = Complex::new(re, im);
-    let energy = swing_energy(model, delta, lambda).unwrap();
+    let mode = report.swing_mode.expect("the pair's mode");
+    let energy = swing_energy(model, delta, &mode).unwrap();
+    assert_eq!(report.swing_energy, Some(energy));
     (report, lambda, energy)
 }
 

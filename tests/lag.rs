@@ -197,3 +197,26 @@ fn the_readme_quotes_the_law() {
     assert!(readme.contains(&said), "README should say {said:?}");
     assert!(readme.contains("within −2 … +16 % of the law's and the upper between 0.94 π and π wherever 3β/2 ≤ ω/4"));
 }
+
+mod common;
+
+/// The ρ(δ) panel's second axis: ωδ along the top, π where δ = π/|Im A4| (half a swing per
+/// period), labelled at a laptop's size with its title.
+#[test]
+fn the_rho_curve_has_an_axis_in_turns_per_period() {
+    use flexarm::view::{Scene, ViewOptions};
+    let s = common::session("preset=fig5.3&mode=full&tab=poles");
+    let report = s.run(0).unwrap().analysis().report().unwrap().clone();
+    let omega = LagLaw::of(&report).omega;
+    let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
+    scene.draw_session(&s);
+    let panels = scene.panel_info();
+    let rho = panels.iter().find(|p| p.id == "rho-curve").expect("the ρ(δ) panel");
+    let pi = rho.x2_labels.iter().find(|t| t.text == "π").expect("a tick at π");
+    assert!((pi.value - core::f64::consts::PI / omega).abs() < 1e-12, "{} vs π/ω", pi.value);
+    assert!(rho.x2_label.starts_with("ωδ [rad/period]") && rho.x2_label.contains("2π = one swing"));
+    let labels = scene.labels();
+    let shown = |text: &str| labels.iter().any(|l| l.panel == "rho-curve" && l.text == text);
+    assert!(shown("π") && shown("π/2"), "{:?}", labels.iter().filter(|l| l.panel == "rho-curve").collect::<Vec<_>>());
+    assert!(labels.iter().any(|l| l.panel == "rho-curve" && l.text.starts_with("ωδ [rad/period]")));
+}

@@ -19,10 +19,11 @@
 //! torque's work alone decides: it pushes while it is less than a quarter turn behind the motor's
 //! velocity and brakes beyond — the lag law of [`super::lag`], here computed, not estimated.
 
-use nalgebra::{Complex, SMatrix, Vector3};
+use nalgebra::{Complex, SVector, Vector3};
 use serde::{Deserialize, Serialize};
 
 use super::sampled::LoopModel;
+use super::swing::SwingMode;
 use crate::control::config::InnerLoop;
 use crate::control::linear::{expm, Mat10};
 use crate::error::Error;
@@ -32,9 +33,6 @@ use crate::model::plant::Plant;
 /// least [`SUBSTEPS_PER_RADIAN`] per radian the arm's fastest motion turns.
 const MIN_SUBSTEPS: usize = 48;
 const SUBSTEPS_PER_RADIAN: f64 = 16.0;
-
-type CVec10 = SMatrix<Complex<f64>, 10, 1>;
-type CVec3 = Vector3<Complex<f64>>;
 
 /// The flexible pair's energy over one sampling period, each as a fraction of its energy at t_n.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -57,22 +55,21 @@ impl SwingEnergy {
     }
 }
 
-/// The swing's energy over one period at sampling period `delta` for the pair with eigenvalue
-/// `lambda` (from [`super::StabilityReport::flexible_pair`] at the same δ).
-pub fn swing_energy(loop_model: &LoopModel, delta: f64, lambda: Complex<f64>) -> Result<SwingEnergy, Error> {
-    let phi = loop_model.loop_matrix(delta)?;
-    let zeta = eigenvector(&phi, lambda).ok_or(Error::Analysis("the flexible pair has no eigenvector"))?;
+/// The swing's energy over one period at sampling period `delta` for the pair's `mode` (its
+/// eigenvector of the one-period map at the same δ).
+pub fn swing_energy(loop_model: &LoopModel, delta: f64, mode: &SwingMode) -> Result<SwingEnergy, Error> {
+    let [re, im] = mode.shape_vectors();
     let arm = loop_model.arm();
     let gain = loop_model.gain();
     let held_feedback = loop_model.settings().inner_loop == InnerLoop::Sampled;
     let params = loop_model.settings().plant;
-    let plant = Plant::new(params);
-    let mass = plant.mass_matrix(loop_model.settings().rest[1]).map(|m| Complex::new(m, 0.0));
-    let input = Plant::input_matrix().map(|m| Complex::new(m, 0.0));
-    let damping = Vector3::new(0.0, params.bv2, params.bv1);
+    let mass = Plant::new(params).mass_matrix(loop_model.settings().rest[1]);
+    let input = Plant::input_matrix();
+    let damping = [0.0, params.bv2, params.bv1];
 
-    // The motion over the period: (x, u_held) with ẋ = A' x + B u_held, u_held constant, where
-    // A' = A + BK for a continuous preliminary feedback, and u_held = v + K x(t_n) when it is held.
+    // The motion over the period, real and imaginary parts apart (the map is real): (x, u_held)
+    // with ẋ = A' x + B u_held, u_held constant, where A' = A + BK for a continuous preliminary
+    // feedback, and u_held = v + K x(t_n) when it is held.
     let mut aug = Mat10::zeros();
     let a = if held_feedback { arm.a } else { arm.with_feedback(gain) };
     // √‖A‖ bounds the fastest frequency of a mass–spring system (‖A‖ ≥ K/m).
@@ -81,66 +78,52 @@ pub fn swing_energy(loop_model: &LoopModel, delta: f64, lambda: Complex<f64>) ->
     let h = delta / substeps as f64;
     aug.fixed_view_mut::<8, 8>(0, 0).copy_from(&(a * h));
     aug.fixed_view_mut::<8, 2>(0, 8).copy_from(&(arm.b * h));
-    let step = expm(&aug).map(|m| Complex::new(m, 0.0));
-    let k = gain.map(|m| Complex::new(m, 0.0));
-    let x0 = zeta.fixed_rows::<8>(0).into_owned();
-    let v = zeta.fixed_rows::<2>(8).into_owned();
-    let mut state = zeta;
+    let step = expm(&aug);
+    let parts = [re, im];
+    let x0 = parts.map(|p| p.fixed_rows::<8>(0).into_owned());
+    let v = parts.map(|p| p.fixed_rows::<2>(8).into_owned());
+    let mut state = parts;
     if held_feedback {
-        let u0 = v + k * x0;
-        state.fixed_rows_mut::<2>(8).copy_from(&u0);
+        for (s, (v, x)) in state.iter_mut().zip(v.iter().zip(&x0)) {
+            s.fixed_rows_mut::<2>(8).copy_from(&(v + gain * x));
+        }
     }
 
-    let q = |s: &CVec10| -> (CVec3, CVec3) {
-        (Vector3::new(s[0], s[1], s[2]), Vector3::new(s[3], s[4], s[5]))
-    };
-    let energy = |s: &CVec10| {
-        let (q, qd) = q(s);
-        let stretch = q[2] - q[0];
-        0.5 * (qd.dotc(&(mass * qd)).re + params.k1 * stretch.norm_sqr())
-    };
-    let e0 = energy(&zeta);
+    // Real quadratic forms of the complex vector: Re(aᴴ M b) = aᵣᵀ M bᵣ + aᵢᵀ M bᵢ.
+    let velocity = |s: &SVector<f64, 10>| Vector3::new(s[3], s[4], s[5]);
+    let e0 = parts
+        .iter()
+        .map(|p| {
+            let qd = velocity(p);
+            0.5 * (qd.dot(&(mass * qd)) + params.k1 * (p[2] - p[0]).powi(2))
+        })
+        .sum::<f64>();
     if !(e0 > 0.0 && e0.is_finite()) {
         return Err(Error::Analysis("the flexible pair carries no energy"));
     }
     let (mut held, mut pf, mut loss) = (0.0, 0.0, 0.0);
-    let mut mean_motor_velocity = Complex::new(0.0, 0.0);
+    let mut mean_motor_velocity = [0.0; 2];
     for i in 0..=substeps {
         let weight = if i == 0 || i == substeps { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
-        let x = state.fixed_rows::<8>(0).into_owned();
-        let (_, qd) = q(&state);
-        let feedback = if held_feedback { k * x0 } else { k * x };
-        let power = |u: &SMatrix<Complex<f64>, 2, 1>| qd.dotc(&(input * u)).re;
-        held += weight * power(&v);
-        pf += weight * power(&feedback);
-        loss += weight * (0..3).map(|j| damping[j] * qd[j].norm_sqr()).sum::<f64>();
-        mean_motor_velocity += qd[2] * weight;
-        state = step * state;
+        for part in 0..2 {
+            let qd = velocity(&state[part]);
+            let x = state[part].fixed_rows::<8>(0).into_owned();
+            let feedback = if held_feedback { gain * x0[part] } else { gain * x };
+            held += weight * qd.dot(&(input * v[part]));
+            pf += weight * qd.dot(&(input * feedback));
+            loss += weight * (0..3).map(|j| damping[j] * qd[j] * qd[j]).sum::<f64>();
+            mean_motor_velocity[part] += weight * qd[2];
+            state[part] = step * state[part];
+        }
     }
     let scale = h / 3.0 / e0;
     // Phasors e^{st}: a torque lagging the velocity by φ is the velocity's phase minus φ.
-    let lag = (mean_motor_velocity / v[0]).arg().rem_euclid(core::f64::consts::TAU);
+    let [vr, vi] = [mean_motor_velocity[0], mean_motor_velocity[1]];
+    let lag = (Complex::new(vr, vi) / Complex::new(v[0][0], v[1][0])).arg().rem_euclid(core::f64::consts::TAU);
     Ok(SwingEnergy {
         held_torque: held * scale,
         preliminary_feedback: pf * scale,
         damping: loss * scale,
         lag,
     })
-}
-
-/// The eigenvector of `phi` for the eigenvalue `lambda`, by two steps of inverse iteration.
-fn eigenvector(phi: &Mat10, lambda: Complex<f64>) -> Option<CVec10> {
-    let shift = lambda + Complex::new(1e-10, 1e-10) * lambda.norm().max(1e-12);
-    let m: SMatrix<Complex<f64>, 10, 10> = phi.map(|v| Complex::new(v, 0.0)) - SMatrix::identity() * shift;
-    let lu = m.lu();
-    let mut v = CVec10::from_element(Complex::new(1.0, 0.3));
-    for _ in 0..2 {
-        v = lu.solve(&v)?;
-        let n = v.norm();
-        if !(n > 0.0 && n.is_finite()) {
-            return None;
-        }
-        v /= Complex::new(n, 0.0);
-    }
-    Some(v)
 }

@@ -12,6 +12,7 @@ pub mod lag;
 pub mod map;
 pub mod resonance;
 pub mod sampled;
+pub mod swing;
 pub mod windows;
 
 pub use map::{log_space, stability_map, MapGrid, MapJob, StabilityMap};

@@ -160,7 +160,8 @@ impl LoopModel {
 
     /// The whole report at sampling period `delta`.
     pub fn report_at(&self, delta: f64) -> Result<StabilityReport, Error> {
-        let ev = loop_eigenvalues(&self.loop_matrix(delta)?);
+        let phi = self.loop_matrix(delta)?;
+        let ev = loop_eigenvalues(&phi);
         let spectral_radius = ev.first().map(|c| c.norm()).unwrap_or(0.0);
         let poles = ev
             .iter()
@@ -192,11 +193,14 @@ impl LoopModel {
             limit_pair_open: pair(&open),
             limit_pair: pair(&with_pf),
             resonance,
+            swing_mode: None,
             swing_energy: None,
         };
         if let [Some(i), _] = report.flexible_pair() {
             let [re, im] = report.poles[i].discrete;
-            report.swing_energy = super::energy::swing_energy(self, delta, Complex::new(re, im)).ok();
+            report.swing_mode = super::swing::SwingMode::new(&phi, Complex::new(re, im));
+            report.swing_energy =
+                report.swing_mode.as_ref().and_then(|m| super::energy::swing_energy(self, delta, m).ok());
         }
         Ok(report)
     }
@@ -264,6 +268,8 @@ pub struct StabilityReport {
     pub limit_pair: [[f64; 2]; 2],
     /// The joint's resonance in closed form at the rest point (what A4 is made of).
     pub resonance: ResonanceReport,
+    /// The flexible pair as a mode: its eigenvectors, to split a run's errors ([`super::swing`]).
+    pub swing_mode: Option<super::swing::SwingMode>,
     /// The flexible pair's energy over one period: who feeds it, who takes it out
     /// ([`super::energy`]); `None` without a flexible pair.
     pub swing_energy: Option<super::energy::SwingEnergy>,

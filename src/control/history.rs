@@ -37,6 +37,18 @@ pub struct LoopState {
     pub(super) config: u32,
 }
 
+impl LoopState {
+    /// The sampled loop's state ζ = (x − x_rest, v) of the linear analysis
+    /// ([`crate::analysis::sampled_loop_matrix`]) while the reference rests at link angles `rest`:
+    /// the errors, the motor's angle from link 1's reference, the velocities, the integrators w,
+    /// and the torque v that will be held over the coming period.
+    pub fn deviation(&self, rest: [f64; 2]) -> [f64; 10] {
+        let (q, qd, w) = (&self.plant.q, &self.plant.qdot, &self.integrators);
+        let v = self.v_next.unwrap_or_else(Vector2::zeros);
+        [q[0] - rest[0], q[1] - rest[1], q[2] - rest[0], qd[0], qd[1], qd[2], w[0], w[1], v[0], v[1]]
+    }
+}
+
 /// The loop's states at the sampling instants of the last `seconds`.
 #[derive(Clone, Debug, Default)]
 pub struct History {
@@ -105,6 +117,13 @@ impl History {
         let i = self.index_at(t)?;
         let s = &self.states[i];
         Some((s, self.config_of(s)))
+    }
+
+    /// The states from `start` to `end` (s), oldest first.
+    pub fn between(&self, start: f64, end: f64) -> impl Iterator<Item = &LoopState> {
+        let first = self.states.partition_point(|s| s.time < start);
+        let last = self.states.partition_point(|s| s.time <= end).max(first);
+        self.states.range(first..last)
     }
 
     /// The instant before the newest one at or before `t` (for stepping back), if kept.

@@ -17,6 +17,7 @@ use serde::Serialize;
 
 use super::layout::{margins, PanelKind, Rect};
 use super::scene::PanelInfo;
+use super::scene::TickLabel;
 
 /// Font sizes, CSS px (all at least 11: readable on a phone and a projector).
 pub mod font {
@@ -199,6 +200,26 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
             // Under the tick row with a gap, so that a tick at the right end (0.1 s) keeps its label.
             let below = p.y + p.height + TICK_GAP + font::TICK * LINE_HEIGHT + LABEL_GAP;
             out.push(whole(label(LabelClass::Axis, x_label.clone(), right, below, [1.0, 0.0], font::TITLE), p.x_label));
+            // A second x axis (ωδ on ρ(δ)) in the y label's row: its title right after the y
+            // label, as many clauses as fit before the first tick label kept, then the ticks.
+            if !p.x2_labels.is_empty() {
+                let start = p.x - TICK_GAP + bold_width(p.y_label, font::TITLE) + 12.0;
+                let at = |t: &TickLabel| p.x + fraction(t.value, p.x_range, p.x_scale == "log") * p.width;
+                let ticks: Vec<&TickLabel> = p.x2_labels.iter().filter(|t| at(t) > start).collect();
+                let mut first = 0;
+                let title = loop {
+                    let end = ticks.get(first).map_or(right, |t| at(t) - text_width(&t.text, font::TICK) / 2.0 - 8.0);
+                    let title = fit_clauses(&p.x2_label, end - start, font::NOTE);
+                    if first >= ticks.len() || (!title.is_empty() && !title.ends_with('…')) {
+                        break title;
+                    }
+                    first += 1;
+                };
+                out.push(whole(label(LabelClass::Axis, title, start, p.y - 2.0, [0.0, 1.0], font::NOTE), &p.x2_label));
+                for t in &ticks[first..] {
+                    out.push(label(LabelClass::Tick, t.text.clone(), at(t), p.y - 2.0, [0.5, 1.0], font::TICK));
+                }
+            }
             let y_room = p.width + TICK_GAP;
             out.push(whole(
                 label(

@@ -141,6 +141,11 @@ pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure, log_errors: boo
                     palette::LAG_BAND,
                     "no Kₚᵣ: the window the lag law gives, ωδ up to π (see “Why some larger δ work”)",
                 ),
+                item(
+                    Glyph::Line,
+                    palette::AXIS,
+                    "top axis ωδ: how far the swing turns in one period (ω = |Im A4|; π = half a swing, 2π = one)",
+                ),
             ],
             scale: None,
         });

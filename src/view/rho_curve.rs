@@ -78,6 +78,22 @@ pub fn rho_ticks(rect_css: Rect, frame: &RhoFrame) -> (Vec<f64>, Vec<f64>) {
     (log_ticks(frame.x_range[0], frame.x_range[1], nx), Ticks::new(frame.y_range[0], frame.y_range[1], ny).collect())
 }
 
+/// The second axis along the top: where the swing turns ωδ = π/8, π/4, …, 8π radians per period
+/// (ω = |Im A4|), as (δ, label) inside `x_range`. 2π is one whole swing per period.
+pub fn turn_ticks(omega: f64, x_range: [f64; 2]) -> impl Iterator<Item = (f64, &'static str)> {
+    const TURNS: [(f64, &str); 7] =
+        [(0.125, "π/8"), (0.25, "π/4"), (0.5, "π/2"), (1.0, "π"), (2.0, "2π"), (4.0, "4π"), (8.0, "8π")];
+    TURNS.into_iter().filter_map(move |(f, text)| {
+        let delta = f * core::f64::consts::PI / omega;
+        (omega > 0.0 && delta >= x_range[0] && delta <= x_range[1]).then_some((delta, text))
+    })
+}
+
+/// ω = |Im A4| of run A, rad/s, for the second axis (None without an analysis).
+pub fn turn_omega(report: Option<&StabilityReport>) -> Option<f64> {
+    report.map(|r| LagLaw::of(r).omega).filter(|w| *w > 0.0 && w.is_finite())
+}
+
 /// The lag law's window of δ for a run without preliminary feedback (what the law explains: the
 /// controller alone); `None` with one, without an analysis, or where no window is needed.
 pub fn lag_band(config: Option<&SimulationConfig>, report: Option<&StabilityReport>) -> Option<[f64; 2]> {
@@ -86,13 +102,15 @@ pub fn lag_band(config: Option<&SimulationConfig>, report: Option<&StabilityRepo
 }
 
 /// The static part: background, the windows shaded, grid lines, the border of stability (ρ = 1
-/// or ln ρ/δ = 0), the curve of `measure`, and along the top the lag law's window (`lag`).
+/// or ln ρ/δ = 0), the curve of `measure`, and along the top the lag law's window (`lag`) and the
+/// ticks of the ωδ axis (`omega`, [`turn_ticks`]).
 /// Allocates nothing itself, but is drawn only when the windows or the layout change.
 pub fn draw_rho_static(
     painter: &mut Painter,
     frame: &RhoFrame,
     windows: Option<&StableWindows>,
     lag: Option<[f64; 2]>,
+    omega: Option<f64>,
     ticks: (&[f64], &[f64]),
     measure: Measure,
     dpr: f64,
@@ -130,6 +148,10 @@ pub fn draw_rho_static(
         if x1 > x0 {
             painter.rect(Rect::new(x0, r.y, x1 - x0, 4.0 * dpr), palette::LAG_BAND);
         }
+    }
+    for (delta, _) in omega.into_iter().flat_map(|w| turn_ticks(w, frame.x_range)) {
+        let x = frame.x(delta);
+        painter.line([x, r.y], [x, r.y + 7.0 * dpr], 1.5 * dpr, palette::AXIS);
     }
 }
 

@@ -1,4 +1,5 @@
 //! Helpers shared by the session-level tests.
+#![allow(dead_code)]
 
 use flexarm::session::Session;
 

@@ -69,6 +69,10 @@ pub struct PanelInfo {
     pub scrolls: bool,
     /// Text placed at points of the panel (CSS pixels of the canvas), e.g. the flexible pair.
     pub marks: Vec<Mark>,
+    /// A second x axis along the top (ρ(δ): ωδ, how far the swing turns per period): its
+    /// title and its labelled ticks, at values of the x axis.
+    pub x2_label: String,
+    pub x2_labels: Vec<TickLabel>,
 }
 
 /// A short text at a point of a panel.
@@ -161,6 +165,8 @@ impl Scene {
             y_scale: "linear",
             scrolls: panel.kind.is_time_plot(),
             marks: Vec::new(),
+            x2_label: String::new(),
+            x2_labels: Vec::new(),
         };
         match panel.kind {
             PanelKind::Arm | PanelKind::ArmB => {
@@ -248,6 +254,12 @@ impl Scene {
                 } else {
                     format!("α1 = {}, α2 = {}", format::sig_trim(a1, 3), format::sig_trim(a2, 3))
                 };
+                if let Some(omega) = crate::view::rho_curve::turn_omega(self.runs[0].report.as_ref()) {
+                    info.x2_label = format!("ωδ [rad/period]; ω = {omega:.1} rad/s; 2π = one swing");
+                    info.x2_labels = crate::view::rho_curve::turn_ticks(omega, frame.x_range)
+                        .map(|(value, text)| TickLabel { value, text: text.into() })
+                        .collect();
+                }
                 info.note = if rate {
                     format!("rate at {alpha} 1/s; shaded: < 0")
                 } else {

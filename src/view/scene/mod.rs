@@ -23,7 +23,7 @@ use super::map::{draw_map_static, map_ticks, side_of, LogFrame, StabilityGrid, M
 use super::painter::{Painter, Vertex};
 use super::poles::{PoleStyle, RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET};
 use super::rho_curve::{
-    curve_range, draw_rho_static, lag_band, rho_ticks, RhoFrame, MARKER_VERTEX_BUDGET as RHO_MARKER_VERTEX_BUDGET,
+    curve_range, draw_rho_static, lag_band, rho_ticks, turn_omega, RhoFrame, MARKER_VERTEX_BUDGET as RHO_MARKER_VERTEX_BUDGET,
 };
 use super::traces::{vertex_budget, TimeWindow};
 use super::zplane::RUN_VERTEX_BUDGET as ZPLANE_RUN_VERTEX_BUDGET;
@@ -326,7 +326,9 @@ impl Scene {
                 let (x_ticks, y_ticks) = rho_ticks(panel.rect, &frame);
                 let ticks = (&x_ticks[..], &y_ticks[..]);
                 let lag = lag_band(self.runs[0].config.as_ref(), self.runs[0].report.as_ref());
-                draw_rho_static(&mut self.static_painter, &frame, self.windows.as_ref(), lag, ticks, measure, dpr);
+                let omega = turn_omega(self.runs[0].report.as_ref());
+                let windows = self.windows.as_ref();
+                draw_rho_static(&mut self.static_painter, &frame, windows, lag, omega, ticks, measure, dpr);
                 continue;
             }
             let Some(side) = side_of(panel.kind) else { continue };
