@@ -72,3 +72,29 @@ fn the_swing_in_a_run_grows_by_its_eigenvalue_per_period() {
         }
     }
 }
+
+mod common;
+
+/// The page's log |e| view draws the split (the swing in its colour) from run A's kept states,
+/// and only while the view is log |e|; drawing more frames allocates nothing new.
+#[test]
+fn the_log_view_draws_the_swing_and_the_rest() {
+    use flexarm::plot::palette;
+    use flexarm::view::{Scene, ViewOptions};
+    for (query, drawn) in [("preset=fig5.3&log=1", true), ("preset=fig5.3", false)] {
+        let mut s = common::session(query);
+        common::play(&mut s, 2.4);
+        s.refresh();
+        let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
+        let count = |scene: &Scene| scene_vertices_of(scene, palette::SWING.0);
+        scene.draw_session(&s);
+        let first = count(&scene);
+        assert_eq!(first > 0, drawn, "{query}: {first} swing vertices");
+        scene.draw_session(&s);
+        assert_eq!(count(&scene), first, "{query}: the same frame draws the same split");
+    }
+}
+
+fn scene_vertices_of(scene: &flexarm::view::Scene, color: [f32; 4]) -> usize {
+    scene.vertices().iter().filter(|v| v.color == color).count()
+}

@@ -145,6 +145,10 @@ pub mod palette {
     pub const WINDOW_MARK: Color = Color::hex(0x0b6e3a);
     /// The lag law's window of δ over the ρ(δ) plot ([`crate::analysis::lag`]).
     pub const LAG_BAND: Color = Color::hex(0xc27c0e);
+    /// Over log |e|: the flexible pair's amplitude in the error (the swing, amber like the pair's
+    /// halo in the pole plot) and the rest of the error without it (grey).
+    pub const SWING: Color = Color::hex(0xd39a00);
+    pub const SPLIT_REST: Color = Color::hex(0x8a877f);
     /// The Nyquist frequency ±π/δ in the s-plane.
     pub const NYQUIST: Color = Color::hex(0x8c5a00);
     /// The unit circle of the z-plane.

@@ -77,7 +77,16 @@ pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure, log_errors: boo
         // The panel's note names the line only where there is room; the key always does.
         groups.push(LegendGroup {
             title: "log |e|",
-            items: vec![item(Glyph::Dashed, palette::PREDICTED, "the slope ln ρ/δ the linear analysis predicts")],
+            items: vec![
+                item(Glyph::Dashed, palette::PREDICTED, "the slope ln ρ/δ the linear analysis predicts"),
+                item(
+                    Glyph::Line,
+                    palette::SWING,
+                    "the swing: the flexible pair's amplitude in the error, from the run's state at each sampling \
+                     instant while the reference rests (it changes ×|λ| per period)",
+                ),
+                item(Glyph::Line, palette::SPLIT_REST, "the rest of the error, without the swing"),
+            ],
             scale: None,
         });
     }

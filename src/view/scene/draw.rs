@@ -86,6 +86,10 @@ impl Scene {
             let traces = state.traces;
             let t = traces.t();
             let width = if run == 0 { CURVE_WIDTH } else { CURVE_WIDTH_B };
+            if log && run == 0 {
+                // Under the error itself: the swing's share and the rest.
+                self.draw_split(&frame, state, panel.kind);
+            }
             for (values, color) in plot_series(panel.kind, traces, run).iter().flatten() {
                 let m = t.len().min(values.len());
                 draw_series(&mut self.painter, &frame, &t[..m], &values[..m], width * dpr, *color);

@@ -13,6 +13,7 @@ mod draw;
 pub mod info;
 mod plots;
 mod probe;
+mod split;
 
 use plots::{plot_series, plot_tick_counts, plot_ticks, pole_tick_counts, pole_ticks, y_label};
 
@@ -29,7 +30,7 @@ use super::traces::{vertex_budget, TimeWindow};
 use super::zplane::RUN_VERTEX_BUDGET as ZPLANE_RUN_VERTEX_BUDGET;
 use crate::analysis::{StabilityReport, StableWindows};
 use crate::control::config::SimulationConfig;
-use crate::control::{ClosedLoop, Snapshot, Traces};
+use crate::control::{ClosedLoop, History, Snapshot, Traces};
 use crate::model::reference::Reference;
 use crate::plot::{palette, Color};
 use crate::session::{MapSide, Run, Session, ViewSettings};
@@ -53,6 +54,8 @@ pub struct RunState<'a> {
     pub windows: Option<&'a StableWindows>,
     /// The previous run's traces, drawn faint in the error plots (run A's only).
     pub ghost: Option<&'a Traces>,
+    /// The loop's kept states at its sampling instants: the split of log |e| (run A's only).
+    pub history: Option<&'a History>,
 }
 
 /// What the scene remembers of a run between frames, for its descriptions.
@@ -121,6 +124,8 @@ pub struct Scene {
     /// Increases whenever [`Scene::panel_info`] would describe the frame differently.
     info_generation: u64,
     info_signature: [f64; 6],
+    /// Run A's errors split into the swing and the rest (log |e|), kept between frames.
+    split: split::SplitBuffers,
 }
 
 impl Scene {
@@ -144,6 +149,7 @@ impl Scene {
             windows: None,
             info_generation: 0,
             info_signature: [f64::NAN; 6],
+            split: Default::default(),
         };
         scene.relayout(css_width, css_height, device_pixel_ratio);
         scene
@@ -220,7 +226,7 @@ impl Scene {
             PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
                 // Each run's curves, the ghost's, and a predicted slope per run.
                 let per_run = plot_series(panel.kind, &Traces::default(), 0).iter().flatten().count();
-                let series = per_run * (runs + 1);
+                let series = per_run * (runs + 1) + split::SPLIT_SERIES;
                 let (x_ticks, y_ticks) = plot_tick_counts(panel.rect);
                 vertex_budget(
                     self.layout.to_physical(panel.rect).w,
@@ -429,6 +435,7 @@ impl Scene {
             analysis,
             windows: None,
             ghost: None,
+            history: None,
         };
         match b {
             Some((b, analysis_b)) => {
@@ -441,6 +448,7 @@ impl Scene {
                     analysis: analysis_b,
                     windows: None,
                     ghost: None,
+            history: None,
                 };
                 self.draw_runs(run_a, Some(run_b))
             }
@@ -452,7 +460,16 @@ impl Scene {
     /// markers); `reference` (if given) shades the slews.
     pub fn draw_state(&mut self, snapshot: &Snapshot, traces: &Traces, reference: Option<&Reference>) -> &[Vertex] {
         self.draw_runs(
-            RunState { snapshot, traces, reference, config: None, analysis: None, windows: None, ghost: None },
+            RunState {
+                snapshot,
+                traces,
+                reference,
+                config: None,
+                analysis: None,
+                windows: None,
+                ghost: None,
+                history: None,
+            },
             None,
         )
     }
@@ -588,6 +605,7 @@ fn run_state<'a>(run: &'a Run, snapshot: &'a Snapshot, reference: Option<&'a Ref
         analysis: run.analysis().report(),
         windows: None,
         ghost: None,
+        history: Some(run.closed_loop().history()),
     }
 }
 
