@@ -94,27 +94,6 @@ impl Renderer {
         self.gpu.set_dark(dark);
     }
 
-    /// Changes drawing options: `{show_torque?: bool, time_window?: seconds,
-    /// spring_magnification?: number, show_poles?: bool, show_map?: bool}`. Missing fields stay
-    /// as they are; an invalid or unknown field changes nothing and throws.
-    #[wasm_bindgen(js_name = setOptions)]
-    pub fn set_options(&mut self, options: JsValue) -> Result<(), JsError> {
-        if options.is_undefined() || options.is_null() {
-            return Ok(());
-        }
-        // serde-wasm-bindgen reads only the fields it knows, so misspelt keys are caught here.
-        let Some(object) = options.dyn_ref::<js_sys::Object>() else {
-            return Err(JsError::new("invalid renderer options: expected an object"));
-        };
-        for key in js_sys::Object::keys(object).iter() {
-            let name = key.as_string().unwrap_or_default();
-            OptionsUpdate::check_field(&name).map_err(|e| JsError::new(&format!("invalid renderer options: {e}")))?;
-        }
-        let update: OptionsUpdate = serde_wasm_bindgen::from_value(options)
-            .map_err(|e| JsError::new(&format!("invalid renderer options: {e}")))?;
-        self.scene.set_options(&update).map_err(|e| JsError::new(&format!("invalid renderer options: {e}")))
-    }
-
     /// Draws the session's newest state: run A, and run B beside it when comparing (two arms,
     /// both runs' errors in the same axes — A solid, B thinner in violet —, both runs' poles and
     /// map markers), and the session's maps as far as they are computed.
@@ -183,6 +162,30 @@ impl Renderer {
     /// alpha}`, or null.
     pub fn probe(&self, x: f64, y: f64, reach: f64) -> Result<JsValue, JsError> {
         to_js(&self.scene.probe(x, y, reach))
+    }
+}
+
+/// Not exported to the page, which sets its options through the session's view settings: kept
+/// for Rust callers (an export would keep its deserializer in the module).
+impl Renderer {
+    /// Changes drawing options: `{show_torque?: bool, time_window?: seconds,
+    /// spring_magnification?: number, show_poles?: bool, show_map?: bool}`. Missing fields stay
+    /// as they are; an invalid or unknown field changes nothing and throws.
+    pub fn set_options(&mut self, options: JsValue) -> Result<(), JsError> {
+        if options.is_undefined() || options.is_null() {
+            return Ok(());
+        }
+        // serde-wasm-bindgen reads only the fields it knows, so misspelt keys are caught here.
+        let Some(object) = options.dyn_ref::<js_sys::Object>() else {
+            return Err(JsError::new("invalid renderer options: expected an object"));
+        };
+        for key in js_sys::Object::keys(object).iter() {
+            let name = key.as_string().unwrap_or_default();
+            OptionsUpdate::check_field(&name).map_err(|e| JsError::new(&format!("invalid renderer options: {e}")))?;
+        }
+        let update: OptionsUpdate = serde_wasm_bindgen::from_value(options)
+            .map_err(|e| JsError::new(&format!("invalid renderer options: {e}")))?;
+        self.scene.set_options(&update).map_err(|e| JsError::new(&format!("invalid renderer options: {e}")))
     }
 }
 

@@ -80,8 +80,8 @@ pub fn arms() -> Result<JsValue, JsError> {
     to_js(&crate::session::ARMS)
 }
 
-/// ρ of the settings in a state string (over the CLI's defaults), without a session.
-#[wasm_bindgen(js_name = spectralRadius)]
+/// ρ of the settings in a state string (over the CLI's defaults), without a session (for the
+/// wasm-bindgen tests; not exported to the page, which has its session's).
 pub fn spectral_radius(state: &str) -> Result<f64, JsError> {
     let mut settings = Settings::default();
     settings.read(state, Source::CommandLine).map_err(js_error)?;
@@ -309,42 +309,6 @@ impl WebSession {
         self.inner.pick_delta(delta).map_err(js_error)
     }
 
-    /// A run's metrics: `{time, verdict, growth_rate, diverged_at, max_error_slew,
-    /// max_error_after, rms_error, max_torque}`.
-    pub fn metrics(&self, run: usize) -> Result<JsValue, JsError> {
-        let m = self.run(run)?.closed_loop().metrics();
-        let diverged_at = match m.verdict {
-            Verdict::Diverged { at, .. } => Some(at),
-            _ => None,
-        };
-        to_js(&MetricsView {
-            time: m.time,
-            verdict: m.verdict.label(),
-            growth_rate: m.growth_rate,
-            diverged_at,
-            max_error_slew: m.max_error_slew,
-            max_error_after: m.max_error_after,
-            rms_error: m.rms_error,
-            max_torque: m.max_torque,
-        })
-    }
-
-    /// The linear analysis of a run's settings: `{sampling_period, rest, spectral_radius,
-    /// growth_rate, poles: [{discrete, continuous}], limit_pair_open, limit_pair}` (null if it
-    /// failed).
-    pub fn analysis(&self, run: usize) -> Result<JsValue, JsError> {
-        to_js(&self.run(run)?.analysis().report())
-    }
-
-    /// One recorded column of a run as a typed array (`t`, `e1`, `torque2`, …).
-    pub fn trace(&self, run: usize, key: &str) -> Result<js_sys::Float64Array, JsError> {
-        let column = Column::from_key(key).ok_or_else(|| {
-            let keys: Vec<&str> = Column::ALL.iter().map(|c| c.key()).collect();
-            JsError::new(&format!("unknown trace '{key}': one of {}", keys.join(", ")))
-        })?;
-        Ok(js_sys::Float64Array::from(self.run(run)?.closed_loop().traces().column(column)))
-    }
-
     /// Run A's traces as CSV, headed by the state string.
     pub fn csv(&self) -> String {
         self.inner.csv()
@@ -388,11 +352,6 @@ impl WebSession {
         self.inner.maps_mut().work(&mut clock, budget_ms)
     }
 
-    /// True while a shown map is unfinished (and the maps are enabled).
-    #[wasm_bindgen(js_name = mapsPending)]
-    pub fn maps_pending(&self) -> bool {
-        self.inner.maps().pending()
-    }
 
     /// `[{pf, ms, compute_ms}]`: how long each finished map took.
     #[wasm_bindgen(js_name = mapTimes)]
@@ -400,8 +359,49 @@ impl WebSession {
         to_js(self.inner.maps().times())
     }
 
+}
+
+/// Read-outs for the wasm-bindgen tests (`wasm-tests/`, which call them from Rust), not exported
+/// to the page: the page needs none of them, and each export would keep in the module the
+/// serialization it carries (the whole analysis report, the metrics).
+impl WebSession {
+    /// A run's metrics: `{time, verdict, growth_rate, diverged_at, max_error_slew,
+    /// max_error_after, rms_error, max_torque}`.
+    pub fn metrics(&self, run: usize) -> Result<JsValue, JsError> {
+        let m = self.run(run)?.closed_loop().metrics();
+        let diverged_at = match m.verdict {
+            Verdict::Diverged { at, .. } => Some(at),
+            _ => None,
+        };
+        to_js(&MetricsView {
+            time: m.time,
+            verdict: m.verdict.label(),
+            growth_rate: m.growth_rate,
+            diverged_at,
+            max_error_slew: m.max_error_slew,
+            max_error_after: m.max_error_after,
+            rms_error: m.rms_error,
+            max_torque: m.max_torque,
+        })
+    }
+
+    /// The linear analysis of a run's settings: `{sampling_period, rest, spectral_radius,
+    /// growth_rate, poles: [{discrete, continuous}], limit_pair_open, limit_pair}` (null if it
+    /// failed).
+    pub fn analysis(&self, run: usize) -> Result<JsValue, JsError> {
+        to_js(&self.run(run)?.analysis().report())
+    }
+
+    /// One recorded column of a run as a typed array (`t`, `e1`, `torque2`, …).
+    pub fn trace(&self, run: usize, key: &str) -> Result<js_sys::Float64Array, JsError> {
+        let column = Column::from_key(key).ok_or_else(|| {
+            let keys: Vec<&str> = Column::ALL.iter().map(|c| c.key()).collect();
+            JsError::new(&format!("unknown trace '{key}': one of {}", keys.join(", ")))
+        })?;
+        Ok(js_sys::Float64Array::from(self.run(run)?.closed_loop().traces().column(column)))
+    }
+
     /// ρ of a side's map so far, row-major by α (rows not computed yet are missing).
-    #[wasm_bindgen(js_name = mapValues)]
     pub fn map_values(&self, side: &str) -> Result<js_sys::Float64Array, JsError> {
         let side = MapSide::parse(side).map_err(|e| JsError::new(&e))?;
         let values = self.inner.maps().shown(side).map_or(&[][..], |e| e.job().values());
@@ -409,13 +409,11 @@ impl WebSession {
     }
 
     /// The maps' δ values (columns), s.
-    #[wasm_bindgen(js_name = mapDeltas)]
     pub fn map_deltas(&self) -> js_sys::Float64Array {
         js_sys::Float64Array::from(self.inner.maps().grid().deltas().as_slice())
     }
 
     /// The maps' α values (rows), 1/s.
-    #[wasm_bindgen(js_name = mapAlphas)]
     pub fn map_alphas(&self) -> js_sys::Float64Array {
         js_sys::Float64Array::from(self.inner.maps().grid().alphas().as_slice())
     }
@@ -424,5 +422,10 @@ impl WebSession {
     pub fn windows(&mut self) -> Result<JsValue, JsError> {
         let w = self.inner.windows().map_err(js_error)?.clone();
         to_js(&w)
+    }
+
+    /// True while a shown map is unfinished (and the maps are enabled).
+    pub fn maps_pending(&self) -> bool {
+        self.inner.maps().pending()
     }
 }
