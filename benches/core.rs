@@ -82,6 +82,31 @@ fn main() {
         while session.maps_mut().work(&mut || clock.elapsed().as_secs_f64() * 1e3, 1e9) {}
     });
 
+    // Issue 19: a frame of log |e| with the swing split out (δ = 0.002 s: 5000 kept instants in
+    // the 10-s window, the most the page draws) against the same frame without the log view, and
+    // the swing's energy over one period (once per analysis).
+    let frame_cost = |query: &str| {
+        let (mut s, _) = flexarm::session::Session::open(query);
+        while s.run(0).unwrap().closed_loop().time() < 10.0 {
+            s.advance(0.05).unwrap();
+        }
+        s.refresh();
+        let mut scene = flexarm::view::Scene::new(flexarm::view::ViewOptions::default(), 1280.0, 800.0, 1.0);
+        scene.draw_session(&s);
+        time_it(21, 50, || {
+            scene.draw_session(&s);
+            black_box(scene.vertices().len());
+        })
+    };
+    let (log_med, log_min) = frame_cost("preset=fig5.2&delta=0.002&mode=full&log=1");
+    let (lin_med, _) = frame_cost("preset=fig5.2&delta=0.002&mode=full");
+    let model = flexarm::analysis::LoopModel::new(&flexarm::analysis::LinearSettings::of(&config, None)).unwrap();
+    let mode = model.report().unwrap().swing_mode.unwrap();
+    let delta = config.controller.sampling_period;
+    let (energy_med, energy_min) = time_it(21, 200, || {
+        black_box(flexarm::analysis::energy::swing_energy(&model, delta, &mode).unwrap());
+    });
+
     println!("flexarm core benchmarks (median of batches; min in parentheses)");
     println!("| what | median | min |");
     println!("|---|---|---|");
@@ -117,6 +142,18 @@ fn main() {
         "| both maps (ρ over δ × α, no K_pr and paper K_pr) after an arm change (goal: ≤ 0.5 s in wasm) | {:.0} ms | {:.0} ms |",
         maps_med * 1e3,
         maps_min * 1e3
+    );
+
+    println!(
+        "| a frame of log |e| with the swing split out, δ = 0.002 s (5000 instants; the goal: split ≤ 1 ms) | {:.3} ms ({:+.3} ms against the linear view) | {:.3} ms |",
+        log_med * 1e3,
+        (log_med - lin_med) * 1e3,
+        log_min * 1e3
+    );
+    println!(
+        "| the swing's energy over one period (once per analysis; goal ≤ 1 ms) | {:.1} µs | {:.1} µs |",
+        energy_med * 1e6,
+        energy_min * 1e6
     );
 
     if python {

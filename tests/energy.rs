@@ -171,3 +171,21 @@ fn the_storys_mechanism_agrees_with_the_flexible_pair() {
     println!("{}", story.energy);
     assert!(story.energy.contains("Kₚᵣ takes"), "{}", story.energy);
 }
+
+/// The lesson's step "Why some larger δ work" quotes the mechanism at δ = 0.05 s on the paper's
+/// arm (α = 2, no preliminary feedback) with this module's numbers.
+#[test]
+fn the_lesson_quotes_the_mechanism() {
+    let lesson = include_str!("../www/lessons/paper.md");
+    let c = config(1.0, 1.0, None, 2.0, PreliminaryFeedbackChoice::Off);
+    let model = LoopModel::new(&LinearSettings::of(&c, None)).unwrap();
+    let (_, lambda, e) = energy_at(&model, 0.05);
+    for said in [
+        format!("the held torque lags the motor's velocity by {:.0}°", e.lag.to_degrees()),
+        format!("it takes {:.1} % of the swing's energy out", -100.0 * e.held_torque),
+        format!("it shrinks ×{:.3} per period", lambda.norm()),
+    ] {
+        assert!(lesson.contains(&said), "the lesson should say {said:?}");
+    }
+    assert!(e.held_torque < 0.0 && lambda.norm() < 1.0);
+}

@@ -87,12 +87,15 @@ impl Scene {
             let t = traces.t();
             let width = if run == 0 { CURVE_WIDTH } else { CURVE_WIDTH_B };
             if log && run == 0 {
-                // Under the error itself: the swing's share and the rest.
+                // The rest under the error itself, the swing over it.
                 self.draw_split(&frame, state, panel.kind);
             }
             for (values, color) in plot_series(panel.kind, traces, run).iter().flatten() {
                 let m = t.len().min(values.len());
                 draw_series(&mut self.painter, &frame, &t[..m], &values[..m], width * dpr, *color);
+            }
+            if log && run == 0 {
+                self.draw_swing(&frame);
             }
             if log {
                 self.draw_predicted_slope(&frame, state, panel.kind, run);

@@ -22,22 +22,21 @@ pub(super) struct SplitBuffers {
 pub(super) const SPLIT_SERIES: usize = 2;
 
 impl Scene {
-    /// Draws run A's split into an error plot (`kind` Error1 or Error2) of log |e|.
+    /// Computes run A's split for an error plot (`kind` Error1 or Error2) of log |e| and draws the
+    /// rest (under the error); [`Scene::draw_swing`] then draws the swing over it.
     pub(super) fn draw_split(&mut self, frame: &PlotFrame, state: &RunState<'_>, kind: PanelKind) {
         let component = match kind {
             PanelKind::Error1 => 0,
             PanelKind::Error2 => 1,
             _ => return,
         };
-        let (Some(history), Some(reference), Some(mode)) =
-            (state.history, state.reference, state.analysis.and_then(|r| r.swing_mode.as_ref()))
-        else {
-            return;
-        };
+        let (history, reference, mode) =
+            (state.history, state.reference, state.analysis.and_then(|r| r.swing_mode.as_ref()));
         let b = &mut self.split;
         b.time.clear();
         b.swing.clear();
         b.rest.clear();
+        let (Some(history), Some(reference), Some(mode)) = (history, reference, mode) else { return };
         let mut resting = false;
         for s in history.between(frame.window.start, frame.window.end) {
             let moving = reference.is_moving(s.time);
@@ -61,6 +60,12 @@ impl Scene {
         }
         let w = CURVE_WIDTH * self.layout.device_pixel_ratio;
         draw_series(&mut self.painter, frame, &b.time, &b.rest, 0.75 * w, palette::SPLIT_REST);
+    }
+
+    /// Draws the swing of the split [`Scene::draw_split`] computed last, over the error.
+    pub(super) fn draw_swing(&mut self, frame: &PlotFrame) {
+        let b = &self.split;
+        let w = CURVE_WIDTH * self.layout.device_pixel_ratio;
         draw_series(&mut self.painter, frame, &b.time, &b.swing, 1.25 * w, palette::SWING);
     }
 }
