@@ -114,6 +114,13 @@ fn every_window_edge_of_the_swing_is_where_the_held_torque_stops_or_starts_feedi
     }
     println!("swing edges {swing_edges:?}\nslow edges {slow_edges:?}");
     assert!(swing_edges.len() >= 40, "{} swing edges", swing_edges.len());
+    let readme = include_str!("../README.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    let said = format!(
+        "swing sets ρ ({} edges, the narrow gap near π included) is where W_v crosses D; the {} far edges at δ ≥ 0.14 s",
+        swing_edges.len(),
+        slow_edges.len()
+    );
+    assert!(readme.contains(&said), "README should say {said:?}");
 }
 
 /// What the page says at δ = 0.01, 0.05 and 0.15 s on the paper's arm at α = 2, no preliminary
@@ -124,6 +131,7 @@ fn every_window_edge_of_the_swing_is_where_the_held_torque_stops_or_starts_feedi
 fn on_the_papers_arm_the_held_torque_feeds_brakes_and_feeds_again() {
     let c = config(1.0, 1.0, None, 2.0, PreliminaryFeedbackChoice::Off);
     let model = LoopModel::new(&LinearSettings::of(&c, None)).unwrap();
+    let mut said = Vec::new();
     for (delta, stable) in [(0.01, false), (0.05, true), (0.15, false)] {
         let (report, _, e) = energy_at(&model, delta);
         assert_eq!(report.spectral_radius < 1.0, stable, "δ = {delta}");
@@ -131,6 +139,18 @@ fn on_the_papers_arm_the_held_torque_feeds_brakes_and_feeds_again() {
         assert_eq!(pushes, !stable, "δ = {delta}: lag {:.2} rad", e.lag);
         assert_eq!(e.held_torque > 0.0, pushes, "δ = {delta}: {e:?}");
         println!("δ = {delta}: {e:?}");
+        said.push(e);
+    }
+    // The README quotes the three.
+    let readme = include_str!("../README.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    let deg = |e: &SwingEnergy| e.lag.to_degrees();
+    let pct = |v: f64| format!("{:.1} %", 100.0 * v.abs());
+    for quote in [
+        format!("lags the motor's velocity by {:.0}° at δ = 0.01 s and puts {} of the swing's energy in each period (damping takes {}", deg(&said[0]), pct(said[0].held_torque), pct(said[0].damping)),
+        format!("by {:.0}° at 0.05 s and takes {} out", deg(&said[1]), pct(said[1].held_torque)),
+        format!("runs {:.0}° ahead at 0.15 s and puts {} in", 360.0 - deg(&said[2]), pct(said[2].held_torque)),
+    ] {
+        assert!(readme.contains(&quote), "README should say {quote:?}");
     }
     // In the narrow gap near the Nyquist frequency the swing is two real eigenvalues, flipping sign
     // every period, and the held torque pushes the larger one in phase.
