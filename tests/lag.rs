@@ -218,5 +218,13 @@ fn the_rho_curve_has_an_axis_in_turns_per_period() {
     let labels = scene.labels();
     let shown = |text: &str| labels.iter().any(|l| l.panel == "rho-curve" && l.text == text);
     assert!(shown("π") && shown("π/2"), "{:?}", labels.iter().filter(|l| l.panel == "rho-curve").collect::<Vec<_>>());
+    // Short of room the title is the symbol alone, with the whole title as the label's `full`.
+    let title = labels.iter().find(|l| l.panel == "rho-curve" && l.text.starts_with("ωδ")).expect("the axis title");
+    assert!(title.text == "ωδ" && title.full == rho.x2_label, "{title:?}");
+    // On a large screen the title says its unit.
+    let mut scene = Scene::new(ViewOptions::default(), 1920.0, 1080.0, 1.0);
+    scene.draw_session(&s);
+    let labels = scene.labels();
     assert!(labels.iter().any(|l| l.panel == "rho-curve" && l.text.starts_with("ωδ [rad/period]")));
+    assert!(labels.iter().any(|l| l.panel == "rho-curve" && l.text == "2π"));
 }

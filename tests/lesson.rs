@@ -190,7 +190,7 @@ fn a_link_reopens_the_same_step_with_the_same_settings() {
     // Beyond the last step: the last step, and a notice that says so; the last step itself
     // opens without one.
     let count = builtin().unwrap().steps.len();
-    let (mut last, notices) = Session::open("lesson=99");
+    let (last, notices) = Session::open("lesson=99");
     assert_eq!(last.status().lesson.unwrap().index, count - 1);
     assert_eq!(notices.len(), 1, "{notices:?}");
     assert_eq!(notices[0].key, "lesson");

@@ -207,11 +207,17 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
                 let at = |t: &TickLabel| p.x + fraction(t.value, p.x_range, p.x_scale == "log") * p.width;
                 let ticks: Vec<&TickLabel> = p.x2_labels.iter().filter(|t| at(t) > start).collect();
                 let mut first = 0;
+                // The whole title, else its symbol alone ("ωδ", what the ticks count), else one
+                // tick fewer.
+                let symbol = p.x2_label.split(' ').next().unwrap_or("");
                 let title = loop {
                     let end = ticks.get(first).map_or(right, |t| at(t) - text_width(&t.text, font::TICK) / 2.0 - 8.0);
                     let title = fit_clauses(&p.x2_label, end - start, font::NOTE);
                     if first >= ticks.len() || (!title.is_empty() && !title.ends_with('…')) {
                         break title;
+                    }
+                    if bold_width(symbol, font::NOTE) <= end - start {
+                        break symbol.to_string();
                     }
                     first += 1;
                 };
