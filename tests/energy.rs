@@ -49,7 +49,8 @@ fn the_swings_energy_balance_is_exact() {
     let mut checked = 0;
     for (k1, ir1, bv1) in ARMS {
         for alpha in [1.0, 2.0, 3.0] {
-            for pf in [PreliminaryFeedbackChoice::Off, PreliminaryFeedbackChoice::Paper, PreliminaryFeedbackChoice::Lq] {
+            for pf in [PreliminaryFeedbackChoice::Off, PreliminaryFeedbackChoice::Paper, PreliminaryFeedbackChoice::Lq]
+            {
                 let c = config(k1, ir1, bv1, alpha, pf);
                 let model = LoopModel::new(&LinearSettings::of(&c, None)).unwrap();
                 for delta in [0.002, 0.007, 0.02, 0.05, 0.09, 0.15, 0.24] {
@@ -101,7 +102,10 @@ fn every_window_edge_of_the_swing_is_where_the_held_torque_stops_or_starts_feedi
                     };
                     if (lambda.norm() - report.spectral_radius).abs() < 1e-9 {
                         let surplus = |e: &SwingEnergy| e.held_torque - e.damping;
-                        assert!(surplus(&below.2).signum() != surplus(&above.2).signum(), "{case}: {below:?} {above:?}");
+                        assert!(
+                            surplus(&below.2).signum() != surplus(&above.2).signum(),
+                            "{case}: {below:?} {above:?}"
+                        );
                         swing_edges.push(edge);
                     } else {
                         let [re, im] = report.poles[0].continuous.unwrap();

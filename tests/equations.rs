@@ -30,7 +30,14 @@ fn the_equations_carry_the_storys_numbers() {
         let s = common::session(query);
         let story = s.status().story.unwrap();
         let report = s.run(0).unwrap().analysis().report().unwrap().clone();
-        for m in [&story.math_constraint, &story.math_re_a4, &story.math_rho, &story.math_growth, &story.math_lag] {
+        for m in [
+            &story.math_constraint,
+            &story.math_re_a4,
+            &story.math_rho,
+            &story.math_growth,
+            &story.math_lag,
+            &story.math_energy,
+        ] {
             assert!(m.starts_with("<math"), "{query}: {m}");
             well_formed(m);
         }

@@ -58,10 +58,14 @@ fn the_swing_in_a_run_grows_by_its_eigenvalue_per_period() {
         let n = rows.len() as f64;
         let (st, sy) = rows.iter().fold((0.0, 0.0), |(a, b), r| (a + r.0, b + r.1.ln()));
         let (mt, my) = (st / n, sy / n);
-        let (num, den) = rows.iter().fold((0.0, 0.0), |(a, b), r| (a + (r.0 - mt) * (r.1.ln() - my), b + (r.0 - mt).powi(2)));
+        let (num, den) =
+            rows.iter().fold((0.0, 0.0), |(a, b), r| (a + (r.0 - mt) * (r.1.ln() - my), b + (r.0 - mt).powi(2)));
         let observed = num / den;
         let predicted = per_period.ln() / delta;
-        println!("{name}: |λ| = {per_period:.4}, ln|λ|/δ = {predicted:.3} 1/s, observed {observed:.3} 1/s over {} instants", rows.len());
+        println!(
+            "{name}: |λ| = {per_period:.4}, ln|λ|/δ = {predicted:.3} 1/s, observed {observed:.3} 1/s over {} instants",
+            rows.len()
+        );
         assert!(rows.len() >= 10, "{name}");
         let off = (observed - predicted).abs() / predicted.abs().max(1.0);
         assert!(off <= 0.02, "{name}: the swing changes at {observed} 1/s, the pair's eigenvalue says {predicted}");

@@ -104,7 +104,13 @@ pub fn swing_energy(loop_model: &LoopModel, delta: f64, mode: &SwingMode) -> Res
     let (mut held, mut pf, mut loss) = (0.0, 0.0, 0.0);
     let mut mean_motor_velocity = [0.0; 2];
     for i in 0..=substeps {
-        let weight = if i == 0 || i == substeps { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+        let weight = if i == 0 || i == substeps {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
         for part in 0..2 {
             let qd = velocity(&state[part]);
             let x = state[part].fixed_rows::<8>(0).into_owned();
@@ -120,10 +126,5 @@ pub fn swing_energy(loop_model: &LoopModel, delta: f64, mode: &SwingMode) -> Res
     // Phasors e^{st}: a torque lagging the velocity by φ is the velocity's phase minus φ.
     let [vr, vi] = [mean_motor_velocity[0], mean_motor_velocity[1]];
     let lag = (Complex::new(vr, vi) / Complex::new(v[0][0], v[1][0])).arg().rem_euclid(core::f64::consts::TAU);
-    Ok(SwingEnergy {
-        held_torque: held * scale,
-        preliminary_feedback: pf * scale,
-        damping: loss * scale,
-        lag,
-    })
+    Ok(SwingEnergy { held_torque: held * scale, preliminary_feedback: pf * scale, damping: loss * scale, lag })
 }

@@ -186,18 +186,10 @@ pub fn equations(report: &StabilityReport, law: &LagLaw, alpha: [f64; 2], delta:
         }
         terms.extend([mo("−"), mi("D")]);
         values.push([mo("−"), percent(e.damping)].concat());
-        math(
-            &[
-                frac(&[mi("ΔE"), mo("/"), mi("E")].concat(), &mi("period")),
-                mo("="),
-                terms.concat(),
-                mo("="),
-                values.concat(),
-                mo("="),
-                percent(e.net()),
-            ]
-            .concat(),
-        )
+        // Two short lines, so that a narrow column shows them whole: the balance, its numbers.
+        let balance = [frac(&[mi("ΔE"), mo("/"), mi("E")].concat(), &mi("period")), mo("="), terms.concat()];
+        let numbers = [mo("="), values.concat(), mo("="), percent(e.net())];
+        [math(&balance.concat()), math(&numbers.concat())].concat()
     });
     Equations {
         constraint,

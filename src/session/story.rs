@@ -149,7 +149,8 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
     } else {
         format!("runs {:.0}° ahead of the motor's velocity", -lag)
     };
-    let role = if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
+    let role =
+        if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
     let law = if law_lag < core::f64::consts::PI * 1.5 {
         format!(" (the law's φ: {:.0}°)", law_lag.to_degrees())
     } else {

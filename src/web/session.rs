@@ -352,13 +352,11 @@ impl WebSession {
         self.inner.maps_mut().work(&mut clock, budget_ms)
     }
 
-
     /// `[{pf, ms, compute_ms}]`: how long each finished map took.
     #[wasm_bindgen(js_name = mapTimes)]
     pub fn map_times(&self) -> Result<JsValue, JsError> {
         to_js(self.inner.maps().times())
     }
-
 }
 
 /// Read-outs for the wasm-bindgen tests (`wasm-tests/`, which call them from Rust), not exported

@@ -24,7 +24,8 @@ use super::map::{draw_map_static, map_ticks, side_of, LogFrame, StabilityGrid, M
 use super::painter::{Painter, Vertex};
 use super::poles::{PoleStyle, RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET};
 use super::rho_curve::{
-    curve_range, draw_rho_static, lag_band, rho_ticks, turn_omega, RhoFrame, MARKER_VERTEX_BUDGET as RHO_MARKER_VERTEX_BUDGET,
+    curve_range, draw_rho_static, lag_band, rho_ticks, turn_omega, RhoFrame,
+    MARKER_VERTEX_BUDGET as RHO_MARKER_VERTEX_BUDGET,
 };
 use super::traces::{vertex_budget, TimeWindow};
 use super::zplane::RUN_VERTEX_BUDGET as ZPLANE_RUN_VERTEX_BUDGET;
@@ -448,7 +449,7 @@ impl Scene {
                     analysis: analysis_b,
                     windows: None,
                     ghost: None,
-            history: None,
+                    history: None,
                 };
                 self.draw_runs(run_a, Some(run_b))
             }
