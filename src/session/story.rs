@@ -139,11 +139,16 @@ fn percent(v: f64) -> String {
 
 /// The swing's energy over one period at δ, in words (`law_lag`: the lag law's φ, for comparison).
 fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f64) -> String {
-    // The lag in (−180°, 180°]: beyond half a turn behind, the torque is ahead.
-    let mut lag = e.lag.to_degrees();
-    if lag > 180.0 {
-        lag -= 360.0;
-    }
+    // Both the computed lag and the law's φ in (−180°, 180°]: behind (lags) or ahead.
+    let signed = |degrees: f64| {
+        let d = degrees.rem_euclid(360.0);
+        if d > 180.0 {
+            d - 360.0
+        } else {
+            d
+        }
+    };
+    let lag = signed(e.lag.to_degrees());
     let phase = if lag >= 0.0 {
         format!("lags the motor's velocity by {lag:.0}°")
     } else {
@@ -151,10 +156,10 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
     };
     let role =
         if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
-    let law = if law_lag < core::f64::consts::PI * 1.5 {
-        format!(" (the law's φ: {:.0}°)", law_lag.to_degrees())
-    } else {
-        String::new()
+    let law = {
+        let l = signed(law_lag.to_degrees());
+        let side = if l >= 0.0 { "behind" } else { "ahead" };
+        format!(" (the law's φ = 1.5 ωδ, whole turns dropped: {:.0}° {side})", l.abs())
     };
     let share = |v: f64, whose: &str| {
         if v >= 0.0 {
@@ -287,7 +292,8 @@ pub fn story(run: &Run) -> Option<Story> {
     let pi = core::f64::consts::PI;
     let lag_growth = if law.turn(delta) < pi {
         minus(&format!(
-            "σ ≈ (3β/2) cos φ − B_v1/(2 I_r1) = {:.2} × {:.2} − {:.2} = {:.2} 1/s",
+            "σ ≈ (3β/2) cos φ − B_v1/(2 I_r1) = {:.2} × {:.2} − {:.2} = {:.2} 1/s, an estimate: trust its sign more \
+             than its size",
             law.feed,
             law.lag(delta).cos(),
             law.damping,
@@ -406,7 +412,20 @@ pub fn story(run: &Run) -> Option<Story> {
         },
         omega_a4: format!("{:.2} rad/s ({:.2} Hz)", law.omega, law.omega / (2.0 * pi)),
         turn: format!("{:.2} rad ({:.3} of a turn)", law.turn(delta), law.turn(delta) / (2.0 * pi)),
-        lag: format!("{:.2} rad ({:.0}°)", law.lag(delta), law.lag(delta).to_degrees()),
+        lag: {
+            // Past a whole turn, say where in the turn it is: that decides push or brake.
+            let degrees = law.lag(delta).to_degrees();
+            let turns = (degrees / 360.0).floor();
+            if turns >= 1.0 {
+                format!(
+                    "{:.2} rad ({degrees:.0}°, that is {:.0}° past whole turns)",
+                    law.lag(delta),
+                    degrees - 360.0 * turns
+                )
+            } else {
+                format!("{:.2} rad ({degrees:.0}°)", law.lag(delta))
+            }
+        },
         lag_growth,
         lag_window,
         math_constraint: equations.constraint,
