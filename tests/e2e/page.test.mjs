@@ -511,3 +511,15 @@ test('a "Try:" button keeps the figure in sight, on a laptop and on a phone', { 
     await close();
   }
 });
+
+test('the screen reader hears the new ρ when δ changes, even where the verdict word stays', { timeout: 90000 }, async () => {
+  const { page, problems, close } = await open('?preset=fig5.3&speed=1');
+  const said = () => page.$eval('#verdict-announce', (el) => el.textContent);
+  await page.waitForFunction(() => /1\.0239/.test(document.querySelector('#verdict-announce').textContent), null, { timeout: 30000 });
+  // δ = 0.15 s without K_pr (the explanation's button): unstable too, with another ρ.
+  await page.evaluate(() => document.querySelector('[data-try="set:pf:off:delta:0.15"]').click());
+  await page.waitForFunction(() => /1\.0206/.test(document.querySelector('#verdict-announce').textContent), null, { timeout: 30000 });
+  assert.doesNotMatch(await said(), /1\.0239/);
+  assert.deepEqual(problems, []);
+  await close();
+});

@@ -80,8 +80,9 @@ export function createStatus() {
     if (b) runs[1].render(b, now);
     readouts.classList.toggle('pair', Boolean(b));
     s.runs.forEach((r, i) => keys.forEach((k) => setText(ro[i][k], r.readouts[k])));
-    // Screen readers hear a verdict once, when it changes.
-    const verdicts = s.runs.map((r) => `${r.run}:${r.verdict}`).join(' ');
+    // Screen readers hear a verdict once, when it or the settings it is about change (a new δ
+    // with the same verdict word is news too: its ρ differs).
+    const verdicts = s.runs.map((r) => `${r.run}:${r.verdict}:${r.rho}:${r.settings}`).join(' ');
     if (verdicts !== announced) {
       announced = verdicts;
       setText(announce, s.runs.map((r) => r.announce).join(' '));
