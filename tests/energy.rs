@@ -213,3 +213,31 @@ fn the_lesson_quotes_the_mechanism() {
     }
     assert!(e.held_torque < 0.0 && lambda.norm() < 1.0);
 }
+
+/// The lesson's step "Was it luck?" closes on the stiffer spring (K1 × 4) at the same δ: just
+/// inside its window at 0.05 s, past π and unstable at 0.08 s — numbers from the analysis.
+#[test]
+fn the_lesson_closes_the_coincidence_on_the_stiffer_spring() {
+    use flexarm::analysis::{analyze, lag::LagLaw};
+    let lesson = include_str!("../www/lessons/paper.md");
+    let mut c = config(4.0, 1.0, None, 2.0, PreliminaryFeedbackChoice::Off);
+    c.controller.sampling_period = 0.05;
+    let report = analyze(&c, None).unwrap();
+    let law = LagLaw::of(&report);
+    let windows = stable_windows(&LinearSettings::of(&c, None), [0.002, 0.25]).unwrap();
+    let edge = windows.windows.iter().find(|w| w[0] <= 0.05 && w[1] >= 0.05).expect("0.05 s is inside a window")[1];
+    c.controller.sampling_period = 0.08;
+    let later = analyze(&c, None).unwrap();
+    let said = format!(
+        "It swings at {:.2} rad/s, so ωδ = {:.2} rad, just under π: stable, but only just — ρ = {:.4}, its window ending at {:.4} s. At δ = 0.08 s it turns ωδ = {:.2} rad, past π, and fails: ρ = {:.4}.",
+        law.omega,
+        law.turn(0.05),
+        report.spectral_radius,
+        edge,
+        law.turn(0.08),
+        later.spectral_radius
+    );
+    assert!(lesson.contains(&said), "the lesson should say {said:?}");
+    assert!(report.spectral_radius < 1.0 && later.spectral_radius > 1.0);
+    assert!(law.turn(0.05) < core::f64::consts::PI && law.turn(0.08) > core::f64::consts::PI);
+}
