@@ -190,7 +190,9 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
 pub fn story(run: &Run) -> Option<Story> {
     let report = run.analysis().report()?;
     let settings = run.settings();
-    let config = run.closed_loop().config();
+    // The settings' configuration, as the analysis: the loop takes a change only at its next sampling
+    // instant, and the story must not mix the new analysis with the old configuration.
+    let config = &run.settings().config();
     let plant = &config.plant;
     let r = &report.resonance;
     let q2 = report.rest[1];
