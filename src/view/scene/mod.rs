@@ -13,6 +13,7 @@ mod draw;
 pub mod info;
 mod plots;
 mod probe;
+mod sources;
 mod split;
 
 use plots::{plot_series, plot_tick_counts, plot_ticks, pole_tick_counts, pole_ticks, y_label};
@@ -31,10 +32,10 @@ use super::traces::{vertex_budget, TimeWindow};
 use super::zplane::RUN_VERTEX_BUDGET as ZPLANE_RUN_VERTEX_BUDGET;
 use crate::analysis::{StabilityReport, StableWindows};
 use crate::control::config::SimulationConfig;
-use crate::control::{ClosedLoop, History, Snapshot, Traces};
+use crate::control::{History, Snapshot, Traces};
 use crate::model::reference::Reference;
 use crate::plot::{palette, Color};
-use crate::session::{MapSide, Run, Session, ViewSettings};
+use crate::session::{MapSide, ViewSettings};
 
 pub use super::options::{OptionsUpdate, ViewOptions, MAX_SPRING_MAGNIFICATION, MAX_TIME_WINDOW};
 pub use info::{PanelInfo, SeriesInfo, TickLabel};
@@ -57,6 +58,23 @@ pub struct RunState<'a> {
     pub ghost: Option<&'a Traces>,
     /// The loop's kept states at its sampling instants: the split of log |e| (run A's only).
     pub history: Option<&'a History>,
+}
+
+impl<'a> RunState<'a> {
+    /// A run's state and traces alone: no reference, configuration, analysis, windows, ghost or
+    /// history (each may be set after).
+    pub fn bare(snapshot: &'a Snapshot, traces: &'a Traces) -> Self {
+        Self {
+            snapshot,
+            traces,
+            reference: None,
+            config: None,
+            analysis: None,
+            windows: None,
+            ghost: None,
+            history: None,
+        }
+    }
 }
 
 /// What the scene remembers of a run between frames, for its descriptions.
@@ -372,109 +390,6 @@ impl Scene {
         self.info_generation += 1;
     }
 
-    /// Copies the rows of the session's maps that the scene does not have yet.
-    fn sync_maps(&mut self, session: &Session) {
-        for side in MapSide::BOTH {
-            let Some(entry) = session.maps().shown(side) else { continue };
-            let generation = Some(entry.generation());
-            if self.map_sources[side.index()] == generation {
-                continue;
-            }
-            let job = entry.job();
-            if self.maps[side.index()].set(job.deltas(), job.alphas(), job.values()).is_ok() {
-                self.map_sources[side.index()] = generation;
-                self.rebuild_static();
-                self.info_generation += 1;
-            }
-        }
-    }
-
-    /// Builds the frame for a session: run A, and run B beside it when comparing, with their
-    /// analyses, and the session's maps (copied only when they have new rows).
-    pub fn draw_session(&mut self, session: &Session) -> &[Vertex] {
-        self.follow_view(&session.settings().view);
-        self.sync_maps(session);
-        let a = session.run(0).expect("a session always has run A");
-        self.cursor = session.viewing();
-        let sa = session.shown_snapshot(0).unwrap_or_else(|| a.closed_loop().snapshot());
-        let ra = Reference::new(a.closed_loop().config().reference);
-        let mut run_a = run_state(a, &sa, Some(&ra));
-        run_a.windows = session.cached_windows();
-        run_a.ghost = session.ghost().map(|g| &g.traces);
-        match session.run(1) {
-            Some(b) => {
-                let sb = session.shown_snapshot(1).unwrap_or_else(|| b.closed_loop().snapshot());
-                self.draw_runs(run_a, Some(run_state(b, &sb, None)));
-            }
-            None => {
-                self.draw_runs(run_a, None);
-            }
-        }
-        self.painter.vertices()
-    }
-
-    /// Builds the frame for one closed loop without an analysis (no poles).
-    pub fn draw(&mut self, closed_loop: &ClosedLoop) -> &[Vertex] {
-        self.draw_loops(closed_loop, None, None)
-    }
-
-    /// Builds the frame for one closed loop with its analysis, and a second one beside it.
-    pub fn draw_loops(
-        &mut self,
-        a: &ClosedLoop,
-        analysis: Option<&StabilityReport>,
-        b: Option<(&ClosedLoop, Option<&StabilityReport>)>,
-    ) -> &[Vertex] {
-        self.cursor = None;
-        let reference = Reference::new(a.config().reference);
-        let snap_a = a.snapshot();
-        let run_a = RunState {
-            snapshot: &snap_a,
-            traces: a.traces(),
-            reference: Some(&reference),
-            config: Some(a.config()),
-            analysis,
-            windows: None,
-            ghost: None,
-            history: None,
-        };
-        match b {
-            Some((b, analysis_b)) => {
-                let snap_b = b.snapshot();
-                let run_b = RunState {
-                    snapshot: &snap_b,
-                    traces: b.traces(),
-                    reference: None,
-                    config: Some(b.config()),
-                    analysis: analysis_b,
-                    windows: None,
-                    ghost: None,
-                    history: None,
-                };
-                self.draw_runs(run_a, Some(run_b))
-            }
-            None => self.draw_runs(run_a, None),
-        }
-    }
-
-    /// Builds the frame from a snapshot and traces without a configuration (no poles, no map
-    /// markers); `reference` (if given) shades the slews.
-    pub fn draw_state(&mut self, snapshot: &Snapshot, traces: &Traces, reference: Option<&Reference>) -> &[Vertex] {
-        self.draw_runs(
-            RunState {
-                snapshot,
-                traces,
-                reference,
-                config: None,
-                analysis: None,
-                windows: None,
-                ghost: None,
-                history: None,
-            },
-            None,
-        )
-    }
-
     /// Builds the frame for run A, and run B beside it if given. Allocates nothing once the
     /// painter has grown to the scene's size, except when the mode (one run / two runs) changes
     /// (a new layout) or a run's analysis changes (a copy for the descriptions).
@@ -593,20 +508,6 @@ impl Scene {
             PanelKind::Torque => Some(&self.scale_torque),
             _ => None,
         }
-    }
-}
-
-/// What the scene draws of a session's run.
-fn run_state<'a>(run: &'a Run, snapshot: &'a Snapshot, reference: Option<&'a Reference>) -> RunState<'a> {
-    RunState {
-        snapshot,
-        traces: run.closed_loop().traces(),
-        reference,
-        config: Some(run.closed_loop().config()),
-        analysis: run.analysis().report(),
-        windows: None,
-        ghost: None,
-        history: Some(run.closed_loop().history()),
     }
 }
 
