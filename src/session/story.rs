@@ -192,7 +192,7 @@ pub fn story(run: &Run) -> Option<Story> {
     let settings = run.settings();
     // The settings' configuration, as the analysis: the loop takes a change only at its next sampling
     // instant, and the story must not mix the new analysis with the old configuration.
-    let config = &run.settings().config();
+    let config = &settings.config();
     let plant = &config.plant;
     let r = &report.resonance;
     let q2 = report.rest[1];

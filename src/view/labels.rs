@@ -16,8 +16,7 @@
 use serde::Serialize;
 
 use super::layout::{margins, PanelKind, Rect};
-use super::scene::PanelInfo;
-use super::scene::TickLabel;
+use super::scene::{PanelInfo, TickLabel};
 
 /// Font sizes, CSS px (all at least 11: readable on a phone and a projector).
 pub mod font {
