@@ -19,7 +19,7 @@ use super::config::{FrictionCompensation, InnerLoop, SimulationConfig};
 use super::feedback::{resolve_gain, FeedbackGain};
 use super::history::{History, LoopState};
 use super::metrics::{DivergenceReason, ErrorStats, Metrics};
-use super::predictive::{Predictor, StateVector};
+use super::predictive::{Predictor, StateVector, Sweep};
 use super::traces::{Snapshot, Traces};
 use crate::error::{ConfigError, Error};
 use crate::model::friction::FrictionObserver;
@@ -141,6 +141,8 @@ pub struct ClosedLoop {
     divergence: Option<(f64, DivergenceReason)>,
     /// The state at every sampling instant of the last few seconds (none unless asked for).
     history: History,
+    /// The newest prediction whole, X_0 … X_k and U_1 … U_k (none unless asked for): Fig. 2.1.
+    sweep: Option<Sweep>,
 }
 
 impl ClosedLoop {
@@ -172,6 +174,7 @@ impl ClosedLoop {
             stats: ErrorStats::default(),
             divergence: None,
             history: History::default(),
+            sweep: None,
         };
         sim.applied_torque = sim.torque_at(&sim.controller_state());
         sim.record_trace();
@@ -183,9 +186,26 @@ impl ClosedLoop {
     pub fn reset(&mut self) -> Result<(), Error> {
         let config = self.pending.take().map(|(c, _)| c).unwrap_or(self.config);
         let seconds = self.history.seconds();
+        let sweep = self.sweep.take().map(|mut s| {
+            s.states.clear();
+            s.torques.clear();
+            s
+        });
         *self = Self::new(config)?;
         self.keep_history(seconds);
+        self.sweep = sweep;
         Ok(())
+    }
+
+    /// Keeps the newest prediction whole ([`ClosedLoop::latest_sweep`]), from the next sampling
+    /// instant on: what the page shows as Fig. 2.1 without predicting again.
+    pub fn keep_sweep(&mut self, keep: bool) {
+        self.sweep = if keep { Some(self.sweep.take().unwrap_or_default()) } else { None };
+    }
+
+    /// The controller's newest prediction, X_0 … X_k and U_1 … U_k, if kept.
+    pub fn latest_sweep(&self) -> Option<&Sweep> {
+        self.sweep.as_ref()
     }
 
     /// Keeps the state at every sampling instant of the last `seconds` (0: none), from now on.
@@ -375,10 +395,15 @@ impl ClosedLoop {
         self.v_applied = self.v_next.take().unwrap_or_else(Vector2::zeros);
         self.held_compensation = self.observer.estimate;
         self.held_feedback = self.derived.gain * x;
-        match self.derived.predictor.predict(&self.derived.reference, self.time, &x, &self.torque_guess) {
+        let sweep = self.sweep.as_mut();
+        match self.derived.predictor.predict_into(&self.derived.reference, self.time, &x, &self.torque_guess, sweep) {
             Ok(p) => {
                 self.torque_guess = p.torque;
-                self.v_next = Some(p.torque - self.derived.gain * p.state);
+                let v = p.torque - self.derived.gain * p.state;
+                self.v_next = Some(v);
+                if let Some(s) = self.sweep.as_mut() {
+                    s.held = Some(v);
+                }
             }
             Err(_) => self.divergence = Some((self.time, DivergenceReason::NewtonFailure)),
         }

@@ -8,6 +8,7 @@
 
 pub mod closed_loop;
 pub mod config;
+pub mod cycle;
 pub mod feedback;
 pub mod history;
 pub mod linear;
@@ -18,6 +19,7 @@ pub mod work;
 
 pub use closed_loop::{simulate, simulate_in_chunks, ClosedLoop, RunReport};
 pub use config::{ControllerParameters, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
+pub use cycle::Cycle;
 pub use history::{History, LoopState};
 pub use metrics::{DivergenceReason, Metrics, Verdict};
 pub use traces::{Column, Snapshot, TraceEnvelope, Traces};

@@ -88,6 +88,44 @@ pub struct Prediction {
     pub newton_iterations: usize,
 }
 
+/// One whole prediction, the picture of Fig. 2.1: from the measured X_0 = x(t_n) the k
+/// backward-Euler steps X_1 … X_k of ε and the torques U_1 … U_k that keep the constraint.
+/// U_1, U_2 are impulsive (the index-3 DAE jumps to consistency: the motor's measured angle and
+/// speed are replaced by those the links' law needs); only U_k is used.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Sweep {
+    /// t_n, the sampling instant the sweep starts from, s.
+    pub start: f64,
+    /// ε, s.
+    pub step: f64,
+    /// X_0 … X_k (fewer if a step failed).
+    pub states: Vec<StateVector>,
+    /// U_1 … U_k, N m: `torques[j − 1]` is U_j, the torque at t_n + jε.
+    pub torques: Vec<Vector2<f64>>,
+    /// All k steps converged.
+    pub complete: bool,
+    /// V_k = U_k − K_pr X_k, what the loop holds on [t_n + δ, t_n + 2δ), N m (None if the sweep
+    /// failed or nobody said).
+    pub held: Option<Vector2<f64>>,
+}
+
+impl Sweep {
+    fn start(&mut self, t0: f64, eps: f64, x0: &StateVector) {
+        self.start = t0;
+        self.step = eps;
+        self.states.clear();
+        self.torques.clear();
+        self.held = None;
+        self.complete = false;
+        self.states.push(*x0);
+    }
+
+    /// The time of X_j, s.
+    pub fn time(&self, j: usize) -> f64 {
+        self.start + j as f64 * self.step
+    }
+}
+
 /// The predictive controller for one set of plant and controller parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Predictor {
@@ -125,6 +163,23 @@ impl Predictor {
         x0: &StateVector,
         torque_guess: &Vector2<f64>,
     ) -> Result<Prediction, PredictionError> {
+        self.predict_into(reference, t0, x0, torque_guess, None)
+    }
+
+    /// [`Predictor::predict`], keeping the whole sweep X_0 … X_k, U_1 … U_k in `sweep` (Fig. 2.1;
+    /// its buffers are reused, so a sweep of the same k allocates nothing). On failure the sweep
+    /// holds the steps that converged.
+    pub fn predict_into(
+        &self,
+        reference: &Reference,
+        t0: f64,
+        x0: &StateVector,
+        torque_guess: &Vector2<f64>,
+        mut sweep: Option<&mut Sweep>,
+    ) -> Result<Prediction, PredictionError> {
+        if let Some(s) = sweep.as_deref_mut() {
+            s.start(t0, self.eps, x0);
+        }
         if !x0.iter().all(|v| v.is_finite()) {
             return Err(PredictionError::NonFinite);
         }
@@ -137,6 +192,13 @@ impl Predictor {
             iterations += n;
             z = z_next;
             x = self.advance_state(&x, &r, &z);
+            if let Some(s) = sweep.as_deref_mut() {
+                s.states.push(x);
+                s.torques.push(Vector2::new(z[3], z[4]));
+            }
+        }
+        if let Some(s) = sweep {
+            s.complete = true;
         }
         Ok(Prediction { torque: Vector2::new(z[3], z[4]), state: x, newton_iterations: iterations })
     }
