@@ -103,10 +103,10 @@ fn the_torque_chosen_at_t_n_is_held_from_t_n_plus_delta_to_t_n_plus_2_delta() {
         }
         // The polyline of applied torques is flat at U_k over the hold without K_pr.
         if pf == PreliminaryFeedbackChoice::Off {
-            let on_hold = cycle.applied.iter().filter(|p| p[0] > hold.start + 1e-9 && p[0] < hold.end - 1e-9);
+            let [at, u1, u2] = &cycle.applied;
             let mut n = 0;
-            for p in on_hold {
-                assert!((p[1] - u_k[0]).abs() < 1e-9 * (1.0 + u_k[0].abs()) && (p[2] - u_k[1]).abs() < 1e-6);
+            for i in (0..at.len()).filter(|&i| at[i] > hold.start + 1e-9 && at[i] < hold.end - 1e-9) {
+                assert!((u1[i] - u_k[0]).abs() < 1e-9 * (1.0 + u_k[0].abs()) && (u2[i] - u_k[1]).abs() < 1e-6);
                 n += 1;
             }
             assert!(n >= 8);
@@ -127,8 +127,8 @@ fn at_the_newest_instant_the_hold_is_still_to_come() {
     assert!(hold.start > sim.time(), "planned, not run yet");
     assert_eq!(Some(hold.v), sim.latest_sweep().unwrap().held);
     // The applied torque stops at the present.
-    assert!(cycle.applied.last().unwrap()[0] <= sim.time() + 1e-12);
-    assert!(cycle.applied.iter().all(|p| p[0] < hold.start));
+    assert!(*cycle.applied[0].last().unwrap() <= sim.time() + 1e-12);
+    assert!(cycle.applied[0].iter().all(|&t| t < hold.start));
 }
 
 #[test]

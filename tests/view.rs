@@ -1175,8 +1175,13 @@ fn the_key_has_the_dark_schemes_colours_too() {
     };
     // The same colour to a byte (the CSS text is rounded to bytes).
     let same = |a: Color, b: Color| a.0.iter().zip(b.0).all(|(x, y)| (x - y).abs() <= 1.5 / 255.0);
-    let kinds = [flexarm::view::PanelKind::Poles, flexarm::view::PanelKind::MapOff, flexarm::view::PanelKind::Error1];
-    for group in flexarm::view::legend::legend(&kinds, true, flexarm::plot::color::Measure::Rho, true) {
+    let kinds = [
+        flexarm::view::PanelKind::Poles,
+        flexarm::view::PanelKind::MapOff,
+        flexarm::view::PanelKind::Error1,
+        flexarm::view::PanelKind::Torque,
+    ];
+    for group in flexarm::view::legend::legend(&kinds, true, flexarm::plot::color::Measure::Rho, true, true) {
         for it in &group.items {
             if it.color.starts_with('#') {
                 assert!(same(parse(&it.dark), parse(&it.color).for_dark()), "{}: {} vs {}", it.text, it.dark, it.color);

@@ -51,9 +51,9 @@ pub struct Cycle {
     /// will go through: then `applied` stops at the run's present), with the v held on each.
     pub held: Vec<HeldPeriod>,
     /// The torques the controller applied, u = v + K_pr x (+ a poke; the friction compensation
-    /// x̂f left out), as a polyline (t, u1, u2) over `held`'s periods: flat steps of v plus the
-    /// preliminary feedback's continuous part, read off the traces.
-    pub applied: Vec<[f64; 3]>,
+    /// x̂f left out), as a polyline over `held`'s periods — times (s), u1 and u2 (N m): flat steps
+    /// of v plus the preliminary feedback's continuous part, read off the traces.
+    pub applied: [Vec<f64>; 3],
 }
 
 impl Cycle {
@@ -142,7 +142,9 @@ impl Cycle {
     /// recorded torque, T − v − x̂f (the preliminary feedback and any poke), which is continuous
     /// and so read between recorded rows by linear interpolation.
     fn fill_applied(&mut self, traces: &Traces) {
-        self.applied.clear();
+        for column in &mut self.applied {
+            column.clear();
+        }
         let t = traces.t();
         let (t1, t2, v1, v2) = (traces.torque1(), traces.torque2(), traces.v1(), traces.v2());
         let (x1, x2) = (traces.xf1_hat(), traces.xf2_hat());
@@ -168,7 +170,12 @@ impl Cycle {
             if end <= p.start || p.start < t[0] {
                 continue;
             }
-            let mut push = |s: f64, r: [f64; 2]| self.applied.push([s, p.v[0] + r[0], p.v[1] + r[1]]);
+            let [at, u1, u2] = &mut self.applied;
+            let mut push = |s: f64, r: [f64; 2]| {
+                at.push(s);
+                u1.push(p.v[0] + r[0]);
+                u2.push(p.v[1] + r[1]);
+            };
             push(p.start, rest_at(p.start));
             let inside = t.partition_point(|&x| x <= p.start)..t.partition_point(|&x| x < end);
             for i in inside {

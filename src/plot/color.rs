@@ -154,6 +154,11 @@ pub mod palette {
     /// The unit circle of the z-plane.
     pub const UNIT_CIRCLE: Color = Color::hex(0x3b3b44);
     /// The instant looked back at, across the time plots.
+    /// Fig. 2.1 zoom: the prediction's horizon τ = kε from t_n, and the period its U_k is held on.
+    pub const HORIZON_BAND: Color = Color::hex(0x8a6cc4).with_alpha(0.16);
+    pub const HOLD_BAND: Color = Color::hex(0x3c9a52).with_alpha(0.18);
+    /// The arm the controller predicts at t_n + kε (translucent, over the arm).
+    pub const PREDICTED_ARM: Color = Color::hex(0x7b3fb0).with_alpha(0.55);
     pub const CURSOR: Color = Color::hex(0x2b2b33).with_alpha(0.8);
 }
 

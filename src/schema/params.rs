@@ -396,4 +396,6 @@ pub const PARAMS: &[&Param] = &[
     &super::MEASURE,
     &super::TORQUE,
     &super::LOG,
+    &super::PREDICT,
+    &super::SWING,
 ];

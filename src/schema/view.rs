@@ -144,6 +144,24 @@ pub const LOG: Param = switch(
     "log |e|: an exponential is a straight line, of slope ln ρ/δ.",
 );
 
+/// The paper's Fig. 2.1 at one sampling instant: the time plots zoomed on it.
+pub const PREDICT: Param = switch(
+    "predict",
+    "Zoom on one sampling instant: what the controller predicts and holds (Fig. 2.1)",
+    false,
+    "The time plots show three sampling periods around the instant t_n shown: the state measured at t_n, \
+     the prediction X_j, U_j over τ = kε, and the torque U_k held one period later. Step ▸ and ◂ walk it.",
+);
+
+/// The flexible pair's shape, animated on the arm.
+pub const SWING: Param = switch(
+    "swing",
+    "Show the swing's shape on the arm (the flexible pair's mode, animated)",
+    false,
+    "How the motor, link 1 and link 2 move in the flexible pair: its eigenvector at this δ, drawn on the arm \
+     at rest and turned at the pair's frequency, slowed down.",
+);
+
 /// A page-only on/off view parameter.
 const fn switch(key: &'static str, label: &'static str, default: bool, help: &'static str) -> Param {
     Param { key, label, symbol: "", unit: "", name: key, kind: Kind::Switch { default }, scope: Scope::Page, help }

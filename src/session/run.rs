@@ -63,6 +63,8 @@ impl Run {
     pub fn new(settings: RunSettings) -> Result<Self, Error> {
         let mut sim = ClosedLoop::new(settings.config())?;
         sim.keep_history(HISTORY_SECONDS);
+        // Fig. 2.1 on the page shows the controller's own newest prediction.
+        sim.keep_sweep(true);
         let mut run = Self { sim, settings, analysis: AnalysisCache::default() };
         run.follow_rest(&settings.config());
         Ok(run)

@@ -20,6 +20,10 @@ pub struct ViewSettings {
     pub torque: bool,
     /// log |e| with the predicted slope.
     pub log: bool,
+    /// The time plots zoomed on one sampling instant (Fig. 2.1).
+    pub predict: bool,
+    /// The flexible pair's shape animated on the arm.
+    pub swing: bool,
     /// The view a narrow canvas shows ("run", "poles", "maps").
     pub tab: &'static str,
     /// Embedded in another page: the canvas and a strip of controls.
@@ -29,7 +33,7 @@ pub struct ViewSettings {
 }
 
 /// The view parameters, in the order the state string writes them.
-pub(super) const VIEW_PARAMS: [&Param; 11] = [
+pub(super) const VIEW_PARAMS: [&Param; 13] = [
     &schema::MODE,
     &schema::EMBED,
     &schema::WINDOW,
@@ -41,6 +45,8 @@ pub(super) const VIEW_PARAMS: [&Param; 11] = [
     &schema::MEASURE,
     &schema::TORQUE,
     &schema::LOG,
+    &schema::PREDICT,
+    &schema::SWING,
 ];
 
 impl Default for ViewSettings {
@@ -54,6 +60,8 @@ impl Default for ViewSettings {
             measure: Measure::Rho,
             torque: false,
             log: false,
+            predict: false,
+            swing: false,
             tab: "run",
             embed: false,
             window: 10.0,
@@ -80,6 +88,8 @@ impl ViewSettings {
             "measure" => Value::Choice(self.measure.name()),
             "torque" => Value::Switch(self.torque),
             "log" => Value::Switch(self.log),
+            "predict" => Value::Switch(self.predict),
+            "swing" => Value::Switch(self.swing),
             _ => return None,
         })
     }
@@ -98,6 +108,8 @@ impl ViewSettings {
             ("measure", Value::Choice(m)) => self.measure = Measure::from_name(m).unwrap_or_default(),
             ("torque", Value::Switch(b)) => self.torque = b,
             ("log", Value::Switch(b)) => self.log = b,
+            ("predict", Value::Switch(b)) => self.predict = b,
+            ("swing", Value::Switch(b)) => self.swing = b,
             _ => return false,
         }
         true
@@ -131,7 +143,7 @@ impl ViewSettings {
         if self.full || self.embed {
             *self
         } else {
-            Self { poles: false, rho: false, map: false, torque: false, ..*self }
+            Self { poles: false, rho: false, map: false, torque: false, predict: false, swing: false, ..*self }
         }
     }
 }

@@ -175,6 +175,32 @@ pub fn draw_arm_panel(
     }
 }
 
+/// Over an arm panel drawn by [`draw_arm_panel`]: another pose of the arm as a coloured outline —
+/// its links, and a tab where its spring ends (the twist magnified as the arm's) — e.g. the arm the
+/// controller predicts (Fig. 2.1's X_k).
+pub fn draw_arm_outline(
+    painter: &mut Painter,
+    panel_px: Rect,
+    dpr: f64,
+    pose: &ArmPose,
+    magnification: f64,
+    color: Color,
+) {
+    let frame = ArmFrame::fit(panel_px, dpr);
+    if frame.scale <= 0.0 || !pose.is_finite() {
+        return;
+    }
+    // Thinner than the arm, so that the arm shows through where they coincide.
+    let (elbow, tip) = (frame.point(pose.elbow()), frame.point(pose.tip()));
+    painter.line(frame.base, elbow, frame.css(2.5), color);
+    painter.line(elbow, tip, frame.css(2.5), color);
+    painter.ring(elbow, frame.length(size::ELBOW), frame.css(1.5), color);
+    painter.ring(tip, frame.length(size::TIP), frame.css(1.5), color);
+    let end = -spring_end_angle(pose, magnification);
+    let (inner, outer) = (frame.length(size::MOTOR), frame.length(size::SPRING + 2.0 * size::SPRING_AMPLITUDE));
+    painter.line(at(frame.base, inner, end), at(frame.base, outer, end), frame.css(3.0), color);
+}
+
 /// A faint reach circle and the 0-rad direction, so angles can be read against something.
 fn draw_workspace(painter: &mut Painter, frame: &ArmFrame) {
     let reach = frame.length(LINK1_LENGTH + LINK2_LENGTH);

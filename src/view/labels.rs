@@ -195,10 +195,13 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
             let title = fit_clauses(&p.note, right - left, font::TITLE);
             let row1 = p.y - margins::ANALYSIS_TOP + 2.0;
             out.push(whole(label(LabelClass::Title, title, left, row1, [0.0, 0.0], font::TITLE), &p.note));
-            let x_label = fit(p.x_label, p.width, font::TITLE);
+            let x_label = fit(&p.x_label, p.width, font::TITLE);
             // Under the tick row with a gap, so that a tick at the right end (0.1 s) keeps its label.
             let below = p.y + p.height + TICK_GAP + font::TICK * LINE_HEIGHT + LABEL_GAP;
-            out.push(whole(label(LabelClass::Axis, x_label.clone(), right, below, [1.0, 0.0], font::TITLE), p.x_label));
+            out.push(whole(
+                label(LabelClass::Axis, x_label.clone(), right, below, [1.0, 0.0], font::TITLE),
+                &p.x_label,
+            ));
             // A second x axis (ωδ on ρ(δ)) in the y label's row: its title right after the y
             // label, as many clauses as fit before the first tick label kept, then the ticks.
             if !p.x2_labels.is_empty() {
@@ -239,21 +242,14 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
             ));
         } else {
             // The header row: the y label left, the x label right, a note between if it fits.
-            let x_w = bold_width(p.x_label, font::TITLE);
+            let x_w = bold_width(&p.x_label, font::TITLE);
             let y_label = fit(p.y_label, p.width - x_w - 12.0, font::TITLE);
             let y_w = bold_width(&y_label, font::TITLE);
             out.push(whole(
                 label(LabelClass::Axis, y_label, p.x - TICK_GAP, p.y - 2.0, [0.0, 1.0], font::TITLE),
                 p.y_label,
             ));
-            out.push(label(
-                LabelClass::Axis,
-                p.x_label.to_string(),
-                right + TICK_GAP,
-                p.y - 2.0,
-                [1.0, 1.0],
-                font::TITLE,
-            ));
+            out.push(label(LabelClass::Axis, p.x_label.clone(), right + TICK_GAP, p.y - 2.0, [1.0, 1.0], font::TITLE));
             if !p.note.is_empty() {
                 let room = p.width - x_w - y_w - 36.0;
                 // A note says what the key says too: left out rather than cut.
@@ -337,7 +333,7 @@ fn ticks(kind: &PanelKind, p: &PanelInfo, out: &mut Vec<Label>) {
             y: p.y + p.height + TICK_GAP,
             align: [0.5, 0.0],
             size: font::TICK,
-            time: kind.is_time_plot().then_some(t.value),
+            time: (kind.is_time_plot() && p.scrolls).then_some(t.value),
             width: 0.0,
             full: String::new(),
         });

@@ -69,10 +69,39 @@ fn item(glyph: Glyph, color: Color, text: &str) -> LegendItem {
 
 /// The key to the panels `kinds`, with run B's markers when two runs are compared; ρ(δ) and the
 /// maps show `measure`; `log_errors`: the error plots are log |e|, with the predicted slope.
-pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure, log_errors: bool) -> Vec<LegendGroup> {
+pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure, log_errors: bool, zoom: bool) -> Vec<LegendGroup> {
     let rate = measure == Measure::Rate;
     let mut groups = Vec::new();
     let has = |k: PanelKind| kinds.contains(&k);
+    if zoom && has(PanelKind::Torque) {
+        groups.push(LegendGroup {
+            title: "Fig. 2.1: one sampling instant tₙ",
+            items: vec![
+                item(Glyph::Ring, palette::PREDICTED, "x(tₙ): the state the controller measures at tₙ"),
+                item(
+                    Glyph::Swatch,
+                    palette::HORIZON_BAND,
+                    "the horizon τ = kε: from x(tₙ) it predicts X₁ … Xₖ and U₁ … Uₖ, k backward-Euler steps of ε \
+                     (dashed, a dot per step)",
+                ),
+                item(
+                    Glyph::Chevron,
+                    palette::ERROR1,
+                    "U₁, U₂ off the scale: the first steps put the motor where the links' law needs it, whatever was \
+                     measured — from X₂ on the prediction no longer depends on the measured θ, θ̇",
+                ),
+                item(Glyph::Diamond, palette::PREDICTED, "Uₖ, the torque at tₙ + kε: the only one used"),
+                item(
+                    Glyph::Swatch,
+                    palette::HOLD_BAND,
+                    "tₙ + δ to tₙ + 2δ: Uₖ is held there, one period after the measurement (u = v + K_pr x: steps of v)",
+                ),
+                item(Glyph::Dashed, palette::PREDICTED, "Uₖ still to come: the run is at tₙ"),
+                item(Glyph::Line, palette::PREDICTED_ARM, "on the arm: Xₖ, the arm as predicted for tₙ + kε"),
+            ],
+            scale: None,
+        });
+    }
     if log_errors && has(PanelKind::Error1) {
         // The panel's note names the line only where there is room; the key always does.
         groups.push(LegendGroup {

@@ -34,6 +34,10 @@ pub struct ViewOptions {
     pub measure: Measure,
     /// The error plots show log |e|, with the slope ln ρ / δ the analysis predicts.
     pub log_errors: bool,
+    /// The time plots zoomed on one sampling instant: the prediction of Fig. 2.1.
+    pub show_cycle: bool,
+    /// The flexible pair's mode animated on the arm.
+    pub show_swing: bool,
     /// The view a narrow canvas shows.
     pub tab: Tab,
 }
@@ -50,6 +54,8 @@ impl Default for ViewOptions {
             show_map: true,
             measure: Measure::Rho,
             log_errors: false,
+            show_cycle: false,
+            show_swing: false,
             tab: Tab::Run,
         }
     }
@@ -133,7 +139,7 @@ impl ViewOptions {
 
     pub(crate) fn layout_options(&self, pair: bool) -> LayoutOptions {
         LayoutOptions {
-            show_torque: self.show_torque,
+            show_torque: self.show_torque || self.show_cycle,
             show_poles: self.show_poles,
             z_plane: self.z_plane,
             show_rho: self.show_rho,

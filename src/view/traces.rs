@@ -6,7 +6,6 @@ use core::ops::Range;
 use super::layout::Rect;
 use super::painter::{Painter, Point};
 use crate::model::reference::Reference;
-use crate::plot::Ticks;
 use crate::plot::{palette, Color};
 
 /// Default width W of the time window, s.
@@ -109,7 +108,7 @@ impl PlotFrame {
 pub fn draw_background(
     painter: &mut Painter,
     frame: &PlotFrame,
-    x_ticks: Ticks,
+    x_ticks: impl Iterator<Item = f64>,
     y_ticks: impl Iterator<Item = f64>,
     reference: Option<&Reference>,
     dpr: f64,

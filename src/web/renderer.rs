@@ -98,9 +98,18 @@ impl Renderer {
     /// both runs' errors in the same axes — A solid, B thinner in violet —, both runs' poles and
     /// map markers), and the session's maps as far as they are computed.
     pub fn render(&mut self, session: &WebSession) -> Result<(), JsError> {
+        if let Some(performance) = web_sys::window().and_then(|w| w.performance()) {
+            self.scene.set_clock(performance.now() / 1000.0);
+        }
         self.scene.draw_session(session.session());
         let scene = &self.scene;
         self.gpu.draw(scene.background(), scene.static_vertices(), scene.static_generation(), scene.vertices())
+    }
+
+    /// True while the picture moves by itself (the swing's shape, animated): draw every frame even
+    /// when the simulation is paused.
+    pub fn animating(&self) -> bool {
+        self.scene.animating()
     }
 
     /// Changes whenever `layout()` would describe the frame differently (layout, scales, ticks,

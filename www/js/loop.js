@@ -13,7 +13,8 @@ const FRAME_SAMPLES = 1200;
 
 /**
  * @param {{ wasmOk: () => boolean, playing: () => boolean, advance: (dt: number) => number, finished: () => boolean,
- *   render: () => boolean, status: () => void, workMaps: (budget: number) => boolean, backend: () => string | null }} on
+ *   render: () => boolean, status: () => void, workMaps: (budget: number) => boolean, backend: () => string | null,
+ *   animating?: () => boolean }} on
  */
 export function createLoop(on) {
   const perf = { frames: 0, firstFrameMs: /** @type {number | null} */ (null), times: new Float64Array(FRAME_SAMPLES), mapWork: false };
@@ -35,7 +36,7 @@ export function createLoop(on) {
       acc.sim += on.advance(wallDt);
       dirty = true;
     }
-    if (dirty) {
+    if (dirty || on.animating?.()) {
       dirty = false;
       if (on.render() && perf.firstFrameMs === null) {
         perf.firstFrameMs = performance.now();

@@ -327,6 +327,7 @@ async function main() {
     finished: () => session.isFinished() && session.status().runs.every((r) => r.finished),
     advance: (dt) => guard('Simulation step failed', () => session.advance(dt), 0) ?? 0,
     render,
+    animating: () => renderer?.animating() ?? false,
     status: refreshStatus,
     workMaps: (budget) => guard('Stability map', () => session.workMaps(budget), false) ?? false,
     backend: () => (renderer ? renderer.backend() : null),

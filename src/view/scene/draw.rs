@@ -8,7 +8,7 @@ use crate::control::Snapshot;
 use crate::plot::ticks::Decades;
 use crate::plot::{palette, Color};
 use crate::session::MapSide;
-use crate::view::arm::{draw_arm_panel, ArmPose};
+use crate::view::arm::{draw_arm_outline, draw_arm_panel, ArmPose};
 use crate::view::layout::{Panel, PanelKind};
 use crate::view::map::{draw_map_marker, side_of, LogFrame};
 use crate::view::poles::{draw_a4, draw_flexible_halo, draw_nyquist, draw_pole_background, draw_poles, PoleFrame};
@@ -26,7 +26,21 @@ impl Scene {
         let reference = ArmPose { q1: qd1, q2: qd2, theta: qd1 };
         let rect = self.layout.to_physical(panel.rect);
         let dpr = self.layout.device_pixel_ratio;
-        draw_arm_panel(&mut self.painter, rect, dpr, &actual, &reference, self.options.spring_magnification);
+        let magnification = self.options.spring_magnification;
+        draw_arm_panel(&mut self.painter, rect, dpr, &actual, &reference, magnification);
+        // The flexible pair's shape, turning (slowed down) about the rest point of the analysis.
+        if panel.kind == PanelKind::Arm {
+            if let Some(pose) = self.swing_pose() {
+                draw_arm_outline(&mut self.painter, rect, dpr, &pose, 1.0, palette::SWING);
+            }
+        }
+        // Zoomed on t_n: where the controller predicts the arm at t_n + kε (X_k).
+        if panel.kind == PanelKind::Arm && self.cycle_window().is_some() && self.cycle.sweep.complete {
+            if let Some(x) = self.cycle.sweep.states.last() {
+                let predicted = ArmPose { q1: x[0], q2: x[1], theta: x[2] };
+                draw_arm_outline(&mut self.painter, rect, dpr, &predicted, magnification, palette::PREDICTED_ARM);
+            }
+        }
     }
 
     /// True if this plot shows log |e|.

@@ -47,7 +47,7 @@ pub struct PanelInfo {
     pub y: f64,
     pub width: f64,
     pub height: f64,
-    pub x_label: &'static str,
+    pub x_label: String,
     pub y_label: &'static str,
     /// A caption for panels without axis titles ("arm, top view").
     pub title: String,
@@ -134,7 +134,8 @@ impl Scene {
     /// The key to the panels shown (see [`crate::view::legend`]).
     pub fn legend(&self) -> Vec<crate::view::legend::LegendGroup> {
         let kinds: Vec<PanelKind> = self.layout.panels.iter().map(|p| p.kind).collect();
-        crate::view::legend::legend(&kinds, self.pair, self.options.measure, self.options.log_errors)
+        let zoom = self.cycle_window().is_some();
+        crate::view::legend::legend(&kinds, self.pair, self.options.measure, self.options.log_errors, zoom)
     }
 
     /// Every text over the canvas, placed (see [`crate::view::labels`]).
@@ -151,7 +152,7 @@ impl Scene {
             y: r.y,
             width: r.w,
             height: r.h,
-            x_label: "",
+            x_label: String::new(),
             y_label: "",
             title: String::new(),
             note: String::new(),
@@ -175,15 +176,21 @@ impl Scene {
                 info.x_range = x_range;
                 info.y_range = y_range;
                 info.title = match (panel.kind, self.pair) {
+                    (PanelKind::Arm, _) if self.cycle_window().is_some() => {
+                        "arm at tₙ; violet: as predicted for tₙ + kε".into()
+                    }
                     (PanelKind::Arm, false) => "arm, top view".into(),
                     (PanelKind::Arm, true) => "A: arm, top view".into(),
                     _ => "B: arm, top view".into(),
                 };
             }
+            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque if self.cycle_window().is_some() => {
+                self.describe_cycle_plot(panel, window, &mut info);
+            }
             PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
                 let y = self.scale(panel.kind).map_or(0.0, Autoscale::limit);
                 let (x_ticks, y_ticks) = plot_ticks(r, window, y);
-                info.x_label = "t [s]";
+                info.x_label = "t [s]".into();
                 info.y_label = y_label(panel.kind);
                 info.x_range = [window.start, window.end];
                 info.y_range = self.plot_range(panel.kind, y);
@@ -202,7 +209,7 @@ impl Scene {
             }
             PanelKind::Poles => {
                 let (x_ticks, y_ticks) = pole_ticks(r);
-                info.x_label = "Re s [1/s]";
+                info.x_label = "Re s [1/s]".into();
                 info.y_label = "Im s [rad/s]";
                 info.x_range = RE_RANGE;
                 info.y_range = IM_RANGE;
@@ -226,7 +233,7 @@ impl Scene {
                 let frame = ZFrame::new(r);
                 let [x0, y1] = frame.value_at([r.x, r.y]);
                 let [x1, y0] = frame.value_at([r.right(), r.bottom()]);
-                info.x_label = "Re λ";
+                info.x_label = "Re λ".into();
                 info.y_label = "Im λ";
                 info.x_range = [x0, x1];
                 info.y_range = [y0, y1];
@@ -239,7 +246,7 @@ impl Scene {
                 let frame = self.rho_frame(panel, false);
                 let (x_ticks, y_ticks) = rho_ticks(r, &frame);
                 let rate = self.options.measure == Measure::Rate;
-                info.x_label = "δ [s]";
+                info.x_label = "δ [s]".into();
                 info.y_label = if rate { "ln ρ/δ [1/s]" } else { "ρ" };
                 info.x_range = frame.x_range;
                 info.y_range = frame.y_range;
@@ -270,7 +277,7 @@ impl Scene {
                 let side = side_of(panel.kind).unwrap_or(MapSide::Off);
                 let grid = &self.maps[side.index()];
                 let (x_ticks, y_ticks) = map_ticks(r, grid);
-                info.x_label = "δ [s]";
+                info.x_label = "δ [s]".into();
                 info.y_label = "α [1/s]";
                 info.x_range = grid.delta_range();
                 info.y_range = grid.alpha_range();
@@ -284,7 +291,7 @@ impl Scene {
                 info.note = side.caption(pf, self.options.measure);
             }
         }
-        if info.x_scale == "linear" {
+        if info.x_scale == "linear" && info.x_labels.is_empty() {
             info.x_labels = linear_labels(&info.x_ticks);
         }
         if info.y_scale == "linear" {
@@ -357,6 +364,11 @@ impl Scene {
     /// The simulated time under (x, y) (CSS pixels) on a time plot, within its window; None
     /// elsewhere. Dragging there looks back at that instant.
     pub fn time_at(&self, x: f64, y: f64) -> Option<f64> {
+        // Zoomed on t_n the window follows the instant shown: dragging would chase itself (the
+        // timeline and Step ◂ ▸ move t_n instead).
+        if self.cycle_window().is_some() {
+            return None;
+        }
         let panel = self.layout.panels.iter().find(|p| p.kind.is_time_plot() && contains(p, x, y))?;
         let w = self.window();
         let f = ((x - panel.rect.x) / panel.rect.w).clamp(0.0, 1.0);

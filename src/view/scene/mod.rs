@@ -9,12 +9,14 @@
 //! The analyses come with the runs (the session computes them once per change); the scene keeps
 //! a copy of the latest for its descriptions, updated only when it changes.
 
+mod cycle;
 mod draw;
 pub mod info;
 mod plots;
 mod probe;
 mod sources;
 mod split;
+mod swing;
 
 use plots::{plot_series, plot_tick_counts, plot_ticks, pole_tick_counts, pole_ticks, y_label};
 
@@ -32,7 +34,8 @@ use super::traces::{vertex_budget, TimeWindow};
 use super::zplane::RUN_VERTEX_BUDGET as ZPLANE_RUN_VERTEX_BUDGET;
 use crate::analysis::{StabilityReport, StableWindows};
 use crate::control::config::SimulationConfig;
-use crate::control::{History, Snapshot, Traces};
+use crate::control::predictive::Sweep;
+use crate::control::{Cycle, History, Snapshot, Traces};
 use crate::model::reference::Reference;
 use crate::plot::{palette, Color};
 use crate::session::{MapSide, ViewSettings};
@@ -40,6 +43,7 @@ use crate::session::{MapSide, ViewSettings};
 pub use super::options::{OptionsUpdate, ViewOptions, MAX_SPRING_MAGNIFICATION, MAX_TIME_WINDOW};
 pub use info::{PanelInfo, SeriesInfo, TickLabel};
 pub use probe::{Probe, TipLine};
+pub use swing::{SwingShape, SWING_SLOWDOWN};
 
 /// The state of one run that the scene draws.
 #[derive(Clone, Copy, Debug)]
@@ -56,8 +60,11 @@ pub struct RunState<'a> {
     pub windows: Option<&'a StableWindows>,
     /// The previous run's traces, drawn faint in the error plots (run A's only).
     pub ghost: Option<&'a Traces>,
-    /// The loop's kept states at its sampling instants: the split of log |e| (run A's only).
+    /// The loop's kept states at its sampling instants: the split of log |e| and the zoom on one
+    /// instant (run A's only).
     pub history: Option<&'a History>,
+    /// The controller's newest prediction whole (Fig. 2.1), if the loop keeps it.
+    pub sweep: Option<&'a Sweep>,
 }
 
 impl<'a> RunState<'a> {
@@ -73,6 +80,7 @@ impl<'a> RunState<'a> {
             windows: None,
             ghost: None,
             history: None,
+            sweep: None,
         }
     }
 }
@@ -145,6 +153,12 @@ pub struct Scene {
     info_signature: [f64; 6],
     /// Run A's errors split into the swing and the rest (log |e|), kept between frames.
     split: split::SplitBuffers,
+    /// The zoom on one sampling instant (Fig. 2.1), kept between frames, and its scales (e1, e2,
+    /// torque).
+    cycle: Cycle,
+    zoom_scales: [Autoscale; 3],
+    /// Wall-clock seconds of the latest frame (the swing's animation).
+    clock: f64,
 }
 
 impl Scene {
@@ -169,6 +183,13 @@ impl Scene {
             info_generation: 0,
             info_signature: [f64::NAN; 6],
             split: Default::default(),
+            cycle: Cycle::new(),
+            clock: 0.0,
+            zoom_scales: [
+                Autoscale::new(AutoscaleSettings::ERROR),
+                Autoscale::new(AutoscaleSettings::ERROR),
+                Autoscale::new(AutoscaleSettings::TORQUE),
+            ],
         };
         scene.relayout(css_width, css_height, device_pixel_ratio);
         scene
@@ -206,6 +227,8 @@ impl Scene {
             measure: v.measure,
             show_torque: v.torque,
             log_errors: v.log,
+            show_cycle: v.predict,
+            show_swing: v.swing,
             tab: Tab::from_id(v.tab).unwrap_or_default(),
             time_window: if v.window.is_finite() && v.window > 0.0 {
                 v.window.min(MAX_TIME_WINDOW)
@@ -253,6 +276,7 @@ impl Scene {
                     x_ticks + y_ticks + LOG_DECADES as usize + 4,
                 ) + runs * DASHED_LINE_BUDGET
                     + 6 // the cursor
+                    + if self.options.show_cycle { cycle::ZOOM_VERTEX_BUDGET } else { 0 }
             }
             PanelKind::Poles => {
                 let (x_ticks, y_ticks) = pole_tick_counts(panel.rect);
@@ -418,10 +442,15 @@ impl Scene {
             self.scale_e1.reset();
             self.scale_e2.reset();
             self.scale_torque.reset();
+            for s in &mut self.zoom_scales {
+                s.reset();
+            }
         }
         self.time = if now.is_finite() { now } else { 0.0 };
         self.painter.clear();
+        self.update_cycle(&a);
         let window = self.window();
+        let zoom = self.cycle_window().is_some();
         for i in 0..self.layout.panels.len() {
             let panel = self.layout.panels[i];
             match panel.kind {
@@ -430,6 +459,9 @@ impl Scene {
                     if let Some(b) = &b {
                         self.draw_arm(panel, b.snapshot);
                     }
+                }
+                PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque if zoom => {
+                    self.draw_cycle_plot(panel, window, &a)
                 }
                 PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
                     self.draw_plot(panel, window, &a, b.as_ref())
@@ -453,14 +485,27 @@ impl Scene {
             .find(|p| p.kind.is_time_plot())
             .and_then(|p| plot_ticks(p.rect, window, 1.0).0.next())
             .unwrap_or(f64::NAN);
-        let signature = [
-            self.scale_e1.limit(),
-            self.scale_e2.limit(),
-            self.scale_torque.limit(),
-            first_tick,
-            window.width(),
-            if self.pair { 2.0 } else { 1.0 },
-        ];
+        // Zoomed, the window moves every period but its ticks stay where they are (t_n − δ …).
+        let zoom = self.cycle_window().is_some();
+        let signature = if zoom {
+            [
+                self.zoom_scales[0].limit(),
+                self.zoom_scales[1].limit(),
+                self.zoom_scales[2].limit(),
+                -1.0,
+                window.width(),
+                3.0,
+            ]
+        } else {
+            [
+                self.scale_e1.limit(),
+                self.scale_e2.limit(),
+                self.scale_torque.limit(),
+                first_tick,
+                window.width(),
+                if self.pair { 2.0 } else { 1.0 },
+            ]
+        };
         let same = signature.iter().zip(&self.info_signature).all(|(a, b)| a == b || (a.is_nan() && b.is_nan()));
         if !same {
             self.info_signature = signature;
@@ -469,8 +514,12 @@ impl Scene {
     }
 
     /// The time plots' window: the newest W seconds, or, when looking back, W seconds around
-    /// the instant looked at (within what was run).
+    /// the instant looked at (within what was run); zoomed on one sampling instant, three
+    /// periods around it.
     fn window(&self) -> TimeWindow {
+        if let Some(zoom) = self.cycle_window() {
+            return zoom;
+        }
         let width = self.options.time_window;
         match self.cursor {
             Some(c) if c.is_finite() => TimeWindow::ending_at(self.time.min((c + 0.5 * width).max(width)), width),

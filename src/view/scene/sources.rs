@@ -97,6 +97,7 @@ fn run_state<'a>(run: &'a Run, snapshot: &'a Snapshot, reference: Option<&'a Ref
         config: Some(run.closed_loop().config()),
         analysis: run.analysis().report(),
         history: Some(run.closed_loop().history()),
+        sweep: run.closed_loop().latest_sweep(),
         ..RunState::bare(snapshot, run.closed_loop().traces())
     }
 }

@@ -1,0 +1,67 @@
+//! The flexible pair's shape on the arm: its eigenvector (how q1, q2 and θ move, with their
+//! relative amplitudes and phases) turning at the pair's frequency in this loop, slowed down,
+//! about the rest point of run A's analysis — on demand, while the simulation may be paused.
+
+use super::Scene;
+use crate::view::arm::ArmPose;
+
+/// The swing's animation is this many times slower than the swing itself.
+pub const SWING_SLOWDOWN: f64 = 10.0;
+/// The largest angle the drawn swing moves an angle of the arm by, rad.
+const SWING_DRAWN_AMPLITUDE: f64 = 0.35;
+
+impl Scene {
+    /// Wall-clock seconds, for the animations that run while the simulation is paused.
+    pub fn set_clock(&mut self, seconds: f64) {
+        if seconds.is_finite() {
+            self.clock = seconds;
+        }
+    }
+
+    /// True while something moves without the simulation (the swing's shape): draw every frame.
+    pub fn animating(&self) -> bool {
+        self.options.show_swing && self.swing_shape().is_some()
+    }
+
+    /// The flexible pair's shape in run A's analysis: its frequency in the loop, rad/s (the
+    /// pole's, arg λ / δ), its rest point, and the motions of q1, q2 and θ (complex amplitudes,
+    /// scaled so that the largest is 1).
+    pub fn swing_shape(&self) -> Option<SwingShape> {
+        let report = self.runs[0].report.as_ref()?;
+        let mode = report.swing_mode.as_ref()?;
+        let [re, im] = &mode.shape;
+        let c = |i: usize| [re[i], im[i]];
+        let parts = [c(0), c(1), c(2)];
+        let largest = parts.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max);
+        if !(largest > 0.0 && largest.is_finite()) {
+            return None;
+        }
+        let omega = mode.eigenvalue[1].atan2(mode.eigenvalue[0]).abs() / report.sampling_period;
+        Some(SwingShape { omega, rest: report.rest, motion: parts.map(|[a, b]| [a / largest, b / largest]) })
+    }
+
+    /// The arm in the swing's shape at this moment of the animation.
+    pub(super) fn swing_pose(&self) -> Option<ArmPose> {
+        if !self.options.show_swing {
+            return None;
+        }
+        let shape = self.swing_shape()?;
+        // Real part of the motion turning at ω, slowed down: Re(v e^{iφ}).
+        let phase = shape.omega / SWING_SLOWDOWN * self.clock;
+        let (sin, cos) = phase.sin_cos();
+        let at = |[a, b]: [f64; 2]| SWING_DRAWN_AMPLITUDE * (a * cos - b * sin);
+        let [q1, q2, theta] = shape.motion.map(at);
+        Some(ArmPose { q1: shape.rest[0] + q1, q2: shape.rest[1] + q2, theta: shape.rest[0] + theta })
+    }
+}
+
+/// The flexible pair's motion: how q1, q2 and θ swing, relative to the largest of them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SwingShape {
+    /// The pair's frequency in this loop, rad/s.
+    pub omega: f64,
+    /// The rest point (q1, q2), rad.
+    pub rest: [f64; 2],
+    /// q1, q2 and θ's complex amplitudes (real, imaginary), the largest of unit size.
+    pub motion: [[f64; 2]; 3],
+}
