@@ -13,7 +13,7 @@ const WIDTHS: [f64; 12] = [320.0, 360.0, 390.0, 480.0, 600.0, 640.0, 800.0, 1024
 const HEIGHTS: [f64; 5] = [400.0, 560.0, 700.0, 900.0, 1300.0];
 
 /// View settings to try, as state strings.
-const VIEWS: [&str; 13] = [
+const VIEWS: [&str; 15] = [
     "mode=intro",
     "mode=full",
     "mode=full&torque=1&log=1",
@@ -27,6 +27,8 @@ const VIEWS: [&str; 13] = [
     "mode=full&tab=poles&measure=rate",
     "embed=1",
     "embed=1&views=arm,traces,zplane,rho&log=1",
+    "mode=full&predict=1&swing=1",
+    "mode=full&predict=1&compare=1&delta=0.002",
 ];
 
 fn overlap(a: &Rect, b: &Rect) -> bool {

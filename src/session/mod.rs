@@ -8,6 +8,7 @@
 
 mod changes;
 pub mod controls;
+mod cycle;
 pub mod equations;
 pub mod export;
 pub mod lesson;
@@ -71,6 +72,8 @@ pub struct Status {
     pub lesson: Option<LessonStatus>,
     /// The figure in words (the canvas' text alternative).
     pub figure: String,
+    /// The zoom on one sampling instant in words (Fig. 2.1; "" when it is not shown).
+    pub cycle: String,
     /// The explanation's live numbers for run A (null while its analysis is missing).
     pub story: Option<story::Story>,
 }
@@ -426,7 +429,11 @@ impl Session {
                 .map_or(String::new(), |g| format!("faint grey: the previous run ({})", g.settings)),
             timeline: self.timeline(),
             lesson: self.lesson_status(),
-            figure: self.figure_text(),
+            figure: match self.cycle_caption() {
+                c if c.is_empty() => self.figure_text(),
+                c => format!("{} The time plots are zoomed on one sampling instant. {c}", self.figure_text()),
+            },
+            cycle: self.cycle_caption(),
             story: story::story(&self.a),
         }
     }

@@ -121,6 +121,11 @@ impl Session {
         let start = sim.history().span().map_or(now, |[first, _]| first);
         let time = self.viewing.unwrap_or(now);
         let text = match self.viewing {
+            // Zoomed on one instant the plots follow it: only the scrubber and ◂ move it.
+            None if self.settings().view.shown().predict => format!(
+                "t = {now:.2} s — the last {:.0} s can be looked at: drag here, or press ◂ to step back one period",
+                HISTORY_SECONDS
+            ),
             None => format!(
                 "t = {now:.2} s — the last {:.0} s can be looked at: drag here or on the error plots, or press ◂",
                 HISTORY_SECONDS

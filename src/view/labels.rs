@@ -182,7 +182,15 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
         };
         if kind.is_stage() {
             out.push(whole(
-                label(LabelClass::Title, fit(&p.title, p.width, font::TITLE), p.x, p.y - 3.0, [0.0, 1.0], font::TITLE),
+                // Whole clauses ("arm at tₙ; violet: …"): what does not fit is in the key.
+                label(
+                    LabelClass::Title,
+                    fit_clauses(&p.title, p.width, font::TITLE),
+                    p.x,
+                    p.y - 3.0,
+                    [0.0, 1.0],
+                    font::TITLE,
+                ),
                 &p.title,
             ));
             continue;

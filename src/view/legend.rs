@@ -63,7 +63,7 @@ pub struct LegendGroup {
     pub scale: Option<MapScale>,
 }
 
-fn item(glyph: Glyph, color: Color, text: &str) -> LegendItem {
+pub(crate) fn item(glyph: Glyph, color: Color, text: &str) -> LegendItem {
     LegendItem { glyph, color: color.css(), dark: color.for_dark().css(), text: text.to_string() }
 }
 

@@ -304,11 +304,14 @@ async function main() {
 
   /** Everything the page says about the session, from one status. */
   const figureDescription = byId('figure-description');
+  const zoomCaption = byId('zoom-caption');
   let lessonShown = false;
   function refreshStatus() {
     const s = guard('Status', () => session.status(), null);
     if (!s) return;
     setText(figureDescription, s.figure);
+    zoomCaption.hidden = !s.cycle;
+    setText(zoomCaption, s.cycle);
     // A lesson opened from a link shows its step: on a phone, the sheet it lives in opens once.
     if (s.lesson && !lessonShown) {
       lessonShown = true;

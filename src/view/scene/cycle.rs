@@ -122,10 +122,14 @@ impl Scene {
                 painter.rect(crate::view::rect::Rect::new(x0, rect.y, x1 - x0, rect.h), color);
             }
         };
-        if let Some(hold) = cycle.hold() {
-            band(hold.start, hold.end, palette::HOLD_BAND);
+        // The errors are what is predicted, the torque what is held: one band each.
+        if torque {
+            if let Some(hold) = cycle.hold() {
+                band(hold.start, hold.end, palette::HOLD_BAND);
+            }
+        } else {
+            band(cycle.instant, cycle.instant + cycle.horizon, palette::HORIZON_BAND);
         }
-        band(cycle.instant, cycle.instant + cycle.horizon, palette::HORIZON_BAND);
         let cycle = &self.cycle;
         let painter = &mut self.painter;
         // t_n itself, darker.

@@ -135,7 +135,10 @@ impl Scene {
     pub fn legend(&self) -> Vec<crate::view::legend::LegendGroup> {
         let kinds: Vec<PanelKind> = self.layout.panels.iter().map(|p| p.kind).collect();
         let zoom = self.cycle_window().is_some();
-        crate::view::legend::legend(&kinds, self.pair, self.options.measure, self.options.log_errors, zoom)
+        let mut groups =
+            crate::view::legend::legend(&kinds, self.pair, self.options.measure, self.options.log_errors, zoom);
+        groups.extend(self.swing_legend());
+        groups
     }
 
     /// Every text over the canvas, placed (see [`crate::view::labels`]).
@@ -175,14 +178,21 @@ impl Scene {
                 let (x_range, y_range) = ArmFrame::fit(rect_px, self.layout.device_pixel_ratio).world_range(rect_px);
                 info.x_range = x_range;
                 info.y_range = y_range;
+                let zoom = self.cycle_window().is_some();
                 info.title = match (panel.kind, self.pair) {
-                    (PanelKind::Arm, _) if self.cycle_window().is_some() => {
-                        "arm at tₙ; violet: as predicted for tₙ + kε".into()
-                    }
+                    (PanelKind::Arm, _) if zoom => "arm at tₙ".into(),
                     (PanelKind::Arm, false) => "arm, top view".into(),
                     (PanelKind::Arm, true) => "A: arm, top view".into(),
                     _ => "B: arm, top view".into(),
                 };
+                if panel.kind == PanelKind::Arm {
+                    if zoom {
+                        info.title += "; violet: as predicted for tₙ + kε";
+                    }
+                    if self.options.show_swing && self.swing_shape().is_some() {
+                        info.title += &format!("; amber: the swing's shape, {}× slower", super::SWING_SLOWDOWN);
+                    }
+                }
             }
             PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque if self.cycle_window().is_some() => {
                 self.describe_cycle_plot(panel, window, &mut info);

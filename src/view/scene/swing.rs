@@ -2,8 +2,12 @@
 //! relative amplitudes and phases) turning at the pair's frequency in this loop, slowed down,
 //! about the rest point of run A's analysis — on demand, while the simulation may be paused.
 
+use nalgebra::Complex;
+
 use super::Scene;
+use crate::plot::{format, palette};
 use crate::view::arm::ArmPose;
+use crate::view::legend::{item as legend_item, Glyph, LegendGroup};
 
 /// The swing's animation is this many times slower than the swing itself.
 pub const SWING_SLOWDOWN: f64 = 10.0;
@@ -64,4 +68,42 @@ pub struct SwingShape {
     pub rest: [f64; 2],
     /// q1, q2 and θ's complex amplitudes (real, imaginary), the largest of unit size.
     pub motion: [[f64; 2]; 3],
+}
+
+impl Scene {
+    /// The key to the swing's shape, with its numbers: the pair's frequency in this loop and how
+    /// far and how late link 1 and link 2 move for the motor's 1.
+    pub(super) fn swing_legend(&self) -> Option<LegendGroup> {
+        if !self.options.show_swing {
+            return None;
+        }
+        let shape = self.swing_shape()?;
+        let [q1, q2, theta] = shape.motion.map(|[a, b]| Complex::new(a, b));
+        let relative = |z: Complex<f64>| {
+            let r = z / theta;
+            let degrees = r.arg().to_degrees();
+            let when = if degrees.abs() >= 150.0 {
+                format!("{:.0}° {}: against it", degrees.abs(), if degrees < 0.0 { "behind" } else { "ahead" })
+            } else if degrees.abs() <= 30.0 {
+                format!("{:.0}° {}: with it", degrees.abs(), if degrees < 0.0 { "behind" } else { "ahead" })
+            } else {
+                format!("{:.0}° {}", degrees.abs(), if degrees < 0.0 { "behind" } else { "ahead" })
+            };
+            format!("{} × the motor's angle, {when}", format::sig(r.norm(), 2))
+        };
+        let hz = shape.omega / core::f64::consts::TAU;
+        let text = format!(
+            "the arm in the flexible pair's shape, {SWING_SLOWDOWN}× slower than its {} rad/s ({} Hz) in this loop, \
+             about the rest point — link 1 (q1): {}; link 2 (q2, at its joint): {}",
+            format::sig(shape.omega, 3),
+            format::sig(hz, 2),
+            relative(q1),
+            relative(q2),
+        );
+        Some(LegendGroup {
+            title: "the swing's shape",
+            items: vec![legend_item(Glyph::Line, palette::SWING, &text)],
+            scale: None,
+        })
+    }
 }
