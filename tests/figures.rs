@@ -33,7 +33,7 @@ fn the_z_plane_shows_the_flexible_pair_outside_the_unit_circle_without_feedback(
         scene.draw_session(&s);
         let panels = scene.panel_info();
         let z = info(&panels, "z-plane");
-        assert_eq!((z.x_label, z.y_label), ("Re λ", "Im λ"));
+        assert_eq!((z.x_label.as_str(), z.y_label), ("Re λ", "Im λ"));
         assert!(z.x_range[0] < -1.0 && z.x_range[1] > 1.0 && z.y_range[0] < -1.0 && z.y_range[1] > 1.0, "{z:?}");
         assert!(panels.iter().all(|p| p.id != "poles"), "one pole plot at a time");
         let poles = scene.pole_info();
@@ -115,7 +115,7 @@ fn rho_of_delta_shows_the_windows_and_picks_delta() {
     scene.draw_session(&s);
     let panels = scene.panel_info();
     let rho = info(&panels, "rho-curve");
-    assert_eq!((rho.x_label, rho.y_label, rho.x_scale), ("δ [s]", "ρ", "log"));
+    assert_eq!((rho.x_label.as_str(), rho.y_label, rho.x_scale), ("δ [s]", "ρ", "log"));
     assert_eq!(rho.x_range, [0.002, 0.25]);
     assert!(rho.y_range[0] <= 0.9 && rho.y_range[1] >= 1.1);
     assert!(rho.note.contains("α = 2"), "{}", rho.note);

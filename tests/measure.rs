@@ -198,7 +198,7 @@ fn rho_of_delta_becomes_the_rate_with_zero_as_the_border() {
     scene.draw_session(&s);
     let panels = scene.panel_info();
     let curve = info(&panels, "rho-curve");
-    assert_eq!((curve.x_label, curve.y_label, curve.x_scale), ("δ [s]", "ln ρ/δ [1/s]", "log"));
+    assert_eq!((curve.x_label.as_str(), curve.y_label, curve.x_scale), ("δ [s]", "ln ρ/δ [1/s]", "log"));
     assert!(curve.y_range[0] <= -1.0 && curve.y_range[1] >= 1.0, "{:?}", curve.y_range);
     assert!(curve.y_range.iter().all(|v| v.fract() == 0.0), "whole 1/s: {:?}", curve.y_range);
     assert!(curve.note.starts_with("rate at α = 2 1/s"), "{}", curve.note);

@@ -594,7 +594,7 @@ fn scene_autoscale_reads_both_a_stable_and_a_diverging_run() {
     assert!(e1.y_range[1] >= max_e1 && e1.y_range[1] <= 5.0 * max_e1, "{:?} for max {max_e1}", e1.y_range);
     assert_eq!(e1.y_range[0], -e1.y_range[1]);
     assert_eq!(e1.x_range, [0.0, 10.0]);
-    assert_eq!((e1.x_label, e1.y_label), ("t [s]", "e1 [rad]"));
+    assert_eq!((e1.x_label.as_str(), e1.y_label), ("t [s]", "e1 [rad]"));
     assert!(e1.y_ticks.contains(&0.0));
 
     let unstable = run(PreliminaryFeedbackChoice::Off, 3.8);
@@ -936,7 +936,7 @@ fn maps_go_to_the_static_layer_and_change_only_on_set_map() {
     let panels = scene.panel_info();
     let map = info(&panels, "map-off");
     assert_eq!((map.x_scale, map.y_scale), ("log", "log"));
-    assert_eq!((map.x_label, map.y_label), ("δ [s]", "α [1/s]"));
+    assert_eq!((map.x_label.as_str(), map.y_label), ("δ [s]", "α [1/s]"));
     assert_eq!(map.x_range, [deltas[0], deltas[23]]);
     assert_eq!(map.y_range, [alphas[0], alphas[9]]);
     assert!(map.x_ticks.contains(&0.01) && map.y_ticks.contains(&1.0), "{:?} {:?}", map.x_ticks, map.y_ticks);
@@ -1024,7 +1024,7 @@ fn preliminary_feedback_moves_the_flexible_pair_across_the_imaginary_axis() {
         assert!(far.iter().all(|p| !p.in_view && p.x.unwrap() < panel.x + 10.0));
         let info = scene.panel_info();
         let plot = info.iter().find(|p| p.id == "poles").unwrap();
-        assert_eq!((plot.x_label, plot.y_label), ("Re s [1/s]", "Im s [rad/s]"));
+        assert_eq!((plot.x_label.as_str(), plot.y_label), ("Re s [1/s]", "Im s [rad/s]"));
         assert_eq!((plot.x_range, plot.y_range), ([-8.0, 6.0], [-40.0, 40.0]));
         assert!(plot.x_ticks.contains(&0.0) && plot.y_ticks.contains(&0.0) && plot.y_ticks.contains(&40.0));
     }
