@@ -1,7 +1,7 @@
 //! Benchmarks of the core, as a plain bench binary (no timed tests):
 //!
 //! `cargo bench --bench core` times one controller sample (k = 12 Newton-solved backward-Euler
-//! steps), a 10-s closed-loop run at δ = 0.01 s, one spectral-radius evaluation, an arm change
+//! steps), a 10-s closed-loop run at δ = 0.01 s (and as the page runs it), one spectral-radius evaluation, an arm change
 //! to ρ, A4 and the windows, and both maps after it, and prints medians over repeated batches. `cargo bench --bench core -- --python` also runs the
 //! Python/NumPy/SciPy baseline of the same loop (bench/run_python.sh) and reports the ratio.
 
@@ -55,6 +55,7 @@ fn main() {
     let (history_med, history_min) = time_it(11, 3, || {
         let mut sim = ClosedLoop::new(config).unwrap();
         sim.keep_history(flexarm::session::HISTORY_SECONDS);
+        sim.keep_sweep(true);
         sim.advance(10.0).unwrap();
         black_box(sim.snapshot());
     });
@@ -98,6 +99,27 @@ fn main() {
             black_box(scene.vertices().len());
         })
     };
+    // Fig. 2.1 live: a frame zoomed on t_n with the swing's shape on, live (the controller's own
+    // sweep, copied) and looking back (the sweep computed again every frame from the kept state),
+    // against the same frame unzoomed.
+    let zoom_cost = |query: &str, back: usize, k: usize| {
+        let (mut s, _) = flexarm::session::Session::open(query);
+        while s.run(0).unwrap().closed_loop().time() < 2.0 {
+            s.advance(0.05).unwrap();
+        }
+        for _ in 0..back {
+            s.step_back();
+        }
+        let mut scene = flexarm::view::Scene::new(flexarm::view::ViewOptions::default(), 1280.0, 800.0, 1.0);
+        scene.draw_session(&s);
+        time_it(21, k, || {
+            scene.draw_session(&s);
+            black_box(scene.vertices().len());
+        })
+    };
+    let (zoom_live, _) = zoom_cost("preset=fig5.3&mode=full&predict=1&swing=1", 0, 200);
+    let (zoom_back, zoom_back_min) = zoom_cost("preset=fig5.3&mode=full&predict=1&swing=1", 5, 200);
+    let (unzoomed, _) = zoom_cost("preset=fig5.3&mode=full", 5, 200);
     let (log_med, log_min) = frame_cost("preset=fig5.2&delta=0.002&mode=full&log=1");
     let (lin_med, _) = frame_cost("preset=fig5.2&delta=0.002&mode=full");
     let model = flexarm::analysis::LoopModel::new(&flexarm::analysis::LinearSettings::of(&config, None)).unwrap();
@@ -122,7 +144,7 @@ fn main() {
         run_min * 1e3
     );
     println!(
-        "| the same run keeping 30 s of history (the page's timeline) | {:.2} ms ({:+.1} % against without) | {:.2} ms |",
+        "| the same run keeping 30 s of history and the newest sweep (the page's timeline and Fig. 2.1) | {:.2} ms ({:+.1} % against without) | {:.2} ms |",
         history_med * 1e3,
         100.0 * (history_med / run_med - 1.0),
         history_min * 1e3
@@ -154,6 +176,18 @@ fn main() {
         "| the swing's energy over one period (once per analysis; goal ≤ 1 ms) | {:.1} µs | {:.1} µs |",
         energy_med * 1e6,
         energy_min * 1e6
+    );
+
+    println!(
+        "| a frame zoomed on t_n (Fig. 2.1) with the swing's shape, live: the controller's own sweep (goal ≤ 1 ms more) | {:.3} ms ({:+.3} ms against unzoomed) | |",
+        zoom_live * 1e3,
+        (zoom_live - unzoomed) * 1e3
+    );
+    println!(
+        "| the same looking back: the sweep computed again from the kept state every frame | {:.3} ms ({:+.3} ms) | {:.3} ms |",
+        zoom_back * 1e3,
+        (zoom_back - unzoomed) * 1e3,
+        zoom_back_min * 1e3
     );
 
     if python {
