@@ -207,4 +207,7 @@ fn the_prediction_forgets_the_measured_motor_after_two_steps_at_every_delta() {
         }
     }
     assert_eq!(cases, 75);
+    // The lesson quotes this check.
+    let lesson = include_str!("../www/lessons/paper.md");
+    assert!(lesson.contains(&format!("over {cases} arms, α, δ, k and m")), "the lesson's count");
 }

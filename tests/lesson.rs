@@ -176,13 +176,13 @@ fn show_me_does_every_task_it_reveals() {
 
 #[test]
 fn a_link_reopens_the_same_step_with_the_same_settings() {
-    let mut s = session("?lesson=4");
-    assert_eq!(s.status().lesson.unwrap().index, 3);
+    let mut s = session("?lesson=5");
+    assert_eq!(s.status().lesson.unwrap().index, 4);
     assert!(s.settings().view.z_plane);
     s.set("alpha", "1.5").unwrap();
     let link = s.state_string();
     let again = session(&link);
-    assert_eq!(again.status().lesson.unwrap().index, 3);
+    assert_eq!(again.status().lesson.unwrap().index, 4);
     assert_eq!(again.settings(), s.settings());
     let (_, notices) = Session::open("lesson=abc");
     assert_eq!(notices.len(), 1, "{notices:?}");

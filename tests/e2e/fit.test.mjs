@@ -18,7 +18,8 @@ const SIZES = [
 ];
 const STATES = [
   ['full', '?preset=fig5.3&mode=full&tab=poles&speed=0.5'],
-  ['lesson', '?lesson=4'],
+  ['lesson', '?lesson=5'],
+  ['zoom', '?preset=fig5.3&mode=full&predict=1&swing=1&speed=0.5'],
   ['embed', '?preset=fig5.3&embed=1&views=arm,traces,zplane,rho,map&speed=0.5'],
 ];
 
@@ -99,7 +100,7 @@ const smallTargets = (page) => page.evaluate(() => [...document.querySelectorAll
   .filter((t) => t.w < 44 || t.h < 44)
   .map((t) => `${t.what} ${Math.round(t.w)}×${Math.round(t.h)}`));
 
-for (const [state, query] of [['controls', '?preset=fig5.3&mode=full'], ['lesson', '?lesson=4']]) {
+for (const [state, query] of [['controls', '?preset=fig5.3&mode=full'], ['lesson', '?lesson=5']]) {
   test(`a phone with the sheet open (${state}): the figure stays in view above it, every control is a 44-px target`, { timeout: 90000 }, async () => {
     const { name, ...options } = SIZES[0];
     const { page, problems, close } = await openPage(env.browser, env.server.base, query, options);

@@ -446,7 +446,7 @@ test('the lesson: every step sets the simulator up, every prediction is answered
 });
 
 test('a lesson link opens its step', { timeout: 60000 }, async () => {
-  const { page, problems, close } = await open('?lesson=4');
+  const { page, problems, close } = await open('?lesson=5');
   await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 5000 });
   assert.match(await page.textContent('#lesson-title'), /^Why: a resonance/);
   assert.equal(await page.$eval('#plane', (el) => el.value), 'z');
