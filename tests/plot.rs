@@ -88,3 +88,27 @@ fn grouped_numbers_set_thousands_apart_with_narrow_no_break_spaces() {
     assert_eq!(grouped(-1234567.0), "−1\u{202f}234\u{202f}567");
     assert_eq!(grouped(f64::NAN), "—");
 }
+
+/// Parts rounded so that the printed parts add up to the printed total (the energy balance).
+#[test]
+fn rounded_summands_add_up_and_stay_within_a_step() {
+    use flexarm::plot::format::rounded_summands;
+    // −14.42 % − 2.34 % = −16.76 %: printed −14.4 − 2.4 = −16.8, not −14.4 − 2.3 = −16.8.
+    let r = rounded_summands([-14.42, -2.34], 0.1);
+    assert!((r[0] + r[1] - (-16.8)).abs() < 1e-9, "{r:?}");
+    let mut seed = 7u64;
+    let mut next = || {
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 40.0
+    };
+    for _ in 0..2000 {
+        let parts = [next(), next(), next()];
+        let r = rounded_summands(parts, 0.1);
+        let total: f64 = parts.iter().sum();
+        assert!((r.iter().sum::<f64>() - (total / 0.1).round() * 0.1).abs() < 1e-9, "{parts:?} → {r:?}");
+        for (a, b) in parts.iter().zip(r) {
+            assert!((a - b).abs() < 0.1 + 1e-9, "{parts:?} → {r:?}");
+            assert!(((b / 0.1).round() * 0.1 - b).abs() < 1e-9, "a multiple of the step");
+        }
+    }
+}

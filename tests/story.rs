@@ -357,3 +357,56 @@ fn a_model_error_is_named_with_both_pairs() {
     let s = common::session("preset=fig5.3&arm=stiffer");
     assert_eq!(s.status().story.unwrap().model_note, "");
 }
+
+/// The mechanism's balance as printed adds up (issue 19's trial: "−14.4 % − 2.3 % = −16.8 %"): the
+/// shares are rounded so that W_v (+ W_K) − D, printed, is the printed net, and the net is
+/// |λ|² − 1 of the flexible pair rounded to 0.1 %. Over arms, α, δ and the preliminary feedbacks.
+#[test]
+fn the_printed_energy_balance_adds_up() {
+    let mut checked = 0;
+    for arm in ["", "&k1=4610.4", "&ir1=0.48475", "&arm=damped"] {
+        for pf in ["off", "paper", "lq"] {
+            for delta in ["0.005", "0.01", "0.03", "0.05", "0.08", "0.15", "0.2"] {
+                for alpha in ["1", "2", "3"] {
+                    let (s, notices) =
+                        flexarm::session::Session::open(&format!("delta={delta}&pf={pf}&alpha={alpha}{arm}"));
+                    assert!(notices.is_empty(), "{notices:?}");
+                    let Some(story) = s.status().story else { continue };
+                    if story.energy.is_empty() {
+                        continue;
+                    }
+                    // "… it puts 5.4 % of the swing's energy in[, Kₚᵣ takes 8.9 % out], and the arm's
+                    // damping takes 0.6 % out: the swing's energy changes by +4.8 % a period …":
+                    // each "N %" signed by the verb before it.
+                    let words: Vec<&str> = story.energy.split(' ').collect();
+                    let mut terms = Vec::new();
+                    let mut sign = 1.0;
+                    for (i, w) in words.iter().enumerate() {
+                        match *w {
+                            "puts" | "by" => sign = 1.0,
+                            "takes" => sign = -1.0,
+                            _ => {}
+                        }
+                        if words.get(i + 1).is_some_and(|n| n.starts_with('%')) {
+                            if let Ok(v) = w.replace('−', "-").parse::<f64>() {
+                                terms.push(sign * v);
+                            }
+                        }
+                    }
+                    let case = format!("δ={delta} {pf} α={alpha}{arm}: {}", story.energy);
+                    let (net, shares) = terms.split_last().unwrap_or_else(|| panic!("{case}"));
+                    assert!((2..=3).contains(&shares.len()), "{case}");
+                    assert!((shares.iter().sum::<f64>() - net).abs() < 1e-9, "{case}");
+                    // The net is |λ|² − 1 of the flexible pair, rounded.
+                    let report = s.run(0).unwrap().analysis().report().unwrap();
+                    let [Some(i), _] = report.flexible_pair() else { panic!("{case}") };
+                    let lambda = report.poles[i].discrete;
+                    let exact = 100.0 * (lambda[0] * lambda[0] + lambda[1] * lambda[1] - 1.0);
+                    assert!((net - exact).abs() <= 0.05 + 1e-9, "{case}: |λ|² − 1 = {exact} %");
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 150, "{checked}");
+}

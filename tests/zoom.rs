@@ -229,3 +229,42 @@ fn the_swing_turns_with_the_clock_and_asks_for_frames_only_while_shown() {
     assert!(!scene.animating() && amber(&scene).is_empty());
     assert!(scene.layout().panel(PanelKind::Arm).is_some());
 }
+
+/// The log view's dashed slope ln ρ/δ describes the free motion about rest (trial 8: it was drawn
+/// through the slews): none while the reference moves, and from the start of the rest at most.
+#[test]
+fn the_predicted_slope_is_drawn_over_the_rest_only() {
+    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    // The slew repeats: 1 s there, 1.5 s hold, 1 s back, … Fig. 5.3 grows.
+    let mut s = session("preset=fig5.3&mode=full&log=1");
+    let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
+    let dashes = |scene: &Scene| count(scene, palette::PREDICTED);
+    let e1 = |scene: &Scene| scene.layout().panel(PanelKind::Error1).unwrap().rect;
+    // During the second slew (t from 2.5 to 3.5 s): no slope.
+    play(&mut s, 2.9);
+    scene.draw_session(&s);
+    assert_eq!(dashes(&scene), 0, "while the reference moves");
+    // In the rest after it (from 3.5 s): a slope, starting no earlier than 3.5 s.
+    play(&mut s, 0.9);
+    scene.draw_session(&s);
+    assert!(dashes(&scene) > 0, "at rest");
+    let w = scene.time_window();
+    let r = e1(&scene);
+    let x_rest = r.x + r.w * (3.5 - w.start) / w.width();
+    let leftmost = scene
+        .vertices()
+        .iter()
+        .filter(|v| v.color == palette::PREDICTED.0)
+        .map(|v| v.position[0] as f64)
+        .fold(f64::INFINITY, f64::min);
+    assert!(leftmost >= x_rest - 3.0, "the slope starts at {leftmost} px, the rest at {x_rest} px");
+    // And it stays inside the plots (e1's and e2's).
+    let r2 = scene.layout().panel(PanelKind::Error2).unwrap().rect;
+    for v in scene.vertices().iter().filter(|v| v.color == palette::PREDICTED.0) {
+        let (x, y) = (v.position[0] as f64, v.position[1] as f64);
+        let within = |r: &flexarm::view::Rect| {
+            x >= r.x - 0.01 && x <= r.right() + 0.01 && y >= r.y - 0.01 && y <= r.bottom() + 0.01
+        };
+        assert!(within(&r) || within(&r2), "a dash at ({x}, {y}) outside {r:?} and {r2:?}");
+    }
+}

@@ -92,6 +92,22 @@ impl Reference {
         }
     }
 
+    /// When the rest the reference is in at time t began (−∞ before the first slew), or None
+    /// while it moves.
+    pub fn rest_since(&self, t: f64) -> Option<f64> {
+        let tf = self.params.slew_time;
+        if t <= 0.0 {
+            return Some(f64::NEG_INFINITY);
+        }
+        match self.params.repeat_hold {
+            None => (t >= tf).then_some(tf),
+            Some(hold) => {
+                let phase = t.rem_euclid(tf + hold);
+                (phase >= tf).then_some(t - phase + tf)
+            }
+        }
+    }
+
     /// True while the reference moves (a slew is in progress) at time t.
     pub fn is_moving(&self, t: f64) -> bool {
         let tf = self.params.slew_time;

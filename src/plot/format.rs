@@ -71,6 +71,27 @@ pub fn sci(v: f64, digits: usize) -> String {
     minus(&s.replace("e+", "e"))
 }
 
+/// Rounds `parts` to multiples of `step` so that they add up to their sum rounded to `step`
+/// (largest-remainder rounding): every part is rounded down, then the parts with the largest
+/// remainders go up one step each until the sum is right. Each stays within one step of its
+/// value; an equation that prints the parts and their total then adds up as printed.
+pub fn rounded_summands<const N: usize>(parts: [f64; N], step: f64) -> [f64; N] {
+    let scaled = parts.map(|p| p / step);
+    let total = scaled.iter().sum::<f64>().round();
+    let mut out = scaled.map(f64::floor);
+    let mut missing = (total - out.iter().sum::<f64>()).round().max(0.0) as usize;
+    let mut order: [usize; N] = core::array::from_fn(|i| i);
+    crate::sort::sort_by_key(&mut order, |&i| -((scaled[i] - out[i]) * 1e6).round() as i64);
+    for &i in order.iter() {
+        if missing == 0 {
+            break;
+        }
+        out[i] += 1.0;
+        missing -= 1;
+    }
+    out.map(|v| v * step)
+}
+
 /// `digits` significant digits, trailing zeros trimmed ("0.0349", "0.1", "2.09").
 pub fn sig_trim(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {

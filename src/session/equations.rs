@@ -178,17 +178,19 @@ pub fn equations(report: &StabilityReport, law: &LagLaw, alpha: [f64; 2], delta:
         let percent = |v: f64| mn(&format!("{}&#8201;%", crate::plot::format::minus(&format!("{:.1}", 100.0 * v))));
         let signed = |v: f64| if v < 0.0 { [mo("−"), percent(-v)].concat() } else { [mo("+"), percent(v)].concat() };
         let with_feedback = e.preliminary_feedback != 0.0;
+        // The shares as the sentence prints them: rounded so that the balance adds up.
+        let [held, preliminary, damping, net] = super::story::energy_shares(&e);
         let mut terms = vec![sub(&mi("W"), &mi("v"))];
-        let mut values = vec![percent(e.held_torque)];
+        let mut values = vec![percent(held)];
         if with_feedback {
             terms.extend([mo("+"), sub(&mi("W"), &mi("K"))]);
-            values.push(signed(e.preliminary_feedback));
+            values.push(signed(preliminary));
         }
         terms.extend([mo("−"), mi("D")]);
-        values.push([mo("−"), percent(e.damping)].concat());
+        values.push([mo("−"), percent(damping)].concat());
         // Two short lines, so that a narrow column shows them whole: the balance, its numbers.
         let balance = [frac(&[mi("ΔE"), mo("/"), mi("E")].concat(), &mi("period")), mo("="), terms.concat()];
-        let numbers = [mo("="), values.concat(), mo("="), percent(e.net())];
+        let numbers = [mo("="), values.concat(), mo("="), percent(net)];
         [math(&balance.concat()), math(&numbers.concat())].concat()
     });
     Equations {

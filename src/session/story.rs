@@ -137,6 +137,15 @@ fn percent(v: f64) -> String {
     minus(&format!("{:.1} %", 100.0 * v))
 }
 
+/// The swing's energy shares as printed, as fractions: W_v, W_K, D and their net |λ|² − 1, each
+/// rounded to 0.1 % so that the printed balance adds up (the net is |λ|² − 1 rounded; a share
+/// may be rounded the other way, by less than 0.1 %).
+pub(super) fn energy_shares(e: &crate::analysis::energy::SwingEnergy) -> [f64; 4] {
+    let parts = [e.held_torque, e.preliminary_feedback, -e.damping].map(|v| 100.0 * v);
+    let [v, k, d] = crate::plot::format::rounded_summands(parts, 0.1);
+    [v, k, -d, v + k + d].map(|p| p / 100.0)
+}
+
 /// The swing's energy over one period at δ, in words (`law_lag`: the lag law's φ, for comparison).
 fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f64) -> String {
     // Both the computed lag and the law's φ in (−180°, 180°]: behind (lags) or ahead.
@@ -168,18 +177,15 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
             format!("takes {}{whose} out", percent(-v))
         }
     };
-    let feedback = if e.preliminary_feedback != 0.0 {
-        format!(", Kₚᵣ {}", share(e.preliminary_feedback, ""))
-    } else {
-        String::new()
-    };
-    let net = e.net();
+    let [held, preliminary, damping, net] = energy_shares(e);
+    let feedback =
+        if e.preliminary_feedback != 0.0 { format!(", Kₚᵣ {}", share(preliminary, "")) } else { String::new() };
     format!(
         "At δ = {} s the held torque {phase}{law} — {role}. Over each period it {}{feedback}, and the arm's damping \
          takes {} out: the swing's energy changes by {}{} a period, so it {}.",
         sig_trim(delta, 3),
-        share(e.held_torque, " of the swing's energy"),
-        percent(e.damping),
+        share(held, " of the swing's energy"),
+        percent(damping),
         if net > 0.0 { "+" } else { "" },
         percent(net),
         if net > 0.0 { "grows" } else { "dies out" }

@@ -5,6 +5,7 @@
 use super::plots::{plot_series, plot_ticks, pole_ticks};
 use super::{run_pole_style, RunState, Scene, CURVE_WIDTH, CURVE_WIDTH_B, LOG_DECADES};
 use crate::control::Snapshot;
+use crate::model::reference::Reference;
 use crate::plot::ticks::Decades;
 use crate::plot::{palette, Color};
 use crate::session::MapSide;
@@ -132,18 +133,32 @@ impl Scene {
         let t = state.traces.t();
         let Some(&now) = t.last() else { return };
         let [Some((values, _)), _] = plot_series(kind, state.traces, run) else { return };
-        let recent = TimeWindow { start: now - 0.5, end: now }.indices(t);
+        // The free motion about rest: not while the reference moves, nor back into the last slew.
+        let reference = state.reference.copied().or_else(|| state.config.map(|c| Reference::new(c.reference)));
+        let rest = match reference {
+            Some(r) => match r.rest_since(now) {
+                Some(since) if now - since >= 0.1 => since,
+                _ => return,
+            },
+            None => f64::NEG_INFINITY,
+        };
+        let recent = TimeWindow { start: (now - 0.5).max(rest), end: now }.indices(t);
         let e = values.get(recent).map_or(0.0, max_abs);
         if !(g.is_finite() && g != 0.0 && e > 0.0 && now > frame.window.start) {
             return;
         }
-        // Back from now until the line leaves the plot through the top or bottom, or the window.
+        // Back from now until the line leaves the plot through the top or bottom, the window or
+        // the rest it describes.
         let bound = if g > 0.0 { frame.y_lo } else { frame.y_hi };
-        let start = (now + (bound / e).ln() / g).max(frame.window.start);
+        let start = (now + (bound / e).ln() / g).max(frame.window.start).max(rest);
         let v_start = e * (g * (start - now)).exp();
         let dpr = self.layout.device_pixel_ratio;
         let color = if run == 0 { palette::PREDICTED } else { palette::RUN_B };
-        let (a, b) = ([frame.x(start), frame.y(v_start)], [frame.x(now), frame.y(e)]);
+        // Kept half a line inside the frame, so that its ends do not stick out of the plot.
+        let half = 0.875 * dpr;
+        let r = frame.rect;
+        let inside = |p: [f64; 2]| [p[0], p[1].clamp(r.y + half, r.bottom() - half)];
+        let (a, b) = (inside([frame.x(start), frame.y(v_start)]), inside([frame.x(now), frame.y(e)]));
         self.painter.dashed_line(a, b, 1.75 * dpr, 7.0 * dpr, 5.0 * dpr, color);
     }
 
