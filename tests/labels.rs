@@ -13,7 +13,7 @@ const WIDTHS: [f64; 12] = [320.0, 360.0, 390.0, 480.0, 600.0, 640.0, 800.0, 1024
 const HEIGHTS: [f64; 5] = [400.0, 560.0, 700.0, 900.0, 1300.0];
 
 /// View settings to try, as state strings.
-const VIEWS: [&str; 15] = [
+const VIEWS: [&str; 16] = [
     "mode=intro",
     "mode=full",
     "mode=full&torque=1&log=1",
@@ -29,6 +29,7 @@ const VIEWS: [&str; 15] = [
     "embed=1&views=arm,traces,zplane,rho&log=1",
     "mode=full&predict=1&swing=1",
     "mode=full&predict=1&compare=1&delta=0.002",
+    "mode=full&delta=0.15&pf=off&plane=s",
 ];
 
 fn overlap(a: &Rect, b: &Rect) -> bool {
@@ -107,7 +108,7 @@ fn titles_drop_whole_clauses_instead_of_an_ellipsis() {
                 let mut scene = Scene::new(ViewOptions::default(), *w, h, 1.0);
                 scene.draw_session(&s);
                 for l in scene.labels() {
-                    if matches!(l.class, LabelClass::Title | LabelClass::Note) {
+                    if matches!(l.class, LabelClass::Title | LabelClass::Note | LabelClass::Mark) {
                         assert!(!l.text.ends_with('…'), "{view} {w}×{h}: {}", describe(&l));
                     }
                 }
@@ -147,6 +148,26 @@ fn narrow_log_axes_keep_two_labels_and_their_right_decade() {
                     "{view} {w}×{h} {panel} ({} px): {below:?}",
                     p.width
                 );
+            }
+        }
+    }
+}
+
+/// ρ(δ)'s top axis is named in whole or by its symbol, never cut ("ωδ [rad/peri…", trial 8 on a
+/// phone with the sheet open): at every size that shows ρ(δ).
+#[test]
+fn the_top_axis_title_of_rho_is_never_cut() {
+    for view in ["mode=full&tab=poles", "mode=full", "mode=full&tab=poles&measure=rate"] {
+        let mut s = session(&format!("preset=fig5.3&{view}"));
+        play(&mut s, 0.5);
+        s.refresh();
+        for w in WIDTHS {
+            for h in HEIGHTS.iter().copied().chain([250.0, 300.0]) {
+                let mut scene = Scene::new(ViewOptions::default(), w, h, 1.0);
+                scene.draw_session(&s);
+                for l in scene.labels().iter().filter(|l| l.panel == "rho-curve" && l.text.starts_with("ωδ")) {
+                    assert!(!l.text.ends_with('…'), "{view} {w}×{h}: {}", describe(l));
+                }
             }
         }
     }

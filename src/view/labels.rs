@@ -223,11 +223,14 @@ pub fn place_labels(panels: &[(PanelKind, PanelInfo)]) -> Vec<Label> {
                 let title = loop {
                     let end = ticks.get(first).map_or(right, |t| at(t) - text_width(&t.text, font::TICK) / 2.0 - 8.0);
                     let title = fit_clauses(&p.x2_label, end - start, font::NOTE);
-                    if first >= ticks.len() || (!title.is_empty() && !title.ends_with('…')) {
+                    if !title.is_empty() && !title.ends_with('…') {
                         break title;
                     }
                     if bold_width(symbol, font::NOTE) <= end - start {
                         break symbol.to_string();
+                    }
+                    if first >= ticks.len() {
+                        break title;
                     }
                     first += 1;
                 };

@@ -247,7 +247,11 @@ impl Scene {
         if torque && !off.is_empty() {
             let r = panel.rect;
             let x = r.x + r.w * (sweep.time(1) - window.start) / window.width();
-            info.marks.push(super::info::Mark { x, y: r.y + 14.0, text: format!("{} N m", off.join(", ")) });
+            // The whole, else the first, else a word: never cut.
+            let forms = [format!("{} N m", off.join(", ")), format!("{} N m", off[0]), "off the scale".to_string()];
+            let fits = |t: &String| crate::view::labels::bold_width(t, crate::view::labels::font::NOTE) <= r.w - 8.0;
+            let text = forms.iter().find(|t| fits(t)).unwrap_or(&forms[2]).clone();
+            info.marks.push(super::info::Mark { x, y: r.y + 14.0, text });
         }
     }
 

@@ -337,7 +337,12 @@ impl Scene {
             return Vec::new();
         };
         let (Some(x), Some(y)) = (p.x, p.y) else { return Vec::new() };
-        let text = if p.aliased { "flexible pair, aliased" } else { "flexible pair" };
+        // A narrow pole plot gets the short form rather than a cut one ("flexible pair, alia…").
+        let room = self.layout.panels.iter().find(|q| q.kind.is_pole_plot()).map_or(0.0, |q| q.rect.w - 8.0);
+        let fits = |t: &str| crate::view::labels::bold_width(t, crate::view::labels::font::NOTE) <= room;
+        let forms: &[&str] =
+            if p.aliased { &["flexible pair, aliased", "aliased pair", "aliased"] } else { &["flexible pair", "pair"] };
+        let text = forms.iter().copied().find(|t| fits(t)).unwrap_or(forms[forms.len() - 1]);
         vec![Mark { x, y, text: text.into() }]
     }
 
