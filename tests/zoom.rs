@@ -219,7 +219,23 @@ fn the_swing_turns_with_the_clock_and_asks_for_frames_only_while_shown() {
     // The key gives the shape in numbers; the arm's title says what amber is.
     let legend = scene.legend();
     let group = legend.iter().find(|g| g.title == "the swing's shape").expect("its key");
-    assert!(group.items[0].text.contains("against it"), "{}", group.items[0].text);
+    let key = &group.items[0].text;
+    assert!(key.contains("against it"), "{key}");
+    // The README quotes Fig. 5.3's shape from this key.
+    let readme = include_str!("../README.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    let [l1, l2] = [
+        key.find("link 1 (q1): ").unwrap() + "link 1 (q1): ".len(),
+        key.find("link 2 (q2, at its joint): ").unwrap() + "link 2 (q2, at its joint): ".len(),
+    ];
+    let first = |from: usize| key[from..].split(", ").next().unwrap().to_string();
+    let (ratio1, ratio2) = (first(l1), first(l2));
+    let lag1 = key[l1..].split(", ").nth(1).unwrap().split(':').next().unwrap().to_string();
+    let quoted = format!(
+        "link 1 {}, {lag1} it; link 2 {},",
+        ratio1.replace(" × the motor's angle", " × the motor's angle"),
+        ratio2.replace(" the motor's angle", "")
+    );
+    assert!(readme.contains(&quoted), "README should quote «{quoted}» from the key «{key}»");
     let arm = scene.panel_info().into_iter().find(|p| p.id == "arm").unwrap();
     assert!(arm.title.contains("amber: the swing's shape"));
     // Off: nothing animates.
