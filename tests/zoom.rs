@@ -284,3 +284,27 @@ fn the_predicted_slope_is_drawn_over_the_rest_only() {
         assert!(within(&r) || within(&r2), "a dash at ({x}, {y}) outside {r:?} and {r2:?}");
     }
 }
+
+/// The pole plot's Im s range follows the arm (trial 8: on the stiffer spring the flexible pair was
+/// off the scale, edge arrows only): the paper's arm keeps ±40 rad/s, a stiffer spring's pair is in
+/// view, with its A4 markers, and the ticks follow.
+#[test]
+fn the_pole_plot_shows_a_stiffer_arms_flexible_pair() {
+    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    for (query, half) in [
+        ("preset=fig5.3&mode=full", 40.0),
+        ("preset=fig5.3&mode=full&k1=4610.4", 80.0),
+        ("preset=fig5.3&mode=full&k1=18441.6", 160.0),
+    ] {
+        let mut s = session(query);
+        play(&mut s, 0.2);
+        let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
+        scene.draw_session(&s);
+        let poles = scene.panel_info().into_iter().find(|p| p.id == "poles").unwrap();
+        assert_eq!(poles.y_range, [-half, half], "{query}");
+        assert!(poles.y_ticks.iter().any(|t| *t >= 0.5 * half), "{query}: ticks {:?}", poles.y_ticks);
+        for p in scene.pole_info().iter().filter(|p| p.flexible || p.kind != flexarm::view::PoleKind::Loop) {
+            assert!(p.in_view, "{query}: {:?} at {} ± {}j", p.kind, p.re, p.im);
+        }
+    }
+}

@@ -18,6 +18,19 @@ use crate::plot::palette;
 pub const RE_RANGE: [f64; 2] = [-8.0, 6.0];
 /// Im s shown by default, rad/s: the flexible pair at ≈ ±29.6.
 pub const IM_RANGE: [f64; 2] = [-40.0, 40.0];
+/// The Im s range that shows the flexible pairs of `reports` — their δ → 0 limits with and
+/// without K_pr, a quarter beyond — in steps of 20 rad/s, at least [`IM_RANGE`].
+pub fn im_range<'a>(reports: impl IntoIterator<Item = &'a StabilityReport>) -> [f64; 2] {
+    let fastest = reports
+        .into_iter()
+        .flat_map(|r| [r.limit_pair_open[0][1], r.limit_pair[0][1]])
+        .filter(|w| w.is_finite())
+        .fold(0.0f64, |m, w| m.max(w.abs()));
+    let half = (1.25 * fastest / 20.0).ceil() * 20.0;
+    let half = half.clamp(IM_RANGE[1], 400.0);
+    [-half, half]
+}
+
 /// What a marker in the pole plot stands for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -80,6 +93,12 @@ impl PoleFrame {
     /// The default view on a data area.
     pub fn new(rect: Rect) -> PoleFrame {
         PoleFrame { rect, re: RE_RANGE, im: IM_RANGE }
+    }
+
+    /// The default view, its Im s range widened to show these analyses' flexible pairs (a
+    /// stiffer spring or a lighter motor swings faster than ±40 rad/s).
+    pub fn fitting<'a>(rect: Rect, reports: impl IntoIterator<Item = &'a StabilityReport>) -> PoleFrame {
+        PoleFrame { rect, re: RE_RANGE, im: im_range(reports) }
     }
 
     /// Horizontal pixel of Re s (not clamped).

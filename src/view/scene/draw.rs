@@ -12,7 +12,7 @@ use crate::session::MapSide;
 use crate::view::arm::{draw_arm_outline, draw_arm_panel, ArmPose};
 use crate::view::layout::{Panel, PanelKind};
 use crate::view::map::{draw_map_marker, side_of, LogFrame};
-use crate::view::poles::{draw_a4, draw_flexible_halo, draw_nyquist, draw_pole_background, draw_poles, PoleFrame};
+use crate::view::poles::{draw_a4, draw_flexible_halo, draw_nyquist, draw_pole_background, draw_poles};
 use crate::view::rho_curve::draw_rho_marker;
 use crate::view::traces::{
     draw_background, draw_frame, draw_series, draw_series_within, max_abs, PlotFrame, TimeWindow,
@@ -164,8 +164,8 @@ impl Scene {
 
     pub(super) fn draw_pole_plot(&mut self, panel: Panel) {
         let dpr = self.layout.device_pixel_ratio;
-        let frame = PoleFrame::new(self.layout.to_physical(panel.rect));
-        let (x_ticks, y_ticks) = pole_ticks(panel.rect);
+        let frame = self.pole_frame(self.layout.to_physical(panel.rect));
+        let (x_ticks, y_ticks) = pole_ticks(panel.rect, frame.im);
         draw_pole_background(&mut self.painter, &frame, x_ticks, y_ticks, dpr);
         if let Some(config) = &self.runs[0].config {
             draw_nyquist(&mut self.painter, &frame, config.controller.sampling_period, dpr);

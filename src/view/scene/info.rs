@@ -18,9 +18,7 @@ use crate::view::autoscale::Autoscale;
 use crate::view::labels::{place_labels, Label};
 use crate::view::layout::{Panel, PanelKind};
 use crate::view::map::{map_ticks, side_of};
-use crate::view::poles::{
-    describe_poles, flexible_aliased, nyquist, PoleFrame, PoleInfo, PoleView, IM_RANGE, RE_RANGE,
-};
+use crate::view::poles::{describe_poles, flexible_aliased, nyquist, PoleInfo, PoleView, RE_RANGE};
 use crate::view::rho_curve::rho_ticks;
 use crate::view::traces::TimeWindow;
 use crate::view::zplane::ZFrame;
@@ -218,17 +216,18 @@ impl Scene {
                 }
             }
             PanelKind::Poles => {
-                let (x_ticks, y_ticks) = pole_ticks(r);
+                let im = self.pole_frame(r).im;
+                let (x_ticks, y_ticks) = pole_ticks(r, im);
                 info.x_label = "Re s [1/s]".into();
                 info.y_label = "Im s [rad/s]";
                 info.x_range = RE_RANGE;
-                info.y_range = IM_RANGE;
+                info.y_range = im;
                 info.x_ticks = x_ticks.collect();
                 info.y_ticks = y_ticks.collect();
                 info.note = "poles s = ln λ/δ".into();
                 if let Some(report) = &self.runs[0].report {
                     let w = nyquist(report.sampling_period);
-                    if w < IM_RANGE[1] {
+                    if w < im[1] {
                         // The warning first: a narrow panel keeps it and drops the line's name
                         // (the key names it).
                         if flexible_aliased(report) {
@@ -314,7 +313,7 @@ impl Scene {
     /// in the plot shown (s- or z-plane), for hover readouts. Positions are null when the pole
     /// plot is hidden.
     pub fn pole_info(&self) -> Vec<PoleInfo> {
-        let s_frame = self.layout.panel(PanelKind::Poles).map(|p| PoleFrame::new(p.rect));
+        let s_frame = self.layout.panel(PanelKind::Poles).map(|p| self.pole_frame(p.rect));
         let z_frame = self.layout.panel(PanelKind::ZPlane).map(|p| ZFrame::new(p.rect));
         let view = match (&s_frame, &z_frame) {
             (Some(f), _) => PoleView::S(f),

@@ -360,6 +360,13 @@ impl Scene {
         &self.maps[side.index()]
     }
 
+    /// The pole plot's frame on `rect` (physical or CSS pixels): its Im s range fits the shown
+    /// runs' flexible pairs.
+    pub(super) fn pole_frame(&self, rect: super::layout::Rect) -> super::poles::PoleFrame {
+        let reports = self.runs[..self.run_count()].iter().filter_map(|m| m.report.as_ref());
+        super::poles::PoleFrame::fitting(rect, reports)
+    }
+
     /// The configuration and analysis of run A (0) or B (1) as of the latest frame.
     pub fn analysis(&self, run: usize) -> Option<&StabilityReport> {
         self.runs.get(run).and_then(|r| r.report.as_ref())

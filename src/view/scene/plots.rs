@@ -3,7 +3,7 @@
 use crate::control::Traces;
 use crate::plot::{palette, Color, Ticks};
 use crate::view::layout::{PanelKind, Rect};
-use crate::view::poles::{IM_RANGE, RE_RANGE};
+use crate::view::poles::RE_RANGE;
 use crate::view::traces::TimeWindow;
 
 /// About one time tick per this many CSS pixels of plot width.
@@ -60,8 +60,9 @@ pub(super) fn pole_tick_counts(rect_css: Rect) -> (usize, usize) {
     (x_count, y_count)
 }
 
-/// Re s and Im s ticks of the pole plot whose data area is `rect_css` (CSS pixels).
-pub(super) fn pole_ticks(rect_css: Rect) -> (Ticks, Ticks) {
+/// Re s and Im s ticks of the pole plot whose data area is `rect_css` (CSS pixels) and whose Im s
+/// range is `im`.
+pub(super) fn pole_ticks(rect_css: Rect, im: [f64; 2]) -> (Ticks, Ticks) {
     let (x_count, y_count) = pole_tick_counts(rect_css);
-    (Ticks::new(RE_RANGE[0], RE_RANGE[1], x_count), Ticks::new(IM_RANGE[0], IM_RANGE[1], y_count))
+    (Ticks::new(RE_RANGE[0], RE_RANGE[1], x_count), Ticks::new(im[0], im[1], y_count))
 }
