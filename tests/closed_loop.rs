@@ -190,3 +190,35 @@ fn repeating_maneuver_verdict_does_not_flicker() {
         sim.metrics()
     );
 }
+
+/// Step ▸ does the work of the instant it reaches at once (`sample_now`, so that the page shows
+/// that instant's prediction): the run goes on exactly as without it.
+#[test]
+fn sampling_ahead_of_the_next_step_changes_nothing() {
+    let mut config = SimulationConfig::default();
+    config.preliminary_feedback = PreliminaryFeedbackChoice::Off;
+    let mut plain = ClosedLoop::new(config).unwrap();
+    let mut stepped = ClosedLoop::new(config).unwrap();
+    stepped.keep_history(5.0);
+    stepped.keep_sweep(true);
+    for _ in 0..150 {
+        stepped.advance_one_period();
+        stepped.sample_now();
+        stepped.sample_now(); // twice: the second does nothing
+                              // The instant reached is kept and predicted.
+        assert_eq!(stepped.history().span().unwrap()[1], stepped.time());
+        assert_eq!(stepped.latest_sweep().unwrap().start, stepped.time());
+    }
+    plain.advance(stepped.time()).unwrap();
+    assert_eq!(plain.time(), stepped.time());
+    assert_eq!(plain.traces(), stepped.traces());
+    // Standing on the instant, the stepped loop already holds the new period's v, and its
+    // torque says so.
+    let s = stepped.snapshot();
+    assert!((s.torque[0] - (s.v[0] + s.xf_hat[0])).abs() < 1e-9, "{s:?}");
+    for sim in [&mut plain, &mut stepped] {
+        sim.advance(0.5).unwrap();
+    }
+    assert_eq!(plain.traces(), stepped.traces());
+    assert_eq!(plain.snapshot(), stepped.snapshot());
+}

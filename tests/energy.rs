@@ -148,11 +148,19 @@ fn on_the_papers_arm_the_held_torque_feeds_brakes_and_feeds_again() {
     // The README quotes the three.
     let readme = include_str!("../README.md").split_whitespace().collect::<Vec<_>>().join(" ");
     let deg = |e: &SwingEnergy| e.lag.to_degrees();
-    let pct = |v: f64| format!("{:.1} %", 100.0 * v.abs());
+    let pct = |v: f64| format!("{:.1} %", v.abs());
+    // The shares as the page prints them (rounded so that the balance adds up).
+    let printed = |e: &SwingEnergy| {
+        flexarm::plot::format::rounded_summands(
+            [100.0 * e.held_torque, 100.0 * e.preliminary_feedback, -100.0 * e.damping],
+            0.1,
+        )
+    };
+    let p: Vec<[f64; 3]> = said.iter().map(printed).collect();
     for quote in [
-        format!("lags the motor's velocity by {:.0}° at δ = 0.01 s and puts {} of the swing's energy in each period (damping takes {}", deg(&said[0]), pct(said[0].held_torque), pct(said[0].damping)),
-        format!("by {:.0}° at 0.05 s and takes {} out", deg(&said[1]), pct(said[1].held_torque)),
-        format!("runs {:.0}° ahead at 0.15 s and puts {} in", 360.0 - deg(&said[2]), pct(said[2].held_torque)),
+        format!("lags the motor's velocity by {:.0}° at δ = 0.01 s and puts {} of the swing's energy in each period (damping takes {}", deg(&said[0]), pct(p[0][0]), pct(p[0][2])),
+        format!("by {:.0}° at 0.05 s and takes {} out", deg(&said[1]), pct(p[1][0])),
+        format!("runs {:.0}° ahead at 0.15 s and puts {} in", 360.0 - deg(&said[2]), pct(p[2][0])),
     ] {
         assert!(readme.contains(&quote), "README should say {quote:?}");
     }
@@ -204,14 +212,20 @@ fn the_lesson_quotes_the_mechanism() {
     let c = config(1.0, 1.0, None, 2.0, PreliminaryFeedbackChoice::Off);
     let model = LoopModel::new(&LinearSettings::of(&c, None)).unwrap();
     let (_, lambda, e) = energy_at(&model, 0.05);
+    // The shares as the page prints them: rounded so that they add up to |λ|² − 1.
+    let [held, _, damping] =
+        flexarm::plot::format::rounded_summands([100.0 * e.held_torque, 0.0, -100.0 * e.damping], 0.1);
     for said in [
         format!("the held torque lags the motor's velocity by {:.0}°", e.lag.to_degrees()),
-        format!("it takes {:.1} % of the swing's energy out", -100.0 * e.held_torque),
+        format!("it takes {:.1} % of the swing's energy out and the arm's damping another {:.1} %", -held, -damping),
+        format!("{:.1} % a period", -(held + damping)),
+        format!("shrinks by √(1 − {:.3})", -(held + damping) / 100.0),
         format!("it shrinks ×{:.3} per period", lambda.norm()),
     ] {
         assert!(lesson.contains(&said), "the lesson should say {said:?}");
     }
     assert!(e.held_torque < 0.0 && lambda.norm() < 1.0);
+    assert!(((-(held + damping) / 100.0) - (1.0 - lambda.norm_sqr())).abs() < 0.0005, "the shares add up to 1 − |λ|²");
 }
 
 /// The lesson's step "Was it luck?" closes on the stiffer spring (K1 × 4) at the same δ: just

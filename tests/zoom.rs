@@ -116,10 +116,11 @@ fn the_zoom_draws_the_prediction_u_k_and_its_hold_and_the_caption_says_when() {
     let next = sim.history().at(tn + 0.01 + 1e-9).unwrap().0;
     let v = next.v_next.unwrap();
     assert!(back.contains(&flexarm::plot::format::sig(v[0], 4)), "{back} vs {v}");
-    // The U_1 mark names the jump's size.
+    // The jump off the scale: the torque plot's note says so, the caption gives its size.
     let info = scene.panel_info();
     let torque = info.iter().find(|p| p.id == "torque").unwrap();
-    assert!(torque.marks.iter().any(|m| m.text.starts_with("U₁ = ")), "{:?}", torque.marks);
+    assert!(torque.note.starts_with("U₁, U₂ off the scale (sizes in the caption)"), "{}", torque.note);
+    assert!(back.contains("The first two, U₁ = ("), "{back}");
     // Off: no caption, no zoom colours.
     let mut off = session("preset=fig5.3&mode=full");
     play(&mut off, 1.0);
@@ -307,4 +308,28 @@ fn the_pole_plot_shows_a_stiffer_arms_flexible_pair() {
             assert!(p.in_view, "{query}: {:?} at {} ± {}j", p.kind, p.re, p.im);
         }
     }
+}
+
+/// Step ▸ moves the zoom to the instant it reaches (trial 9: the first press left tₙ where it
+/// was), and the caption says where the run is.
+#[test]
+fn step_shows_the_instant_it_reaches() {
+    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let mut s = session("preset=fig5.3&mode=full&predict=1");
+    play(&mut s, 1.03);
+    let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
+    for _ in 0..3 {
+        s.step_period();
+        let now = s.run(0).unwrap().closed_loop().time();
+        scene.draw_session(&s);
+        let w = zoomed(&scene);
+        assert!((w.start - (now - 1.25 * 0.01)).abs() < 1e-9, "tₙ is the instant reached, {now} s");
+        let caption = s.status().cycle;
+        assert!(caption.contains(&format!("tₙ = {now:.3} s")) && caption.contains("the run is at tₙ"), "{caption}");
+    }
+    // Mid-period the caption gives the run's own time.
+    s.advance(0.004).unwrap();
+    let caption = s.status().cycle;
+    let now = s.run(0).unwrap().closed_loop().time();
+    assert!(caption.contains(&format!("the run is at t = {now:.3} s")), "{caption}");
 }

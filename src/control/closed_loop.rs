@@ -143,6 +143,9 @@ pub struct ClosedLoop {
     history: History,
     /// The newest prediction whole, X_0 … X_k and U_1 … U_k (none unless asked for): Fig. 2.1.
     sweep: Option<Sweep>,
+    /// The work of the sampling instant the loop stands on is done (measured, predicted): the
+    /// next plant step goes on from it. Only [`ClosedLoop::sample_now`] does it ahead of time.
+    sampled: bool,
 }
 
 impl ClosedLoop {
@@ -175,6 +178,7 @@ impl ClosedLoop {
             divergence: None,
             history: History::default(),
             sweep: None,
+            sampled: false,
         };
         sim.applied_torque = sim.torque_at(&sim.controller_state());
         sim.record_trace();
@@ -254,6 +258,7 @@ impl ClosedLoop {
         self.applied_torque = state.applied_torque;
         self.disturbance = state.disturbance;
         self.divergence = None;
+        self.sampled = false;
         self.traces.truncate_after(state.time);
         self.history.truncate_from(state.time);
         self.stats.restart(state.time);
@@ -352,6 +357,18 @@ impl ClosedLoop {
         }
     }
 
+    /// Does the work of the sampling instant the loop stands on now, if it is due (the loop stops
+    /// on an instant before its work: Step ▸ does it at once, so that the instant is kept and its
+    /// prediction shown). The run goes on exactly as it would have; a change made after it waits
+    /// for the next instant.
+    pub fn sample_now(&mut self) {
+        if self.step_in_period == 0 && !self.sampled && self.divergence.is_none() {
+            self.sample();
+            // The torque from now on, with the v held from this instant.
+            self.applied_torque = self.torque_at(&self.controller_state());
+        }
+    }
+
     /// The measured controller state X = (q, q̇, w).
     fn controller_state(&self) -> StateVector {
         controller_vector(&self.plant_state.q, &self.plant_state.qdot, &self.integrators)
@@ -377,6 +394,7 @@ impl ClosedLoop {
 
     /// The work of a sampling instant: new configuration, new v, new prediction.
     fn sample(&mut self) {
+        self.sampled = true;
         if let Some((config, derived)) = self.pending.take() {
             if config.controller.sampling_period != self.config.controller.sampling_period {
                 self.period_origin = self.time;
@@ -412,7 +430,7 @@ impl ClosedLoop {
     /// One plant step: the plant's own split step with the integrators w riding along, the
     /// observer advanced in the same two half steps.
     fn step(&mut self) {
-        if self.step_in_period == 0 {
+        if self.step_in_period == 0 && !self.sampled {
             self.sample();
             if self.divergence.is_some() {
                 return;
@@ -445,6 +463,7 @@ impl ClosedLoop {
 
         self.step_in_period += 1;
         self.steps_taken += 1;
+        self.sampled = false;
         if self.step_in_period == d.steps_per_period {
             self.step_in_period = 0;
             self.periods_since_origin += 1;

@@ -1,65 +1,71 @@
 //! The caption of the zoom on one sampling instant (the paper's Fig. 2.1, live): what run A's
-//! controller measured at the instant t_n shown, how far it predicted, the torque U_k it chose and
-//! when the loop holds it — every number read off the run's kept states and its newest sweep (no
-//! prediction is made for the words; the view draws the same sweep).
+//! controller measured at the instant tₙ shown, how far it predicted, the torques it predicted
+//! first and last, and when the loop holds the last — from the same [`Cycle`] the view draws (the
+//! controller's own newest sweep, or computed again from the kept state when looking back).
 
 use super::Session;
-use crate::plot::format::sig;
+use crate::control::Cycle;
+use crate::plot::format::{sci, sig, sig_trim};
 
 impl Session {
-    /// The zoom's caption ("" when the zoom is off or nothing is kept yet).
+    /// The zoom's caption ("" when the zoom is off).
     pub fn cycle_caption(&self) -> String {
         if !self.settings().view.shown().predict {
             return String::new();
         }
         let sim = self.a.closed_loop();
-        let history = sim.history();
-        let t = self.viewing().unwrap_or_else(|| sim.time());
-        let Some((state, config)) = history.at(t) else {
+        let now = sim.time();
+        let t = self.viewing().unwrap_or(now);
+        let mut cycle = Cycle::new();
+        cycle.fill(sim.history(), sim.latest_sweep(), sim.traces(), t);
+        if cycle.is_empty() {
             return "Fig. 2.1: no sampling instant yet.".into();
-        };
-        let tn = state.time;
-        let c = &config.controller;
+        }
+        let tn = cycle.instant;
+        let sweep = &cycle.sweep;
         let ms = |s: f64| format!("{} ms", sig(1e3 * s, 3));
-        let next = history.after(tn).and_then(|t| history.at(t)).map(|(s, _)| *s);
-        // U_k is the next instant's Newton seed; what is held from it, its v. At the newest
-        // instant both are in the controller's own sweep.
-        let (chosen, held, to_come) = match next {
-            Some(s) if s.v_next.is_some() => (Some(s.torque_guess), s.v_next, false),
-            _ => {
-                let sweep = sim.latest_sweep().filter(|s| s.start == tn && s.complete);
-                (sweep.and_then(|s| s.torques.last().copied()), sweep.and_then(|s| s.held), true)
-            }
-        };
-        let t1 = next.map_or(tn + c.sampling_period, |s| s.time);
-        let t2 = history.after(t1).unwrap_or(t1 + c.sampling_period);
         let pair = |v: nalgebra::Vector2<f64>| format!("({}, {}) N m", sig(v[0], 4), sig(v[1], 3));
         let mut text = format!(
             "Fig. 2.1 at tₙ = {tn:.3} s (δ = {} s): the controller measured x(tₙ) (○) and predicted k = {} steps of \
-             ε = {}, τ = kε = {} ahead (dashed).",
-            crate::plot::format::sig_trim(c.sampling_period, 3),
-            c.horizon_steps,
-            ms(c.integration_step()),
-            ms(c.horizon()),
+             ε = {}, τ = kε = {} ahead (dashed): at each step the torques U = (u1, u2) that keep both links on \
+             their law.",
+            sig_trim(cycle.period, 3),
+            cycle.horizon_steps,
+            ms(sweep.step),
+            ms(cycle.horizon),
         );
-        match (chosen, held) {
-            (Some(u), Some(v)) => {
-                text += &format!(" It chose Uₖ = {} (◆),", pair(u));
+        if let [u1, u2, ..] = sweep.torques[..] {
+            text += &format!(
+                " The first two, U₁ = ({}, {}) and U₂ = ({}, {}) N m, are impulsive: they put the motor where the \
+                 links' law needs it, and from X₂ on nothing it predicts depends on the motor's measured angle or \
+                 speed.",
+                sci(u1[0], 2),
+                sci(u1[1], 2),
+                sci(u2[0], 2),
+                sci(u2[1], 2),
+            );
+        }
+        match (cycle.chosen_torque(), sweep.held, cycle.hold()) {
+            (Some(u), Some(v), Some(hold)) => {
+                text += &format!(" The last, Uₖ = {} (◆),", pair(u));
                 if (u - v).amax() > 1e-9 * (1.0 + u.amax()) {
                     text += &format!(
-                        " of which the predictive part v = Uₖ − K_pr Xₖ = {} is held and K_pr adds its feedback on the \
-                         measured state,",
+                        " of which the predictive part v = Uₖ − K_pr Xₖ = {} is held while K_pr adds its feedback on \
+                         the measured state,",
                         pair(v)
                     );
                 }
-                text += &format!(" held from tₙ + δ = {t1:.3} s to tₙ + 2δ = {t2:.3} s (green)");
-                text += if to_come { ": still to come, the run is at tₙ." } else { "." };
+                text += &format!(" is held from tₙ + δ = {:.3} s to tₙ + 2δ = {:.3} s (green)", hold.start, hold.end);
+                text += &if hold.start < now - 1e-9 {
+                    ".".to_string()
+                } else if (now - tn).abs() < 1e-9 {
+                    ": still to come, the run is at tₙ.".to_string()
+                } else {
+                    format!(": still to come, the run is at t = {now:.3} s.")
+                };
             }
             _ => text += " The prediction failed here: the run diverged.",
         }
-        text += " Its first two steps, with impulsive torques U₁ and U₂, put the motor where the links' law needs \
-                 it: from X₂ on, nothing it predicts depends on the motor's measured angle or speed. Step ▸ and ◂ \
-                 move tₙ by one period.";
-        text
+        text + " Step ▸ and ◂ move tₙ by one period."
     }
 }

@@ -134,6 +134,8 @@ impl Run {
     /// Advances to the next sampling instant; true if the analysis moved to another rest point.
     pub fn step_period(&mut self, trace_seconds: f64) -> bool {
         self.sim.advance_one_period();
+        // The instant reached is kept and predicted at once (Fig. 2.1 shows it).
+        self.sim.sample_now();
         self.bound_traces(trace_seconds);
         self.follow_rest(&self.settings.config())
     }

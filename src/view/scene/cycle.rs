@@ -227,32 +227,22 @@ impl Scene {
             info.x_ticks.push(t);
             info.x_labels.push(super::TickLabel { value: t, text });
         }
-        info.note = if torque {
-            "◆ Uₖ, held from tₙ+δ to tₙ+2δ (green)".into()
-        } else if panel.kind == PanelKind::Error1 {
-            "○ measured at tₙ; dashed: predicted over τ = kε".into()
-        } else {
-            String::new()
+        // The note sits in the header row, over no data; the jump's sizes are in the caption
+        // under the figure (the note would go stale between descriptions).
+        info.note = match panel.kind {
+            PanelKind::Torque if self.jump_off_scale() => {
+                "U₁, U₂ off the scale (sizes in the caption); ◆ Uₖ held from tₙ+δ to tₙ+2δ (green)".into()
+            }
+            PanelKind::Torque => "◆ Uₖ held from tₙ+δ to tₙ+2δ (green)".into(),
+            PanelKind::Error1 => "○ measured at tₙ; dashed: predicted over τ = kε".into(),
+            _ => String::new(),
         };
-        // The jump to consistency, off the scale: its size in words at the chevrons.
-        let sweep = &self.cycle.sweep;
-        let off: Vec<String> = sweep
-            .torques
-            .iter()
-            .take(FIRST_ON_SCALE - 1)
-            .enumerate()
-            .filter(|(_, u)| u[0].abs() > y || u[1].abs() > y)
-            .map(|(j, u)| format!("U{} = {}", ["₁", "₂"][j], crate::plot::format::sci(u[0], 2)))
-            .collect();
-        if torque && !off.is_empty() {
-            let r = panel.rect;
-            let x = r.x + r.w * (sweep.time(1) - window.start) / window.width();
-            // The whole, else the first, else a word: never cut.
-            let forms = [format!("{} N m", off.join(", ")), format!("{} N m", off[0]), "off the scale".to_string()];
-            let fits = |t: &String| crate::view::labels::bold_width(t, crate::view::labels::font::NOTE) <= r.w - 8.0;
-            let text = forms.iter().find(|t| fits(t)).unwrap_or(&forms[2]).clone();
-            info.marks.push(super::info::Mark { x, y: r.y + 14.0, text });
-        }
+    }
+
+    /// True if the jump to consistency, U₁ or U₂, lies off the torque plot's scale.
+    pub(super) fn jump_off_scale(&self) -> bool {
+        let y = self.zoom_limit(PanelKind::Torque);
+        self.cycle.sweep.torques.iter().take(FIRST_ON_SCALE - 1).any(|u| u[0].abs() > y || u[1].abs() > y)
     }
 
     fn cycle_ticks_vec(&self) -> [f64; 8] {

@@ -499,7 +499,7 @@ impl Scene {
                 self.zoom_scales[0].limit(),
                 self.zoom_scales[1].limit(),
                 self.zoom_scales[2].limit(),
-                -1.0,
+                if self.jump_off_scale() { 1.0 } else { 0.0 },
                 window.width(),
                 3.0,
             ]
