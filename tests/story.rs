@@ -203,7 +203,7 @@ fn a_fast_law_for_link_two_drains_the_resonance() {
     let story = s.status().story.unwrap();
     assert_eq!(story.feed_says, "the controller drains the resonance");
     assert_eq!(story.alpha2_drain, format!("{:.2} α1", (1.0 + r.mu) / r.mu));
-    assert_eq!(story.six_poles, "−1 1/s and −5 1/s (three times each)");
+    assert_eq!(story.six_poles, "−1 1/s and −5 1/s, three of each");
     // The paper's K_pr's shift with α1 ≠ α2 is the closed form's, its parts add up, and the pair
     // they make is the numerical limit's.
     let mut with = c;
@@ -281,7 +281,7 @@ fn the_live_numbers_are_the_analysis_numbers() {
         (story.feed_says.as_str(), story.re_a4_says.as_str()),
         ("the controller feeds the resonance", "Re A4 > 0: in the limit the pair grows")
     );
-    assert_eq!(story.six_poles, "−2 1/s (six times)");
+    assert_eq!(story.six_poles, "−2 1/s, all six");
     // Below α* the sign of Re A4 turns, though the controller still feeds the resonance.
     let s = common::session("preset=fig5.3&alpha=0.2");
     let story = s.status().story.unwrap();

@@ -39,7 +39,7 @@ pub struct Story {
     /// μ and β = α1 + μ (α1 − α2) at the rest point.
     pub mu: String,
     pub beta: String,
-    /// The six poles the limit controller places: "−2 1/s (six times)".
+    /// The six poles the limit controller places: "−2 1/s, all six".
     pub six_poles: String,
     /// How much faster link 2's law must be for the controller to drain the resonance:
     /// α2 > α1 (1 + μ)/μ, "4.21 α1".
@@ -161,7 +161,8 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
     let phase = if lag >= 0.0 {
         format!("lags the motor's velocity by {lag:.0}°")
     } else {
-        format!("runs {:.0}° ahead of the motor's velocity", -lag)
+        // Past half a turn of lag it is nearer to say ahead; both are the same phase.
+        format!("runs {:.0}° ahead of the motor's velocity (that is, {:.0}° behind)", -lag, 360.0 + lag)
     };
     let role =
         if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
@@ -235,9 +236,9 @@ pub fn story(run: &Run) -> Option<Story> {
         re_a4_says.to_string()
     };
     let six_poles = if a1 == a2 {
-        format!("{} 1/s (six times)", minus(&sig_trim(-a1, 3)))
+        format!("{} 1/s, all six", minus(&sig_trim(-a1, 3)))
     } else {
-        format!("{} 1/s and {} 1/s (three times each)", minus(&sig_trim(-a1, 3)), minus(&sig_trim(-a2, 3)))
+        format!("{} 1/s and {} 1/s, three of each", minus(&sig_trim(-a1, 3)), minus(&sig_trim(-a2, 3)))
     };
     let [first, second] = report.flexible_pair();
     let loop_pair = match first.map(|i| report.poles[i]) {

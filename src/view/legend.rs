@@ -73,6 +73,26 @@ pub fn legend(kinds: &[PanelKind], pair: bool, measure: Measure, log_errors: boo
     let rate = measure == Measure::Rate;
     let mut groups = Vec::new();
     let has = |k: PanelKind| kinds.contains(&k);
+    if has(PanelKind::Arm) {
+        groups.push(LegendGroup {
+            title: "arm",
+            items: vec![
+                item(Glyph::Line, palette::GHOST, "the reference arm: where the arm should be"),
+                item(
+                    Glyph::Line,
+                    palette::AXIS,
+                    "the thin line from the base: 0 rad, where the angles are measured from",
+                ),
+                item(
+                    Glyph::Line,
+                    palette::SPRING_STRETCHED,
+                    "the spring between motor and link 1: its twist θ − q1 drawn magnified (orange relaxed, red wound)",
+                ),
+                item(Glyph::Line, palette::MOTOR_MARKER, "the motor's angle θ on its disc (grey: the reference's)"),
+            ],
+            scale: None,
+        });
+    }
     if zoom && has(PanelKind::Torque) {
         groups.push(LegendGroup {
             title: "Fig. 2.1: one sampling instant tₙ",

@@ -77,6 +77,10 @@ export function createLesson(on) {
       // figure beside it stays where it is.
       title.focus({ preventScroll: true });
       if (panel.getBoundingClientRect().top < 0) panel.scrollIntoView({ block: 'start' });
+      // Where the controls' panel scrolls by itself (a phone's sheet), from its top, where the
+      // lesson is: the step's title first.
+      const sheet = panel.parentElement;
+      requestAnimationFrame(() => { if (sheet) sheet.scrollTop = 0; });
     }
   }
 
