@@ -185,19 +185,22 @@ fn the_key_names_every_marker_shown_and_the_maps_colour_bar() {
     scene.draw_session(&s);
     let key = scene.legend();
     let titles: Vec<&str> = key.iter().map(|g| g.title).collect();
-    assert_eq!(titles, ["z-plane", "ρ(δ)", "stability maps"]);
-    let z = &key[0];
+    assert_eq!(titles, ["arm", "z-plane", "ρ(δ)", "stability maps"]);
+    // The arm's picture: the reference arm, the 0-rad line, the spring, the motor's mark.
+    assert!(key[0].items.iter().any(|i| i.text.contains("0 rad")));
+    let z = &key[1];
     for glyph in [Glyph::Cross, Glyph::Halo, Glyph::Ring, Glyph::Diamond, Glyph::Swatch, Glyph::Chevron] {
         assert!(z.items.iter().any(|i| i.glyph == glyph), "{glyph:?} explained");
     }
     assert!(z.items.iter().any(|i| i.text.contains("unit circle")));
-    let scale = key[2].scale.as_ref().unwrap();
+    let scale = key[3].scale.as_ref().unwrap();
     let one = scale.ticks.iter().find(|(_, t)| t == "1").unwrap();
     assert!((one.0 - 0.5).abs() < 1e-12, "ρ = 1 in the middle of the bar");
     assert_eq!(scale.stops.first().unwrap().1, flexarm::plot::color::ramp_color(0.0).css());
-    // The intro shows no analysis panels: nothing to key.
+    // The intro shows no analysis panels: only the arm to key.
     let intro = common::session("preset=fig5.3");
     let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
     scene.draw_session(&intro);
-    assert!(scene.legend().is_empty());
+    let titles: Vec<&str> = scene.legend().iter().map(|g| g.title).collect();
+    assert_eq!(titles, ["arm"]);
 }

@@ -217,14 +217,17 @@ fn rho_of_delta_becomes_the_rate_with_zero_as_the_border() {
     assert_eq!(info(&panels, "map-on").note, "rate, paper Kₚᵣ");
     // The key and the figure's words say which.
     let key = scene.legend();
-    assert_eq!(key.iter().map(|g| g.title).collect::<Vec<_>>(), ["pole plot", "ln ρ/δ along δ", "stability maps"]);
-    let scale = key[2].scale.as_ref().unwrap();
+    assert_eq!(
+        key.iter().map(|g| g.title).collect::<Vec<_>>(),
+        ["arm", "pole plot", "ln ρ/δ along δ", "stability maps"]
+    );
+    let scale = key[3].scale.as_ref().unwrap();
     assert_eq!(scale.name, "ln ρ/δ (1/s)");
     let zero = scale.ticks.iter().find(|(_, t)| t == "0").unwrap();
     assert_eq!(zero.0, 0.5, "0 in the middle of the bar");
     assert_eq!(scale.ticks.first().unwrap().1, "≤ −5");
     assert!(scale.label.contains("below 0 (stable)"), "{}", scale.label);
-    assert!(key[2].items[0].text.starts_with("ln ρ/δ = 0"));
+    assert!(key[3].items[0].text.starts_with("ln ρ/δ = 0"));
     assert!(s.figure_text().contains("coloured by ln ρ/δ"), "{}", s.figure_text());
 }
 
