@@ -30,6 +30,9 @@ pub struct Lesson {
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Step {
     pub title: String,
+    /// The line of its '## title' (for messages about it).
+    #[serde(skip)]
+    pub line: usize,
     /// The settings the step starts from, as a state string (over the page's defaults).
     pub state: String,
     /// Settings applied once the question is answered (the prediction, then the result).
@@ -86,6 +89,48 @@ pub fn builtin() -> Result<Lesson, Error> {
     parse(LESSON_TEXT)
 }
 
+/// The largest lesson file read, bytes.
+pub const MAX_LESSON_BYTES: usize = 200 * 1024;
+
+/// A lesson file's text: at most [`MAX_LESSON_BYTES`], UTF-8.
+pub fn read_file(bytes: &[u8]) -> Result<String, Error> {
+    if bytes.len() > MAX_LESSON_BYTES {
+        return Err(error(
+            0,
+            format!(
+                "the file has {} kB; a lesson may have at most {} kB",
+                bytes.len().div_ceil(1024),
+                MAX_LESSON_BYTES / 1024
+            ),
+        ));
+    }
+    String::from_utf8(bytes.to_vec()).map_err(|e| {
+        let line = bytes[..e.utf8_error().valid_up_to()].iter().filter(|b| **b == b'\n').count() + 1;
+        error(line, "the file is not UTF-8 text (save it as UTF-8, as a plain-text editor does)")
+    })
+}
+
+/// Where a teacher's lesson may be fetched from (`lesson_src=`): a path on this site, beside the
+/// page or under it (`lessons/homework.md`, `/course/lesson.md`) — never another site.
+pub fn source_path(value: &str) -> Result<String, Error> {
+    let v = value.trim();
+    let refuse = |why: &str| Err(error(0, format!("lesson_src={v}: {why}")));
+    if v.is_empty() {
+        return refuse("names no file; give a path beside the page, like lessons/windows.md");
+    }
+    if v.len() > 300 || v.chars().any(char::is_control) {
+        return refuse("is not a path (at most 300 characters, no control characters)");
+    }
+    // A scheme ("https:", "data:", "javascript:") or a host ("//example.org") is another site.
+    let before_path = v.split(['/', '?', '#']).next().unwrap_or("");
+    if before_path.contains(':') || v.starts_with("//") || v.contains('\\') {
+        return refuse(
+            "points to another site; the page loads lessons from its own site only (put the file beside the page)",
+        );
+    }
+    Ok(v.to_string())
+}
+
 fn error(line: usize, message: impl Into<String>) -> Error {
     Error::Lesson { line, message: message.into() }
 }
@@ -123,7 +168,7 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
             continue;
         }
         if let Some(t) = line.strip_prefix("## ") {
-            steps.push(Step { title: t.trim().to_string(), ..Step::default() });
+            steps.push(Step { title: t.trim().to_string(), line: n, ..Step::default() });
             open = Open::Nothing;
             continue;
         }
@@ -251,7 +296,7 @@ fn check(title: &str, steps: &[Step]) -> Result<(), Error> {
         return Err(error(1, "no steps ('## title')"));
     }
     for (i, s) in steps.iter().enumerate() {
-        let at = |m: &str| error(0, format!("step {} ('{}'): {m}", i + 1, s.title));
+        let at = |m: &str| error(s.line, format!("step {} ('{}'): {m}", i + 1, s.title));
         if s.state.is_empty() {
             return Err(at("no 'state:' line"));
         }
@@ -310,7 +355,7 @@ mod tests {
         let bad = |t: &str| parse(t).unwrap_err().to_string();
         assert_eq!(
             bad("# T\n## S\nstate: x\ntext\n? Q\n- a\n- b\n= A\n"),
-            "lesson: step 1 ('S'): no right choice: mark it with '+ '"
+            "lesson, line 2: step 1 ('S'): no right choice: mark it with '+ '"
         );
         assert_eq!(
             bad("# T\n## S\nstate: x\n- a\n"),

@@ -43,6 +43,8 @@ pub struct QuestionStatus {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct LessonStatus {
     pub lesson_title: String,
+    /// Where the lesson comes from ("" for the built-in one, else the teacher's file).
+    pub source: String,
     /// Every step's title (for the list of steps).
     pub steps: Vec<String>,
     /// 0-based.
@@ -197,6 +199,10 @@ impl Session {
         let revealed = l.revealed(i);
         Some(LessonStatus {
             lesson_title: l.lesson.title.clone(),
+            source: match &self.lesson_origin {
+                LessonOrigin::BuiltIn => String::new(),
+                LessonOrigin::Path(name) | LessonOrigin::File(name) => name.clone(),
+            },
             steps: l.lesson.steps.iter().map(|s| s.title.clone()).collect(),
             index: i,
             title: s.title.clone(),
@@ -219,7 +225,14 @@ impl Session {
     /// "lesson=3" while the lesson is open (1-based), for the URL.
     pub(super) fn lesson_query(&self) -> Option<String> {
         let l = self.lesson.as_ref().filter(|l| l.active)?;
-        Some(format!("lesson={}", l.step + 1))
+        match &self.lesson_origin {
+            LessonOrigin::BuiltIn => Some(format!("lesson={}", l.step + 1)),
+            LessonOrigin::Path(path) => {
+                Some(format!("lesson_src={}&lesson={}", super::query::encode(path), l.step + 1))
+            }
+            // A file from the user's disk: a link cannot bring it back.
+            LessonOrigin::File(_) => None,
+        }
     }
 
     /// Opens the lesson a URL names (`lesson=3`), then reads the URL's other settings over the
@@ -227,7 +240,14 @@ impl Session {
     /// opens the last, with a notice.
     pub(super) fn open_lesson_from(&mut self, query: &str) -> Result<Option<Notice>, Error> {
         let pairs = split_query(query);
-        let Some((_, n)) = pairs.iter().rev().find(|(k, _)| k == "lesson") else { return Ok(None) };
+        let named = pairs.iter().rev().find(|(k, _)| k == "lesson").map(|(_, n)| n.clone());
+        // A teacher's lesson named by the link opens at once, at its first step unless it says.
+        let n = match (named, &self.lesson_origin) {
+            (Some(n), _) => n,
+            (None, LessonOrigin::Path(_)) => "1".to_string(),
+            (None, _) => return Ok(None),
+        };
+        let n = &n;
         let step: usize = n.trim().parse().ok().filter(|&s| s >= 1).ok_or_else(|| {
             Error::Parse(crate::error::ParseError {
                 key: "lesson".into(),
@@ -245,7 +265,7 @@ impl Session {
         // as another setting (`pf=off%26delta%3D0.2` is one bad value of pf, not delta=0.2).
         let rest: Vec<String> = pairs
             .iter()
-            .filter(|(k, _)| k != "lesson")
+            .filter(|(k, _)| k != "lesson" && k != "lesson_src")
             .map(|(k, v)| format!("{}={}", super::query::encode(k), super::query::encode(v)))
             .collect();
         if !rest.is_empty() {
@@ -307,6 +327,64 @@ impl Session {
             let Some(p) = schema::param(key) else { return false };
             p.parse(text, false).ok().is_some_and(|v| self.settings.get(key) == Some(v))
         })
+    }
+}
+
+/// Checks a lesson against the settings it uses: every step's `state:`, `then:` and `show:` reads
+/// as a state string, every goal names settings with values they can take. The built-in lesson and
+/// a teacher's file pass the same checks; a mistake names its step's line.
+pub fn validate(lesson: &Lesson) -> Result<(), Error> {
+    for (i, step) in lesson.steps.iter().enumerate() {
+        let at = |what: &str, e: &dyn std::fmt::Display| Error::Lesson {
+            line: step.line,
+            message: format!("step {} ('{}'): {what}: {e}", i + 1, step.title),
+        };
+        let mut settings = Settings::page_start();
+        settings.read(&step.state, Source::Lesson).map_err(|e| at("state", &e))?;
+        for (what, text) in [("then", &step.then), ("show", &step.show)] {
+            if let Some(text) = text {
+                let mut next = settings;
+                next.read(text, Source::Lesson).map_err(|e| at(what, &e))?;
+            }
+        }
+        for (key, value) in step.goal.iter().flat_map(|g| g.settings.iter()) {
+            let p = schema::param(key).ok_or_else(|| {
+                at(
+                    "goal",
+                    &format!("'{key}' is not a setting (a goal takes verdict=, time= and settings such as pf=off)"),
+                )
+            })?;
+            // Within the page's control: what a student can set.
+            p.parse(value, true).map_err(|e| at("goal", &format!("{key}={value} can never be met: {e}")))?;
+        }
+    }
+    Ok(())
+}
+
+/// Where the lesson shown comes from.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub enum LessonOrigin {
+    /// `lessons/paper.md`, beside the page (or built into the native build).
+    #[default]
+    BuiltIn,
+    /// A teacher's file at this path of the page's site (`lesson_src=`): a link can name it.
+    Path(String),
+    /// A file the user opened or dropped on the page: no link can name it.
+    File(String),
+}
+
+impl Session {
+    /// Replaces the lesson by a teacher's: its file's bytes, read, parsed and checked as the
+    /// built-in lesson is, then opened at its first step. A mistake leaves the lesson as it was and
+    /// says which line and what is wrong.
+    pub fn load_lesson(&mut self, origin: LessonOrigin, bytes: &[u8]) -> Result<(), Error> {
+        let text = lesson::read_file(bytes)?;
+        let parsed = lesson::parse(&text)?;
+        validate(&parsed)?;
+        self.lesson_text = Some(text);
+        self.lesson_origin = origin;
+        self.lesson = Some(LessonProgress::new(parsed));
+        self.lesson_open(0)
     }
 }
 

@@ -36,6 +36,7 @@ pub use export::EMBED_SIZE;
 pub use lesson::{LessonProgress, LessonStatus, QuestionStatus};
 pub use maps::{MapSide, Maps};
 pub use presets::{arm, preset, ArmPreset, Preset, ARMS, PRESETS};
+use query::split_query;
 pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS, HISTORY_SECONDS};
 pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source, ViewSettings};
 pub use status::{run_status, RunStatus};
@@ -122,6 +123,8 @@ pub struct Session {
     lesson: Option<LessonProgress>,
     /// The lesson's text (the page fetches it; the native build has it built in).
     lesson_text: Option<String>,
+    /// Where that text comes from.
+    lesson_origin: lesson::LessonOrigin,
 }
 
 impl Session {
@@ -141,6 +144,7 @@ impl Session {
             viewing: None,
             lesson: None,
             lesson_text: None,
+            lesson_origin: lesson::LessonOrigin::BuiltIn,
         };
         session.maps.show(&session.linear_settings());
         session.maps.enabled = settings.view.shown().map;
@@ -156,6 +160,17 @@ impl Session {
     /// [`Session::open`] with the lesson's text (the page fetches it; `None`: the built-in
     /// lesson where the build has one).
     pub fn open_with_lesson(query: &str, lesson_text: Option<String>) -> (Self, Vec<Notice>) {
+        Self::open_with_lessons(query, lesson_text, None)
+    }
+
+    /// [`Session::open_with_lesson`] with a teacher's lesson file (`lesson_src=PATH`: the path and
+    /// the bytes the page fetched from it), used instead of the built-in lesson if it reads and
+    /// passes the checks; else a notice says why, and the built-in lesson stays.
+    pub fn open_with_lessons(
+        query: &str,
+        lesson_text: Option<String>,
+        teacher: Option<(String, Vec<u8>)>,
+    ) -> (Self, Vec<Notice>) {
         let mut settings = Settings::page_start();
         let mut notices = settings.read(query, Source::Page).unwrap_or_default();
         let mut session = match Self::new(settings) {
@@ -166,6 +181,47 @@ impl Session {
             }
         };
         session.lesson_text = lesson_text;
+        // `lesson_src=PATH`: a teacher's lesson, which the page fetched if the path is on its site.
+        let source = split_query(query).into_iter().rev().find(|(k, _)| k == "lesson_src").map(|(_, v)| v);
+        let teacher = match (source, teacher) {
+            (None, _) => None,
+            (Some(value), teacher) => match crate::lesson::source_path(&value) {
+                Err(e) => {
+                    notices.push(Notice {
+                        key: "lesson_src".into(),
+                        text: format!("{e} — the built-in lesson is used instead"),
+                    });
+                    None
+                }
+                Ok(path) if teacher.is_none() => {
+                    notices.push(Notice {
+                        key: "lesson_src".into(),
+                        text: format!(
+                            "lesson_src={path}: the file could not be loaded from this site (is it beside the page?) — the built-in lesson is used instead"
+                        ),
+                    });
+                    None
+                }
+                Ok(_) => teacher,
+            },
+        };
+        if let Some((path, bytes)) = teacher {
+            let checked = crate::lesson::read_file(&bytes).and_then(|text| {
+                let parsed = crate::lesson::parse(&text)?;
+                lesson::validate(&parsed)?;
+                Ok(text)
+            });
+            match checked {
+                Ok(text) => {
+                    session.lesson_text = Some(text);
+                    session.lesson_origin = lesson::LessonOrigin::Path(path);
+                }
+                Err(e) => notices.push(Notice {
+                    key: "lesson_src".into(),
+                    text: format!("{path}: {e} — the built-in lesson is used instead"),
+                }),
+            }
+        }
         // `lesson=3` opens the lesson at that step, with the URL's settings over the step's.
         match session.open_lesson_from(query) {
             Ok(notice) => notices.extend(notice),

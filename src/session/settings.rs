@@ -174,7 +174,10 @@ impl Settings {
         let mut listed = false;
         for (key, _) in &pairs {
             // `lesson` is the session's (which step of the lesson is open), not a setting.
-            if !matches!(key.as_str(), "preset" | "arm" | "lesson" | "views") && schema::param(key).is_none() {
+            // `lesson_src` is the page's too (where a teacher's lesson file is).
+            if !matches!(key.as_str(), "preset" | "arm" | "lesson" | "lesson_src" | "views")
+                && schema::param(key).is_none()
+            {
                 // The settings there are are listed once, with the first unknown key.
                 let e = if listed { unknown_again(key) } else { unknown(key) };
                 listed = true;

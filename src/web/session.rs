@@ -68,6 +68,13 @@ pub fn schema() -> Result<JsValue, JsError> {
     to_js(&PARAMS.iter().map(|p| ParamView::of(p)).collect::<Vec<_>>())
 }
 
+/// The path a `lesson_src=` value names on this site; throws with the reason for anything else
+/// (another site, a script URL, no path).
+#[wasm_bindgen(js_name = lessonSourcePath)]
+pub fn lesson_source_path(value: &str) -> Result<String, JsError> {
+    crate::lesson::source_path(value).map_err(js_error)
+}
+
 /// `[{id, title, state}]` of every preset.
 #[wasm_bindgen]
 pub fn presets() -> Result<JsValue, JsError> {
@@ -124,9 +131,19 @@ impl WebSession {
     /// The page's session for a URL query (`?delta=0.01&pf=off`, or ""): the page's start with the
     /// query over it, and the lesson's text the page fetched (`lessons/paper.md`; without it the
     /// lesson cannot open). Values it could not take are in `notices()`.
+    ///
+    /// With `lesson_src=PATH` in the query the page fetches that file too and passes its path and
+    /// bytes: a teacher's lesson, used instead of the built-in one if it reads and passes the
+    /// checks (else a notice says why).
     #[wasm_bindgen(constructor)]
-    pub fn new(query: &str, lesson_text: Option<String>) -> WebSession {
-        let (inner, notices) = Session::open_with_lesson(query, lesson_text);
+    pub fn new(
+        query: &str,
+        lesson_text: Option<String>,
+        teacher_path: Option<String>,
+        teacher_bytes: Option<Vec<u8>>,
+    ) -> WebSession {
+        let teacher = teacher_path.zip(teacher_bytes);
+        let (inner, notices) = Session::open_with_lessons(query, lesson_text, teacher);
         WebSession { inner, notices }
     }
 
@@ -266,6 +283,15 @@ impl WebSession {
     }
 
     // -------------------------------------------------------------------------- the lesson
+
+    /// Replaces the lesson by a file the user opened or dropped (its name and bytes), checked as
+    /// the built-in lesson is, and opens it; throws with the line and the mistake, and the lesson
+    /// stays as it was.
+    #[wasm_bindgen(js_name = loadLesson)]
+    pub fn load_lesson(&mut self, name: &str, bytes: &[u8]) -> Result<(), JsError> {
+        let origin = crate::session::lesson::LessonOrigin::File(name.to_string());
+        self.inner.load_lesson(origin, bytes).map_err(|e| JsError::new(&format!("{name}: {e}")))
+    }
 
     /// Opens the guided lesson at `step` (0-based).
     #[wasm_bindgen(js_name = lessonOpen)]

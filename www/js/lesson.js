@@ -6,7 +6,7 @@ import { byId, make, setText } from './dom.js';
 
 /**
  * @typedef {{ prompt: string, choices: string[], chosen: number | null, correct: number | null }} Question
- * @typedef {{ lesson_title: string, steps: string[], index: number, title: string, text: string[],
+ * @typedef {{ lesson_title: string, source: string, steps: string[], index: number, title: string, text: string[],
  *   terms: { term: string, definition: string }[], task: string | null, done: boolean,
  *   question: Question | null, answer: string[], can_back: boolean, can_next: boolean }} LessonStatus
  */
@@ -21,7 +21,7 @@ export function choiceMark(/** @type {Question} */ q, /** @type {number} */ i) {
 
 /**
  * @param {{ start: () => void, next: () => void, back: () => void, leave: () => void,
- *   answer: (choice: number) => void, reveal: () => void }} on
+ *   answer: (choice: number) => void, reveal: () => void, open: (file: File) => void }} on
  */
 export function createLesson(on) {
   const panel = byId('lesson');
@@ -42,6 +42,22 @@ export function createLesson(on) {
   next.addEventListener('click', on.next);
   byId('lesson-leave').addEventListener('click', on.leave);
   reveal.addEventListener('click', on.reveal);
+  // A teacher's lesson file: chosen here, or dropped anywhere on the page.
+  const file = /** @type {HTMLInputElement} */ (byId('lesson-file'));
+  byId('lesson-file-open').addEventListener('click', () => file.click());
+  file.addEventListener('change', () => {
+    if (file.files?.[0]) on.open(file.files[0]);
+    file.value = '';
+  });
+  document.addEventListener('dragover', (e) => {
+    if (e.dataTransfer?.types.includes('Files')) e.preventDefault();
+  });
+  document.addEventListener('drop', (e) => {
+    const dropped = e.dataTransfer?.files?.[0];
+    if (!dropped) return;
+    e.preventDefault();
+    on.open(dropped);
+  });
 
   /** Shows the session's lesson status (null: the lesson is closed). @param {LessonStatus | null} s */
   function render(s) {
@@ -53,11 +69,12 @@ export function createLesson(on) {
       shownKey = '';
       return;
     }
-    const key = JSON.stringify([s.index, s.question?.chosen, s.done, s.answer.length]);
+    // Another lesson (a teacher's file) is another key, even at the same step.
+    const key = JSON.stringify([s.source, s.lesson_title, s.index, s.title, s.question?.chosen, s.done, s.answer.length]);
     if (key === shownKey) return;
     shownKey = key;
     setText(byId('lesson-count'), `Step ${s.index + 1} of ${s.steps.length}`);
-    setText(byId('lesson-name'), s.lesson_title);
+    setText(byId('lesson-name'), s.source ? `${s.lesson_title} (from ${s.source})` : s.lesson_title);
     setText(title, s.title);
     byId('lesson-text').replaceChildren(...s.text.map((p) => make('p', { text: p })));
     byId('lesson-terms').replaceChildren(...s.terms.flatMap((t) => [make('dt', { text: t.term }), make('dd', { text: t.definition })]));

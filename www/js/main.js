@@ -51,7 +51,10 @@ async function main() {
   performance.mark('flexarm:renderer-start');
   const rendererReady = wasm.Renderer.create(/** @type {HTMLCanvasElement} */ (byId('canvas')));
   rendererReady.catch(() => {}); // handled where it is awaited
-  const session = new wasm.Session(window.location.search, await lessonText);
+  // A teacher's lesson (`lesson_src=PATH`): fetched only from a path of this site (the session
+  // says why anything else is refused, and checks the file as it checks the built-in lesson).
+  const teacher = await fetchTeacherLesson(wasm);
+  const session = new wasm.Session(window.location.search, await lessonText, teacher?.path, teacher?.bytes);
   performance.mark('flexarm:session-ready');
   showNotices(session.notices());
   const status = createStatus();
@@ -226,6 +229,16 @@ async function main() {
     next: () => lessonDo(() => session.lessonNext()),
     back: () => lessonDo(() => session.lessonBack()),
     leave: () => lessonDo(() => session.lessonLeave()),
+    open: async (file) => {
+      const bytes = new Uint8Array(await file.arrayBuffer());
+      try {
+        session.loadLesson(file.name, bytes);
+      } catch (e) {
+        errors.report('The lesson file could not be used (the lesson stays as it was)', e);
+        return;
+      }
+      lessonDo(() => {});
+    },
     answer: (choice) => {
       lessonDo(() => session.lessonAnswer(choice));
       showFigure();
@@ -429,6 +442,19 @@ function showFigure() {
 }
 
 /** The URL's values that were not taken. @param {{ key: string, text: string }[]} notices */
+/** The bytes of the lesson file `lesson_src=` names, if it is on this site and loads. */
+async function fetchTeacherLesson(/** @type {any} */ wasm) {
+  const value = new URLSearchParams(window.location.search).get('lesson_src');
+  if (value === null) return null;
+  try {
+    const path = wasm.lessonSourcePath(value);
+    const r = await fetch(path);
+    return r.ok ? { path, bytes: new Uint8Array(await r.arrayBuffer()) } : null;
+  } catch {
+    return null; // the session's notice says why
+  }
+}
+
 function showNotices(notices) {
   if (notices.length === 0) return;
   byId('url-notice-list').replaceChildren(...noticeLines(notices).map((text) => make('li', { text })));

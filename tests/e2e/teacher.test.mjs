@@ -1,0 +1,60 @@
+// A teacher's own lesson (issue 21): `?lesson_src=lessons/windows.md` opens the homework shipped
+// beside the page; a link to another site is refused with its reason and the built-in lesson
+// stays; a broken file opened from disk names its line and changes nothing; markup in a lesson is
+// shown as text.
+
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import { shared, openPage, shots } from './harness.mjs';
+
+const env = shared();
+
+test('a teacher\'s link opens the homework beside the page, and the link the page writes keeps it', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, '?lesson_src=lessons/windows.md');
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 10000 });
+  assert.equal(await page.textContent('#lesson-title'), 'Where does the controller alone work?');
+  assert.equal(await page.textContent('#lesson-name'), 'Homework: the windows of δ (from lessons/windows.md)');
+  await page.waitForFunction(() => /lesson_src=lessons%2Fwindows\.md&lesson=1/.test(location.search));
+  await page.click('#lesson-next');
+  await page.waitForFunction(() => /lesson=2/.test(location.search));
+  assert.equal(await page.textContent('#lesson-title'), 'Find a stable δ');
+  await page.screenshot({ path: path.join(shots, 'teacher-homework-laptop.png') });
+  assert.deepEqual(problems, []);
+  await close();
+});
+
+test('a lesson from another site is refused with the reason; the built-in lesson stays', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, '?lesson_src=https%3A%2F%2Fexample.org%2Fl.md');
+  await page.waitForSelector('#url-notice:not([hidden])', { timeout: 10000 });
+  assert.match(await page.textContent('#url-notice-list'), /another site.*built-in lesson is used/);
+  await page.click('#lesson-start');
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden);
+  assert.equal(await page.textContent('#lesson-name'), 'Why a predictive controller shakes a flexible arm apart');
+  assert.deepEqual(problems, []);
+  await close();
+});
+
+test('a broken lesson file names its line and changes nothing; markup in a lesson stays text', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, '?preset=fig5.3&mode=full');
+  await page.click('#lesson-start');
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden);
+  const before = await page.textContent('#lesson-title');
+  const broken = '# Mine\n\n## One\nstate: delta=0.02&wobble=3\n\nText.\n';
+  await page.setInputFiles('#lesson-file', { name: 'broken.md', mimeType: 'text/markdown', buffer: Buffer.from(broken) });
+  await page.waitForFunction(() => /broken\.md: lesson, line 3/.test(document.body.textContent ?? ''), null, { timeout: 5000 });
+  const text = await page.evaluate(() => document.body.textContent ?? '');
+  assert.match(text, /The lesson file could not be used \(the lesson stays as it was\): broken\.md: lesson, line 3: step 1 \('One'\): state: .*wobble/);
+  assert.equal(await page.textContent('#lesson-title'), before);
+  await page.screenshot({ path: path.join(shots, 'teacher-broken-laptop.png') });
+  // Hostile markup: shown as written, never run.
+  const hostile = '# <img src=x onerror="window.__pwned=1">\n\n## <script>window.__pwned=2</script>\nstate: pf=off\n\n<b onmouseover="window.__pwned=3">Hello</b>\n';
+  await page.setInputFiles('#lesson-file', { name: 'hostile.md', mimeType: 'text/markdown', buffer: Buffer.from(hostile) });
+  await page.waitForFunction(() => document.querySelector('#lesson-title')?.textContent === '<script>window.__pwned=2</script>');
+  assert.equal(await page.textContent('#lesson-text'), '<b onmouseover="window.__pwned=3">Hello</b>');
+  assert.equal(await page.evaluate(() => /** @type {any} */ (window).__pwned), undefined);
+  assert.equal(await page.$$eval('#lesson img, #lesson script, #lesson b', (els) => els.length), 0);
+  // Problems: the one report of the broken file (a console warning, not an error) only.
+  assert.deepEqual(problems, []);
+  await close();
+});
