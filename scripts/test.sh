@@ -11,6 +11,10 @@ ensure_rust
 step "native tests (cargo test)"
 cargo test --locked
 
+ensure_python_env
+step "the exported Python scripts, run with NumPy and SciPy (cargo test --test export_python -- --ignored)"
+cargo test --locked --test export_python -- --ignored
+
 ensure_node
 step "unit tests of the page's modules (node --test www/js/)"
 node --test www/js/

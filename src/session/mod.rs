@@ -14,6 +14,7 @@ pub mod export;
 pub mod lesson;
 pub mod maps;
 pub mod presets;
+pub mod python;
 pub mod query;
 pub mod run;
 mod run_settings;

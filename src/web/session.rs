@@ -341,6 +341,14 @@ impl WebSession {
     }
 
     /// Run A's tracking errors as an SVG figure (the same as `flexarm simulate --svg`).
+    /// Run A's settings as a Python script (NumPy, SciPy) that rebuilds the linearized loop and
+    /// prints ρ, its eigenvalues and A4 — what `flexarm export-python` writes — from the
+    /// template the page fetched (`export/model_template.py`).
+    #[wasm_bindgen(js_name = pythonScript)]
+    pub fn python_script(&self, template: &str) -> Result<String, JsError> {
+        self.inner.python_script(template).map_err(js_error)
+    }
+
     #[wasm_bindgen(js_name = svgTraces)]
     pub fn svg_traces(&self) -> String {
         self.inner.svg_traces()

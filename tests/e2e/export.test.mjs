@@ -106,3 +106,30 @@ test('the embed snippet: an iframe of the current state, shown and selected', { 
   assert.deepEqual(problems, []);
   await close();
 });
+
+test('the model as a Python script: downloaded, and run with NumPy and SciPy it finds the page\'s ρ', { timeout: 120000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, PAGE);
+  const { name, bytes } = await clickForDownload(page, '#export-python');
+  assert.equal(name, 'flexarm_model.py');
+  const script = bytes.toString('utf8');
+  assert.match(script, /^#!\/usr\/bin\/env python3\n/);
+  const state = await page.evaluate(() => window.flexarm.session.stateString());
+  assert.ok(script.includes('State: delta=0.01&alpha=2&pf=off'), 'the script names the run settings');
+  console.log(`# Python script ${kB(bytes)} for ${state}`);
+  const python = process.env.FLEXARM_PYTHON;
+  if (python) {
+    const { execFileSync } = await import('node:child_process');
+    const fs = await import('node:fs');
+    const os = await import('node:os');
+    const path = await import('node:path');
+    const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'flexarm-')), name);
+    fs.writeFileSync(file, bytes);
+    const out = execFileSync(python, [file], { encoding: 'utf8' }).trim().split('\n');
+    const result = JSON.parse(out[out.length - 1]);
+    const verdict = await page.textContent('#verdict-detail');
+    assert.ok(verdict.includes(`ρ = ${result.spectral_radius.toFixed(4)}`), `${verdict} vs ${result.spectral_radius}`);
+    console.log(`# the script's ρ = ${result.spectral_radius.toFixed(6)}; the page says "${verdict.slice(0, 40)}…"`);
+  }
+  assert.deepEqual(problems, []);
+  await close();
+});

@@ -167,6 +167,13 @@ async function main() {
   byId('reset').addEventListener('click', reset);
   byId('poke').addEventListener('click', () => change(() => session.poke()));
   byId('export-csv').addEventListener('click', () => download('flexarm-traces.csv', guard('Export failed', () => session.csv(), null), 'text/csv'));
+  // The script's template is a file beside the page (Rust fills it in), fetched when first asked for.
+  let pythonTemplate = /** @type {Promise<string> | null} */ (null);
+  byId('export-python').addEventListener('click', async () => {
+    pythonTemplate ??= fetch('export/model_template.py').then((r) => (r.ok ? r.text() : ''), () => '');
+    const template = await pythonTemplate;
+    download('flexarm_model.py', guard('Export failed', () => session.pythonScript(template), null), 'text/x-python');
+  });
   createExport({
     session,
     canvas: /** @type {HTMLCanvasElement} */ (byId('canvas')),

@@ -6,7 +6,8 @@
 //!   pair A4),
 //! * `flexarm sweep` tabulates ρ (and optionally simulation verdicts) over lists of δ and α,
 //! * `flexarm map` computes ρ on a logarithmic (δ, α) grid without and/or with preliminary
-//!   feedback, summarizes it, and writes it as CSV, JSON or an SVG figure.
+//!   feedback, summarizes it, and writes it as CSV, JSON or an SVG figure,
+//! * `flexarm export-python` writes the model as a Python script (NumPy, SciPy).
 //!
 //! The flags of the run settings come from the schema ([`flexarm::schema`]), as do their ranges
 //! and error messages. Bad input — including an output path that cannot be written — prints one
@@ -14,6 +15,7 @@
 
 mod analyze;
 mod cli;
+mod export_python;
 mod long_work;
 mod map;
 mod output;
@@ -35,7 +37,7 @@ const AFTER: &str = "ρ is the spectral radius of the one-period map linearized 
                      'flexarm COMMAND --help' describes one command.";
 
 fn commands() -> Vec<Command> {
-    vec![simulate::command(), analyze::command(), sweep::command(), map::command()]
+    vec![simulate::command(), analyze::command(), sweep::command(), map::command(), export_python::command()]
 }
 
 fn root() -> Command {
@@ -100,7 +102,7 @@ fn run(args: Vec<String>) -> Res<String> {
                 }
                 ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
                     Err(cli::usage_error(
-                        "no command given: use simulate, analyze, sweep, map or help (see 'flexarm --help')",
+                        "no command given: use simulate, analyze, sweep, map, export-python or help (see 'flexarm --help')",
                     ))
                 }
                 _ => Err(cli::usage_error(one_line(&e, command.as_deref()))),
@@ -112,11 +114,14 @@ fn run(args: Vec<String>) -> Res<String> {
         Some(("analyze", m)) => analyze::run(m),
         Some(("sweep", m)) => sweep::run(m),
         Some(("map", m)) => map::run(m),
+        Some(("export-python", m)) => export_python::run(m),
         Some(("help", m)) => match m.get_one::<String>("command") {
             None => Ok(overview()),
             Some(name) => match commands().into_iter().find(|c| c.get_name() == name) {
                 Some(mut c) => Ok(c.render_help().to_string()),
-                None => Err(cli::usage_error(format!("unknown command '{name}': use simulate, analyze, sweep or map"))),
+                None => Err(cli::usage_error(format!(
+                    "unknown command '{name}': use simulate, analyze, sweep, map or export-python"
+                ))),
             },
         },
         _ => Ok(overview()),

@@ -1,0 +1,86 @@
+//! The model as a Python script (issue 21, `session::python`): the script flexarm exports for a
+//! state, run with NumPy and SciPy, finds the same loop — its ρ equal to flexarm's to 1e-8
+//! relative and its A4 (without and with the preliminary feedback) to 1e-6 — for the paper's
+//! figures, another α, other arms, the LQ gain, a sampled inner loop and a model error; with
+//! `--simulate` its nonlinear loop grows where ρ > 1 and dies out where ρ < 1.
+//!
+//! Needs a Python with NumPy and SciPy: `scripts/test.sh` makes one (a virtual environment from
+//! PyPI) and runs this file with `FLEXARM_PYTHON` pointing at it:
+//! `FLEXARM_PYTHON=target/py-bench-venv/bin/python cargo test --release --test export_python -- --ignored`.
+
+use std::process::Command;
+
+use flexarm::analysis::analyze;
+use flexarm::session::python::{python_script, TEMPLATE};
+use flexarm::session::settings::{Settings, Source};
+
+fn python() -> String {
+    std::env::var("FLEXARM_PYTHON").unwrap_or_else(|_| {
+        panic!("set FLEXARM_PYTHON to a Python with numpy and scipy (scripts/test.sh makes target/py-bench-venv)")
+    })
+}
+
+/// Runs the exported script for `state`; returns its last line as JSON and the configuration.
+fn run(state: &str, args: &[&str]) -> (serde_json::Value, flexarm::SimulationConfig, [f64; 2]) {
+    let mut settings = Settings::default();
+    settings.read(state, Source::CommandLine).unwrap();
+    let config = settings.a.config();
+    let rest = config.reference.end;
+    let script = python_script(&config, rest, &settings.run_query(), TEMPLATE).unwrap();
+    let dir = std::env::temp_dir().join(format!("flexarm-py-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(format!("{}.py", state.replace(['=', '&', '.'], "_")));
+    std::fs::write(&path, &script).unwrap();
+    let out = Command::new(python()).arg(&path).args(args).env("MPLBACKEND", "Agg").output().unwrap();
+    assert!(out.status.success(), "{state}: {}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let last = text.lines().last().unwrap_or("");
+    (serde_json::from_str(last).unwrap_or_else(|e| panic!("{state}: last line {last:?}: {e}")), config, rest)
+}
+
+#[test]
+#[ignore = "needs FLEXARM_PYTHON (numpy, scipy): scripts/test.sh runs it"]
+fn the_exported_script_finds_flexarms_rho_and_a4() {
+    for state in [
+        "preset=fig5.1",
+        "preset=fig5.2",
+        "preset=fig5.3",
+        "delta=0.01&pf=off&alpha=0.5",
+        "delta=0.05&pf=off&k1=4610.4",
+        "delta=0.02&pf=off&arm=lighter",
+        "delta=0.02&pf=lq&alpha1=1&alpha2=3",
+        "delta=0.05&pf=paper&inner=sampled",
+        "delta=0.01&pf=paper&k=20&eps_ratio=14",
+        "delta=0.01&pf=paper&k1=2305.2&model=paper",
+    ] {
+        let (py, config, rest) = run(state, &[]);
+        let report = analyze(&config, Some(rest[1])).unwrap();
+        let rho = py["spectral_radius"].as_f64().unwrap();
+        assert!((rho / report.spectral_radius - 1.0).abs() < 1e-8, "{state}: ρ {rho} vs {}", report.spectral_radius);
+        for (key, ours) in [("limit_pair_open", report.limit_pair_open), ("limit_pair", report.limit_pair)] {
+            let theirs = &py[key][0];
+            let (re, im) = (theirs[0].as_f64().unwrap(), theirs[1].as_f64().unwrap());
+            let scale = ours[0][0].hypot(ours[0][1]);
+            assert!(
+                (re - ours[0][0]).abs() < 1e-6 * scale && (im.abs() - ours[0][1].abs()).abs() < 1e-6 * scale,
+                "{state}: {key} {re} ± {im}j vs {:?}",
+                ours[0]
+            );
+        }
+        println!("{state}: ρ = {rho:.10} (flexarm {:.10}), A4 = {:?}", report.spectral_radius, py["limit_pair"][0]);
+    }
+}
+
+/// The script's own nonlinear loop agrees with the verdict: Fig. 5.3 (ρ > 1) diverges within
+/// about four seconds, Fig. 5.2 (ρ < 1) ends its slew with small errors.
+#[test]
+#[ignore = "needs FLEXARM_PYTHON (numpy, scipy): scripts/test.sh runs it"]
+fn the_scripts_simulation_grows_where_rho_says() {
+    let (unstable, _, _) = run("preset=fig5.3", &["--simulate", "--duration", "6"]);
+    let t = unstable["simulated_seconds"].as_f64().unwrap();
+    assert!(t < 5.5 && t > 2.5, "Fig. 5.3 diverges after {t} s");
+    let (stable, _, _) = run("preset=fig5.2", &["--simulate", "--duration", "3"]);
+    assert!((stable["simulated_seconds"].as_f64().unwrap() - 3.0).abs() < 0.02);
+    let e = &stable["max_error"];
+    assert!(e[0].as_f64().unwrap() < 0.01 && e[1].as_f64().unwrap() < 0.02, "{e}");
+}
