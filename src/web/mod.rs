@@ -13,7 +13,7 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 pub use renderer::Renderer;
-pub use session::{arms, presets, schema, spectral_radius, WebSession};
+pub use session::{arms, lesson_source_path, presets, schema, spectral_radius, WebSession};
 
 #[wasm_bindgen(start)]
 fn start() {

@@ -31,7 +31,7 @@ fn pair(obj: &JsValue, key: &str) -> [f64; 2] {
 
 /// Runs `seconds` of simulated time in browser-sized frames and returns run A's metrics.
 fn run(delta: f64, pf: &str, seconds: f64) -> JsValue {
-    let mut session = WebSession::new(&state(delta, 2.0, pf), None);
+    let mut session = WebSession::new(&state(delta, 2.0, pf), None, None, None);
     while session.time() < seconds - 1e-9 && !session.is_finished() {
         session.advance(0.1).map_err(JsValue::from).unwrap();
     }
@@ -62,7 +62,7 @@ fn larger_delta_is_stable_without_feedback() {
 /// restarts from rest when the arm changes.
 #[wasm_bindgen_test]
 fn a_damped_motor_is_stable_without_feedback() {
-    let mut session = WebSession::new(&format!("arm=damped&{}", state(0.01, 2.0, "off")), None);
+    let mut session = WebSession::new(&format!("arm=damped&{}", state(0.01, 2.0, "off")), None, None, None);
     assert!(session.state_string().contains("bv1=15"), "{}", session.state_string());
     while session.time() < 6.0 - 1e-9 && !session.is_finished() {
         session.advance(0.1).map_err(JsValue::from).unwrap();
@@ -94,7 +94,7 @@ fn spectral_radius_matches_the_native_core() {
             "δ = {delta}, α = {alpha}, {pf}: wasm {wasm} vs native {native}"
         );
         // The session's analysis reports the same ρ.
-        let session = WebSession::new(&state(delta, alpha, pf), None);
+        let session = WebSession::new(&state(delta, alpha, pf), None, None, None);
         let report = session.analysis(0).map_err(JsValue::from).unwrap();
         assert!((number(&report, "spectral_radius") - native).abs() <= 1e-9 * native);
     }
@@ -110,7 +110,7 @@ fn error_message(e: wasm_bindgen::JsError) -> String {
 /// nothing.
 #[wasm_bindgen_test]
 fn bad_settings_throw_a_readable_error() {
-    let mut session = WebSession::new(&state(0.01, 2.0, "paper"), None);
+    let mut session = WebSession::new(&state(0.01, 2.0, "paper"), None, None, None);
     let msg = error_message(session.set("delta", "-0.01").err().expect("δ < 0 is rejected"));
     assert!(msg.contains("sampling_period") && msg.contains("from 1e-5 s to 10 s"), "{msg}");
     let msg = error_message(session.set("pf", "maybe").err().expect("unknown PF is rejected"));
@@ -130,7 +130,7 @@ fn bad_settings_throw_a_readable_error() {
     assert!(session.trace(0, "nope").is_err());
     assert!(session.trace(1, "t").is_err(), "no run B without a comparison");
     // A bad URL value becomes a notice, not an exception.
-    let s = WebSession::new("delta=abc&pf=maybe", None);
+    let s = WebSession::new("delta=abc&pf=maybe", None, None, None);
     let notices = s.notices().map_err(JsValue::from).unwrap();
     assert_eq!(js_sys::Array::from(&notices).length(), 2);
 }
@@ -138,7 +138,7 @@ fn bad_settings_throw_a_readable_error() {
 /// Traces come out as typed arrays of equal length; the CSV is headed by the state string.
 #[wasm_bindgen_test]
 fn traces_are_typed_arrays() {
-    let mut session = WebSession::new("", None);
+    let mut session = WebSession::new("", None, None, None);
     session.advance(0.2).map_err(JsValue::from).unwrap();
     let t = session.trace(0, "t").map_err(JsValue::from).unwrap();
     let e1 = session.trace(0, "e1").map_err(JsValue::from).unwrap();
@@ -154,7 +154,7 @@ fn traces_are_typed_arrays() {
 #[wasm_bindgen_test]
 fn stability_map_in_chunks() {
     // The full view shows (and computes) the maps; the intro does not.
-    let mut session = WebSession::new(&format!("{}&mode=full", state(0.01, 2.0, "off")), None);
+    let mut session = WebSession::new(&format!("{}&mode=full", state(0.01, 2.0, "off")), None, None, None);
     let deltas = session.map_deltas().to_vec();
     let alphas = session.map_alphas().to_vec();
     let mut steps = 0;
@@ -179,4 +179,25 @@ fn stability_map_in_chunks() {
     assert!(row[0] > 1.0, "{row:?}");
     assert!(row.iter().any(|r| *r < 1.0), "{row:?}");
     assert!(session.set_from_map("sideways", 0.01, 2.0).is_err());
+}
+
+/// A teacher's lesson through the wasm binding: a path on the page's site is taken and its file
+/// used, another site is refused with the reason; the Python script is written from the template
+/// the page fetches, and refused without it.
+#[wasm_bindgen_test]
+fn a_teachers_lesson_and_the_python_script_in_the_page() {
+    let homework = include_bytes!("../../www/lessons/windows.md").to_vec();
+    let query = "lesson_src=lessons/windows.md&lesson=2";
+    let session = WebSession::new(query, None, Some("lessons/windows.md".into()), Some(homework));
+    assert_eq!(js_sys::Array::from(&session.notices().map_err(JsValue::from).unwrap()).length(), 0);
+    assert!(session.state_string().contains("lesson_src=lessons%2Fwindows.md&lesson=2"), "{}", session.state_string());
+    assert_eq!(
+        flexarm::web::lesson_source_path("lessons/windows.md").map_err(JsValue::from).unwrap(),
+        "lessons/windows.md"
+    );
+    assert!(flexarm::web::lesson_source_path("https://example.org/l.md").is_err());
+    let template = include_str!("../../www/export/model_template.py");
+    let script = session.python_script(template).map_err(JsValue::from).unwrap();
+    assert!(script.starts_with("#!/usr/bin/env python3") && script.contains("DELTA = 0.01"));
+    assert!(session.python_script("").is_err(), "no template, no script");
 }
