@@ -160,9 +160,11 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
     let lag = signed(e.lag.to_degrees());
     let phase = if lag >= 0.0 {
         format!("lags the motor's velocity by {lag:.0}°")
+    } else if lag > -90.0 {
+        format!("runs {:.0}° ahead of the motor's velocity", -lag)
     } else {
-        // Past half a turn of lag it is nearer to say ahead; both are the same phase.
-        format!("runs {:.0}° ahead of the motor's velocity (that is, {:.0}° behind)", -lag, 360.0 + lag)
+        // A lag past half a turn is nearer said as ahead; both are the same phase.
+        format!("lags the motor's velocity by {:.0}°, that is, runs {:.0}° ahead of it,", 360.0 + lag, -lag)
     };
     let role =
         if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
