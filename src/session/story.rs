@@ -164,7 +164,7 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
         format!("runs {:.0}° ahead of the motor's velocity", -lag)
     } else {
         // A lag past half a turn is nearer said as ahead; both are the same phase.
-        format!("lags the motor's velocity by {:.0}°, that is, runs {:.0}° ahead of it,", 360.0 + lag, -lag)
+        format!("lags the motor's velocity by {:.0}°, that is, runs {:.0}° ahead of it", 360.0 + lag, -lag)
     };
     let role =
         if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
