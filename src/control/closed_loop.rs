@@ -13,13 +13,13 @@
 //! The same [`ClosedLoop`] value serves batch runs ([`simulate`]) and live animation
 //! ([`ClosedLoop::advance`]); a new configuration takes effect at the next sampling instant.
 
-use nalgebra::{Vector2, Vector3};
+use nalgebra::Vector2;
 
 use super::config::{FrictionCompensation, InnerLoop, SimulationConfig};
 use super::feedback::{resolve_gain, FeedbackGain};
 use super::history::{History, LoopState};
 use super::metrics::{DivergenceReason, ErrorStats, Metrics};
-use super::predictive::{Predictor, StateVector, Sweep};
+use super::predictive::{controller_vector, Predictor, StateVector, Sweep};
 use super::traces::{Snapshot, Traces};
 use crate::error::{ConfigError, Error};
 use crate::model::friction::FrictionObserver;
@@ -535,10 +535,4 @@ fn snapshot_of(state: &LoopState, reference: &Reference) -> Snapshot {
         xf_hat: [state.observer.estimate[0], state.observer.estimate[1]],
         w: [state.integrators[0], state.integrators[1]],
     }
-}
-
-/// X = (q, q̇, w) from its parts.
-#[inline]
-fn controller_vector(q: &Vector3<f64>, v: &Vector3<f64>, w: &Vector2<f64>) -> StateVector {
-    StateVector::from_column_slice(&[q[0], q[1], q[2], v[0], v[1], v[2], w[0], w[1]])
 }

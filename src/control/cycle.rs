@@ -44,9 +44,8 @@ pub struct Cycle {
     pub horizon: f64,
     /// The prediction from x(t_n).
     pub sweep: Sweep,
-    /// For X_0 … X_k: the predicted errors e1, e2 (against the reference at t_n + jε) and the
-    /// spring's twist θ − q1, rad.
-    pub predicted: Vec<[f64; 3]>,
+    /// For X_0 … X_k: the predicted errors e1, e2 against the reference at t_n + jε, rad.
+    pub predicted: Vec<[f64; 2]>,
     /// The periods from t_{n−2} to t_{n+3} that the run went through (or, for [t_{n+1}, t_{n+2}),
     /// will go through: then `applied` stops at the run's present), with the v held on each.
     pub held: Vec<HeldPeriod>,
@@ -99,7 +98,7 @@ impl Cycle {
         self.predicted.clear();
         for (j, x) in self.sweep.states.iter().enumerate() {
             let r = reference.sample(self.sweep.time(j));
-            self.predicted.push([x[0] - r.q[0], x[1] - r.q[1], x[2] - x[0]]);
+            self.predicted.push([x[0] - r.q[0], x[1] - r.q[1]]);
         }
         self.fill_held(history, state);
         self.fill_applied(traces);

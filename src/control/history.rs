@@ -39,16 +39,15 @@ pub struct LoopState {
 }
 
 impl LoopState {
+    /// What the controller measures at this instant: X = (q1, q2, θ, q̇1, q̇2, θ̇, w1, w2).
+    pub fn measured(&self) -> StateVector {
+        super::predictive::controller_vector(&self.plant.q, &self.plant.qdot, &self.integrators)
+    }
+
     /// The sampled loop's state ζ = (x − x_rest, v) of the linear analysis
     /// ([`crate::analysis::sampled_loop_matrix`]) while the reference rests at link angles `rest`:
     /// the errors, the motor's angle from link 1's reference, the velocities, the integrators w,
     /// and the torque v that will be held over the coming period.
-    /// What the controller measures at this instant: X = (q1, q2, θ, q̇1, q̇2, θ̇, w1, w2).
-    pub fn measured(&self) -> StateVector {
-        let (q, qd, w) = (&self.plant.q, &self.plant.qdot, &self.integrators);
-        StateVector::from_column_slice(&[q[0], q[1], q[2], qd[0], qd[1], qd[2], w[0], w[1]])
-    }
-
     pub fn deviation(&self, rest: [f64; 2]) -> [f64; 10] {
         let (q, qd, w) = (&self.plant.q, &self.plant.qdot, &self.integrators);
         let v = self.v_next.unwrap_or_else(Vector2::zeros);

@@ -41,6 +41,12 @@ use crate::model::reference::{Reference, ReferenceSample};
 
 /// The controller's state X = (q1, q2, θ, q̇1, q̇2, θ̇, w1, w2).
 pub type StateVector = SVector<f64, 8>;
+/// X = (q, q̇, w) from its parts: the state the controller measures.
+#[inline]
+pub fn controller_vector(q: &Vector3<f64>, v: &Vector3<f64>, w: &Vector2<f64>) -> StateVector {
+    StateVector::from_column_slice(&[q[0], q[1], q[2], v[0], v[1], v[2], w[0], w[1]])
+}
+
 /// A feedback gain from X = (q1, q2, θ, q̇1, q̇2, θ̇, w1, w2) to U = (T1, T2).
 pub type FeedbackGain = SMatrix<f64, 2, 8>;
 /// Newton unknowns of one step, z = (q̇1⁺, q̇2⁺, θ̇⁺, T1⁺, T2⁺).

@@ -361,6 +361,15 @@ pub fn validate(lesson: &Lesson) -> Result<(), Error> {
     Ok(())
 }
 
+/// A teacher's lesson file read, parsed and checked as the built-in lesson is: its text and the
+/// lesson, or the first mistake.
+pub(super) fn checked(bytes: &[u8]) -> Result<(String, Lesson), Error> {
+    let text = lesson::read_file(bytes)?;
+    let parsed = lesson::parse(&text)?;
+    validate(&parsed)?;
+    Ok((text, parsed))
+}
+
 /// Where the lesson shown comes from.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub enum LessonOrigin {
@@ -378,9 +387,7 @@ impl Session {
     /// built-in lesson is, then opened at its first step. A mistake leaves the lesson as it was and
     /// says which line and what is wrong.
     pub fn load_lesson(&mut self, origin: LessonOrigin, bytes: &[u8]) -> Result<(), Error> {
-        let text = lesson::read_file(bytes)?;
-        let parsed = lesson::parse(&text)?;
-        validate(&parsed)?;
+        let (text, parsed) = checked(bytes)?;
         self.lesson_text = Some(text);
         self.lesson_origin = origin;
         self.lesson = Some(LessonProgress::new(parsed));

@@ -207,13 +207,8 @@ impl Session {
             },
         };
         if let Some((path, bytes)) = teacher {
-            let checked = crate::lesson::read_file(&bytes).and_then(|text| {
-                let parsed = crate::lesson::parse(&text)?;
-                lesson::validate(&parsed)?;
-                Ok(text)
-            });
-            match checked {
-                Ok(text) => {
+            match lesson::checked(&bytes) {
+                Ok((text, _)) => {
                     session.lesson_text = Some(text);
                     session.lesson_origin = lesson::LessonOrigin::Path(path);
                 }
@@ -445,6 +440,8 @@ impl Session {
 
     /// The status of both runs, in words.
     pub fn status(&self) -> Status {
+        // Looking back, the caption computes the sweep again: once for both texts.
+        let cycle = self.cycle_caption();
         let mut runs = vec![run_status("A", &self.a)];
         if let Some(b) = &self.b {
             runs.push(run_status("B", b));
@@ -486,11 +483,11 @@ impl Session {
                 .map_or(String::new(), |g| format!("faint grey: the previous run ({})", g.settings)),
             timeline: self.timeline(),
             lesson: self.lesson_status(),
-            figure: match self.cycle_caption() {
-                c if c.is_empty() => self.figure_text(),
+            figure: match cycle.as_str() {
+                "" => self.figure_text(),
                 c => format!("{} The time plots are zoomed on one sampling instant. {c}", self.figure_text()),
             },
-            cycle: self.cycle_caption(),
+            cycle,
             story: story::story(&self.a),
         }
     }

@@ -58,21 +58,12 @@ impl Scene {
     }
 
     fn zoom_scale(&mut self, kind: PanelKind) -> &mut Autoscale {
-        match kind {
-            PanelKind::Error1 => &mut self.zoom_scales[0],
-            PanelKind::Error2 => &mut self.zoom_scales[1],
-            _ => &mut self.zoom_scales[2],
-        }
+        &mut self.zoom_scales[zoom_index(kind)]
     }
 
     /// The zoom's half-range for a plot.
     pub(super) fn zoom_limit(&self, kind: PanelKind) -> f64 {
-        let i = match kind {
-            PanelKind::Error1 => 0,
-            PanelKind::Error2 => 1,
-            _ => 2,
-        };
-        self.zoom_scales[i].limit()
+        self.zoom_scales[zoom_index(kind)].limit()
     }
 
     /// One time plot of the zoom.
@@ -251,5 +242,14 @@ impl Scene {
             *slot = t;
         }
         out
+    }
+}
+
+/// Which of the zoom's scales a time plot uses: e1, e2, the torques.
+fn zoom_index(kind: PanelKind) -> usize {
+    match kind {
+        PanelKind::Error1 => 0,
+        PanelKind::Error2 => 1,
+        _ => 2,
     }
 }
