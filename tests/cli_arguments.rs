@@ -12,7 +12,7 @@ use proptest::test_runner::{Config as ProptestConfig, RngSeed, TestCaseError, Te
 /// No invocation may take longer.
 const TIME_LIMIT: Duration = Duration::from_secs(20);
 
-const COMMANDS: &[&str] = &["simulate", "analyze", "sweep", "map", "help", "", "simulat", "--help", "-h"];
+const COMMANDS: &[&str] = &["simulate", "analyze", "sweep", "map", "data", "help", "", "simulat", "--help", "-h"];
 
 /// Every flag of every command, some misspelt, some of other commands.
 const FLAGS: &[&str] = &[
@@ -41,6 +41,8 @@ const FLAGS: &[&str] = &[
     "--mark",
     "--help",
     "--force",
+    "--no-maps",
+    "--output",
     "--deltaa",
     "-d",
     "--",

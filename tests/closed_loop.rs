@@ -138,10 +138,12 @@ fn traces_have_the_requested_rate_and_a_csv_with_units() {
     assert!((report.traces.t()[1] - 0.01).abs() < 1e-12);
     let csv = report.traces.to_csv(None);
     let mut lines = csv.lines();
+    // A comment line says what the columns are, then the header names each with its unit.
+    assert!(lines.next().unwrap().starts_with("# columns: t time;"));
     let header = lines.next().unwrap();
     assert!(header.starts_with("t [s],q1 [rad]") && header.contains("e1 [rad]") && header.contains("T1 [N m]"));
     let row: Vec<f64> = lines.nth(10).unwrap().split(',').map(|v| v.parse().unwrap()).collect();
-    assert_eq!(row.len(), 14);
+    assert_eq!(row.len(), 17);
     assert!((row[0] - 0.1).abs() < 1e-9);
 }
 

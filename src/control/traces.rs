@@ -15,7 +15,7 @@ pub struct Snapshot {
     pub q: [f64; 3],
     /// q̇1, q̇2, θ̇, rad/s.
     pub qdot: [f64; 3],
-    /// q_d1, q_d2, rad.
+    /// The reference slew q_ref = (q_d1, q_d2), rad (the CSV's `q1_ref`, `q2_ref`).
     pub qd: [f64; 2],
     /// e1, e2, rad.
     pub error: [f64; 2],
@@ -78,8 +78,11 @@ columns! {
     Q1 q1 "q1 [rad]" |s| s.q[0];
     Q2 q2 "q2 [rad]" |s| s.q[1];
     Theta theta "theta [rad]" |s| s.q[2];
-    Qd1 qd1 "qd1 [rad]" |s| s.qd[0];
-    Qd2 qd2 "qd2 [rad]" |s| s.qd[1];
+    Q1Dot q1_dot "q1_dot [rad/s]" |s| s.qdot[0];
+    Q2Dot q2_dot "q2_dot [rad/s]" |s| s.qdot[1];
+    ThetaDot theta_dot "theta_dot [rad/s]" |s| s.qdot[2];
+    Q1Ref q1_ref "q1_ref [rad]" |s| s.qd[0];
+    Q2Ref q2_ref "q2_ref [rad]" |s| s.qd[1];
     E1 e1 "e1 [rad]" |s| s.error[0];
     E2 e2 "e2 [rad]" |s| s.error[1];
     Torque1 torque1 "T1 [N m]" |s| s.torque[0];
@@ -96,6 +99,12 @@ impl Column {
         Column::ALL.into_iter().find(|c| c.key() == key)
     }
 }
+
+/// What the CSV's columns are, in words: its second `# ` line (after the state string).
+pub const CSV_COLUMNS: &str = "columns: t time; q1, q2 the link angles, theta the motor angle, q1_dot, q2_dot, \
+     theta_dot their velocities; q1_ref, q2_ref the reference slew; e1, e2 the errors e = q - q_ref; T1, T2 the \
+     applied torques (T1 on the motor, T2 on joint 2); v1, v2 the controller's output; xf1_hat, xf2_hat the \
+     friction observer's estimate";
 
 /// The recorded time series, one column per [`Column`] (equal lengths).
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -175,11 +184,13 @@ impl Traces {
         Column::ALL.map(Column::header).join(",")
     }
 
-    /// Writes the CSV head: an optional `# ` comment line (the state string), then the header row.
+    /// Writes the CSV head: an optional `# ` comment line (the state string), the `# ` line
+    /// [`CSV_COLUMNS`] that says what the columns are, then the header row.
     pub fn write_csv_head(out: &mut impl Write, comment: Option<&str>) -> std::io::Result<()> {
         if let Some(c) = comment {
             writeln!(out, "# {}", c.replace('\n', " "))?;
         }
+        writeln!(out, "# {CSV_COLUMNS}")?;
         writeln!(out, "{}", Self::csv_header())
     }
 

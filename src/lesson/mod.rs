@@ -23,6 +23,9 @@ pub const LESSON_PATH: &str = "lessons/paper.md";
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Lesson {
     pub title: String,
+    /// Student mode for the whole lesson (`answers: hidden` under the title): the verdict, ρ and
+    /// the stable windows wait for each step's answer, as `answers=hidden` in a link does.
+    pub answers_hidden: bool,
     pub steps: Vec<Step>,
 }
 
@@ -45,6 +48,9 @@ pub struct Step {
     pub show: Option<String>,
     /// The stable windows of δ stay hidden until the question is answered or the goal is met.
     pub hide_windows: bool,
+    /// In student mode, this step shows the answers from its start (`answers: shown`): the
+    /// teacher's lesson reveals them.
+    pub answers_shown: bool,
     /// Paragraphs.
     pub text: Vec<String>,
     pub terms: Vec<Term>,
@@ -147,6 +153,7 @@ enum Open {
 /// Reads a lesson in the format `lesson.md` describes.
 pub fn parse(text: &str) -> Result<Lesson, Error> {
     let mut title = String::new();
+    let mut answers_hidden = false;
     let mut steps: Vec<Step> = Vec::new();
     let mut open = Open::Nothing;
     let mut in_comment = false;
@@ -180,7 +187,20 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
             continue;
         }
         let Some(step) = steps.last_mut() else {
-            return Err(error(n, "text before the first step ('## title')"));
+            // The lesson's own settings, between its title and its first step.
+            match setting_line(line) {
+                Some(("answers", v)) if v.trim() == "hidden" => {
+                    answers_hidden = true;
+                    continue;
+                }
+                Some(("answers", v)) => {
+                    return Err(error(
+                        n,
+                        format!("'answers: {}' under the title: only 'answers: hidden' (student mode) is known", v.trim()),
+                    ))
+                }
+                _ => return Err(error(n, "text before the first step ('## title')")),
+            }
         };
         if let Some((key, value)) = setting_line(line) {
             let value = value.trim().to_string();
@@ -192,6 +212,13 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
                 "show" => step.show = Some(value),
                 "hide" if value == "windows" => step.hide_windows = true,
                 "hide" => return Err(error(n, format!("'hide: {value}': only 'hide: windows' is known"))),
+                "answers" if value == "shown" => step.answers_shown = true,
+                "answers" => {
+                    return Err(error(
+                        n,
+                        format!("'answers: {value}' in a step: only 'answers: shown' (reveal them at this step) is known"),
+                    ))
+                }
                 "term" => {
                     let (term, definition) =
                         value.split_once(" — ").ok_or_else(|| error(n, "a term reads 'term: symbol — definition'"))?;
@@ -245,12 +272,12 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
         return Err(error(text.lines().count(), "an unclosed comment ('<!--' without '-->')"));
     }
     check(&title, &steps)?;
-    Ok(Lesson { title, steps })
+    Ok(Lesson { title, answers_hidden, steps })
 }
 
 /// `key: value` for the keys a step knows.
 fn setting_line(line: &str) -> Option<(&'static str, &str)> {
-    const KEYS: [&str; 7] = ["state", "then", "task", "goal", "show", "hide", "term"];
+    const KEYS: [&str; 8] = ["state", "then", "task", "goal", "show", "hide", "term", "answers"];
     let (key, value) = line.split_once(':')?;
     KEYS.iter().find(|k| **k == key.trim()).map(|k| (*k, value))
 }

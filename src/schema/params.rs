@@ -398,4 +398,5 @@ pub const PARAMS: &[&Param] = &[
     &super::LOG,
     &super::PREDICT,
     &super::SWING,
+    &super::ANSWERS,
 ];

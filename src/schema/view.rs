@@ -162,6 +162,27 @@ pub const SWING: Param = switch(
      at rest and turned at the pair's frequency, slowed down.",
 );
 
+/// Student mode: what gives the answer away (the verdict and ρ, the stable windows of δ, ρ(δ), the
+/// maps, the predicted slope) stays hidden until the student has answered the lesson step's
+/// question, or met its goal.
+pub const ANSWERS: Param = Param {
+    key: "answers",
+    label: "Verdict, ρ and the stable windows",
+    symbol: "",
+    unit: "",
+    name: "answers",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "shown", label: "Shown" },
+            Choice { value: "hidden", label: "Hidden until answered (student mode)" },
+        ],
+        default: "shown",
+    },
+    scope: Scope::Page,
+    help: "For homework and exams: `answers=hidden` hides the verdict, ρ, the stable windows, ρ(δ) and the maps \
+           until the student has answered the lesson step's question or met its goal.",
+};
+
 /// A page-only on/off view parameter.
 const fn switch(key: &'static str, label: &'static str, default: bool, help: &'static str) -> Param {
     Param { key, label, symbol: "", unit: "", name: key, kind: Kind::Switch { default }, scope: Scope::Page, help }

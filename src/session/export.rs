@@ -22,6 +22,9 @@ impl Session {
     /// The two stability maps shown, side by side with their colour bar and the current (δ, α),
     /// coloured by the view's measure (ρ or ln ρ/δ), once they are computed.
     pub fn svg_maps(&self) -> Result<String, Error> {
+        if self.answers_hidden() {
+            return Err(Error::NotReady("student mode hides the stability maps until you answer"));
+        }
         let pf = self.settings.a.pf;
         let measure = self.settings.view.measure;
         let mut maps: Vec<(StabilityMap, String)> = Vec::new();

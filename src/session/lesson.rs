@@ -5,6 +5,7 @@
 
 use serde::Serialize;
 
+use super::answers::{self, AnswersStatus, Entry, Record};
 use super::query::split_query;
 use super::settings::{Notice, Settings, Source};
 use super::Session;
@@ -26,6 +27,8 @@ pub struct LessonProgress {
     done: Vec<bool>,
     /// The settings each step had when the student left it.
     left: Vec<Option<Settings>>,
+    /// What the student did, to hand in.
+    record: Record,
 }
 
 /// The question of the step shown, as the page shows it.
@@ -60,12 +63,32 @@ pub struct LessonStatus {
     pub answer: Vec<String>,
     pub can_back: bool,
     pub can_next: bool,
+    /// The answers so far, to hand in (the summary the last step shows).
+    pub record: AnswersStatus,
 }
 
 impl LessonProgress {
-    fn new(lesson: Lesson) -> Self {
+    fn new(lesson: Lesson, text: &str) -> Self {
         let n = lesson.steps.len();
-        Self { lesson, step: 0, active: false, answers: vec![None; n], done: vec![false; n], left: vec![None; n] }
+        let record = Record::new(&lesson, answers::text_hash(text));
+        Self { lesson, step: 0, active: false, answers: vec![None; n], done: vec![false; n], left: vec![None; n], record }
+    }
+
+    /// The lesson.
+    pub fn lesson(&self) -> &Lesson {
+        &self.lesson
+    }
+
+    /// The step shown (0-based) while the lesson is open.
+    pub fn open_step(&self) -> Option<usize> {
+        self.active.then_some(self.step)
+    }
+
+    /// In student mode, the step shown lets the answers be seen: its teacher says so
+    /// (`answers: shown`), or it asks something and the student has answered it (and met its goal).
+    pub(super) fn answers_revealed_here(&self) -> bool {
+        let s = &self.lesson.steps[self.step];
+        self.active && (s.answers_shown || ((s.question.is_some() || s.goal.is_some()) && self.revealed(self.step)))
     }
 
     /// The answer of step `i` may be shown.
@@ -91,16 +114,16 @@ impl Session {
     /// Opens the lesson at `step` (0-based; the last step if beyond): the step's settings, run from rest.
     pub fn lesson_open(&mut self, step: usize) -> Result<(), Error> {
         if self.lesson.is_none() {
-            let parsed = match &self.lesson_text {
-                Some(text) => lesson::parse(text)?,
+            let text: &str = match &self.lesson_text {
+                Some(text) => text,
                 #[cfg(not(target_arch = "wasm32"))]
-                None => lesson::builtin()?,
+                None => lesson::LESSON_TEXT,
                 #[cfg(target_arch = "wasm32")]
                 None => {
                     return Err(Error::NotReady("the lesson's text did not load (lessons/paper.md, beside the page)"))
                 }
             };
-            self.lesson = Some(LessonProgress::new(parsed));
+            self.lesson = Some(LessonProgress::new(lesson::parse(text)?, text));
         }
         let progress = self.lesson.as_mut().expect("just made");
         progress.active = true;
@@ -144,8 +167,20 @@ impl Session {
             // A prediction is made once: the first answer is the one remembered.
             return Ok(());
         }
+        let entry = Entry {
+            step: step + 1,
+            step_title: s.title.clone(),
+            kind: "prediction".into(),
+            choice: Some(choice + 1),
+            choice_text: q.choices[choice].clone(),
+            result: if choice == q.correct { "right" } else { "wrong" }.into(),
+            state: String::new(),
+            time: String::new(),
+        };
+        let then = s.then.clone();
         progress.answers[step] = Some(choice);
-        match s.then.clone() {
+        self.record(entry);
+        match then {
             Some(state) => self.apply_lesson_state(&state),
             None => Ok(()),
         }
@@ -156,6 +191,11 @@ impl Session {
     /// on screen.
     pub fn lesson_reveal(&mut self) -> Result<(), Error> {
         let (step, _) = self.lesson_position()?;
+        let progress = self.lesson.as_mut().expect("positioned");
+        if !progress.done[step] && progress.lesson.steps[step].goal.is_some() {
+            let entry = task_entry(&progress.lesson, step, "shown");
+            self.record(entry);
+        }
         let progress = self.lesson.as_mut().expect("positioned");
         progress.done[step] = true;
         if let Some(show) = progress.lesson.steps[step].show.clone() {
@@ -182,7 +222,10 @@ impl Session {
         }
         let met = l.lesson.steps[step].goal.as_ref().is_some_and(|g| self.goal_met(g));
         if met {
-            self.lesson.as_mut().expect("active").done[step] = true;
+            let l = self.lesson.as_mut().expect("active");
+            l.done[step] = true;
+            let entry = task_entry(&l.lesson, step, "done");
+            self.record(entry);
         }
     }
 
@@ -219,6 +262,7 @@ impl Session {
             answer: if revealed { s.answer.clone() } else { Vec::new() },
             can_back: i > 0,
             can_next: i + 1 < l.lesson.steps.len(),
+            record: l.record.status(&l.lesson),
         })
     }
 
@@ -309,6 +353,8 @@ impl Session {
         let mut next = Settings::page_start();
         next.view.full = true;
         next.speed = self.settings.speed;
+        // Student mode set by the teacher's link stays on through the steps.
+        next.view.answers_hidden = self.settings.view.answers_hidden;
         next.read(state, Source::Lesson)?;
         self.apply(next, true, "")
     }
@@ -388,10 +434,88 @@ impl Session {
     /// says which line and what is wrong.
     pub fn load_lesson(&mut self, origin: LessonOrigin, bytes: &[u8]) -> Result<(), Error> {
         let (text, parsed) = checked(bytes)?;
-        self.lesson_text = Some(text);
         self.lesson_origin = origin;
-        self.lesson = Some(LessonProgress::new(parsed));
+        self.lesson = Some(LessonProgress::new(parsed, &text));
+        self.lesson_text = Some(text);
         self.lesson_open(0)
+    }
+}
+
+impl Session {
+    /// Gives the session the wall clock (ms since 1970), for the answers' times.
+    pub fn set_wall_clock(&mut self, ms: f64) {
+        self.wall_clock_ms = ms;
+    }
+
+    /// What the student did in the lesson, to hand in (None before the lesson is opened).
+    pub fn answers_record(&self) -> Option<&Record> {
+        self.lesson.as_ref().map(|l| &l.record)
+    }
+
+    /// Gives back a record kept earlier (after a reload): the answers and tasks it holds count as
+    /// given, with their times and states. A record of another lesson or text is refused and
+    /// changes nothing.
+    pub fn restore_answers(&mut self, record: Record) -> Result<(), Error> {
+        let l = self.lesson.as_mut().ok_or_else(|| lesson_error("the lesson is not open"))?;
+        if record.entries.is_empty() {
+            return Ok(());
+        }
+        record.check(&l.lesson, &l.record.lesson_hash)?;
+        for e in &record.entries {
+            let i = e.step - 1;
+            match (e.kind.as_str(), e.choice) {
+                ("prediction", Some(c)) => l.answers[i] = l.answers[i].or(Some(c - 1)),
+                ("task", _) => l.done[i] = true,
+                _ => {}
+            }
+        }
+        l.record.entries = record.entries;
+        Ok(())
+    }
+
+    /// [`Session::restore_answers`] from the CSV the page kept ([`Record::to_csv`]).
+    pub fn restore_answers_csv(&mut self, csv: &str) -> Result<(), Error> {
+        let steps = self.lesson.as_ref().map_or(0, |l| l.lesson.steps.len());
+        self.restore_answers(Record::from_csv(csv, steps)?)
+    }
+
+    /// Forgets every answer and task of the lesson (the page's "Clear my answers"); the step shown
+    /// stays, from its start.
+    pub fn clear_answers(&mut self) -> Result<(), Error> {
+        let l = self.lesson.as_mut().ok_or_else(|| lesson_error("the lesson is not open"))?;
+        let n = l.lesson.steps.len();
+        l.answers = vec![None; n];
+        l.done = vec![false; n];
+        l.left = vec![None; n];
+        l.record.entries.clear();
+        let (step, active) = (l.step, l.active);
+        if active {
+            self.enter(step)?;
+        }
+        Ok(())
+    }
+
+    /// Adds an entry to the record, stamped with the state string and the clock.
+    pub(super) fn record(&mut self, mut entry: Entry) {
+        entry.state = self.state_string();
+        entry.time = answers::iso_time(self.wall_clock_ms);
+        if let Some(l) = self.lesson.as_mut() {
+            l.record.entries.push(entry);
+        }
+    }
+}
+
+/// A task's entry: done by the student, or shown by "Show me".
+fn task_entry(lesson: &Lesson, step: usize, result: &str) -> Entry {
+    Entry {
+        step: step + 1,
+        step_title: lesson.steps[step].title.clone(),
+        kind: "task".into(),
+        choice: None,
+        choice_text: String::new(),
+        result: result.into(),
+        state: String::new(),
+        time: String::new(),
     }
 }
 

@@ -6,9 +6,11 @@
 //! Architecture invariant: no web types; every decision about which change restarts a run, which
 //! settings change ρ or which map is needed is made here, not in the page.
 
+pub mod answers;
 mod changes;
 pub mod controls;
 mod cycle;
+pub mod data;
 pub mod equations;
 pub mod export;
 pub mod lesson;
@@ -21,6 +23,7 @@ mod run_settings;
 pub mod settings;
 pub mod status;
 pub mod story;
+mod student;
 pub mod timeline;
 pub mod view;
 
@@ -76,8 +79,20 @@ pub struct Status {
     pub figure: String,
     /// The zoom on one sampling instant in words (Fig. 2.1; "" when it is not shown).
     pub cycle: String,
-    /// The explanation's live numbers for run A (null while its analysis is missing).
+    /// The explanation's live numbers for run A (null while its analysis is missing, or hidden
+    /// in student mode).
     pub story: Option<story::Story>,
+    /// Student mode: what is hidden now and how to show it (null when nothing is hidden).
+    pub hidden: Option<HiddenStatus>,
+}
+
+/// What student mode hides at this moment, as the page says it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct HiddenStatus {
+    /// "Student mode: the verdict, ρ, … are hidden until you answer this step's question."
+    pub text: String,
+    /// The figures' switches that show nothing while hidden (the page disables them).
+    pub controls: Vec<&'static str>,
 }
 
 /// The stable windows of δ for run A's settings, as the page shows them.
@@ -126,6 +141,10 @@ pub struct Session {
     lesson_text: Option<String>,
     /// Where that text comes from.
     lesson_origin: lesson::LessonOrigin,
+    /// The wall clock the page last gave, ms since 1970 (NaN: none): the answers' times.
+    wall_clock_ms: f64,
+    /// The student lifted student mode for this session ("Show them").
+    answers_shown: bool,
 }
 
 impl Session {
@@ -146,6 +165,8 @@ impl Session {
             lesson: None,
             lesson_text: None,
             lesson_origin: lesson::LessonOrigin::BuiltIn,
+            wall_clock_ms: f64::NAN,
+            answers_shown: false,
         };
         session.maps.show(&session.linear_settings());
         session.maps.enabled = settings.view.shown().map;
@@ -404,7 +425,7 @@ impl Session {
     /// The stable windows as last computed for the current settings (None if stale or failed,
     /// or while a lesson step hides them until its answer).
     pub fn cached_windows(&self) -> Option<&StableWindows> {
-        if self.lesson_hides_windows() {
+        if self.lesson_hides_windows() || self.answers_hidden() {
             return None;
         }
         let key = self.linear_settings().at(0.0, self.settings.a.alpha);
@@ -446,6 +467,10 @@ impl Session {
         if let Some(b) = &self.b {
             runs.push(run_status("B", b));
         }
+        let hidden = self.answers_hidden();
+        if hidden {
+            runs.iter_mut().for_each(status::hide_answers);
+        }
         if self.viewing.is_some() {
             // The readouts of the moment looked at; the verdict and the maxima are the run's.
             for (i, r) in runs.iter_mut().enumerate() {
@@ -466,10 +491,13 @@ impl Session {
                 |p| {
                     let repeating =
                         if self.settings.a.repeat { " — the slew repeating (the paper's slews once)" } else { "" };
-                    format!("{}{repeating}", p.title)
+                    // Student mode: the figure's settings, not what it shows.
+                    format!("{}{repeating}", if hidden { p.settings_title } else { p.title })
                 },
             ),
             maps: maps::MapStatus {
+                // Hidden in student mode: the maps say where ρ < 1.
+                shown: self.maps.status().shown && !hidden,
                 title: match self.settings.view.measure {
                     crate::plot::color::Measure::Rho => "Stability maps ρ(δ, α)".into(),
                     crate::plot::color::Measure::Rate => "Stability maps: ln ρ/δ over (δ, α), 1/s".into(),
@@ -488,7 +516,8 @@ impl Session {
                 c => format!("{} The time plots are zoomed on one sampling instant. {c}", self.figure_text()),
             },
             cycle,
-            story: story::story(&self.a),
+            story: if hidden { None } else { story::story(&self.a) },
+            hidden: hidden.then(|| self.hidden_status()),
         }
     }
 

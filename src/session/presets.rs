@@ -9,6 +9,8 @@ pub struct Preset {
     pub id: &'static str,
     /// One-line description for a student.
     pub title: &'static str,
+    /// The same without what it shows (student mode: the settings only, no verdict).
+    pub settings_title: &'static str,
     /// The settings it makes, as a state string.
     pub state: &'static str,
 }
@@ -20,26 +22,31 @@ pub const PRESETS: [Preset; 5] = [
     Preset {
         id: "fig5.1",
         title: "Fig. 5.1: δ = 0.04 s with preliminary feedback (satisfactory errors)",
+        settings_title: "Fig. 5.1: δ = 0.04 s with preliminary feedback",
         state: "arm=paper&delta=0.04&alpha=2&pf=paper&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "fig5.2",
         title: "Fig. 5.2: δ = 0.01 s with preliminary feedback (smaller errors)",
+        settings_title: "Fig. 5.2: δ = 0.01 s with preliminary feedback",
         state: "arm=paper&delta=0.01&alpha=2&pf=paper&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "fig5.3",
         title: "Fig. 5.3: δ = 0.01 s without preliminary feedback (unstable)",
+        settings_title: "Fig. 5.3: δ = 0.01 s without preliminary feedback",
         state: "arm=paper&delta=0.01&alpha=2&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "large-delta",
         title: "Large δ works without preliminary feedback (δ = 0.06 s)",
+        settings_title: "δ = 0.06 s without preliminary feedback",
         state: "arm=paper&delta=0.06&alpha=2&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
     Preset {
         id: "small-alpha",
         title: "Smaller α slows the growth (α = 0.5, no preliminary feedback)",
+        settings_title: "α = 0.5, no preliminary feedback",
         state: "arm=paper&delta=0.01&alpha=0.5&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
     },
 ];

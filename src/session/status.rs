@@ -450,6 +450,25 @@ pub fn judge(
     Judgement { verdict, headline, detail, observed, measured, rho: rho_line }
 }
 
+/// What a student in student mode (`answers=hidden`) may not see yet: the verdict and ρ, the
+/// observation (it says whether the simulation agrees with ρ), the growth rates and A4. What the
+/// figure shows (the errors, the torques, the time) stays; the words say what is hidden, for the
+/// eye and the screen reader alike.
+pub fn hide_answers(r: &mut RunStatus) {
+    const HIDDEN: &str = "hidden until you answer";
+    r.verdict = "hidden";
+    r.headline = "Verdict hidden";
+    r.detail = "student mode: the verdict and ρ wait for your answer".into();
+    r.observed = "Watch the errors: do they grow or die out?".into();
+    r.measured = false;
+    r.rho = format!("linear analysis: {HIDDEN}");
+    r.spectral_radius = None;
+    r.growth_rate = None;
+    r.announce = format!("Run {}: the verdict is hidden until you answer.", r.run);
+    r.readouts.growth = HIDDEN.into();
+    r.readouts.a4 = HIDDEN.into();
+}
+
 /// The status of `run`, named `name`.
 pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     let sim = run.closed_loop();
@@ -539,7 +558,8 @@ impl super::Session {
     /// The figure in words, for screen readers (the canvas' description): what it shows, at
     /// which instant, the verdict and the newest numbers of each run.
     pub fn figure_text(&self) -> String {
-        let v = self.settings().view.shown();
+        let v = self.drawn_view();
+        let hidden = self.answers_hidden();
         let mut shown = vec!["the arm (top view)", "the tracking errors e1, e2 over time"];
         if v.torque {
             shown.push("the torques");
@@ -561,7 +581,10 @@ impl super::Session {
         let mut text = format!("The figure shows {}.", shown.join(", "));
         for (i, run) in self.runs().enumerate() {
             let name = if i == 0 { "A" } else { "B" };
-            let s = run_status(name, run);
+            let mut s = run_status(name, run);
+            if hidden {
+                hide_answers(&mut s);
+            }
             let at = self.shown_snapshot(i).map_or(f64::NAN, |snap| snap.time);
             let when = if self.viewing().is_some() { "looking back at" } else { "at" };
             let who = if self.run(1).is_some() { format!("Run {name} ({}): ", s.settings) } else { String::new() };

@@ -30,10 +30,12 @@ pub struct ViewSettings {
     pub embed: bool,
     /// The time plots' window, s.
     pub window: f64,
+    /// Student mode (`answers=hidden`): what gives the answer away waits for the student's answer.
+    pub answers_hidden: bool,
 }
 
 /// The view parameters, in the order the state string writes them.
-pub(super) const VIEW_PARAMS: [&Param; 13] = [
+pub(super) const VIEW_PARAMS: [&Param; 14] = [
     &schema::MODE,
     &schema::EMBED,
     &schema::WINDOW,
@@ -47,6 +49,7 @@ pub(super) const VIEW_PARAMS: [&Param; 13] = [
     &schema::LOG,
     &schema::PREDICT,
     &schema::SWING,
+    &schema::ANSWERS,
 ];
 
 impl Default for ViewSettings {
@@ -65,6 +68,7 @@ impl Default for ViewSettings {
             tab: "run",
             embed: false,
             window: 10.0,
+            answers_hidden: false,
         };
         for p in VIEW_PARAMS {
             v.set(p.key, p.default_value());
@@ -90,6 +94,7 @@ impl ViewSettings {
             "log" => Value::Switch(self.log),
             "predict" => Value::Switch(self.predict),
             "swing" => Value::Switch(self.swing),
+            "answers" => Value::Choice(if self.answers_hidden { "hidden" } else { "shown" }),
             _ => return None,
         })
     }
@@ -110,6 +115,7 @@ impl ViewSettings {
             ("log", Value::Switch(b)) => self.log = b,
             ("predict", Value::Switch(b)) => self.predict = b,
             ("swing", Value::Switch(b)) => self.swing = b,
+            ("answers", Value::Choice(a)) => self.answers_hidden = a == "hidden",
             _ => return false,
         }
         true

@@ -40,6 +40,8 @@ pub struct ViewOptions {
     pub show_swing: bool,
     /// The view a narrow canvas shows.
     pub tab: Tab,
+    /// Student mode: what the analysis predicts (the slope ln ρ/δ on log |e|) is not drawn.
+    pub hide_prediction: bool,
 }
 
 impl Default for ViewOptions {
@@ -57,6 +59,7 @@ impl Default for ViewOptions {
             show_cycle: false,
             show_swing: false,
             tab: Tab::Run,
+            hide_prediction: false,
         }
     }
 }

@@ -5,6 +5,8 @@
 //! A Rust panic is reported to the page through `window.flexarmPanic(message)` if the page
 //! defines it.
 
+mod answers;
+mod data;
 mod gpu;
 pub mod renderer;
 pub mod session;

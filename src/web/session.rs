@@ -121,6 +121,11 @@ impl WebSession {
         &self.inner
     }
 
+    /// The core session, to change (for the binding's other files).
+    pub(super) fn session_mut(&mut self) -> &mut Session {
+        &mut self.inner
+    }
+
     fn run(&self, index: usize) -> Result<&crate::session::Run, JsError> {
         self.inner.run(index).ok_or_else(|| JsError::new(&format!("no run {index}: 0 is A, 1 is B when comparing")))
     }

@@ -1,5 +1,6 @@
-// End-to-end test of the page's exports: the PNG of the figure, the WebM video, the SVG figures
-// and the embed snippet, each checked from the file the browser offers.
+// End-to-end test of the page's exports: the PNG of the figure, the WebM video, the SVG figures,
+// the embed snippet, the Python script and the data behind the figures (JSON, CSV), each checked
+// from the file the browser offers.
 // Run: node --test tests/e2e/export.test.mjs (needs the wasm in www/pkg, like page.test.mjs).
 
 import { test } from 'node:test';
@@ -130,6 +131,57 @@ test('the model as a Python script: downloaded, and run with NumPy and SciPy it 
     assert.ok(verdict.includes(`ρ = ${result.spectral_radius.toFixed(4)}`), `${verdict} vs ${result.spectral_radius}`);
     console.log(`# the script's ρ = ${result.spectral_radius.toFixed(6)}; the page says "${verdict.slice(0, 40)}…"`);
   }
+  assert.deepEqual(problems, []);
+  await close();
+});
+
+test('the data behind the figures: JSON and CSV downloads with the state string, units and the page\'s ρ; the maps once computed', { timeout: 180000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, PAGE);
+  await page.waitForTimeout(500);
+  const json = await clickForDownload(page, '#export-data-json');
+  assert.equal(json.name, 'flexarm-data.json');
+  const data = JSON.parse(json.bytes.toString('utf8'));
+  const q = data.quantities;
+  console.log(`# data JSON ${kB(json.bytes)}: ${Object.keys(q).join(', ')}`);
+  assert.ok(data.state.startsWith('delta=0.01&alpha=2&pf=off'), data.state);
+  assert.ok(data.head.includes(`flexarm state: ${data.state}`), data.head.join('\n'));
+  assert.match(await page.textContent('#export-status'), /flexarm-data\.json/);
+  // The page's verdict quotes the same ρ; the largest |λ| listed is it.
+  const rho = q.loop.values[q.loop.rows.indexOf('spectral_radius')][0];
+  const verdict = await page.textContent('#verdict-detail');
+  assert.ok(verdict.includes(`ρ = ${rho.toFixed(4)}`), `${verdict} vs ${rho}`);
+  assert.deepEqual(q.eigenvalues.columns, ['re', 'im', 'abs', 's_re', 's_im']);
+  assert.equal(q.eigenvalues.values.length, 10);
+  assert.equal(Math.max(...q.eigenvalues.values.map((/** @type {number[]} */ e) => e[2])), rho);
+  assert.deepEqual([q.Phi.rows.length, q.Phi.columns.length], [10, 10]);
+  assert.equal(q.A.units[3][0], '1/s²');
+  assert.ok(q.K_pr.values.flat().every((/** @type {number} */ v) => v === 0), 'no preliminary feedback: K_pr = 0');
+  assert.deepEqual(q.rho_curve.columns, ['delta', 'rho']);
+  assert.ok(q.rho_curve.values.length >= 100);
+
+  const csv = await clickForDownload(page, '#export-data-csv');
+  assert.equal(csv.name, 'flexarm-data.csv');
+  const lines = csv.bytes.toString('utf8').trimEnd().split('\n');
+  console.log(`# data CSV ${kB(csv.bytes)}, ${lines.length} lines`);
+  const head = lines.filter((l) => l.startsWith('#'));
+  assert.ok(head.includes(`# flexarm state: ${data.state}`), head.join('\n'));
+  assert.ok(head.some((l) => l.includes('[rad/s]') && l.includes('[N m]')), 'the head names the units');
+  assert.equal(lines[head.length], 'quantity,i,j,row,column,value,unit');
+  const rows = lines.slice(head.length + 1).map((l) => l.split(','));
+  assert.ok(rows.every((r) => r.length === 7 && r[6] !== ''), 'seven cells and a unit on every row');
+  assert.equal(Number(rows.find((r) => r[0] === 'loop' && r[3] === 'spectral_radius')?.[5]), rho);
+  const a = rows.filter((r) => r[0] === 'A');
+  assert.equal(a.length, 64);
+  assert.equal(Number(a.find((r) => r[1] === '3' && r[2] === '0')?.[5]), q.A.values[3][0]);
+
+  // Once the maps are computed the data has them whole.
+  await page.waitForFunction(() => document.querySelector('#map-progress').dataset.done === 'true', null, { timeout: 100000 });
+  const full = JSON.parse((await clickForDownload(page, '#export-data-json')).bytes.toString('utf8'));
+  for (const side of ['map_off', 'map_on']) {
+    assert.deepEqual([full.quantities[side].values.length, full.quantities[side].columns.length], [60, 100], side);
+  }
+  assert.ok(!full.head.some((/** @type {string} */ l) => l.startsWith('omitted')), full.head.join('\n'));
+  assert.ok(full.head.some((/** @type {string} */ l) => l.includes('map_on paper')), 'the right map has the paper\'s K_pr');
   assert.deepEqual(problems, []);
   await close();
 });

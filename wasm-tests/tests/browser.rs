@@ -144,9 +144,31 @@ fn traces_are_typed_arrays() {
     let e1 = session.trace(0, "e1").map_err(JsValue::from).unwrap();
     assert_eq!(t.length(), e1.length());
     assert!(t.length() > 50);
+    // The velocities are columns too; the reference is q1_ref, not a `qd1` beside them.
+    assert_eq!(session.trace(0, "q1_dot").map_err(JsValue::from).unwrap().length(), t.length());
+    assert!(session.trace(0, "q1_ref").is_ok() && session.trace(0, "qd1").is_err());
     let csv = session.csv();
     assert!(csv.starts_with("# flexarm state: delta=0.01&"), "{}", &csv[..60]);
-    assert!(csv.lines().nth(1).unwrap().starts_with("t [s],"));
+    assert!(csv.lines().nth(1).unwrap().starts_with("# columns: "));
+    assert!(csv.lines().nth(2).unwrap().starts_with("t [s],"));
+}
+
+/// The data behind the figures from the wasm build: the long table headed by the state string,
+/// its ρ the one the analysis reports.
+#[wasm_bindgen_test]
+fn the_data_behind_the_figures_is_a_long_table() {
+    let session = WebSession::new(&state(0.01, 2.0, "off"), None, None, None);
+    let csv = session.data_csv().map_err(JsValue::from).unwrap();
+    assert!(csv.lines().any(|l| l.starts_with("# flexarm state: delta=0.01&alpha=2&pf=off")), "{}", &csv[..200]);
+    assert!(csv.lines().any(|l| l == "quantity,i,j,row,column,value,unit"));
+    let rho: f64 = csv
+        .lines()
+        .find(|l| l.starts_with("loop,0,0,spectral_radius,"))
+        .and_then(|l| l.split(',').nth(5))
+        .and_then(|v| v.parse().ok())
+        .expect("ρ in the table");
+    let analysis = session.analysis(0).map_err(JsValue::from).unwrap();
+    assert_eq!(rho, number(&analysis, "spectral_radius"));
 }
 
 /// The maps computed in chunks by the wasm build: ρ agrees with single-point evaluations, and
@@ -200,4 +222,38 @@ fn a_teachers_lesson_and_the_python_script_in_the_page() {
     let script = session.python_script(template).map_err(JsValue::from).unwrap();
     assert!(script.starts_with("#!/usr/bin/env python3") && script.contains("DELTA = 0.01"));
     assert!(session.python_script("").is_err(), "no template, no script");
+}
+
+/// Answers to hand in and student mode through the wasm binding: an answer is recorded, the CSV
+/// the page keeps reads back into a new session (a reload), a record of another text is refused
+/// with a readable error, and `answers=hidden` hides the verdict until "Show them".
+#[wasm_bindgen_test]
+fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
+    let homework = include_bytes!("../../www/lessons/windows.md").to_vec();
+    let query = "lesson_src=lessons/windows.md&lesson=1&answers=hidden";
+    let mut session = WebSession::new(query, None, Some("lessons/windows.md".into()), Some(homework.clone()));
+    let status = session.status().map_err(JsValue::from).unwrap();
+    let runs = js_sys::Array::from(&get(&status, "runs"));
+    assert_eq!(verdict(&runs.get(0)), "hidden");
+    assert!(!get(&status, "hidden").is_null());
+    session.set_wall_clock(1_795_669_380_000.0);
+    session.lesson_answer(2).map_err(JsValue::from).unwrap();
+    let csv = session.answers_csv();
+    assert!(csv.contains(",1,Where does the controller alone work?,prediction,3,") && csv.contains("2026-11-26T05:03:00Z"), "{csv}");
+    let status = session.status().map_err(JsValue::from).unwrap();
+    assert_ne!(verdict(&js_sys::Array::from(&get(&status, "runs")).get(0)), "hidden", "answered: shown");
+
+    let mut reloaded = WebSession::new(query, None, Some("lessons/windows.md".into()), Some(homework));
+    reloaded.restore_answers(&csv).map_err(JsValue::from).unwrap();
+    assert_eq!(reloaded.answers_csv(), csv);
+    let mut other = WebSession::new("lesson=1", Some(flexarm_lesson()), None, None);
+    let e = other.restore_answers(&csv).map_err(error_message).unwrap_err();
+    assert!(e.contains("another text of the lesson"), "{e}");
+    reloaded.show_answers();
+    let status = reloaded.status().map_err(JsValue::from).unwrap();
+    assert!(get(&status, "hidden").is_null());
+}
+
+fn flexarm_lesson() -> String {
+    include_str!("../../www/lessons/paper.md").to_string()
 }

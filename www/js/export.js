@@ -1,6 +1,7 @@
 // Export of what is on screen: a PNG of the figure with a caption line, a WebM video of a run,
-// the SVG figures Rust writes, and the embed snippet. The picture is composited here (the wgpu
-// canvas, the HTML labels over it, a caption); what the SVGs and the snippet say is Rust's.
+// the SVG figures Rust writes, the data behind the figures (JSON, CSV) and the embed snippet.
+// The picture is composited here (the wgpu canvas, the HTML labels over it, a caption); what the
+// SVGs, the data and the snippet say is Rust's.
 
 import { byId, messageOf, setText } from './dom.js';
 
@@ -74,6 +75,52 @@ export function baselineIn(top, lineHeight, ascent, descent) {
 export function isTransparent(colour) {
   const c = colour.replace(/\s+/g, '');
   return c === '' || c === 'transparent' || /^rgba\(\d+,\d+,\d+,0(\.0*)?\)$/.test(c) || /\/0(\.0*)?\)$/.test(c);
+}
+
+/**
+ * The data behind the figures (the long CSV Rust writes: `# ` lines, then
+ * `quantity,i,j,row,column,value,unit`) reshaped into the JSON `flexarm data --json` prints:
+ * `{head, state, quantities: {NAME: {rows, columns, values, units}}}`, one table per quantity,
+ * non-finite numbers null. @param {string} csv
+ */
+export function dataJsonFromCsv(csv) {
+  /** @type {string[]} */
+  const head = [];
+  /** @type {Record<string, {rows: string[], columns: string[], values: (number | null)[][], units: string[][]}>} */
+  const quantities = {};
+  let header = true;
+  for (const line of csv.split('\n')) {
+    if (line.startsWith('# ')) {
+      head.push(line.slice(2));
+    } else if (header) {
+      header = false; // the columns' names
+    } else if (line) {
+      const [quantity, i, j, row, column, value, unit] = line.split(',');
+      const t = (quantities[quantity] ??= { rows: [], columns: [], values: [], units: [] });
+      const [r, c] = [Number(i), Number(j)];
+      if (t.rows.length === r) {
+        t.rows.push(row);
+        t.values.push([]);
+        t.units.push([]);
+      }
+      if (t.columns.length === c) t.columns.push(column);
+      const v = Number(value);
+      t.values[r].push(Number.isFinite(v) ? v : null);
+      t.units[r].push(unit);
+    }
+  }
+  const state = head.find((l) => l.startsWith('flexarm state: '))?.slice('flexarm state: '.length) ?? '';
+  return { head, state, quantities };
+}
+
+/** The same as JSON text, indented. @param {string} csv */
+export function dataJsonText(csv) {
+  return `${JSON.stringify(dataJsonFromCsv(csv), null, 1)}\n`;
+}
+
+/** What a data file lacks while the maps are unfinished (or hidden, and so not computed), else "". @param {any} session */
+function mapsNote(session) {
+  return session.status().maps.done ? '' : ', with the stability maps only as far as they are computed (see "omitted" in it)';
 }
 
 /** The canvas font of a computed style (size in CSS px: the context is scaled). @param {CSSStyleDeclaration} s */
@@ -198,6 +245,14 @@ export function createExport(on) {
     }
     on.download('flexarm-maps.svg', svg, 'image/svg+xml');
     say('Saved flexarm-maps.svg.');
+  }));
+  byId('export-data-json').addEventListener('click', guarded('Saving the data failed', () => {
+    on.download('flexarm-data.json', dataJsonText(on.session.dataCsv()), 'application/json');
+    say(`Saved flexarm-data.json${mapsNote(on.session)}.`);
+  }));
+  byId('export-data-csv').addEventListener('click', guarded('Saving the data failed', () => {
+    on.download('flexarm-data.csv', on.session.dataCsv(), 'text/csv');
+    say(`Saved flexarm-data.csv${mapsNote(on.session)}.`);
   }));
   byId('embed-snippet').addEventListener('click', guarded('Making the embed snippet failed', () => showEmbed(on.session.embedSnippet(window.location.href), say)));
 }

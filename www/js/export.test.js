@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { VIDEO_TYPES, baselineIn, captionText, figureSize, firstSupported, fitText, formatElapsed, isTransparent } from './export.js';
+import { VIDEO_TYPES, baselineIn, captionText, dataJsonFromCsv, dataJsonText, figureSize, firstSupported, fitText, formatElapsed, isTransparent } from './export.js';
 
 /** A monospace measure: 7 px a character. */
 const mono = (/** @type {string} */ s) => 7 * Array.from(s).length;
@@ -57,4 +57,32 @@ test('the baseline sits half the leading below the line top, then the ascent', (
 test('transparent colours are recognised', () => {
   for (const c of ['transparent', 'rgba(0, 0, 0, 0)', 'rgb(0 0 0 / 0)', '']) assert.ok(isTransparent(c), c);
   for (const c of ['rgb(255, 255, 255)', 'rgba(255, 255, 255, 0.85)', '#fff']) assert.ok(!isTransparent(c), c);
+});
+
+test('the data as JSON: one table per quantity, rows and columns as written, non-finite numbers null', () => {
+  const csv = [
+    '# flexarm: the numbers behind every figure',
+    '# flexarm state: delta=0.01&pf=off',
+    'quantity,i,j,row,column,value,unit',
+    'K_pr,0,0,T1,q1,1.023e2,N m/rad',
+    'K_pr,0,1,T1,q2_dot,-1e-1,N m s/rad',
+    'K_pr,1,0,T2,q1,1.617e1,N m/rad',
+    'K_pr,1,1,T2,q2_dot,-2e-2,N m s/rad',
+    'rho_curve,0,0,0,delta,2e-3,s',
+    'rho_curve,0,1,0,rho,NaN,1',
+    '',
+  ].join('\n');
+  const data = dataJsonFromCsv(csv);
+  assert.equal(data.state, 'delta=0.01&pf=off');
+  assert.deepEqual(data.head, ['flexarm: the numbers behind every figure', 'flexarm state: delta=0.01&pf=off']);
+  assert.deepEqual(data.quantities.K_pr, {
+    rows: ['T1', 'T2'],
+    columns: ['q1', 'q2_dot'],
+    values: [[102.3, -0.1], [16.17, -0.02]],
+    units: [['N m/rad', 'N m s/rad'], ['N m/rad', 'N m s/rad']],
+  });
+  assert.deepEqual(data.quantities.rho_curve.values, [[0.002, null]]);
+  const text = dataJsonText(csv);
+  assert.ok(text.endsWith('}\n'));
+  assert.deepEqual(JSON.parse(text), JSON.parse(JSON.stringify(data)));
 });

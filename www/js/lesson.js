@@ -8,7 +8,8 @@ import { byId, make, setText } from './dom.js';
  * @typedef {{ prompt: string, choices: string[], chosen: number | null, correct: number | null }} Question
  * @typedef {{ lesson_title: string, source: string, steps: string[], index: number, title: string, text: string[],
  *   terms: { term: string, definition: string }[], task: string | null, done: boolean,
- *   question: Question | null, answer: string[], can_back: boolean, can_next: boolean }} LessonStatus
+ *   question: Question | null, answer: string[], can_back: boolean, can_next: boolean,
+ *   record: import('./answers.js').AnswersStatus }} LessonStatus
  */
 
 /** How a choice is marked once the student has chosen (pure): its words for a screen reader too. */

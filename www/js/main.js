@@ -14,6 +14,7 @@ import { createLoop } from './loop.js';
 import { wireTryButtons } from './explain.js';
 import { wireKeys } from './keys.js';
 import { noticeLines, writeUrl } from './url.js';
+import { createAnswers } from './answers.js';
 import { createLesson } from './lesson.js';
 import { createTimeline } from './timeline.js';
 import { createTabs } from './tabs.js';
@@ -224,6 +225,7 @@ async function main() {
   // ---------------------------------------------------------------- the lesson and the timeline
   /** A lesson action: the settings it makes, played from the start. */
   const lessonDo = (/** @type {() => void} */ fn) => {
+    session.setWallClock(Date.now());
     change(fn);
     store.dispatch({ type: 'play' });
     refreshStatus();
@@ -251,7 +253,18 @@ async function main() {
       showFigure();
     },
     reveal: () => {
+      session.setWallClock(Date.now());
       guard('Lesson', () => session.lessonReveal());
+      refreshStatus();
+    },
+  });
+  const answers = createAnswers({
+    session,
+    presets: wasm.presets(),
+    report: (what, e) => errors.report(what, e),
+    download,
+    changed: () => {
+      loop.touch();
       refreshStatus();
     },
   });
@@ -327,6 +340,8 @@ async function main() {
   const zoomCaption = byId('zoom-caption');
   let lessonShown = false;
   function refreshStatus() {
+    // The clock the answers' record stamps a task with when the session sees it done.
+    session.setWallClock(Date.now());
     const s = guard('Status', () => session.status(), null);
     if (!s) return;
     setText(figureDescription, s.figure);
@@ -341,6 +356,7 @@ async function main() {
     status.render(s, performance.now());
     status.renderLegend(s, layout?.series ?? []);
     lesson.render(s.lesson);
+    answers.sync(s.lesson, s.hidden);
     timeline.render(s.timeline);
   }
 

@@ -10,7 +10,7 @@ import { createRunView } from './run.js';
  *   maps: { percent: number, done: boolean, text: string, points: number, shown: boolean, title: string },
  *   windows: { text: string, windows: number[][], bands: number[][] } | null,
  *   timeline: import('./timeline.js').TimelineStatus, lesson: import('./lesson.js').LessonStatus | null,
- *   story: Record<string, string> | null }} Status
+ *   story: Record<string, string> | null, hidden: { text: string, controls: string[] } | null }} Status
  * @typedef {{ run: string, color: string, style: string, pole_marker: string }} Series
  */
 

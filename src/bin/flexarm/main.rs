@@ -7,7 +7,9 @@
 //! * `flexarm sweep` tabulates ρ (and optionally simulation verdicts) over lists of δ and α,
 //! * `flexarm map` computes ρ on a logarithmic (δ, α) grid without and/or with preliminary
 //!   feedback, summarizes it, and writes it as CSV, JSON or an SVG figure,
-//! * `flexarm export-python` writes the model as a Python script (NumPy, SciPy).
+//! * `flexarm export-python` writes the model as a Python script (NumPy, SciPy),
+//! * `flexarm data` writes the numbers behind every figure (model, A, B, C, D, Φ, eigenvalues, ρ(δ),
+//!   the maps) as JSON or one long CSV.
 //!
 //! The flags of the run settings come from the schema ([`flexarm::schema`]), as do their ranges
 //! and error messages. Bad input — including an output path that cannot be written — prints one
@@ -15,6 +17,7 @@
 
 mod analyze;
 mod cli;
+mod data;
 mod export_python;
 mod long_work;
 mod map;
@@ -37,7 +40,14 @@ const AFTER: &str = "ρ is the spectral radius of the one-period map linearized 
                      'flexarm COMMAND --help' describes one command.";
 
 fn commands() -> Vec<Command> {
-    vec![simulate::command(), analyze::command(), sweep::command(), map::command(), export_python::command()]
+    vec![
+        simulate::command(),
+        analyze::command(),
+        sweep::command(),
+        map::command(),
+        export_python::command(),
+        data::command(),
+    ]
 }
 
 fn root() -> Command {
@@ -102,7 +112,7 @@ fn run(args: Vec<String>) -> Res<String> {
                 }
                 ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
                     Err(cli::usage_error(
-                        "no command given: use simulate, analyze, sweep, map, export-python or help (see 'flexarm --help')",
+                        "no command given: use simulate, analyze, sweep, map, export-python, data or help (see 'flexarm --help')",
                     ))
                 }
                 _ => Err(cli::usage_error(one_line(&e, command.as_deref()))),
@@ -115,12 +125,13 @@ fn run(args: Vec<String>) -> Res<String> {
         Some(("sweep", m)) => sweep::run(m),
         Some(("map", m)) => map::run(m),
         Some(("export-python", m)) => export_python::run(m),
+        Some(("data", m)) => data::run(m),
         Some(("help", m)) => match m.get_one::<String>("command") {
             None => Ok(overview()),
             Some(name) => match commands().into_iter().find(|c| c.get_name() == name) {
                 Some(mut c) => Ok(c.render_help().to_string()),
                 None => Err(cli::usage_error(format!(
-                    "unknown command '{name}': use simulate, analyze, sweep, map or export-python"
+                    "unknown command '{name}': use simulate, analyze, sweep, map, export-python or data"
                 ))),
             },
         },

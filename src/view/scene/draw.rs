@@ -112,7 +112,7 @@ impl Scene {
             if log && run == 0 {
                 self.draw_swing(&frame);
             }
-            if log {
+            if log && !self.options.hide_prediction {
                 self.draw_predicted_slope(&frame, state, panel.kind, run);
             }
         }

@@ -208,7 +208,7 @@ impl Scene {
                     info.y_scale = "log";
                     info.y_ticks = Decades::new(info.y_range[0], info.y_range[1]).collect();
                     info.y_labels = log_labels(&info.y_ticks, info.y_range, r.h, LOG_LABEL_SPACING[1]);
-                    if panel.kind == PanelKind::Error1 {
+                    if panel.kind == PanelKind::Error1 && !self.options.hide_prediction {
                         info.note = "dashed: slope ln ρ/δ; as the analysis predicts".into();
                     }
                 } else {

@@ -230,6 +230,7 @@ impl Scene {
             show_cycle: v.predict,
             show_swing: v.swing,
             tab: Tab::from_id(v.tab).unwrap_or_default(),
+            hide_prediction: v.answers_hidden,
             time_window: if v.window.is_finite() && v.window > 0.0 {
                 v.window.min(MAX_TIME_WINDOW)
             } else {

@@ -169,12 +169,15 @@ impl Scene {
                 // One motion, three numbers: say which this is.
                 lines.push(TipLine::plain("the flexible pair: the joint's resonance in this loop, at this δ"));
             }
-            lines.push(if pole.unstable {
-                TipLine::toned("unstable: |λ| > 1 (Re s > 0), it grows", false)
-            } else {
-                TipLine::toned("stable: |λ| < 1 (Re s < 0), it decays", true)
-            });
-        } else {
+            // Student mode: the numbers to read, not the verdict they give.
+            if !self.options.hide_prediction {
+                lines.push(if pole.unstable {
+                    TipLine::toned("unstable: |λ| > 1 (Re s > 0), it grows", false)
+                } else {
+                    TipLine::toned("stable: |λ| < 1 (Re s < 0), it decays", true)
+                });
+            }
+        } else if !self.options.hide_prediction {
             // A limit, not an eigenvalue of this loop: its sign says what happens as δ → 0.
             if self.layout.panels.iter().any(|p| p.kind == PanelKind::ZPlane) {
                 lines.push(TipLine::plain("drawn at e^(A4 δ): not an eigenvalue of this loop"));

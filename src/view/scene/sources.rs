@@ -30,7 +30,7 @@ impl Scene {
     /// Builds the frame for a session: run A, and run B beside it when comparing, with their
     /// analyses, and the session's maps (copied only when they have new rows).
     pub fn draw_session(&mut self, session: &Session) -> &[Vertex] {
-        self.follow_view(&session.settings().view);
+        self.follow_view(&session.drawn_view());
         self.sync_maps(session);
         let a = session.run(0).expect("a session always has run A");
         self.cursor = session.viewing();

@@ -1,0 +1,72 @@
+//! Student mode for homework and exams (`answers=hidden` in a link, or `answers: hidden` under a
+//! lesson's title): what gives the answer away — the verdict and ρ, the stable windows of δ, ρ(δ),
+//! the stability maps and the predicted slope — stays hidden until the student has committed an
+//! answer to the lesson step's question (and met its goal), or the teacher's step shows them
+//! (`answers: shown`). The page says what is hidden and how to show it; the student may lift it
+//! ("Show them"), and the answers' record says so.
+
+use super::answers::Entry;
+use super::{HiddenStatus, Session, ViewSettings};
+
+impl Session {
+    /// Student mode is on: set by the link or the lesson, not lifted by the student.
+    pub fn student_mode(&self) -> bool {
+        let by_lesson = self.lesson.as_ref().is_some_and(|l| l.lesson().answers_hidden);
+        (self.settings.view.answers_hidden || by_lesson) && !self.answers_shown
+    }
+
+    /// What gives the answer away is hidden now: student mode, and the lesson step shown has not
+    /// been answered (outside the lesson, always).
+    pub fn answers_hidden(&self) -> bool {
+        self.student_mode() && !self.lesson.as_ref().is_some_and(|l| l.answers_revealed_here())
+    }
+
+    /// The figures drawn: the view's, without ρ(δ) and the maps while the answers are hidden.
+    pub fn drawn_view(&self) -> ViewSettings {
+        let v = self.settings.view.shown();
+        if self.answers_hidden() {
+            ViewSettings { rho: false, map: false, answers_hidden: true, ..v }
+        } else {
+            ViewSettings { answers_hidden: false, ..v }
+        }
+    }
+
+    /// What the page says while the answers are hidden.
+    pub(super) fn hidden_status(&self) -> HiddenStatus {
+        let hidden = "the verdict, ρ, the stable windows of δ, ρ(δ), the stability maps and the predicted slope";
+        let lesson = self.lesson.as_ref().and_then(|l| l.open_step().map(|i| &l.lesson().steps[i]));
+        let until = match lesson {
+            Some(s) if s.question.is_some() => "until you answer this step's question",
+            Some(s) if s.goal.is_some() => "until you have done this step's task",
+            Some(_) => "on this step (a step with a question shows them once you answer)",
+            None => "(open the lesson and answer a step's question to see them)",
+        };
+        HiddenStatus {
+            text: format!("Student mode: {hidden} are hidden {until}. “Show them” shows them now (your answers' record will say so)."),
+            controls: vec!["rho", "map"],
+        }
+    }
+
+    /// The student lifts student mode for this session ("Show them"): everything is shown, and the
+    /// lesson's record, if a lesson is open, says so.
+    pub fn show_answers(&mut self) {
+        if !self.student_mode() {
+            return;
+        }
+        self.answers_shown = true;
+        self.settings.view.answers_hidden = false;
+        if let Some(step) = self.lesson.as_ref().and_then(|l| l.open_step()) {
+            let title = self.lesson.as_ref().expect("open").lesson().steps[step].title.clone();
+            self.record(Entry {
+                step: step + 1,
+                step_title: title,
+                kind: "answers shown".into(),
+                choice: None,
+                choice_text: String::new(),
+                result: "shown".into(),
+                state: String::new(),
+                time: String::new(),
+            });
+        }
+    }
+}

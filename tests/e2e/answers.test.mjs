@@ -1,0 +1,106 @@
+// Answers to hand in and student mode (issue 21, items 2 and 3), in the page: a student's
+// predictions and tasks are summed up at the end of the lesson, downloaded as CSV and JSON (each
+// row with the lesson's title and hash, the step, the choice, right/wrong, the state and the
+// time), kept across a reload in this browser only and cleared by a visible button. With
+// `answers=hidden` the verdict, ρ, the windows and the maps are hidden — for the eye and the screen
+// reader alike — until the step's question is answered.
+
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import { shared, openPage, shots, clickForDownload } from './harness.mjs';
+
+const env = shared();
+const HOMEWORK = '?lesson_src=lessons/windows.md';
+
+/** Answers every question with its second choice and presses "Show me" on every task, to the end. */
+async function walk(page) {
+  for (let i = 0; i < 10; i++) {
+    if (await page.isVisible('#lesson-question') && await page.isEnabled('#lesson-choice-1')) await page.check('#lesson-choice-1');
+    if (await page.isVisible('#lesson-reveal')) await page.click('#lesson-reveal');
+    if (await page.isDisabled('#lesson-next')) return;
+    await page.click('#lesson-next');
+  }
+}
+
+test('the answers are summed up at the end, downloaded, kept across a reload and cleared', { timeout: 90000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, HOMEWORK);
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 10000 });
+  // Nothing yet; the summary stays folded before the last step.
+  assert.equal(await page.textContent('#lesson-record-summary'), 'Your answers (0)');
+  assert.equal(await page.$eval('#lesson-record', (d) => /** @type {HTMLDetailsElement} */ (d).open), false);
+  await walk(page);
+  // The last step opens the summary by itself.
+  await page.waitForFunction(() => /** @type {HTMLDetailsElement} */ (document.querySelector('#lesson-record')).open);
+  const headline = await page.textContent('#lesson-record-headline');
+  assert.match(headline ?? '', /^Your predictions: \d of 3 right\. Tasks: 0 of 2 done yourself, 2 shown by “Show me”\.$/);
+  assert.equal(await page.$$eval('#lesson-record-rows li', (li) => li.length), 5);
+  await page.locator('#lesson-record').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(shots, 'answers-summary-laptop.png') });
+
+  const csv = (await clickForDownload(page, '#answers-csv')).bytes.toString('utf8').trim().split('\n');
+  assert.match(csv[0], /^# flexarm lesson answers: Homework: the windows of δ \(fnv1a64:[0-9a-f]{16}, 5 steps\)/);
+  assert.equal(csv[1], 'lesson,lesson_hash,step,step_title,kind,choice,choice_text,result,state,time');
+  assert.equal(csv.length, 2 + 5);
+  for (const row of csv.slice(2)) {
+    assert.match(row, /^Homework: the windows of δ,fnv1a64:[0-9a-f]{16},[1-5],/);
+    assert.match(row, /,(right|wrong|shown|done),[^,]*lesson_src=lessons%2Fwindows\.md&lesson=[1-5],\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ$/);
+  }
+  const json = JSON.parse((await clickForDownload(page, '#answers-json')).bytes.toString('utf8'));
+  // The same rows as the CSV, named by its columns; only the lesson's own data (nothing of the
+  // browser, the page's storage or the user).
+  assert.deepEqual(Object.keys(json).sort(), ['entries', 'head']);
+  assert.equal(json.entries.length, 5);
+  assert.deepEqual(Object.keys(json.entries[0]), csv[1].split(','));
+  assert.ok(json.entries.every((e) => e.lesson === 'Homework: the windows of δ' && /^fnv1a64:/.test(e.lesson_hash)));
+  // A reload gives them back (localStorage, one key per lesson text).
+  await page.reload();
+  await page.waitForFunction(() => document.querySelector('#lesson-record-summary')?.textContent === 'Your answers (5)', null, { timeout: 15000 });
+  const keys = await page.evaluate(() => Object.keys(localStorage));
+  assert.deepEqual(keys.filter((k) => k.startsWith('flexarm.answers.')).length, 1);
+
+  // Clear: asked twice in the button, then gone here and in the browser's memory.
+  await page.click('#answers-clear');
+  assert.equal(await page.textContent('#answers-clear'), 'Click again to clear them all');
+  await page.click('#answers-clear');
+  await page.waitForFunction(() => document.querySelector('#lesson-record-summary')?.textContent === 'Your answers (0)');
+  assert.equal(await page.evaluate(() => Object.keys(localStorage).filter((k) => k.startsWith('flexarm.answers.')).length), 0);
+  assert.deepEqual(problems, []);
+  await close();
+});
+
+test('student mode hides the verdict, ρ, the windows and the maps until the step is answered', { timeout: 90000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, `${HOMEWORK}&answers=hidden&map=1`);
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 10000 });
+  await page.waitForTimeout(1500);
+  const said = async () => page.evaluate(() => [
+    document.querySelector('#verdict')?.textContent,
+    document.querySelector('#verdict-announce')?.textContent,
+    document.querySelector('#figure-description')?.textContent,
+    document.querySelector('#verdict-strip')?.textContent,
+    document.querySelector('#showing')?.textContent,
+  ].join(' | '));
+  const hidden = await said();
+  assert.doesNotMatch(hidden, /ρ = \d|[Uu]nstable|Stable|1\.02\d\d/, hidden);
+  assert.match(await page.textContent('#hidden-text') ?? '', /Student mode: .* hidden until you answer this step's question/);
+  assert.equal(await page.isVisible('#show-answers'), true);
+  assert.equal(await page.isHidden('#delta-windows'), true);
+  assert.equal(await page.$eval('#delta', (s) => s.classList.contains('banded')), false);
+  assert.equal(await page.isDisabled('#map'), true);
+  await page.screenshot({ path: path.join(shots, 'student-mode-hidden-laptop.png') });
+
+  // Answering (right or wrong) shows them.
+  await page.check('#lesson-choice-0');
+  await page.waitForFunction(() => document.querySelector('#hidden-note')?.hasAttribute('hidden'));
+  await page.waitForFunction(() => /ρ = \d/.test(document.querySelector('#verdict')?.textContent ?? ''), null, { timeout: 10000 });
+  assert.match(await said(), /[Uu]nstable/);
+
+  // The next step hides them again; "Show them" lifts student mode and the record says so.
+  await page.click('#lesson-next');
+  await page.waitForSelector('#hidden-note:not([hidden])');
+  await page.click('#show-answers');
+  await page.waitForFunction(() => document.querySelector('#hidden-note')?.hasAttribute('hidden'));
+  await page.waitForFunction(() => /You showed the hidden answers/.test(document.querySelector('#lesson-record-headline')?.textContent ?? ''));
+  assert.deepEqual(problems, []);
+  await close();
+});
