@@ -219,6 +219,9 @@ fn student_mode_hides_what_gives_the_answer_away_until_the_step_is_answered() {
     // The downloads that carry ρ are held back too, with the reason.
     assert!(s.figure_data_csv().unwrap_err().to_string().contains("student mode"));
     assert!(s.svg_maps().unwrap_err().to_string().contains("student mode"));
+    assert!(s.python_script(flexarm::session::python::TEMPLATE).unwrap_err().to_string().contains("student mode"));
+    let drawn = s.drawn_view();
+    assert!(!drawn.poles && !drawn.log && !drawn.swing, "the analysis' figures are not drawn");
     assert!(open.figure_data_csv().is_ok());
 
     // The link keeps student mode, and the state string says so.
@@ -244,9 +247,15 @@ fn in_a_lesson_student_mode_lifts_once_the_step_is_answered_and_says_so_in_the_r
     assert!(!step.answers_shown);
     assert!(s.answers_hidden(), "the next step hides them again");
     s.show_answers();
+    assert!(!s.answers_hidden(), "shown on this step");
     let e = s.answers_record().unwrap().entries.last().unwrap().clone();
     assert_eq!((e.kind.as_str(), e.step), ("answers shown", first + 2));
     assert!(s.status().lesson.unwrap().record.headline.contains("You showed the hidden answers"));
+    // For this step only: the next one hides them again, and student mode stays in the link.
+    if first + 2 < lesson.steps.len() {
+        s.lesson_next().unwrap();
+        assert!(s.answers_hidden() && s.state_string().contains("answers=hidden"));
+    }
 }
 
 #[test]

@@ -207,3 +207,16 @@ fn a_teachers_link_opens_the_lesson_at_once() {
     let l = s.status().lesson.expect("open");
     assert_eq!((l.index, l.source.as_str()), (0, "lessons/windows.md"));
 }
+
+/// The example lesson the page's help shows (www/help.html) is a lesson the page accepts: a
+/// teacher who copies it gets a working file (a cold trial found it refused for having no text).
+#[test]
+fn the_help_pages_example_lesson_reads_and_passes_the_checks() {
+    let help = include_str!("../www/help.html");
+    let start = help.find("<pre><code># ").expect("the help shows an example lesson") + "<pre><code>".len();
+    let end = start + help[start..].find("</code></pre>").unwrap();
+    let text = help[start..end].replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">");
+    let lesson = parse(&text).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    validate(&lesson).unwrap();
+    assert!(lesson.steps[0].question.is_some());
+}

@@ -328,7 +328,9 @@ fn check(title: &str, steps: &[Step]) -> Result<(), Error> {
             return Err(at("no 'state:' line"));
         }
         if s.text.is_empty() {
-            return Err(at("no text"));
+            return Err(at(
+                "no text: a step needs at least one paragraph of prose (a plain line, not a 'key:' line, '? ', '- ', '+ ' or '= ')",
+            ));
         }
         if let Some(q) = &s.question {
             if q.choices.len() < 2 {

@@ -29,6 +29,8 @@ pub struct LessonProgress {
     left: Vec<Option<Settings>>,
     /// What the student did, to hand in.
     record: Record,
+    /// Each step where the student showed the answers student mode hid ("Show them").
+    lifted: Vec<bool>,
 }
 
 /// The question of the step shown, as the page shows it.
@@ -71,7 +73,16 @@ impl LessonProgress {
     fn new(lesson: Lesson, text: &str) -> Self {
         let n = lesson.steps.len();
         let record = Record::new(&lesson, answers::text_hash(text));
-        Self { lesson, step: 0, active: false, answers: vec![None; n], done: vec![false; n], left: vec![None; n], record }
+        Self {
+            lesson,
+            step: 0,
+            active: false,
+            answers: vec![None; n],
+            done: vec![false; n],
+            left: vec![None; n],
+            record,
+            lifted: vec![false; n],
+        }
     }
 
     /// The lesson.
@@ -88,7 +99,15 @@ impl LessonProgress {
     /// (`answers: shown`), or it asks something and the student has answered it (and met its goal).
     pub(super) fn answers_revealed_here(&self) -> bool {
         let s = &self.lesson.steps[self.step];
-        self.active && (s.answers_shown || ((s.question.is_some() || s.goal.is_some()) && self.revealed(self.step)))
+        self.active
+            && (s.answers_shown
+                || self.lifted[self.step]
+                || ((s.question.is_some() || s.goal.is_some()) && self.revealed(self.step)))
+    }
+
+    /// The student showed the hidden answers on step `step` ("Show them").
+    pub(super) fn lift(&mut self, step: usize) {
+        self.lifted[step] = true;
     }
 
     /// The answer of step `i` may be shown.
@@ -466,6 +485,7 @@ impl Session {
             match (e.kind.as_str(), e.choice) {
                 ("prediction", Some(c)) => l.answers[i] = l.answers[i].or(Some(c - 1)),
                 ("task", _) => l.done[i] = true,
+                ("answers shown", _) => l.lifted[i] = true,
                 _ => {}
             }
         }
@@ -487,6 +507,7 @@ impl Session {
         l.answers = vec![None; n];
         l.done = vec![false; n];
         l.left = vec![None; n];
+        l.lifted = vec![false; n];
         l.record.entries.clear();
         let (step, active) = (l.step, l.active);
         if active {

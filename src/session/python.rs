@@ -90,6 +90,10 @@ pub fn python_script(config: &SimulationConfig, rest: [f64; 2], state: &str, tem
 impl Session {
     /// Run A's settings as a Python script, linearized where the analysis is, from `template`.
     pub fn python_script(&self, template: &str) -> Result<String, Error> {
+        if self.answers_hidden() {
+            // The script prints ρ and the verdict: an answer student mode keeps back.
+            return Err(Error::NotReady("student mode holds the Python script back until you answer (it prints ρ)"));
+        }
         let rest = self.linear_settings().rest;
         python_script(&self.settings.a.config(), rest, &self.settings.run_query(), template)
     }

@@ -459,7 +459,12 @@ pub fn hide_answers(r: &mut RunStatus) {
     r.verdict = "hidden";
     r.headline = "Verdict hidden";
     r.detail = "student mode: the verdict and ρ wait for your answer".into();
-    r.observed = "Watch the errors: do they grow or die out?".into();
+    r.observed = if r.finished {
+        // What the run did is on screen: say why it stopped, not what ρ says.
+        "The run stopped: the errors passed π rad. Restart to watch it again.".into()
+    } else {
+        "Watch the errors: do they grow or die out?".into()
+    };
     r.measured = false;
     r.rho = format!("linear analysis: {HIDDEN}");
     r.spectral_radius = None;

@@ -8,6 +8,20 @@
 use super::answers::Entry;
 use super::{HiddenStatus, Session, ViewSettings};
 
+/// The page's controls that show nothing while the answers are hidden (the figures' switches and
+/// the downloads that carry ρ): the page disables them.
+pub const HIDDEN_CONTROLS: [&str; 9] = [
+    "poles",
+    "rho",
+    "map",
+    "log",
+    "swing",
+    "export-python",
+    "export-data-json",
+    "export-data-csv",
+    "export-svg-maps",
+];
+
 impl Session {
     /// Student mode is on: set by the link or the lesson, not lifted by the student.
     pub fn student_mode(&self) -> bool {
@@ -21,11 +35,13 @@ impl Session {
         self.student_mode() && !self.lesson.as_ref().is_some_and(|l| l.answers_revealed_here())
     }
 
-    /// The figures drawn: the view's, without ρ(δ) and the maps while the answers are hidden.
+    /// The figures drawn: while the answers are hidden, only those that show the run itself (the
+    /// arm, the errors, the torques, the zoom on one instant) — not the analysis' (the pole plot,
+    /// ρ(δ), the maps, log |e| with its slope and the swing's split, the swing's shape).
     pub fn drawn_view(&self) -> ViewSettings {
         let v = self.settings.view.shown();
         if self.answers_hidden() {
-            ViewSettings { rho: false, map: false, answers_hidden: true, ..v }
+            ViewSettings { poles: false, rho: false, map: false, log: false, swing: false, answers_hidden: true, ..v }
         } else {
             ViewSettings { answers_hidden: false, ..v }
         }
@@ -33,7 +49,8 @@ impl Session {
 
     /// What the page says while the answers are hidden.
     pub(super) fn hidden_status(&self) -> HiddenStatus {
-        let hidden = "the verdict, ρ, the stable windows of δ, ρ(δ), the stability maps and the predicted slope";
+        let hidden = "the verdict, ρ, the stable windows of δ, the pole plot, ρ(δ), the stability maps, log |e|, the swing's \
+                      shape, the explanation and the data downloads";
         let lesson = self.lesson.as_ref().and_then(|l| l.open_step().map(|i| &l.lesson().steps[i]));
         let until = match lesson {
             Some(s) if s.question.is_some() => "until you answer this step's question",
@@ -41,32 +58,41 @@ impl Session {
             Some(_) => "on this step (a step with a question shows them once you answer)",
             None => "(open the lesson and answer a step's question to see them)",
         };
+        let show = if lesson.is_some() {
+            "“Show them” shows them on this step (your answers' record will say so)"
+        } else {
+            "“Show them” shows them for the rest of this visit"
+        };
         HiddenStatus {
-            text: format!("Student mode: {hidden} are hidden {until}. “Show them” shows them now (your answers' record will say so)."),
-            controls: vec!["rho", "map"],
+            text: format!("Student mode: {hidden} are hidden {until}. {show}."),
+            controls: HIDDEN_CONTROLS.to_vec(),
         }
     }
 
-    /// The student lifts student mode for this session ("Show them"): everything is shown, and the
-    /// lesson's record, if a lesson is open, says so.
+    /// The student shows what is hidden ("Show them"): on a lesson step, for that step only (the
+    /// next step hides them again), and the lesson's record says so; outside the lesson, for the
+    /// rest of the session.
     pub fn show_answers(&mut self) {
-        if !self.student_mode() {
+        if !self.answers_hidden() {
             return;
         }
-        self.answers_shown = true;
-        self.settings.view.answers_hidden = false;
-        if let Some(step) = self.lesson.as_ref().and_then(|l| l.open_step()) {
-            let title = self.lesson.as_ref().expect("open").lesson().steps[step].title.clone();
-            self.record(Entry {
-                step: step + 1,
-                step_title: title,
-                kind: "answers shown".into(),
-                choice: None,
-                choice_text: String::new(),
-                result: "shown".into(),
-                state: String::new(),
-                time: String::new(),
-            });
-        }
+        let Some(step) = self.lesson.as_ref().and_then(|l| l.open_step()) else {
+            self.answers_shown = true;
+            self.settings.view.answers_hidden = false;
+            return;
+        };
+        let l = self.lesson.as_mut().expect("open");
+        l.lift(step);
+        let title = l.lesson().steps[step].title.clone();
+        self.record(Entry {
+            step: step + 1,
+            step_title: title,
+            kind: "answers shown".into(),
+            choice: None,
+            choice_text: String::new(),
+            result: "shown".into(),
+            state: String::new(),
+            time: String::new(),
+        });
     }
 }

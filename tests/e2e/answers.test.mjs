@@ -87,6 +87,11 @@ test('student mode hides the verdict, ρ, the windows and the maps until the ste
   assert.equal(await page.isHidden('#delta-windows'), true);
   assert.equal(await page.$eval('#delta', (s) => s.classList.contains('banded')), false);
   assert.equal(await page.isDisabled('#map'), true);
+  assert.equal(await page.isDisabled('#poles'), true);
+  assert.equal(await page.isDisabled('#export-data-csv'), true);
+  // The page's own sentences that state the answer are gone too (innerText: what is shown).
+  assert.doesNotMatch(await page.evaluate(() => /** @type {HTMLElement} */ (document.querySelector('.intro')).innerText), /unstable/);
+  assert.equal(await page.isVisible('#explain'), false);
   await page.screenshot({ path: path.join(shots, 'student-mode-hidden-laptop.png') });
 
   // Answering (right or wrong) shows them.

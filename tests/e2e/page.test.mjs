@@ -526,3 +526,20 @@ test('the screen reader hears the new ρ when δ changes, even where the verdict
   assert.deepEqual(problems, []);
   await close();
 });
+
+test('after the run diverges the Play button says Restart, and restarts it (the embed\'s too)', { timeout: 90000 }, async () => {
+  for (const query of ['?preset=fig5.3&speed=4', '?preset=fig5.3&speed=4&embed=1']) {
+    const { page, problems, close } = await openPage(browser, server.base, query);
+    const button = query.includes('embed') ? '#embed-play' : '#play';
+    await page.waitForFunction((b) => document.querySelector(b)?.textContent === '↺ Restart', button, { timeout: 40000 });
+    assert.equal(await page.$eval(button, (b) => b.getAttribute('aria-label')), 'Restart the run from rest');
+    await page.click(button);
+    await page.waitForFunction((b) => document.querySelector(b)?.textContent === '❚❚ Pause', button, { timeout: 5000 });
+    // From rest, and moving on.
+    const t0 = await page.evaluate(() => window.flexarm.session.time());
+    assert.ok(t0 < 2, `restarted at t = ${t0} s`);
+    await page.waitForFunction((t) => window.flexarm.session.time() > t, t0, { timeout: 5000 });
+    assert.deepEqual(problems, []);
+    await close();
+  }
+});

@@ -76,6 +76,7 @@ export function createAnswers(on) {
   let shownKey = '';
   let lastStep = -1;
   let presetsHidden = false;
+  let hiddenKey = '[]';
   /** @type {{ title: string } | null} */
   let current = null;
 
@@ -134,6 +135,7 @@ export function createAnswers(on) {
    */
   function sync(lesson, hidden) {
     hiddenNote.hidden = !hidden;
+    document.body.classList.toggle('answers-hidden', Boolean(hidden));
     setText(byId('hidden-text'), hidden?.text ?? '');
     // The figures' presets by their settings only, while what they show is hidden.
     if (presetsHidden !== Boolean(hidden)) {
@@ -143,9 +145,17 @@ export function createAnswers(on) {
         if (p) option.text = hidden ? p.settings_title : p.title;
       }
     }
-    for (const key of ['rho', 'map']) {
-      const input = /** @type {HTMLInputElement | null} */ (document.getElementById(key));
-      if (input) input.disabled = Boolean(hidden?.controls.includes(key));
+    // What shows nothing while hidden is disabled (the session names it), and enabled again after.
+    if (hiddenKey !== JSON.stringify(hidden?.controls ?? [])) {
+      for (const id of JSON.parse(hiddenKey)) {
+        const el = /** @type {HTMLInputElement | null} */ (document.getElementById(id));
+        if (el && 'disabled' in el) el.disabled = false;
+      }
+      hiddenKey = JSON.stringify(hidden?.controls ?? []);
+      for (const id of hidden?.controls ?? []) {
+        const el = /** @type {HTMLInputElement | null} */ (document.getElementById(id));
+        if (el && 'disabled' in el) el.disabled = true;
+      }
     }
     if (!lesson) return;
     current = { title: lesson.lesson_title };

@@ -16,6 +16,7 @@ import { wireKeys } from './keys.js';
 import { noticeLines, writeUrl } from './url.js';
 import { createAnswers } from './answers.js';
 import { createLesson } from './lesson.js';
+import { playAction } from './run.js';
 import { createTimeline } from './timeline.js';
 import { createTabs } from './tabs.js';
 import { createExport } from './export.js';
@@ -135,24 +136,37 @@ async function main() {
 
   // ---------------------------------------------------------------- transport and view
   const play = byId('play');
+  const embedPlay = byId('embed-play');
+  /** Every run has diverged (the session says so): the button restarts them. */
+  let finished = false;
+  /** The Play buttons (the page's and the embed's) say what a press will do. */
+  const showPlay = () => {
+    const next = playAction(store.get().playing, finished);
+    for (const button of [play, embedPlay]) {
+      setText(button, next.text);
+      button.setAttribute('aria-pressed', String(next.pressed));
+      button.setAttribute('aria-label', next.label);
+    }
+  };
   store.subscribe((s, prev) => {
     if (s.playing !== prev.playing) {
-      setText(play, s.playing ? '❚❚ Pause' : '▶ Play');
-      play.setAttribute('aria-pressed', String(s.playing));
-      play.setAttribute('aria-label', s.playing ? 'Pause the simulation' : 'Play the simulation');
+      showPlay();
       if (s.playing && session.status().note === PAUSED_NOTE) session.setNote('');
       loop.resync();
       loop.touch();
     }
   });
-  play.addEventListener('click', () => store.dispatch({ type: 'toggle-play' }));
-  const embedPlay = byId('embed-play');
-  embedPlay.addEventListener('click', () => store.dispatch({ type: 'toggle-play' }));
-  store.subscribe((s, prev) => {
-    if (s.playing === prev.playing) return;
-    setText(embedPlay, s.playing ? '❚❚ Pause' : '▶ Play');
-    embedPlay.setAttribute('aria-pressed', String(s.playing));
-  });
+  /** Play, Pause, or — after divergence — Restart from rest, playing. */
+  const togglePlay = () => {
+    if (playAction(store.get().playing, finished).action === 'restart') {
+      reset();
+      store.dispatch({ type: 'play' });
+      return;
+    }
+    store.dispatch({ type: 'toggle-play' });
+  };
+  play.addEventListener('click', togglePlay);
+  embedPlay.addEventListener('click', togglePlay);
   const step = () => {
     store.dispatch({ type: 'pause' });
     guard('Step failed', () => session.stepPeriod());
@@ -198,7 +212,7 @@ async function main() {
     setText(sheetToggle, open ? 'Close ▾' : document.body.classList.contains('in-lesson') ? 'The lesson, controls and verdict ▴' : 'Controls, verdict and lesson ▴');
   };
   sheetToggle.addEventListener('click', () => openSheet(!sheet.classList.contains('open')));
-  wireKeys({ togglePlay: () => store.dispatch({ type: 'toggle-play' }), step, stepBack, reset });
+  wireKeys({ togglePlay, step, stepBack, reset });
   wireTryButtons({
     preset: (id) => change(() => session.applyPreset(id)),
     set: (key, value) => change(() => session.set(key, value)),
@@ -354,6 +368,10 @@ async function main() {
     }
     if (!s.lesson) lessonShown = false;
     status.render(s, performance.now());
+    if (finished !== s.runs.every((r) => r.finished)) {
+      finished = !finished;
+      showPlay();
+    }
     status.renderLegend(s, layout?.series ?? []);
     lesson.render(s.lesson);
     answers.sync(s.lesson, s.hidden);

@@ -24,6 +24,18 @@ export function growthDue(previous, next, now) {
 }
 
 /**
+ * What the Play/Pause button does next, in its words (pure): once every run has diverged it
+ * restarts them; otherwise it pauses a playing run and plays a paused one.
+ * @param {boolean} playing @param {boolean} finished
+ */
+export function playAction(playing, finished) {
+  if (finished) return { action: 'restart', text: '↺ Restart', label: 'Restart the run from rest', pressed: false };
+  return playing
+    ? { action: 'pause', text: '❚❚ Pause', label: 'Pause the simulation', pressed: true }
+    : { action: 'play', text: '▶ Play', label: 'Play the simulation', pressed: false };
+}
+
+/**
  * @param {string} prefix the element ids' prefix: "verdict" (A) or "verdict-b" (B)
  * @param {string} growthCell the id of the readout of the observed growth, refreshed with the
  *   observation line so that the two always show the same measurement
