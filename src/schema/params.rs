@@ -304,6 +304,40 @@ pub const SPEED: Param = Param {
     help: "Simulated seconds per wall-clock second.",
 };
 
+/// Where a link starts: the run advanced to this time (flat out) before the page shows it.
+pub const START_TIME: Param = Param {
+    key: "t",
+    label: "Start at",
+    symbol: "t",
+    unit: "s",
+    name: "start time",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: true,
+        max: 120.0,
+        allowed: Some("must be from 0 to 120 s"),
+        control: [0.0, 120.0],
+        scale: Scale::Linear,
+        digits: 3,
+        integer: false,
+        default: 0.0,
+    }),
+    scope: Scope::Page,
+    help: "A link's moment: the run is advanced to t seconds before it is shown (with paused=1 it waits there).",
+};
+
+/// A link that starts paused.
+pub const PAUSED: Param = Param {
+    key: "paused",
+    label: "Start paused",
+    symbol: "",
+    unit: "",
+    name: "paused",
+    kind: Kind::Switch { default: false },
+    scope: Scope::Page,
+    help: "A link that opens paused (at t, if it gives one): press Play to run on.",
+};
+
 /// Two runs side by side.
 pub const COMPARE: Param = Param {
     key: "compare",
@@ -380,6 +414,8 @@ pub const PARAMS: &[&Param] = &[
     &OUTPUT_INTERVAL,
     &Q2,
     &SPEED,
+    &START_TIME,
+    &PAUSED,
     &COMPARE,
     &B_PF,
     &B_DELTA,

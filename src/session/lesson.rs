@@ -375,7 +375,9 @@ impl Session {
         // Student mode set by the teacher's link stays on through the steps.
         next.view.answers_hidden = self.settings.view.answers_hidden;
         next.read(state, Source::Lesson)?;
-        self.apply(next, true, "")
+        self.apply(next, true, "")?;
+        // A step may start at a moment (`t=2&paused=1`).
+        self.go_to_start()
     }
 
     fn goal_met(&self, goal: &Goal) -> bool {

@@ -23,6 +23,7 @@ mod run_settings;
 pub mod settings;
 pub mod status;
 pub mod story;
+mod start;
 mod student;
 pub mod timeline;
 pub mod view;
@@ -145,6 +146,8 @@ pub struct Session {
     wall_clock_ms: f64,
     /// The student lifted student mode for this session ("Show them").
     answers_shown: bool,
+    /// A link or a lesson step asked to start paused; the page takes it once.
+    start_paused: bool,
 }
 
 impl Session {
@@ -167,6 +170,7 @@ impl Session {
             lesson_origin: lesson::LessonOrigin::BuiltIn,
             wall_clock_ms: f64::NAN,
             answers_shown: false,
+            start_paused: false,
         };
         session.maps.show(&session.linear_settings());
         session.maps.enabled = settings.view.shown().map;
@@ -243,6 +247,10 @@ impl Session {
         match session.open_lesson_from(query) {
             Ok(notice) => notices.extend(notice),
             Err(e) => notices.push(Notice { key: "lesson".into(), text: e.to_string() }),
+        }
+        // `t=3&paused=1`: the link's moment.
+        if let Err(e) = session.go_to_start() {
+            notices.push(Notice { key: "t".into(), text: e.to_string() });
         }
         (session, notices)
     }

@@ -30,6 +30,16 @@ pub struct Settings {
     /// Simulated seconds per wall-clock second.
     pub speed: f64,
     pub view: ViewSettings,
+    /// Where a link starts (`t=3&paused=1`): read once, then consumed by the session, never
+    /// written back into the state string (a moment's link writes it: `Session::moment_query`).
+    pub start: Start,
+}
+
+/// A link's moment: advance the runs to `time` (s) and, if `paused`, wait there.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Start {
+    pub time: f64,
+    pub paused: bool,
 }
 
 impl Default for Settings {
@@ -40,6 +50,7 @@ impl Default for Settings {
             b: None,
             speed: schema::SPEED.number().map_or(1.0, |n| n.default),
             view: ViewSettings::default(),
+            start: Start::default(),
         }
     }
 }
@@ -79,6 +90,8 @@ impl Settings {
     pub fn get(&self, key: &str) -> Option<Value> {
         match key {
             "speed" => Some(Value::Number(self.speed)),
+            "t" => Some(Value::Number(self.start.time)),
+            "paused" => Some(Value::Switch(self.start.paused)),
             "compare" => Some(Value::Switch(self.b.is_some())),
             "b_pf" => self.b.map(|b| Value::Choice(b.pf.name())),
             "b_delta" => self.b.map(|b| Value::Number(b.delta)),
@@ -92,6 +105,8 @@ impl Settings {
     pub fn set(&mut self, key: &str, v: Value) -> Result<(), Error> {
         match (key, v) {
             ("speed", Value::Number(x)) => self.speed = x,
+            ("t", Value::Number(x)) => self.start.time = x,
+            ("paused", Value::Switch(on)) => self.start.paused = on,
             ("compare", Value::Switch(on)) => {
                 self.b = if on { Some(self.b.unwrap_or_else(|| CompareSettings::switched(&self.a))) } else { None }
             }

@@ -373,6 +373,18 @@ impl WebSession {
     }
 
     /// The state string (the URL query) of everything set.
+    /// True once after a link or a lesson step asked to start paused (`paused=1`).
+    #[wasm_bindgen(js_name = takeStartPaused)]
+    pub fn take_start_paused(&mut self) -> bool {
+        self.inner.take_start_paused()
+    }
+
+    /// The state string with the moment shown (`…&paused=1&t=3.25`): "Copy link to this moment".
+    #[wasm_bindgen(js_name = momentQuery)]
+    pub fn moment_query(&self) -> String {
+        self.inner.moment_query()
+    }
+
     #[wasm_bindgen(js_name = stateString)]
     pub fn state_string(&self) -> String {
         self.inner.state_string()

@@ -8,6 +8,17 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { before, after } from 'node:test';
 import { chromium } from 'playwright-core';
+import { createRequire } from 'node:module';
+
+/** axe-core's script, injected into a page to check its accessibility. */
+export const AXE = createRequire(import.meta.url).resolve('axe-core/axe.min.js');
+
+/** The three screens every page is looked at on: a phone (touch), a laptop, a large screen. */
+export const SIZES = {
+  phone: { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true, deviceScaleFactor: 2 },
+  laptop: { viewport: { width: 1280, height: 800 } },
+  large: { viewport: { width: 1920, height: 1080 } },
+};
 
 export const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 export const www = path.join(root, 'www');

@@ -5,19 +5,9 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { createRequire } from 'node:module';
-import { shots, shared } from './harness.mjs';
-
-const require = createRequire(import.meta.url);
-const AXE = require.resolve('axe-core/axe.min.js');
+import { shots, shared, AXE, SIZES } from './harness.mjs';
 
 const env = shared();
-
-const SIZES = {
-  phone: { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true, deviceScaleFactor: 2 },
-  laptop: { viewport: { width: 1280, height: 800 } },
-  large: { viewport: { width: 1920, height: 1080 } },
-};
 
 /** A page in a context of its own (size, touch, colour scheme), with its errors collected. */
 async function open(query, context = SIZES.laptop) {

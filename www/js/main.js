@@ -29,6 +29,8 @@ const { guard } = errors;
 
 /** The note shown when a setting changes while the run is paused. */
 const PAUSED_NOTE = 'Paused: the change takes effect at the next sampling instant (press Step or Play).';
+/** What a link to a moment (`paused=1`) opens with. */
+const START_NOTE = 'Opened paused at this moment: press Play to run on.';
 
 main().catch((e) => errors.report('Starting the page failed', e));
 
@@ -151,7 +153,7 @@ async function main() {
   store.subscribe((s, prev) => {
     if (s.playing !== prev.playing) {
       showPlay();
-      if (s.playing && session.status().note === PAUSED_NOTE) session.setNote('');
+      if (s.playing && [PAUSED_NOTE, START_NOTE].includes(session.status().note)) session.setNote('');
       loop.resync();
       loop.touch();
     }
@@ -198,6 +200,8 @@ async function main() {
     report: (/** @type {string} */ what, /** @type {unknown} */ e) => errors.report(what, e),
   });
   byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
+  // The page's address with this moment: it opens paused at the instant shown.
+  byId('copy-moment').addEventListener('click', () => copyCommand(`${window.location.origin}${window.location.pathname}?${session.momentQuery()}`));
   // On a phone the controls (and the lesson) live in a sheet over the bottom of the page.
   const sheet = byId('panel');
   const sheetToggle = byId('sheet-toggle');
@@ -241,7 +245,8 @@ async function main() {
   const lessonDo = (/** @type {() => void} */ fn) => {
     session.setWallClock(Date.now());
     change(fn);
-    store.dispatch({ type: 'play' });
+    // A step may start paused at a moment (`paused=1&t=2`).
+    store.dispatch({ type: session.takeStartPaused() ? 'pause' : 'play' });
     refreshStatus();
   };
   const lesson = createLesson({
@@ -410,6 +415,11 @@ async function main() {
   syncControls();
   writeUrl(session.stateString());
   byId('loading').hidden = true;
+  // A link to a moment (`paused=1&t=3`) opens paused there.
+  if (session.takeStartPaused()) {
+    store.dispatch({ type: 'pause' });
+    session.setNote(START_NOTE);
+  }
   // Motion only on request where the system asks for less of it.
   if (matchMedia('(prefers-reduced-motion: reduce)').matches) {
     store.dispatch({ type: 'pause' });
