@@ -11,7 +11,7 @@ use flexarm::view::autoscale::{Autoscale, AutoscaleSettings};
 use flexarm::view::layout::{gutters, Arrangement, Tab};
 use flexarm::view::map::StabilityGrid;
 use flexarm::view::poles::{draw_a4, draw_flexible_halo, draw_poles, PoleFrame, PoleStyle, RUN_VERTEX_BUDGET};
-use flexarm::view::traces::{draw_series, max_abs, PlotFrame, TimeWindow};
+use flexarm::view::traces::{draw_series, draw_series_within, max_abs, PlotFrame, TimeWindow};
 use flexarm::view::*;
 use flexarm::{ClosedLoop, PreliminaryFeedbackChoice, SimulationConfig};
 
@@ -505,6 +505,45 @@ fn sparse_samples_are_drawn_as_they_are() {
     let mut p = Painter::new();
     draw_series(&mut p, &frame, &t, &v, 2.0, Color::hex(0));
     assert_eq!(p.len(), 3 * 6, "three segments");
+}
+
+/// The previous run's faint curve, ten times the plot's range (lesson step 2: Fig. 5.1's errors
+/// behind Fig. 5.2's): clipped at the edges, so every piece that leaves the range runs to the edge
+/// and stops there — no stubs ending short of it, nothing along the edge — sparse and dense alike.
+#[test]
+fn a_ghost_beyond_the_range_is_clipped_at_the_edges() {
+    let frame = PlotFrame {
+        log: false,
+        rect: Rect::new(100.0, 50.0, 400.0, 200.0),
+        window: TimeWindow { start: 0.0, end: 10.0 },
+        y_lo: -1.0,
+        y_hi: 1.0,
+    };
+    let (top, bottom) = (50.0_f32, 250.0_f32);
+    for n in [200, 20_000] {
+        let t: Vec<f64> = (0..n).map(|i| 10.0 * i as f64 / n as f64).collect();
+        // Ten crossings of the window, each steeper than the window is tall per sample when sparse.
+        let v: Vec<f64> = t.iter().map(|t| 10.0 * (core::f64::consts::PI * t).sin()).collect();
+        let mut p = Painter::new();
+        draw_series_within(&mut p, &frame, &t, &v, 2.0, Color::hex(0));
+        let ys: Vec<f32> = p.vertices().iter().map(|v| v.position[1]).collect();
+        assert!(!ys.is_empty(), "n = {n}: the crossings are drawn");
+        // Within the plot (the stroke's half-width aside), and reaching both edges.
+        assert!(ys.iter().all(|&y| y >= top - 1.01 && y <= bottom + 1.01), "n = {n}: drawn outside the plot");
+        assert!(ys.iter().any(|&y| y <= top + 0.01) && ys.iter().any(|&y| y >= bottom - 0.01), "n = {n}: not clipped at the edges");
+        // Each crossing is one piece from edge to edge: its ten segments' worth of ink, not more
+        // (a run along the edge would add pixels at the edge beyond the crossings' own).
+        let at_edge = ys.iter().filter(|&&y| y < top + 1.5 || y > bottom - 1.5).count();
+        assert!(at_edge <= 10 * 2 * 6 * 2, "n = {n}: {at_edge} vertices at the edges: a line along an edge");
+    }
+    // The same samples inside the range are drawn exactly as draw_series draws them.
+    let t = [0.0, 1.0, 2.0, 3.0];
+    let v = [0.0, 0.5, -0.5, 0.25];
+    let (mut a, mut b) = (Painter::new(), Painter::new());
+    draw_series(&mut a, &frame, &t, &v, 2.0, Color::hex(0));
+    draw_series_within(&mut b, &frame, &t, &v, 2.0, Color::hex(0));
+    assert_eq!(a.vertices().len(), b.vertices().len());
+    assert!(a.vertices().iter().zip(b.vertices()).all(|(x, y)| x.position == y.position));
 }
 
 // ---------------------------------------------------------------- arm

@@ -164,11 +164,13 @@ pub fn draw_frame(painter: &mut Painter, frame: &PlotFrame, dpr: f64) {
 /// maximum in the order they occur, so spikes survive and a 10 000-sample window costs no
 /// more than the plot is wide. Non-finite samples leave a gap.
 pub fn draw_series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], values: &[f64], width: f64, color: Color) {
-    series(painter, frame, times, values, width, color, false);
+    series(painter, frame, times, values, width, color);
 }
 
-/// Like [`draw_series`], but leaves a gap where the values leave the plot's range instead of
-/// running along its edge: for a faint comparison curve that must not look like data at the limit.
+/// Like [`draw_series`], but clipped at the plot's top and bottom edges instead of running along
+/// them: each segment between two samples is cut where it crosses an edge, so a piece that leaves
+/// the range ends exactly on the edge and nothing is drawn while the curve is outside. For a faint
+/// comparison curve (the previous run) that must not look like data at the limit.
 pub fn draw_series_within(
     painter: &mut Painter,
     frame: &PlotFrame,
@@ -177,27 +179,115 @@ pub fn draw_series_within(
     width: f64,
     color: Color,
 ) {
-    series(painter, frame, times, values, width, color, true);
+    let n = times.len().min(values.len());
+    let range = frame.window.indices(&times[..n]);
+    let columns = frame.rect.w.ceil().max(1.0) as usize;
+    // A piece's start on an edge adds a point: as they are, at most one sample per column, so that
+    // the frame's reserve of two points per column holds.
+    let dense = range.len() > columns;
+    // The plot's own coordinate, where a piece of the curve is straight on screen: v, or ln |v| on
+    // a log plot (zero floored far below the range, so that the arithmetic stays finite).
+    let (lo, hi) = if frame.log { (frame.y_lo.ln(), frame.y_hi.ln()) } else { (frame.y_lo, frame.y_hi) };
+    let coord = |v: f64| if frame.log { v.abs().ln().max(lo - 50.0) } else { v };
+    let value = |c: f64| if frame.log { c.exp() } else { c };
+    let mut feed = Feed { stroke: painter.stroke(width, color, false), frame, columns, dense, column: None };
+    let mut prev: Option<(f64, f64)> = None;
+    // The stroke ends at the previous sample (it was inside).
+    let mut open = false;
+    for i in range {
+        let (t, v) = (times[i], values[i]);
+        if !(t.is_finite() && v.is_finite()) {
+            feed.lift();
+            (prev, open) = (None, false);
+            continue;
+        }
+        let c = coord(v);
+        match prev {
+            Some((t0, c0)) => {
+                // The part of the segment c0 → c inside [lo, hi], as fractions f0 ≤ f1 of it.
+                let d = c - c0;
+                let (f0, f1) = if d == 0.0 {
+                    if (lo..=hi).contains(&c) { (0.0, 1.0) } else { (1.0, 0.0) }
+                } else {
+                    let (a, b) = ((lo - c0) / d, (hi - c0) / d);
+                    (a.min(b).max(0.0), a.max(b).min(1.0))
+                };
+                if f0 <= f1 {
+                    // Where it enters and leaves: a sample, or the edge it crosses.
+                    let start = if f0 <= 0.0 { c0 } else if c0 < lo { lo } else { hi };
+                    let end = if f1 >= 1.0 { c } else if c > hi { hi } else { lo };
+                    if !(open && f0 <= 0.0) {
+                        feed.lift();
+                        feed.to(t0 + f0 * (t - t0), value(start));
+                    }
+                    feed.to(t0 + f1 * (t - t0), value(end));
+                    open = f1 >= 1.0;
+                    if !open {
+                        feed.lift();
+                    }
+                } else {
+                    open = false;
+                }
+            }
+            None if (lo..=hi).contains(&c) => {
+                feed.to(t, v);
+                open = true;
+            }
+            None => open = false,
+        }
+        prev = Some((t, c));
+    }
+    feed.lift();
 }
 
-fn series(
-    painter: &mut Painter,
-    frame: &PlotFrame,
-    times: &[f64],
-    values: &[f64],
-    width: f64,
-    color: Color,
-    within: bool,
-) {
-    // Outside the range counts as missing when drawing within it.
-    let shown = |v: f64| if within && !frame.contains(v) { f64::NAN } else { v };
+/// Points on their way to a stroke: as they are, or, with more samples than two per pixel column,
+/// reduced to each column's extremes (as [`draw_series`] does).
+struct Feed<'a, 'p> {
+    stroke: crate::view::painter::Stroke<'p>,
+    frame: &'a PlotFrame,
+    columns: usize,
+    dense: bool,
+    column: Option<ColumnExtremes>,
+}
+
+impl Feed<'_, '_> {
+    fn to(&mut self, t: f64, v: f64) {
+        if !self.dense {
+            self.stroke.to(point(self.frame, t, v));
+            return;
+        }
+        let v = if self.frame.log { v.abs() } else { v };
+        let x = (self.frame.x(t) - self.frame.rect.x).floor().clamp(0.0, (self.columns - 1) as f64) as usize;
+        match &mut self.column {
+            Some(c) if c.index == x => c.add(v),
+            _ => {
+                self.flush();
+                self.column = Some(ColumnExtremes::new(x, v));
+            }
+        }
+    }
+
+    fn flush(&mut self) {
+        if let Some(c) = self.column.take() {
+            let stroke = &mut self.stroke;
+            c.emit(self.frame, &mut |p| stroke.to(p));
+        }
+    }
+
+    fn lift(&mut self) {
+        self.flush();
+        self.stroke.lift();
+    }
+}
+
+fn series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], values: &[f64], width: f64, color: Color) {
     let n = times.len().min(values.len());
     let range = frame.window.indices(&times[..n]);
     let columns = frame.rect.w.ceil().max(1.0) as usize;
     let mut stroke = painter.stroke(width, color, false);
     if range.len() <= 2 * columns {
         for i in range {
-            let v = shown(values[i]);
+            let v = values[i];
             if v.is_finite() {
                 stroke.to(point(frame, times[i], v));
             } else {
@@ -209,7 +299,7 @@ fn series(
     let mut column: Option<ColumnExtremes> = None;
     for i in range {
         // A log plot shows |v|: the extremes of a column are those of |v|.
-        let (t, v) = (times[i], shown(if frame.log { values[i].abs() } else { values[i] }));
+        let (t, v) = (times[i], if frame.log { values[i].abs() } else { values[i] });
         if !v.is_finite() {
             if let Some(c) = column.take() {
                 c.emit(frame, &mut |p| stroke.to(p));
