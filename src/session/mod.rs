@@ -477,7 +477,7 @@ impl Session {
         }
         let hidden = self.answers_hidden();
         if hidden {
-            runs.iter_mut().for_each(status::hide_answers);
+            runs.iter_mut().for_each(student::hide_answers);
         }
         if self.viewing.is_some() {
             // The readouts of the moment looked at; the verdict and the maxima are the run's.

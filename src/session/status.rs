@@ -450,30 +450,6 @@ pub fn judge(
     Judgement { verdict, headline, detail, observed, measured, rho: rho_line }
 }
 
-/// What a student in student mode (`answers=hidden`) may not see yet: the verdict and ρ, the
-/// observation (it says whether the simulation agrees with ρ), the growth rates and A4. What the
-/// figure shows (the errors, the torques, the time) stays; the words say what is hidden, for the
-/// eye and the screen reader alike.
-pub fn hide_answers(r: &mut RunStatus) {
-    const HIDDEN: &str = "hidden until you answer";
-    r.verdict = "hidden";
-    r.headline = "Verdict hidden";
-    r.detail = "student mode: the verdict and ρ wait for your answer".into();
-    r.observed = if r.finished {
-        // What the run did is on screen: say why it stopped, not what ρ says.
-        "The run stopped: the errors passed π rad. Restart to watch it again.".into()
-    } else {
-        "Watch the errors: do they grow or die out?".into()
-    };
-    r.measured = false;
-    r.rho = format!("linear analysis: {HIDDEN}");
-    r.spectral_radius = None;
-    r.growth_rate = None;
-    r.announce = format!("Run {}: the verdict is hidden until you answer.", r.run);
-    r.readouts.growth = HIDDEN.into();
-    r.readouts.a4 = HIDDEN.into();
-}
-
 /// The status of `run`, named `name`.
 pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     let sim = run.closed_loop();
@@ -588,7 +564,7 @@ impl super::Session {
             let name = if i == 0 { "A" } else { "B" };
             let mut s = run_status(name, run);
             if hidden {
-                hide_answers(&mut s);
+                super::student::hide_answers(&mut s);
             }
             let at = self.shown_snapshot(i).map_or(f64::NAN, |snap| snap.time);
             let when = if self.viewing().is_some() { "looking back at" } else { "at" };

@@ -6,7 +6,7 @@
 //! ("Show them"), and the answers' record says so.
 
 use super::answers::Entry;
-use super::{HiddenStatus, Session, ViewSettings};
+use super::{HiddenStatus, RunStatus, Session, ViewSettings};
 
 /// The page's controls that show nothing while the answers are hidden (the figures' switches and
 /// the downloads that carry ρ): the page disables them.
@@ -95,4 +95,28 @@ impl Session {
             time: String::new(),
         });
     }
+}
+
+/// What a student in student mode (`answers=hidden`) may not see yet: the verdict and ρ, the
+/// observation (it says whether the simulation agrees with ρ), the growth rates and A4. What the
+/// figure shows (the errors, the torques, the time) stays; the words say what is hidden, for the
+/// eye and the screen reader alike.
+pub fn hide_answers(r: &mut RunStatus) {
+    const HIDDEN: &str = "hidden until you answer";
+    r.verdict = "hidden";
+    r.headline = "Verdict hidden";
+    r.detail = "student mode: the verdict and ρ wait for your answer".into();
+    r.observed = if r.finished {
+        // What the run did is on screen: say why it stopped, not what ρ says.
+        "The run stopped: the errors passed π rad. Restart to watch it again.".into()
+    } else {
+        "Watch the errors: do they grow or die out?".into()
+    };
+    r.measured = false;
+    r.rho = format!("linear analysis: {HIDDEN}");
+    r.spectral_radius = None;
+    r.growth_rate = None;
+    r.announce = format!("Run {}: the verdict is hidden until you answer.", r.run);
+    r.readouts.growth = HIDDEN.into();
+    r.readouts.a4 = HIDDEN.into();
 }

@@ -241,7 +241,7 @@ pub fn draw_series_within(
 }
 
 /// Points on their way to a stroke: as they are, or, with more samples than two per pixel column,
-/// reduced to each column's extremes (as [`draw_series`] does).
+/// reduced to each column's extremes: the one reduction both draw_series and draw_series_within use.
 struct Feed<'a, 'p> {
     stroke: crate::view::painter::Stroke<'p>,
     frame: &'a PlotFrame,
@@ -284,43 +284,17 @@ fn series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], values: &[f64
     let n = times.len().min(values.len());
     let range = frame.window.indices(&times[..n]);
     let columns = frame.rect.w.ceil().max(1.0) as usize;
-    let mut stroke = painter.stroke(width, color, false);
-    if range.len() <= 2 * columns {
-        for i in range {
-            let v = values[i];
-            if v.is_finite() {
-                stroke.to(point(frame, times[i], v));
-            } else {
-                stroke.lift();
-            }
-        }
-        return;
-    }
-    let mut column: Option<ColumnExtremes> = None;
+    let dense = range.len() > 2 * columns;
+    let mut feed = Feed { stroke: painter.stroke(width, color, false), frame, columns, dense, column: None };
     for i in range {
-        // A log plot shows |v|: the extremes of a column are those of |v|.
-        let (t, v) = (times[i], if frame.log { values[i].abs() } else { values[i] });
-        if !v.is_finite() {
-            if let Some(c) = column.take() {
-                c.emit(frame, &mut |p| stroke.to(p));
-            }
-            stroke.lift();
-            continue;
-        }
-        let x = (frame.x(t) - frame.rect.x).floor().clamp(0.0, (columns - 1) as f64) as usize;
-        match &mut column {
-            Some(c) if c.index == x => c.add(v),
-            _ => {
-                if let Some(c) = column.take() {
-                    c.emit(frame, &mut |p| stroke.to(p));
-                }
-                column = Some(ColumnExtremes::new(x, v));
-            }
+        let (t, v) = (times[i], values[i]);
+        if v.is_finite() {
+            feed.to(t, v);
+        } else {
+            feed.lift();
         }
     }
-    if let Some(c) = column {
-        c.emit(frame, &mut |p| stroke.to(p));
-    }
+    feed.lift();
 }
 
 fn point(frame: &PlotFrame, t: f64, v: f64) -> Point {
