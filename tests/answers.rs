@@ -78,7 +78,11 @@ fn predictions_and_tasks_are_recorded_with_their_state_and_time_and_summed_up() 
         "{}",
         summary.headline
     );
-    assert!(summary.headline.contains(&format!("Tasks: 0 of {tasks} done yourself, {tasks} shown")), "{}", summary.headline);
+    assert!(
+        summary.headline.contains(&format!("Tasks: 0 of {tasks} done yourself, {tasks} shown")),
+        "{}",
+        summary.headline
+    );
     assert_eq!(summary.rows.len(), record.entries.len());
 
     // The CSV: a header naming the lesson and its hash, the columns, one row per entry that reads

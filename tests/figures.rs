@@ -28,7 +28,8 @@ fn all_finite(scene: &Scene) -> bool {
 #[test]
 fn the_z_plane_shows_the_flexible_pair_outside_the_unit_circle_without_feedback() {
     for (pf, outside) in [("off", true), ("paper", false)] {
-        let s = session(&format!("delta=0.01&pf={pf}&plane=z"));
+        // The whole circle (the default view zooms on the pair: tests/zplane.rs).
+        let s = session(&format!("delta=0.01&pf={pf}&plane=z&zsize=1.2"));
         let mut scene = Scene::new(ViewOptions::default(), 1400.0, 900.0, 1.0);
         scene.draw_session(&s);
         let panels = scene.panel_info();

@@ -13,7 +13,7 @@ const WIDTHS: [f64; 12] = [320.0, 360.0, 390.0, 480.0, 600.0, 640.0, 800.0, 1024
 const HEIGHTS: [f64; 5] = [400.0, 560.0, 700.0, 900.0, 1300.0];
 
 /// View settings to try, as state strings.
-const VIEWS: [&str; 16] = [
+const VIEWS: [&str; 26] = [
     "mode=intro",
     "mode=full",
     "mode=full&torque=1&log=1",
@@ -30,6 +30,18 @@ const VIEWS: [&str; 16] = [
     "mode=full&predict=1&swing=1",
     "mode=full&predict=1&compare=1&delta=0.002",
     "mode=full&delta=0.15&pf=off&plane=s",
+    // The z-plane zoomed in (issue 23): long tick labels, negative ones, the closest zoom.
+    "mode=full&plane=z&rho=0&zsize=0.001&zre=0.99&zim=0.14",
+    "mode=full&tab=poles&plane=z&zsize=0.0001&zre=0.7071&zim=0.7071",
+    "mode=full&plane=z&zsize=0.02&zre=-0.9&zim=-0.43",
+    // An embed of exactly the panels asked for: without the arm, without the errors, or both.
+    "embed=1&views=zplane,rho",
+    "embed=1&views=map",
+    "embed=1&views=traces,torque",
+    "embed=1&views=arm",
+    "embed=1&views=arm,map&compare=1",
+    "embed=1&views=poles,rho,map,torque&tab=maps",
+    "embed=1&views=arm,traces&predict=1",
 ];
 
 fn overlap(a: &Rect, b: &Rect) -> bool {

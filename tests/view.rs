@@ -182,16 +182,19 @@ const SIZES: [(f64, f64); 8] = [
     (320.0, 320.0),
 ];
 
-/// Every combination of the panel options, on each tab.
+/// Every combination of the panel options (the arm and the errors on and off too, as an embed
+/// may ask), on each tab.
 fn all_options() -> impl Iterator<Item = LayoutOptions> {
-    (0..192u8).map(|bits| LayoutOptions {
+    (0..768u16).map(|bits| LayoutOptions {
         show_torque: bits & 1 != 0,
         show_poles: bits & 2 != 0,
         show_map: bits & 4 != 0,
         pair: bits & 8 != 0,
         z_plane: bits & 16 != 0,
         show_rho: bits & 32 != 0,
-        tab: Tab::ALL[(bits >> 6) as usize % 3],
+        tab: Tab::ALL[((bits >> 6) & 3) as usize % 3],
+        show_arm: bits & 256 == 0,
+        show_errors: bits & 512 == 0,
     })
 }
 
@@ -217,11 +220,16 @@ fn panels_lie_inside_the_canvas_and_do_not_overlap() {
     for (w, h, dpr, options, layout) in all_layouts() {
         let canvas = Rect::new(0.0, 0.0, w, h);
         let kinds: Vec<PanelKind> = layout.panels.iter().map(|p| p.kind).collect();
-        let mut want = vec![PanelKind::Arm];
-        if options.pair {
-            want.push(PanelKind::ArmB);
+        let mut want = Vec::new();
+        if options.show_arm {
+            want.push(PanelKind::Arm);
+            if options.pair {
+                want.push(PanelKind::ArmB);
+            }
         }
-        want.extend([PanelKind::Error1, PanelKind::Error2]);
+        if options.show_errors {
+            want.extend([PanelKind::Error1, PanelKind::Error2]);
+        }
         if options.show_torque {
             want.push(PanelKind::Torque);
         }
@@ -234,24 +242,33 @@ fn panels_lie_inside_the_canvas_and_do_not_overlap() {
         if options.show_map {
             want.extend([PanelKind::MapOff, PanelKind::MapOn]);
         }
+        let holds = |tab: Tab, k: PanelKind| match tab {
+            Tab::Run => k.is_stage() || k.is_time_plot(),
+            Tab::Poles => k.is_pole_plot() || k == PanelKind::RhoCurve,
+            Tab::Maps => k.is_map(),
+        };
+        let requested = want.clone();
         match layout.tab {
-            // A phone shows the panels of one tab: the one asked for if it has panels.
+            // A phone shows the panels of one tab: the one asked for if it has panels. Tabs are
+            // offered only where two or more have panels, and each offered tab has some.
             Some(tab) => {
                 assert_eq!(layout.arrangement, Arrangement::Tabbed);
-                assert!(layout.tabs.contains(&tab) && layout.tabs[0] == Tab::Run, "{:?}", layout.tabs);
+                assert!(layout.tabs.contains(&tab) && layout.tabs.len() >= 2, "{:?}", layout.tabs);
+                assert!(layout.tabs.iter().all(|t| requested.iter().any(|k| holds(*t, *k))), "{:?}", layout.tabs);
                 if layout.tabs.contains(&options.tab) {
                     assert_eq!(tab, options.tab);
                 }
-                let holds = |k: PanelKind| match tab {
-                    Tab::Run => k.is_stage() || k.is_time_plot(),
-                    Tab::Poles => k.is_pole_plot() || k == PanelKind::RhoCurve,
-                    Tab::Maps => k.is_map(),
-                };
-                want.retain(|k| holds(*k));
+                want.retain(|k| holds(tab, *k));
             }
             None => assert!(layout.tabs.is_empty()),
         }
         assert_eq!(kinds, want, "{w}×{h} {options:?}");
+        // What is not shown is said, never dropped silently: exactly the panels of the other
+        // tabs, each on a tab offered.
+        let hidden = layout.hidden(&options);
+        let expected: Vec<PanelKind> = requested.iter().copied().filter(|k| !want.contains(k)).collect();
+        assert_eq!(hidden, expected, "{w}×{h} {options:?}");
+        assert!(hidden.iter().all(|k| layout.tabs.iter().any(|t| holds(*t, *k))), "{w}×{h} {options:?}: {hidden:?}");
         for (i, a) in layout.panels.iter().enumerate() {
             assert!(canvas.contains_rect(&a.rect), "{w}×{h}@{dpr} {options:?}: {:?} outside", a);
             let min_size = if w >= 600.0 && h >= 400.0 { 60.0 } else { 1.0 };
@@ -530,7 +547,10 @@ fn a_ghost_beyond_the_range_is_clipped_at_the_edges() {
         assert!(!ys.is_empty(), "n = {n}: the crossings are drawn");
         // Within the plot (the stroke's half-width aside), and reaching both edges.
         assert!(ys.iter().all(|&y| y >= top - 1.01 && y <= bottom + 1.01), "n = {n}: drawn outside the plot");
-        assert!(ys.iter().any(|&y| y <= top + 0.01) && ys.iter().any(|&y| y >= bottom - 0.01), "n = {n}: not clipped at the edges");
+        assert!(
+            ys.iter().any(|&y| y <= top + 0.01) && ys.iter().any(|&y| y >= bottom - 0.01),
+            "n = {n}: not clipped at the edges"
+        );
         // Each crossing is one piece from edge to edge: its ten segments' worth of ink, not more
         // (a run along the edge would add pixels at the edge beyond the crossings' own).
         let at_edge = ys.iter().filter(|&&y| y < top + 1.5 || y > bottom - 1.5).count();
@@ -544,6 +564,13 @@ fn a_ghost_beyond_the_range_is_clipped_at_the_edges() {
     draw_series_within(&mut b, &frame, &t, &v, 2.0, Color::hex(0));
     assert_eq!(a.vertices().len(), b.vertices().len());
     assert!(a.vertices().iter().zip(b.vertices()).all(|(x, y)| x.position == y.position));
+    // A diverged run swings from far above to far below between two samples: no stroke across
+    // the plot for it (it would read as a grey bar of data), while its samples inside still draw.
+    let t: Vec<f64> = (0..200).map(|i| 0.05 * i as f64).collect();
+    let v: Vec<f64> = (0..200).map(|i| if i % 2 == 0 { 300.0 } else { -300.0 }).collect();
+    let mut p = Painter::new();
+    draw_series_within(&mut p, &frame, &t, &v, 2.0, Color::hex(0));
+    assert!(p.vertices().is_empty(), "{} vertices for swings that never stop inside the range", p.vertices().len());
 }
 
 // ---------------------------------------------------------------- arm

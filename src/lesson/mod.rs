@@ -196,7 +196,10 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
                 Some(("answers", v)) => {
                     return Err(error(
                         n,
-                        format!("'answers: {}' under the title: only 'answers: hidden' (student mode) is known", v.trim()),
+                        format!(
+                            "'answers: {}' under the title: only 'answers: hidden' (student mode) is known",
+                            v.trim()
+                        ),
                     ))
                 }
                 _ => return Err(error(n, "text before the first step ('## title')")),
@@ -216,7 +219,9 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
                 "answers" => {
                     return Err(error(
                         n,
-                        format!("'answers: {value}' in a step: only 'answers: shown' (reveal them at this step) is known"),
+                        format!(
+                            "'answers: {value}' in a step: only 'answers: shown' (reveal them at this step) is known"
+                        ),
                     ))
                 }
                 "term" => {

@@ -83,7 +83,10 @@ impl NumberSpec {
 
     /// True if `v` lies within the control's span (with a little slack for rounded text).
     pub fn in_control(&self, v: f64) -> bool {
-        v.is_finite() && v >= self.control[0] * (1.0 - 1e-9) && v <= self.control[1] * (1.0 + 1e-9)
+        // The slack is relative to each end's size, so that a negative end (the z-plane's centre)
+        // admits itself.
+        let [lo, hi] = self.control;
+        v.is_finite() && v >= lo - 1e-9 * lo.abs() && v <= hi + 1e-9 * hi.abs()
     }
 
     /// The control position in [0, 1] of `v` (clamped to the control's span).

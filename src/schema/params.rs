@@ -425,6 +425,8 @@ pub const PARAMS: &[&Param] = &[
     &super::EMBED,
     &super::TAB,
     &super::WINDOW,
+    &super::PICTURE,
+    &super::ERRORS,
     &super::POLES,
     &super::PLANE,
     &super::RHO,
@@ -435,4 +437,9 @@ pub const PARAMS: &[&Param] = &[
     &super::PREDICT,
     &super::SWING,
     &super::ANSWERS,
+    &super::ZSIZE,
+    &super::ZRE,
+    &super::ZIM,
+    &super::PRESENT,
+    &super::TEXT,
 ];

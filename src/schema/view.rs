@@ -183,6 +183,113 @@ pub const ANSWERS: Param = Param {
            until the student has answered the lesson step's question or met its goal.",
 };
 
+/// Presentation mode: the figure fills the screen, the verdict sits in a corner and the controls
+/// fold into a small bar; the figure's text grows with the screen (see `text`).
+pub const PRESENT: Param = switch(
+    "present",
+    "Presentation mode: the figure fills the screen",
+    false,
+    "For a projector: the figure alone over the whole screen (full screen where the browser allows), the \
+     verdict in a corner, a small bar of controls, and text at least 18 px on a 1080-line screen.",
+);
+
+/// How large the figure's text is: every text over the canvas and the gutters it sits in grow
+/// together, so the panels lay out as on a smaller screen and nothing overlaps.
+pub const TEXT: Param = Param {
+    key: "text",
+    label: "Figure text",
+    symbol: "",
+    unit: "",
+    name: "text",
+    kind: Kind::Choice {
+        options: &[
+            Choice { value: "normal", label: "Normal (12 px ticks)" },
+            Choice { value: "large", label: "Large (×1.25)" },
+            Choice { value: "larger", label: "Larger (×1.5)" },
+            Choice { value: "largest", label: "Largest (×2)" },
+        ],
+        default: "normal",
+    },
+    scope: Scope::Page,
+    help: "The size of the figure's labels: larger for the back of a room. In presentation mode the text is \
+           never smaller than the screen needs (18 px on a 1080-line screen, 15 px below).",
+};
+
+/// The z-plane's view: half its shorter side in units of λ (0: the default, around the flexible
+/// pair), and its centre (`zre`, `zim`). The page's zoom and pan write them, so a link shows the
+/// same part of the plane.
+pub const ZSIZE: Param = Param {
+    key: "zsize",
+    label: "z-plane's zoom: half its shorter side",
+    symbol: "",
+    unit: "",
+    name: "zsize",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: true,
+        max: 1.2,
+        allowed: Some(
+            "must be 0 (around the flexible pair) or from 0.0001 (the closest zoom) to 1.2 (the whole circle)",
+        ),
+        control: [0.0, 1.2],
+        scale: Scale::Linear,
+        digits: 3,
+        integer: false,
+        default: 0.0,
+    }),
+    scope: Scope::Page,
+    help: "How much of the z-plane shows: 1.2 the whole unit circle, 0.01 a hundredth of it around `zre`, `zim`; \
+           0 (the default) zooms around the flexible pair just enough to see how far it is from the circle.",
+};
+
+/// The z-plane view's centre, Re λ (with `zsize` > 0).
+pub const ZRE: Param = z_center("zre", "z-plane's centre, Re λ");
+
+/// The z-plane view's centre, Im λ (with `zsize` > 0).
+pub const ZIM: Param = z_center("zim", "z-plane's centre, Im λ");
+
+/// A coordinate of the z-plane view's centre.
+const fn z_center(key: &'static str, label: &'static str) -> Param {
+    Param {
+        key,
+        label,
+        symbol: "",
+        unit: "",
+        name: key,
+        kind: Kind::Number(NumberSpec {
+            min: -2.0,
+            min_inclusive: true,
+            max: 2.0,
+            allowed: Some("must be from −2 to 2"),
+            control: [-2.0, 2.0],
+            scale: Scale::Linear,
+            digits: 4,
+            integer: false,
+            default: 0.0,
+        }),
+        scope: Scope::Page,
+        help:
+            "The centre of the z-plane's view (Re λ, Im λ), used when `zsize` is not 0; the view is kept within ±1.5.",
+    }
+}
+
+/// The arm picture. Off only in an embed that shows plots alone (`views=` without `arm`); the
+/// page's full view and intro always draw it (they have no control to bring it back).
+pub const PICTURE: Param = switch(
+    "picture",
+    "Show the arm picture",
+    true,
+    "The arm, its motor and the magnified spring twist, with the reference arm. An embed whose `views=` has no `arm` leaves it out; the page always draws it.",
+);
+
+/// The error plots e1, e2 (off only where the figure is to show other panels alone).
+pub const ERRORS: Param = switch(
+    "errors",
+    "Show the tracking errors e1, e2",
+    true,
+    "The errors of both links against time. An embed whose `views=` has no `traces` leaves them out; the page always draws them.",
+);
+
 /// A page-only on/off view parameter.
 const fn switch(key: &'static str, label: &'static str, default: bool, help: &'static str) -> Param {
     Param { key, label, symbol: "", unit: "", name: key, kind: Kind::Switch { default }, scope: Scope::Page, help }

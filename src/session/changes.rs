@@ -54,9 +54,10 @@ impl Session {
         }
         let mut next = self.settings;
         next.set(key, value)?;
-        if key == schema::COMPARE.key && next.b.is_some() && self.settings.b.is_none() {
-            // Two runs' errors differ by orders of magnitude: a log scale shows both.
-            next.view.log = true;
+        // A panel turned on (or shown otherwise) comes into view: on a narrow canvas, its tab.
+        // (Two compared runs a decade apart get log axes from the view itself.)
+        if let Some(tab) = super::named::tab_of(key, &next.view).filter(|_| next.view != self.settings.view) {
+            next.view.tab = tab;
         }
         // The reference jumping under a moving arm would be a kick, not the setting: start over.
         let new_reference = key == "repeat" && next.a.repeat != self.settings.a.repeat;
@@ -95,6 +96,9 @@ impl Session {
     pub fn read_state(&mut self, state: &str) -> Result<Vec<Notice>, Error> {
         let mut next = self.settings;
         let notices = next.read(state, Source::Page)?;
+        if let Some(tab) = super::named::tab_named_in(state, &next.view) {
+            next.view.tab = tab;
+        }
         self.apply(next, true, "")?;
         Ok(notices)
     }

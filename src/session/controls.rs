@@ -9,7 +9,7 @@ use crate::schema::{self, Kind, Scope, Value};
 impl Session {
     /// The controls' current values, for the page to show.
     pub fn controls(&self) -> Vec<ControlValue> {
-        schema::PARAMS
+        let mut values: Vec<ControlValue> = schema::PARAMS
             .iter()
             .filter(|p| matches!(p.scope, Scope::Run | Scope::Page | Scope::Compare))
             .filter_map(|p| {
@@ -20,7 +20,11 @@ impl Session {
                 };
                 Some(ControlValue { key: p.key, value: v.text(), position, text })
             })
-            .collect()
+            .collect();
+        // The embed's strip (`strip=`, a list the session reads itself): which controls it shows.
+        let strip = self.settings.view.strip.text();
+        values.push(ControlValue { key: "strip", value: strip.clone(), position: None, text: strip });
+        values
     }
 }
 

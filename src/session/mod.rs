@@ -15,15 +15,16 @@ pub mod equations;
 pub mod export;
 pub mod lesson;
 pub mod maps;
+pub mod named;
 pub mod presets;
 pub mod python;
 pub mod query;
 pub mod run;
 mod run_settings;
 pub mod settings;
+mod start;
 pub mod status;
 pub mod story;
-mod start;
 mod student;
 pub mod timeline;
 pub mod view;
@@ -199,6 +200,9 @@ impl Session {
     ) -> (Self, Vec<Notice>) {
         let mut settings = Settings::page_start();
         let mut notices = settings.read(query, Source::Page).unwrap_or_default();
+        if let Some(tab) = named::tab_named_in(query, &settings.view) {
+            settings.view.tab = tab;
+        }
         let mut session = match Self::new(settings) {
             Ok(s) => s,
             Err(e) => {

@@ -9,8 +9,8 @@
 use super::presets::{arm, preset, ArmPreset, Preset, ARMS, PRESETS};
 use super::query::join_query;
 pub use super::query::split_query;
+use super::view::Strip;
 pub use super::view::ViewSettings;
-use super::view::VIEW_PARAMS;
 use crate::control::config::PreliminaryFeedbackChoice;
 use crate::error::{Error, ParseError};
 use crate::schema::{self, Scope, Value};
@@ -185,12 +185,19 @@ impl Settings {
                 fail("views", e)?;
             }
         }
+        // `strip=play,reset,delta`: the embed's controls, a list as `views=` is.
+        if let Some((_, list)) = pairs.iter().rev().find(|(k, _)| k == "strip") {
+            match Strip::read(list) {
+                Ok(strip) => self.view.strip = strip,
+                Err(e) => fail("strip", e)?,
+            }
+        }
         let compare = pairs.iter().rev().find(|(k, _)| k == "compare").map(|(_, v)| v.as_str());
         let mut listed = false;
         for (key, _) in &pairs {
             // `lesson` is the session's (which step of the lesson is open), not a setting.
             // `lesson_src` is the page's too (where a teacher's lesson file is).
-            if !matches!(key.as_str(), "preset" | "arm" | "lesson" | "lesson_src" | "views")
+            if !matches!(key.as_str(), "preset" | "arm" | "lesson" | "lesson_src" | "views" | "strip")
                 && schema::param(key).is_none()
             {
                 // The settings there are are listed once, with the first unknown key.
@@ -283,13 +290,7 @@ impl Settings {
             }
         }
         // The view's keys only where they differ from the defaults: links stay short.
-        let defaults = ViewSettings::default();
-        for p in VIEW_PARAMS {
-            let v = self.view.get(p.key).expect("view keys have values");
-            if defaults.get(p.key) != Some(v) {
-                pairs.push((p.key, v.text()));
-            }
-        }
+        pairs.extend(self.view.query_pairs());
         join_query(&pairs)
     }
 

@@ -10,17 +10,8 @@ use super::{HiddenStatus, RunStatus, Session, ViewSettings};
 
 /// The page's controls that show nothing while the answers are hidden (the figures' switches and
 /// the downloads that carry ρ): the page disables them.
-pub const HIDDEN_CONTROLS: [&str; 9] = [
-    "poles",
-    "rho",
-    "map",
-    "log",
-    "swing",
-    "export-python",
-    "export-data-json",
-    "export-data-csv",
-    "export-svg-maps",
-];
+pub const HIDDEN_CONTROLS: [&str; 9] =
+    ["poles", "rho", "map", "log", "swing", "export-python", "export-data-json", "export-data-csv", "export-svg-maps"];
 
 impl Session {
     /// Student mode is on: set by the link or the lesson, not lifted by the student.
@@ -49,7 +40,8 @@ impl Session {
 
     /// What the page says while the answers are hidden.
     pub(super) fn hidden_status(&self) -> HiddenStatus {
-        let hidden = "the verdict, ρ, the stable windows of δ, the pole plot, ρ(δ), the stability maps, log |e|, the swing's \
+        let hidden =
+            "the verdict, ρ, the stable windows of δ, the pole plot, ρ(δ), the stability maps, log |e|, the swing's \
                       shape, the explanation and the data downloads";
         let lesson = self.lesson.as_ref().and_then(|l| l.open_step().map(|i| &l.lesson().steps[i]));
         let until = match lesson {

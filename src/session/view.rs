@@ -10,6 +10,12 @@ use crate::schema::{self, Param, Value};
 pub struct ViewSettings {
     /// The full view (every control and figure) rather than the intro.
     pub full: bool,
+    /// The arm picture (off: an embed of plots alone).
+    pub picture: bool,
+    /// The error plots e1, e2.
+    pub errors: bool,
+    /// The controls an embed's strip shows (`strip=play,reset,delta,alpha,pf`).
+    pub strip: Strip,
     pub poles: bool,
     /// The pole plot draws λ with the unit circle instead of s = ln λ / δ.
     pub z_plane: bool,
@@ -32,14 +38,24 @@ pub struct ViewSettings {
     pub window: f64,
     /// Student mode (`answers=hidden`): what gives the answer away waits for the student's answer.
     pub answers_hidden: bool,
+    /// Presentation mode: the figure over the whole screen.
+    pub present: bool,
+    /// The figure's text size ("normal", "large", "larger", "largest").
+    pub text: &'static str,
+    /// The z-plane's view: half its shorter side in units of λ, 0 for the default (around the
+    /// flexible pair); and its centre (Re λ, Im λ).
+    pub z_size: f64,
+    pub z_center: [f64; 2],
 }
 
 /// The view parameters, in the order the state string writes them.
-pub(super) const VIEW_PARAMS: [&Param; 14] = [
+pub(super) const VIEW_PARAMS: [&Param; 21] = [
     &schema::MODE,
     &schema::EMBED,
     &schema::WINDOW,
     &schema::TAB,
+    &schema::PICTURE,
+    &schema::ERRORS,
     &schema::POLES,
     &schema::PLANE,
     &schema::RHO,
@@ -50,12 +66,20 @@ pub(super) const VIEW_PARAMS: [&Param; 14] = [
     &schema::PREDICT,
     &schema::SWING,
     &schema::ANSWERS,
+    &schema::PRESENT,
+    &schema::TEXT,
+    &schema::ZSIZE,
+    &schema::ZRE,
+    &schema::ZIM,
 ];
 
 impl Default for ViewSettings {
     fn default() -> Self {
         let mut v = Self {
             full: false,
+            picture: true,
+            errors: true,
+            strip: Strip::DEFAULT,
             poles: false,
             z_plane: false,
             rho: false,
@@ -69,6 +93,10 @@ impl Default for ViewSettings {
             embed: false,
             window: 10.0,
             answers_hidden: false,
+            present: false,
+            text: "normal",
+            z_size: 0.0,
+            z_center: [0.0, 0.0],
         };
         for p in VIEW_PARAMS {
             v.set(p.key, p.default_value());
@@ -82,6 +110,8 @@ impl ViewSettings {
     pub fn get(&self, key: &str) -> Option<Value> {
         Some(match key {
             "mode" => Value::Choice(if self.full { "full" } else { "intro" }),
+            "picture" => Value::Switch(self.picture),
+            "errors" => Value::Switch(self.errors),
             "plane" => Value::Choice(if self.z_plane { "z" } else { "s" }),
             "tab" => Value::Choice(self.tab),
             "embed" => Value::Switch(self.embed),
@@ -95,6 +125,11 @@ impl ViewSettings {
             "predict" => Value::Switch(self.predict),
             "swing" => Value::Switch(self.swing),
             "answers" => Value::Choice(if self.answers_hidden { "hidden" } else { "shown" }),
+            "present" => Value::Switch(self.present),
+            "text" => Value::Choice(self.text),
+            "zsize" => Value::Number(self.z_size),
+            "zre" => Value::Number(self.z_center[0]),
+            "zim" => Value::Number(self.z_center[1]),
             _ => return None,
         })
     }
@@ -103,6 +138,8 @@ impl ViewSettings {
     pub(super) fn set(&mut self, key: &str, v: Value) -> bool {
         match (key, v) {
             ("mode", Value::Choice(m)) => self.full = m == "full",
+            ("picture", Value::Switch(b)) => self.picture = b,
+            ("errors", Value::Switch(b)) => self.errors = b,
             ("plane", Value::Choice(p)) => self.z_plane = p == "z",
             ("tab", Value::Choice(t)) => self.tab = t,
             ("embed", Value::Switch(b)) => self.embed = b,
@@ -116,25 +153,29 @@ impl ViewSettings {
             ("predict", Value::Switch(b)) => self.predict = b,
             ("swing", Value::Switch(b)) => self.swing = b,
             ("answers", Value::Choice(a)) => self.answers_hidden = a == "hidden",
+            ("present", Value::Switch(b)) => self.present = b,
+            ("text", Value::Choice(t)) => self.text = t,
+            // Between 0 (the default view) and the closest zoom: the closest zoom.
+            ("zsize", Value::Number(v)) => self.z_size = if v > 0.0 { v.max(1e-4) } else { 0.0 },
+            ("zre", Value::Number(v)) => self.z_center[0] = v,
+            ("zim", Value::Number(v)) => self.z_center[1] = v,
             _ => return false,
         }
         true
     }
 
-    /// The figures named in a list (`views=arm,traces,zplane`): the arm and the errors are always
-    /// drawn; `poles` or `zplane`, `rho`, `map` and `torque` add theirs, and only those.
+    /// The figures named in a list (`views=zplane,rho`): exactly those, the arm (`arm`) and the
+    /// errors (`traces`) included: `poles` or `zplane` (the z-plane if both), `rho`, `map`,
+    /// `torque`. A name that is no figure, or a list that names none, is an error.
     pub fn read_views(&mut self, list: &str) -> Result<(), Error> {
-        const KNOWN: [&str; 7] = ["arm", "traces", "poles", "zplane", "rho", "map", "torque"];
-        let names: Vec<&str> = list.split(',').map(str::trim).filter(|n| !n.is_empty()).collect();
-        if let Some(bad) = names.iter().find(|n| !KNOWN.contains(n)) {
-            return Err(Error::Parse(ParseError {
-                key: "views".into(),
-                text: (*bad).into(),
-                expected: format!("a list of {}", KNOWN.join(", ")),
-            }));
+        let names = read_list("views", list, &VIEWS)?;
+        if names.is_empty() {
+            return Err(list_error("views", list, &VIEWS, "a list naming at least one figure"));
         }
         let has = |n: &str| names.contains(&n);
         self.full = true;
+        self.picture = has("arm");
+        self.errors = has("traces");
         self.poles = has("poles") || has("zplane");
         self.z_plane = has("zplane");
         self.rho = has("rho");
@@ -143,13 +184,128 @@ impl ViewSettings {
         Ok(())
     }
 
+    /// The figures drawn, as `views=` names them (`arm,traces,zplane,rho`): the list that gives
+    /// this view back.
+    pub fn views_list(&self) -> String {
+        let v = self.shown();
+        let pole = if v.z_plane { "zplane" } else { "poles" };
+        let named = [
+            ("arm", v.picture),
+            ("traces", v.errors),
+            // The zoom on one sampling instant shows the torques held.
+            ("torque", v.torque || v.predict),
+            (pole, v.poles),
+            ("rho", v.rho),
+            ("map", v.map),
+        ];
+        let names: Vec<&str> = named.iter().filter(|(_, on)| *on).map(|(n, _)| *n).collect();
+        names.join(",")
+    }
+
     /// What is drawn: the intro shows the arm and the errors only, whatever the figures' switches
-    /// say; an embedded page what they say.
+    /// say; the full view what they say, with the arm and the errors always (it has no control to
+    /// bring them back); an embedded page exactly what they say.
     pub fn shown(&self) -> Self {
-        if self.full || self.embed {
+        if self.embed {
             *self
+        } else if self.full {
+            Self { picture: true, errors: true, ..*self }
         } else {
-            Self { poles: false, rho: false, map: false, torque: false, predict: false, swing: false, ..*self }
+            Self {
+                picture: true,
+                errors: true,
+                poles: false,
+                rho: false,
+                map: false,
+                torque: false,
+                predict: false,
+                swing: false,
+                ..*self
+            }
         }
+    }
+
+    /// The view's keys that differ from the defaults (the view's part of a state string; links
+    /// stay short), the embed's strip among them.
+    pub fn query_pairs(&self) -> Vec<(&'static str, String)> {
+        let defaults = ViewSettings::default();
+        let mut pairs = Vec::new();
+        for p in VIEW_PARAMS {
+            let v = self.get(p.key).expect("view keys have values");
+            if defaults.get(p.key) != Some(v) {
+                pairs.push((p.key, v.text()));
+            }
+        }
+        if self.strip != defaults.strip {
+            pairs.push(("strip", self.strip.text()));
+        }
+        pairs
+    }
+}
+
+/// The figures `views=` can name.
+pub const VIEWS: [&str; 7] = ["arm", "traces", "poles", "zplane", "rho", "map", "torque"];
+
+/// The controls an embed's strip can show: Play/Pause (Restart after divergence), Reset, the δ
+/// and α sliders, and the K_pr switch, in the order the strip shows them.
+pub const STRIP_CONTROLS: [&str; 5] = ["play", "reset", "delta", "alpha", "pf"];
+
+/// The controls an embedded page's strip shows (`strip=play,reset,delta`), one bit each in the
+/// order of [`STRIP_CONTROLS`]; the verdict and "Open flexarm ↗" are always there.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Strip(u8);
+
+impl Strip {
+    /// Play and the K_pr switch: what the strip always had.
+    pub const DEFAULT: Strip = Strip(0b1_0001);
+
+    /// Reads a list of [`STRIP_CONTROLS`] names (empty: the verdict and the link alone).
+    pub fn read(list: &str) -> Result<Strip, Error> {
+        let names = read_list("strip", list, &STRIP_CONTROLS)?;
+        Ok(Strip(STRIP_CONTROLS.iter().enumerate().filter(|(_, c)| names.contains(c)).fold(0, |b, (i, _)| b | 1 << i)))
+    }
+
+    /// True if the strip shows the control named `name`.
+    pub fn has(self, name: &str) -> bool {
+        STRIP_CONTROLS.iter().position(|c| *c == name).is_some_and(|i| self.0 & (1 << i) != 0)
+    }
+
+    /// The list as the state string writes it (`play,reset,delta`).
+    pub fn text(self) -> String {
+        let names: Vec<&str> = STRIP_CONTROLS.into_iter().filter(|c| self.has(c)).collect();
+        names.join(",")
+    }
+}
+
+/// The names of a comma-separated list, each checked against `known`.
+fn read_list<'a>(key: &str, list: &'a str, known: &[&str]) -> Result<Vec<&'a str>, Error> {
+    let names: Vec<&str> = list.split(',').map(str::trim).filter(|n| !n.is_empty()).collect();
+    match names.iter().find(|n| !known.contains(n)) {
+        Some(bad) => Err(list_error(key, bad, known, "")),
+        None => Ok(names),
+    }
+}
+
+/// "expected a list of a, b, c" (with what more is expected, if anything).
+fn list_error(key: &str, text: &str, known: &[&str], more: &str) -> Error {
+    let expected = if more.is_empty() {
+        format!("a list of {}", known.join(", "))
+    } else {
+        format!("{more}: a list of {}", known.join(", "))
+    };
+    Error::Parse(ParseError { key: key.into(), text: text.into(), expected })
+}
+
+impl super::Session {
+    /// Shows this part of the z-plane: centre (Re λ, Im λ) and half the shorter side (0: the
+    /// default view around the flexible pair, centre ignored). Checked against the schema's
+    /// limits (`zre`, `zim`, `zsize`) like any setting; the runs go on.
+    pub fn set_z_view(&mut self, center: [f64; 2], half: f64) -> Result<(), Error> {
+        let mut next = self.settings;
+        let center = if half > 0.0 { center } else { [0.0, 0.0] };
+        for (p, v) in [(&schema::ZRE, center[0]), (&schema::ZIM, center[1]), (&schema::ZSIZE, half)] {
+            next.view.set(p.key, Value::Number(p.check(v)?));
+        }
+        self.apply(next, false, "")
     }
 }

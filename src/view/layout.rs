@@ -20,209 +20,7 @@ use serde::Serialize;
 
 pub use super::rect::Rect;
 
-/// What a panel shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum PanelKind {
-    /// The arm, its motor, the flexible joint and the reference arm (run A).
-    Arm,
-    /// The second arm when two runs are compared (run B).
-    ArmB,
-    /// Tracking error of link 1, e1 = q1 − q_d1 over time.
-    Error1,
-    /// Tracking error of link 2, e2 = q2 − q_d2 over time.
-    Error2,
-    /// Applied torques T1, T2 over time.
-    Torque,
-    /// The sampled loop's eigenvalues as s = ln λ / δ, with the δ → 0 pair A4.
-    Poles,
-    /// The sampled loop's eigenvalues λ themselves, with the unit circle.
-    ZPlane,
-    /// ρ over δ at the current α, with the stable windows.
-    RhoCurve,
-    /// ρ over (δ, α) without preliminary feedback.
-    MapOff,
-    /// ρ over (δ, α) with preliminary feedback.
-    MapOn,
-}
-
-impl PanelKind {
-    /// The identifier the page sees in `Renderer.layout()`.
-    pub fn id(self) -> &'static str {
-        match self {
-            PanelKind::Arm => "arm",
-            PanelKind::ArmB => "arm-b",
-            PanelKind::Error1 => "e1",
-            PanelKind::Error2 => "e2",
-            PanelKind::Torque => "torque",
-            PanelKind::Poles => "poles",
-            PanelKind::ZPlane => "z-plane",
-            PanelKind::RhoCurve => "rho-curve",
-            PanelKind::MapOff => "map-off",
-            PanelKind::MapOn => "map-on",
-        }
-    }
-
-    /// True for panels that plot quantities against time.
-    pub fn is_time_plot(self) -> bool {
-        matches!(self, PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque)
-    }
-
-    /// True for the arm pictures.
-    pub fn is_stage(self) -> bool {
-        matches!(self, PanelKind::Arm | PanelKind::ArmB)
-    }
-
-    /// True for the stability maps.
-    pub fn is_map(self) -> bool {
-        matches!(self, PanelKind::MapOff | PanelKind::MapOn)
-    }
-
-    /// True for the panels of the analysis row: pole plot (s or z), ρ(δ) and maps.
-    pub fn is_analysis(self) -> bool {
-        matches!(
-            self,
-            PanelKind::Poles | PanelKind::ZPlane | PanelKind::RhoCurve | PanelKind::MapOff | PanelKind::MapOn
-        )
-    }
-
-    /// True for the two pictures of the loop's eigenvalues.
-    pub fn is_pole_plot(self) -> bool {
-        matches!(self, PanelKind::Poles | PanelKind::ZPlane)
-    }
-}
-
-/// One panel: its kind and its rectangle in CSS pixels.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Panel {
-    pub kind: PanelKind,
-    /// CSS pixels, origin top-left of the canvas. For plots: the data area only.
-    pub rect: Rect,
-}
-
-/// One of the views a phone shows at a time (a narrow canvas cannot show every panel readably).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Tab {
-    /// The arm(s) and the time plots.
-    #[default]
-    Run,
-    /// The pole plot (s or z) and ρ(δ).
-    Poles,
-    /// The two stability maps.
-    Maps,
-}
-
-impl Tab {
-    pub const ALL: [Tab; 3] = [Tab::Run, Tab::Poles, Tab::Maps];
-
-    /// The word in the state string (`tab=poles`).
-    pub fn id(self) -> &'static str {
-        match self {
-            Tab::Run => "run",
-            Tab::Poles => "poles",
-            Tab::Maps => "maps",
-        }
-    }
-
-    /// What the tab bar says.
-    pub fn label(self) -> &'static str {
-        match self {
-            Tab::Run => "Arm and errors",
-            Tab::Poles => "Poles and ρ(δ)",
-            Tab::Maps => "Stability maps",
-        }
-    }
-
-    pub fn from_id(id: &str) -> Option<Tab> {
-        Tab::ALL.into_iter().find(|t| t.id() == id)
-    }
-
-    /// True if `kind` belongs to this tab.
-    fn holds(self, kind: PanelKind) -> bool {
-        match self {
-            Tab::Run => kind.is_stage() || kind.is_time_plot(),
-            Tab::Poles => kind.is_pole_plot() || kind == PanelKind::RhoCurve,
-            Tab::Maps => kind.is_map(),
-        }
-    }
-}
-
-/// Which panels to show.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LayoutOptions {
-    /// Adds the torque panel below the error panels.
-    pub show_torque: bool,
-    /// Adds the pole plot to the analysis row.
-    pub show_poles: bool,
-    /// The pole plot shows λ in the z-plane instead of s = ln λ / δ.
-    pub z_plane: bool,
-    /// Adds ρ(δ) at the current α to the analysis row.
-    pub show_rho: bool,
-    /// Adds the two stability maps to the analysis row.
-    pub show_map: bool,
-    /// Two runs side by side: a second arm on the stage.
-    pub pair: bool,
-    /// The view a narrow canvas shows (a wide one shows them all).
-    pub tab: Tab,
-}
-
-impl Default for LayoutOptions {
-    /// What the page's full view shows by default: one run, no torque, the s-plane pole plot,
-    /// ρ(δ), the maps.
-    fn default() -> Self {
-        Self {
-            show_torque: false,
-            show_poles: true,
-            z_plane: false,
-            show_rho: true,
-            show_map: true,
-            pair: false,
-            tab: Tab::Run,
-        }
-    }
-}
-
-/// The panels of a layout, grouped by where they go.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct PanelLists {
-    /// The arm pictures, sharing the stage.
-    pub stage: Vec<PanelKind>,
-    /// The time plots, stacked.
-    pub plots: Vec<PanelKind>,
-    /// The analysis panels, in a row below the time plots.
-    pub analysis: Vec<PanelKind>,
-}
-
-impl LayoutOptions {
-    /// The stage panels, the time plots and the analysis panels, in order.
-    pub fn panels(&self) -> PanelLists {
-        let mut stage = vec![PanelKind::Arm];
-        if self.pair {
-            stage.push(PanelKind::ArmB);
-        }
-        let mut plots = vec![PanelKind::Error1, PanelKind::Error2];
-        if self.show_torque {
-            plots.push(PanelKind::Torque);
-        }
-        let mut analysis = Vec::new();
-        if self.show_poles {
-            analysis.push(if self.z_plane { PanelKind::ZPlane } else { PanelKind::Poles });
-        }
-        if self.show_rho {
-            analysis.push(PanelKind::RhoCurve);
-        }
-        if self.show_map {
-            analysis.extend([PanelKind::MapOff, PanelKind::MapOn]);
-        }
-        PanelLists { stage, plots, analysis }
-    }
-
-    /// The tabs a narrow canvas offers: the run always, the others when they have panels.
-    pub fn tabs(&self) -> Vec<Tab> {
-        let lists = self.panels();
-        Tab::ALL.into_iter().filter(|t| *t == Tab::Run || lists.analysis.iter().any(|k| t.holds(*k))).collect()
-    }
-}
+pub use super::panels::{hidden_note, LayoutOptions, Panel, PanelKind, PanelLists, Tab};
 
 /// How the panels are arranged.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -329,11 +127,14 @@ impl Layout {
         let inner = Rect::new(0.0, 0.0, w, h).inset(margins::OUTER, margins::OUTER, margins::OUTER, margins::OUTER);
         let mut panels = Vec::with_capacity(lists.stage.len() + lists.plots.len() + lists.analysis.len());
         let portrait = w < PORTRAIT_ASPECT * h;
-        let mut tabbed = w < TABBED_WIDTH && !lists.analysis.is_empty();
+        // Tabs only where there is something to switch between: panels on two tabs or more.
+        let offered = options.tabs();
+        let can_tab = offered.len() > 1;
+        let mut tabbed = can_tab && w < TABBED_WIDTH;
         if !tabbed && !lists.analysis.is_empty() {
             // Everything at once only where everything stays readable; else one tab at a time.
             let all = Layout::compute_all(inner, &lists, portrait, &mut panels);
-            if smallest_side(&panels) >= MIN_READABLE_SIDE {
+            if !can_tab || smallest_side(&panels) >= MIN_READABLE_SIDE {
                 crate::sort::sort_by_key(&mut panels, |p| panel_order(p.kind));
                 return Layout {
                     css_width: w,
@@ -349,8 +150,7 @@ impl Layout {
             tabbed = true;
         }
         let (arrangement, tabs, tab) = if tabbed {
-            let tabs = options.tabs();
-            let tab = if tabs.contains(&options.tab) { options.tab } else { Tab::Run };
+            let tab = if offered.contains(&options.tab) { options.tab } else { offered[0] };
             match tab {
                 Tab::Run => {
                     run_panels(inner, &lists, w < TABBED_WIDTH || portrait, &mut panels);
@@ -360,12 +160,11 @@ impl Layout {
                     plot_column(inner, &[], &shown, &mut panels);
                 }
             }
-            (Arrangement::Tabbed, tabs, Some(tab))
-        } else if lists.analysis.is_empty() {
+            (Arrangement::Tabbed, offered, Some(tab))
+        } else {
+            // No analysis panels: the stage and the time plots (either may be left out).
             let arrangement = run_panels(inner, &lists, w < TABBED_WIDTH || portrait, &mut panels);
             (arrangement, Vec::new(), None)
-        } else {
-            unreachable!("analysis panels are laid out by compute_all or tabbed")
         };
         // Panels in reading order: the stage first, then the plots, then the analysis panels.
         crate::sort::sort_by_key(&mut panels, |p| panel_order(p.kind));
@@ -381,9 +180,8 @@ impl Layout {
             return Arrangement::Stacked;
         }
         let mut column = Vec::with_capacity(out.capacity());
-        let stage_w = (inner.w * STAGE_WIDTH_SHARE_WITH_ANALYSIS).round();
-        stage_panels(Rect::new(inner.x, inner.y, stage_w, inner.h), &lists.stage, &mut column);
-        plot_column(inner.inset(stage_w + margins::GAP, 0.0, 0.0, 0.0), &lists.plots, &lists.analysis, &mut column);
+        let rest = beside_stage(inner, STAGE_WIDTH_SHARE_WITH_ANALYSIS, &lists.stage, false, &mut column);
+        plot_column(rest, &lists.plots, &lists.analysis, &mut column);
         bands(inner, lists, out);
         if smallest_side(&column) > smallest_side(out) + 1e-9 {
             *out = column;
@@ -396,6 +194,12 @@ impl Layout {
     /// The first panel of the given kind, if shown.
     pub fn panel(&self, kind: PanelKind) -> Option<&Panel> {
         self.panels.iter().find(|p| p.kind == kind)
+    }
+
+    /// The panels `requested` asks for that this layout does not show (a narrow canvas shows
+    /// one tab at a time), in the order asked: what an embed must announce rather than drop.
+    pub fn hidden(&self, requested: &LayoutOptions) -> Vec<PanelKind> {
+        requested.panels().all().filter(|k| self.panel(*k).is_none()).collect()
     }
 
     /// Canvas size in physical pixels (what `canvas.width`/`height` must be), at least 1 × 1.
@@ -431,20 +235,44 @@ fn panel_order(kind: PanelKind) -> u8 {
     }
 }
 
-/// The stage and the time plots alone: stacked on a narrow canvas, else side by side.
+/// The stage and the time plots alone: stacked on a narrow canvas, else side by side. Either may
+/// be left out (an embed of the arm alone, or of the plots alone): the other takes the canvas.
 fn run_panels(inner: Rect, lists: &PanelLists, narrow: bool, out: &mut Vec<Panel>) -> Arrangement {
     if narrow {
         stacked(inner, &lists.stage, &lists.plots, &[], out);
         return Arrangement::Stacked;
     }
-    let stage_w = (inner.w * STAGE_WIDTH_SHARE).round();
-    stage_panels(Rect::new(inner.x, inner.y, stage_w, inner.h), &lists.stage, out);
-    place_plot_column(inner.inset(stage_w + margins::GAP, 0.0, 0.0, 0.0), &lists.plots, &[], 1, out);
+    let rest = beside_stage(inner, STAGE_WIDTH_SHARE, &lists.stage, lists.plots.is_empty(), out);
+    place_plot_column(rest, &lists.plots, &[], 1, out);
     Arrangement::SideBySide
 }
 
-/// Stage on top, then the time plots, then the analysis panels (wrapped onto rows).
+/// Places the stage at the left of `inner`, `share` of its width (all of it if `alone`: nothing
+/// else is shown), and returns the area right of it (all of `inner` without a stage).
+fn beside_stage(inner: Rect, share: f64, stage: &[PanelKind], alone: bool, out: &mut Vec<Panel>) -> Rect {
+    if stage.is_empty() {
+        return inner;
+    }
+    if alone {
+        stage_panels(inner, stage, out);
+        return Rect::new(inner.right(), inner.y, 0.0, inner.h);
+    }
+    let stage_w = (inner.w * share).round();
+    stage_panels(Rect::new(inner.x, inner.y, stage_w, inner.h), stage, out);
+    inner.inset(stage_w + margins::GAP, 0.0, 0.0, 0.0)
+}
+
+/// Stage on top, then the time plots, then the analysis panels (wrapped onto rows); without a
+/// stage the plots start at the top, and a stage alone takes the whole height.
 fn stacked(inner: Rect, stage: &[PanelKind], plots: &[PanelKind], analysis: &[PanelKind], out: &mut Vec<Panel>) {
+    if stage.is_empty() {
+        plot_column(inner, plots, analysis, out);
+        return;
+    }
+    if plots.is_empty() && analysis.is_empty() {
+        stage_panels(inner, stage, out);
+        return;
+    }
     let share = if analysis.is_empty() { STAGE_HEIGHT_SHARE } else { STAGE_HEIGHT_SHARE_WITH_ANALYSIS };
     let stage_h = (inner.h * share).round();
     stage_panels(Rect::new(inner.x, inner.y, inner.w, stage_h), stage, out);
@@ -486,15 +314,21 @@ fn smallest_side(panels: &[Panel]) -> f64 {
 
 /// One candidate band layout.
 fn place_bands(inner: Rect, lists: &PanelLists, share: f64, columns: usize, out: &mut Vec<Panel>) {
-    let top_h = (inner.h * share).round();
-    let arms = lists.stage.len().max(1) as f64;
-    // The arms are squares as tall as the band (below their captions), at most half the width.
-    let side = (top_h - margins::STAGE_TOP).min((inner.w * 0.5 - margins::GAP * (arms - 1.0)) / arms).max(0.0);
-    let stage_w = side * arms + margins::GAP * (arms - 1.0);
-    stage_panels(Rect::new(inner.x, inner.y, stage_w, top_h), &lists.stage, out);
-    let plots = Rect::new(inner.x + stage_w + margins::GAP, inner.y, inner.w - stage_w - margins::GAP, top_h);
-    place_plot_column(plots, &lists.plots, &[], 1, out);
-    let bottom = inner.inset(0.0, top_h + margins::GAP, 0.0, 0.0);
+    // Without a stage and time plots there is no top band: the analysis panels take it all.
+    let top_band = !(lists.stage.is_empty() && lists.plots.is_empty());
+    let top_h = if top_band { (inner.h * share).round() } else { 0.0 };
+    if !lists.stage.is_empty() {
+        let arms = lists.stage.len() as f64;
+        // The arms are squares as tall as the band (below their captions), at most half the width.
+        let side = (top_h - margins::STAGE_TOP).min((inner.w * 0.5 - margins::GAP * (arms - 1.0)) / arms).max(0.0);
+        let stage_w = side * arms + margins::GAP * (arms - 1.0);
+        stage_panels(Rect::new(inner.x, inner.y, stage_w, top_h), &lists.stage, out);
+        let plots = Rect::new(inner.x + stage_w + margins::GAP, inner.y, inner.w - stage_w - margins::GAP, top_h);
+        place_plot_column(plots, &lists.plots, &[], 1, out);
+    } else {
+        place_plot_column(Rect::new(inner.x, inner.y, inner.w, top_h), &lists.plots, &[], 1, out);
+    }
+    let bottom = if top_band { inner.inset(0.0, top_h + margins::GAP, 0.0, 0.0) } else { inner };
     let rows = lists.analysis.len().div_ceil(columns.max(1));
     let row_h = bottom.h / rows.max(1) as f64;
     place_grid(bottom, &lists.analysis, columns, row_h, out);

@@ -5,7 +5,8 @@
 //! | module | contents |
 //! |---|---|
 //! | [`painter`] | [`Vertex`], [`Painter`]: thick lines, polylines, circles, rectangles → triangle list |
-//! | [`layout`] | [`Layout`]: where the arm and the plots go for a canvas size ([`PanelKind`]) |
+//! | [`panels`] | [`PanelKind`], [`Tab`], [`LayoutOptions`]: which panels, and the notice of those not in view |
+//! | [`layout`] | [`Layout`]: where the arm and the plots go for a canvas size |
 //! | [`autoscale`] | the error/torque autoscale with hysteresis |
 //! | [`arm`] | the arm, motor, magnified spring twist and reference arm |
 //! | [`traces`] | scrolling time plots with min/max decimation |
@@ -17,6 +18,8 @@
 //! | [`scene`] | [`Scene`]: one frame from a session's runs, and its description for the page |
 //! | [`labels`] | where every text over the canvas goes (ticks, titles, notes), without overlaps |
 //! | [`legend`] | the key to the markers, lines and shades shown, and the colour bar of ρ |
+//! | [`figure`] | a figure per panel: one panel laid out alone, drawn and written as SVG |
+//! | [`text_size`] | the figure's text scale (the `text` setting, presentation mode's floor) |
 //!
 //! Ticks, number formats, colours and contours come from [`crate::plot`]. Simulation values
 //! arrive as f64 and stay f64 until a vertex is written (f32, physical pixels).
@@ -25,6 +28,7 @@
 
 pub mod arm;
 pub mod autoscale;
+pub mod figure;
 pub mod labels;
 pub mod layout;
 pub mod legend;
@@ -32,10 +36,12 @@ pub mod map;
 pub mod markers;
 pub mod options;
 pub mod painter;
+pub mod panels;
 pub mod poles;
 pub mod rect;
 pub mod rho_curve;
 pub mod scene;
+pub mod text_size;
 pub mod traces;
 pub mod zplane;
 
@@ -46,3 +52,4 @@ pub use map::MapSide;
 pub use painter::{Painter, Vertex};
 pub use poles::{PoleInfo, PoleKind};
 pub use scene::{OptionsUpdate, PanelInfo, Probe, RunState, Scene, SeriesInfo, ViewOptions};
+pub use text_size::TextSize;

@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 
 use super::arm::DEFAULT_SPRING_MAGNIFICATION;
 use super::layout::{LayoutOptions, Tab};
+use super::text_size::TextSize;
 use super::traces::DEFAULT_TIME_WINDOW;
 use crate::plot::color::Measure;
 
@@ -16,6 +17,13 @@ pub const MAX_SPRING_MAGNIFICATION: f64 = 1000.0;
 /// What the page can change about the picture.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct ViewOptions {
+    /// Show the arm picture (the stage); an embed may leave it out.
+    pub show_arm: bool,
+    /// Show the error plots e1, e2; an embed may leave them out.
+    pub show_errors: bool,
+    /// Exactly the panels asked for (an embed): the zoom on one sampling instant does not add
+    /// the torque panel by itself.
+    pub exact_panels: bool,
     /// Show the torque panel (T1, T2) below the error panels.
     pub show_torque: bool,
     /// Width W of the scrolling time window, s.
@@ -42,11 +50,20 @@ pub struct ViewOptions {
     pub tab: Tab,
     /// Student mode: what the analysis predicts (the slope ln ρ/δ on log |e|) is not drawn.
     pub hide_prediction: bool,
+    /// The z-plane's view as the page set it (`zsize` …), or None: around the flexible pair.
+    pub z_view: Option<super::zplane::ZView>,
+    /// The figure's text size (the session's view decides; not a page option).
+    pub text: TextSize,
+    /// Presentation mode: the text never smaller than the screen needs.
+    pub present: bool,
 }
 
 impl Default for ViewOptions {
     fn default() -> Self {
         Self {
+            show_arm: true,
+            show_errors: true,
+            exact_panels: false,
             show_torque: false,
             time_window: DEFAULT_TIME_WINDOW,
             spring_magnification: DEFAULT_SPRING_MAGNIFICATION,
@@ -60,6 +77,9 @@ impl Default for ViewOptions {
             show_swing: false,
             tab: Tab::Run,
             hide_prediction: false,
+            z_view: None,
+            text: TextSize::Normal,
+            present: false,
         }
     }
 }
@@ -142,7 +162,9 @@ impl ViewOptions {
 
     pub(crate) fn layout_options(&self, pair: bool) -> LayoutOptions {
         LayoutOptions {
-            show_torque: self.show_torque || self.show_cycle,
+            show_arm: self.show_arm,
+            show_errors: self.show_errors,
+            show_torque: self.show_torque || (self.show_cycle && !self.exact_panels),
             show_poles: self.show_poles,
             z_plane: self.z_plane,
             show_rho: self.show_rho,

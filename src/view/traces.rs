@@ -169,8 +169,9 @@ pub fn draw_series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], valu
 
 /// Like [`draw_series`], but clipped at the plot's top and bottom edges instead of running along
 /// them: each segment between two samples is cut where it crosses an edge, so a piece that leaves
-/// the range ends exactly on the edge and nothing is drawn while the curve is outside. For a faint
-/// comparison curve (the previous run) that must not look like data at the limit.
+/// the range ends exactly on the edge and nothing is drawn while the curve is outside — nor where
+/// it jumps from beyond one edge to beyond the other between two samples. For a faint comparison
+/// curve (the previous run) that must not look like data at the limit.
 pub fn draw_series_within(
     painter: &mut Painter,
     frame: &PlotFrame,
@@ -207,15 +208,34 @@ pub fn draw_series_within(
                 // The part of the segment c0 → c inside [lo, hi], as fractions f0 ≤ f1 of it.
                 let d = c - c0;
                 let (f0, f1) = if d == 0.0 {
-                    if (lo..=hi).contains(&c) { (0.0, 1.0) } else { (1.0, 0.0) }
+                    if (lo..=hi).contains(&c) {
+                        (0.0, 1.0)
+                    } else {
+                        (1.0, 0.0)
+                    }
                 } else {
                     let (a, b) = ((lo - c0) / d, (hi - c0) / d);
                     (a.min(b).max(0.0), a.max(b).min(1.0))
                 };
-                if f0 <= f1 {
+                // A segment that jumps right across the range (no sample inside: a diverged run's
+                // swings of hundreds of radians) would draw a stray stroke from edge to edge.
+                let across = f0 > 0.0 && f1 < 1.0;
+                if f0 <= f1 && !across {
                     // Where it enters and leaves: a sample, or the edge it crosses.
-                    let start = if f0 <= 0.0 { c0 } else if c0 < lo { lo } else { hi };
-                    let end = if f1 >= 1.0 { c } else if c > hi { hi } else { lo };
+                    let start = if f0 <= 0.0 {
+                        c0
+                    } else if c0 < lo {
+                        lo
+                    } else {
+                        hi
+                    };
+                    let end = if f1 >= 1.0 {
+                        c
+                    } else if c > hi {
+                        hi
+                    } else {
+                        lo
+                    };
                     if !(open && f0 <= 0.0) {
                         feed.lift();
                         feed.to(t0 + f0 * (t - t0), value(start));

@@ -4,8 +4,8 @@
 
 use wasm_bindgen::prelude::*;
 
-use super::session::WebSession;
 use super::js_error;
+use super::session::WebSession;
 use crate::session::answers::Record;
 
 #[wasm_bindgen(js_class = Session)]

@@ -7,6 +7,7 @@
 
 mod answers;
 mod data;
+mod figure;
 mod gpu;
 pub mod renderer;
 pub mod session;

@@ -30,9 +30,16 @@ struct LayoutReport {
     /// time}` (the anchor in CSS px; `align` says which point of the text sits on it; `time` is
     /// set on time ticks, which move with the scrolling window).
     labels: Vec<Label>,
+    /// Page CSS px per layout px: how much larger than normal the figure's text is drawn (the
+    /// page scales its HTML tooltips and tabs alike).
+    text_scale: f64,
     /// On a narrow canvas the views it shows one at a time, and which: `[{id, label, selected}]`
     /// (empty when everything is shown at once).
     tabs: Vec<TabInfo>,
+    /// The panels asked for that are not in view (on the other tabs), as ids, and a sentence that
+    /// says which and where (null when every panel is in view).
+    hidden: Vec<&'static str>,
+    hidden_note: Option<String>,
     /// The key to the panels shown: `[{title, items: [{glyph, color, text}], scale: {stops:
     /// [[pos, css]], ticks: [[pos, text]]} | null}]`.
     legend: Vec<LegendGroup>,
@@ -77,13 +84,17 @@ impl Renderer {
     /// Sets the canvas' drawing-buffer size to `css_width × css_height × device_pixel_ratio`
     /// physical pixels and re-lays out the panels. Invalid numbers count as 1; a size beyond the
     /// device's texture limit lowers the effective pixel ratio instead of failing.
-    pub fn resize(&mut self, css_width: f64, css_height: f64, device_pixel_ratio: f64) {
+    /// `screen_height` is the window's height in CSS px: presentation mode sizes the text for it.
+    pub fn resize(&mut self, css_width: f64, css_height: f64, device_pixel_ratio: f64, screen_height: Option<f64>) {
         let sane = |v: f64| if v.is_finite() && v >= 1.0 { v } else { 1.0 };
         let (w, h) = (sane(css_width), sane(css_height));
         let dpr = if device_pixel_ratio.is_finite() && device_pixel_ratio > 0.0 { device_pixel_ratio } else { 1.0 };
         let max = f64::from(self.gpu.max_texture_side());
         let dpr = dpr.min(max / w).min(max / h);
         self.scene.resize(w, h, dpr);
+        if let Some(screen) = screen_height.filter(|v| v.is_finite() && *v >= 1.0) {
+            self.scene.set_screen_height(screen);
+        }
         let (width, height) = self.scene.physical_size();
         self.gpu.resize(width, height);
     }
@@ -142,14 +153,17 @@ impl Renderer {
     pub fn layout(&self) -> Result<JsValue, JsError> {
         let report = LayoutReport {
             generation: self.scene.info_generation(),
-            panels: self.scene.panel_info(),
+            panels: self.scene.page_panel_info(),
             mode: if self.scene.is_pair() { "pair" } else { "single" },
             series: self.scene.series_info(),
-            poles: self.scene.pole_info(),
+            poles: self.scene.page_pole_info(),
             spring_magnification: self.scene.options().spring_magnification,
             backend: self.gpu.backend().name(),
-            labels: self.scene.labels(),
+            labels: self.scene.page_labels(),
+            text_scale: self.scene.page_scale(),
             legend: self.scene.legend(),
+            hidden: self.scene.hidden_panels().into_iter().map(|k| k.id()).collect(),
+            hidden_note: crate::view::panels::hidden_note(&self.scene.hidden_panels()),
             tabs: {
                 let layout = self.scene.layout();
                 let tabs = layout.tabs.iter();
@@ -163,14 +177,61 @@ impl Renderer {
     /// dragging there looks back at that instant.
     #[wasm_bindgen(js_name = timeAt)]
     pub fn time_at(&self, x: f64, y: f64) -> Option<f64> {
-        self.scene.time_at(x, y)
+        self.scene.page_time_at(x, y)
+    }
+
+    /// Zooms the z-plane by `factor` (> 1 in, < 1 out) about (x, y) in CSS pixels of the canvas —
+    /// the λ under the pointer stays under it — or about the panel's centre when x or y is not a
+    /// number (the buttons, the keys), and writes the view into the session's settings (`zsize`,
+    /// `zre`, `zim`: the URL carries it). False, and nothing changes, when (x, y) is not on the
+    /// z-plane or it is not shown.
+    #[wasm_bindgen(js_name = zoomZ)]
+    pub fn zoom_z(&mut self, session: &mut WebSession, x: f64, y: f64, factor: f64) -> Result<bool, JsError> {
+        let s = self.scene.page_scale();
+        let view = if x.is_finite() && y.is_finite() {
+            self.scene.zoom_z(x / s, y / s, factor)
+        } else {
+            self.scene.zoom_z_center(factor)
+        };
+        self.take_z_view(session, view)
+    }
+
+    /// True if (x, y) in CSS pixels of the canvas lies on the z-plane (where the wheel, a pinch
+    /// and a drag move its view).
+    #[wasm_bindgen(js_name = zAt)]
+    pub fn z_at(&self, x: f64, y: f64) -> bool {
+        let s = self.scene.page_scale();
+        self.scene.z_panel().is_some_and(|r| x / s >= r.x && x / s <= r.right() && y / s >= r.y && y / s <= r.bottom())
+    }
+
+    /// Moves the z-plane by (dx, dy) CSS pixels (a drag: the plane follows the pointer; the arrow
+    /// keys move it by a tenth of the panel), writing the view into the session's settings.
+    #[wasm_bindgen(js_name = panZ)]
+    pub fn pan_z(&mut self, session: &mut WebSession, dx: f64, dy: f64) -> Result<bool, JsError> {
+        let s = self.scene.page_scale();
+        let view = self.scene.pan_z(dx / s, dy / s);
+        self.take_z_view(session, view)
     }
 
     /// What lies at (x, y) in CSS pixels of the canvas: the nearest pole within `reach` pixels, or
     /// the point of a map: `{kind: "pole"|"map", title, lines: [{text, tone}], x, y, map, delta,
     /// alpha}`, or null.
     pub fn probe(&self, x: f64, y: f64, reach: f64) -> Result<JsValue, JsError> {
-        to_js(&self.scene.probe(x, y, reach))
+        to_js(&self.scene.page_probe(x, y, reach))
+    }
+}
+
+impl Renderer {
+    /// Writes a z-plane view into the session (rounded for a short link); false for none.
+    fn take_z_view(
+        &mut self,
+        session: &mut WebSession,
+        view: Option<crate::view::zplane::ZView>,
+    ) -> Result<bool, JsError> {
+        let Some(v) = view.map(|v| v.rounded()) else { return Ok(false) };
+        session.session_mut().set_z_view(v.center, v.half).map_err(|e| JsError::new(&e.to_string()))?;
+        self.scene.set_z_view(Some(v));
+        Ok(true)
     }
 }
 

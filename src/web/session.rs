@@ -345,7 +345,6 @@ impl WebSession {
         self.inner.csv()
     }
 
-    /// Run A's tracking errors as an SVG figure (the same as `flexarm simulate --svg`).
     /// Run A's settings as a Python script (NumPy, SciPy) that rebuilds the linearized loop and
     /// prints ρ, its eigenvalues and A4 — what `flexarm export-python` writes — from the
     /// template the page fetched (`export/model_template.py`).
@@ -354,22 +353,17 @@ impl WebSession {
         self.inner.python_script(template).map_err(js_error)
     }
 
-    #[wasm_bindgen(js_name = svgTraces)]
-    pub fn svg_traces(&self) -> String {
-        self.inner.svg_traces()
+    /// An embed of the page at `page_url` as the embed builder's `choices` say (a query:
+    /// `views=zplane,rho&width=760&height=480&paused=1&t=3&strip=delta,reset&lesson=4`):
+    /// `{html, src, width, height, title}`; throws naming a bad choice.
+    pub fn embed(&self, page_url: &str, choices: &str) -> Result<JsValue, JsError> {
+        to_js(&self.inner.embed(page_url, choices).map_err(js_error)?)
     }
 
-    /// The two stability maps as an SVG figure (the same as `flexarm map --svg`); throws while
-    /// they are not computed.
-    #[wasm_bindgen(js_name = svgMaps)]
-    pub fn svg_maps(&self) -> Result<String, JsError> {
-        self.inner.svg_maps().map_err(js_error)
-    }
-
-    /// An `<iframe>` snippet embedding the current state, for the page at `page_url`.
-    #[wasm_bindgen(js_name = embedSnippet)]
-    pub fn embed_snippet(&self, page_url: &str) -> String {
-        self.inner.embed_snippet(page_url)
+    /// The embed builder's choices to start from (what is on screen), as a query.
+    #[wasm_bindgen(js_name = embedDefaults)]
+    pub fn embed_defaults(&self) -> String {
+        self.inner.embed_defaults()
     }
 
     /// The state string (the URL query) of everything set.
@@ -383,6 +377,18 @@ impl WebSession {
     #[wasm_bindgen(js_name = momentQuery)]
     pub fn moment_query(&self) -> String {
         self.inner.moment_query()
+    }
+
+    /// The z-plane's view: "whole" (the whole unit circle) or "pair" (the default, around the
+    /// flexible pair); zooming and panning are the renderer's (`zoomZ`, `panZ`).
+    #[wasm_bindgen(js_name = zView)]
+    pub fn z_view(&mut self, which: &str) -> Result<(), JsError> {
+        let half = match which {
+            "whole" => crate::view::zplane::WHOLE_HALF,
+            "pair" => 0.0,
+            _ => return Err(JsError::new(&format!("invalid z-plane view '{which}': expected whole or pair"))),
+        };
+        self.inner.set_z_view([0.0, 0.0], half).map_err(js_error)
     }
 
     #[wasm_bindgen(js_name = stateString)]

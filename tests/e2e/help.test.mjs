@@ -121,7 +121,7 @@ test('every key of the help page\'s settings table is a setting, with its values
   }
   // The keys that are not settings of the schema: those the session reads itself.
   const special = Object.fromEntries(rows.filter((r) => r.special).map((r) => [r.special, r.cells]));
-  assert.deepEqual(Object.keys(special).sort(), ['arm', 'lesson', 'lesson_src', 'preset', 'views']);
+  assert.deepEqual(Object.keys(special).sort(), ['arm', 'lesson', 'lesson_src', 'preset', 'strip', 'views']);
   assert.equal(special.preset[2], wasm.presets.join(' | '), 'the presets');
   assert.equal(special.arm[2], wasm.arms.join(' | '), 'the arms');
   assert.ok(wasm.viewsError.includes(`a list of ${special.views[2]}`), `views: ${wasm.viewsError}`);

@@ -239,7 +239,10 @@ fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
     session.set_wall_clock(1_795_669_380_000.0);
     session.lesson_answer(2).map_err(JsValue::from).unwrap();
     let csv = session.answers_csv();
-    assert!(csv.contains(",1,Where does the controller alone work?,prediction,3,") && csv.contains("2026-11-26T05:03:00Z"), "{csv}");
+    assert!(
+        csv.contains(",1,Where does the controller alone work?,prediction,3,") && csv.contains("2026-11-26T05:03:00Z"),
+        "{csv}"
+    );
     let status = session.status().map_err(JsValue::from).unwrap();
     assert_ne!(verdict(&js_sys::Array::from(&get(&status, "runs")).get(0)), "hidden", "answered: shown");
 

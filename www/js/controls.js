@@ -28,13 +28,14 @@ function labelOf(p, id) {
 }
 
 /**
- * Builds the field for one parameter inside `slot`.
+ * Builds the field for one parameter inside `slot`; its elements' ids start with `prefix`.
  * @param {Param} p @param {HTMLElement} slot
  * @param {{ onSet: (key: string, text: string) => void, onPosition: (key: string, f: number) => void,
  *   onStep: (key: string, steps: number) => void }} on
+ * @param {string} prefix
  */
-function buildField(p, slot, on) {
-  const id = inputId(p.key);
+function buildField(p, slot, on, prefix) {
+  const id = `${prefix}${inputId(p.key)}`;
   slot.classList.add('field');
   if (p.kind === 'switch') {
     slot.classList.add('check');
@@ -93,17 +94,19 @@ function buildField(p, slot, on) {
 }
 
 /**
- * Builds every control whose placeholder the page has.
+ * Builds every control whose placeholder the page has: `[data-param=key]`, or another attribute
+ * for a second set of the same controls (the embed's strip: `data-strip`, ids prefixed `embed-`).
  * @param {Param[]} schema
  * @param {{ onSet: (key: string, text: string) => void, onPosition: (key: string, f: number) => void,
  *   onStep: (key: string, steps: number) => void }} on
+ * @param {{ attribute?: string, prefix?: string }} [where]
  */
-export function buildControls(schema, on) {
+export function buildControls(schema, on, { attribute = 'data-param', prefix = '' } = {}) {
   /** @type {Map<string, { input: HTMLElement, output: HTMLElement | null, exact: HTMLInputElement | null }>} */
   const fields = new Map();
   for (const p of schema) {
-    const slot = /** @type {HTMLElement | null} */ (document.querySelector(`[data-param="${p.key}"]`));
-    if (slot && !fields.has(p.key)) fields.set(p.key, buildField(p, slot, on));
+    const slot = /** @type {HTMLElement | null} */ (document.querySelector(`[${attribute}="${p.key}"]`));
+    if (slot && !fields.has(p.key)) fields.set(p.key, buildField(p, slot, on, prefix));
   }
   return {
     /** Shows the session's values. @param {ControlValue[]} values */

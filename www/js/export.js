@@ -1,5 +1,5 @@
 // Export of what is on screen: a PNG of the figure with a caption line, a WebM video of a run,
-// the SVG figures Rust writes, the data behind the figures (JSON, CSV) and the embed snippet.
+// the SVG figures Rust writes and the data behind the figures (JSON, CSV) (the embed: embed.js).
 // The picture is composited here (the wgpu canvas, the HTML labels over it, a caption); what the
 // SVGs, the data and the snippet say is Rust's.
 
@@ -118,6 +118,34 @@ export function dataJsonText(csv) {
   return `${JSON.stringify(dataJsonFromCsv(csv), null, 1)}\n`;
 }
 
+/** The scales a figure's PNG is offered at (px per figure px). */
+export const FIGURE_SCALES = [1, 2, 4];
+
+/**
+ * The file name of a figure: `flexarm-zplane.svg`, `flexarm-zplane@2x.png` (pure).
+ * @param {string} panel @param {string} format @param {number} scale
+ */
+export function figureFileName(panel, format, scale) {
+  return format === 'png' ? `flexarm-${panel}@${scale}x.png` : `flexarm-${panel}.svg`;
+}
+
+/**
+ * The PNG's pixel size for a figure `width`×`height` px at `scale` (pure).
+ * @param {number} width @param {number} height @param {number} scale
+ */
+export function figurePngSize(width, height, scale) {
+  return { width: Math.max(1, Math.round(width * scale)), height: Math.max(1, Math.round(height * scale)) };
+}
+
+/**
+ * The options of the figure list, as Rust lists the panels shown, keeping `selected` when it is
+ * still among them (pure). @param {{ id: string, label: string }[]} panels @param {string} selected
+ */
+export function figureOptions(panels, selected) {
+  const keep = panels.some((p) => p.id === selected) ? selected : (panels[0]?.id ?? '');
+  return panels.map((p) => ({ value: p.id, text: p.label, selected: p.id === keep }));
+}
+
 /** What a data file lacks while the maps are unfinished (or hidden, and so not computed), else "". @param {any} session */
 function mapsNote(session) {
   return session.status().maps.done ? '' : ', with the stability maps only as far as they are computed (see "omitted" in it)';
@@ -231,14 +259,15 @@ export function createExport(on) {
 
   byId('export-png').addEventListener('click', guarded('Saving the picture failed', () => savePng(on, from, say)));
   wireVideo(on, from, say);
+  // The errors and the maps as figures: the same SVG as the Figure row's (view/figure in Rust).
   byId('export-svg-traces').addEventListener('click', guarded('Saving the error figure failed', () => {
-    on.download('flexarm-errors.svg', on.session.svgTraces(), 'image/svg+xml');
+    on.download('flexarm-errors.svg', on.session.figureSvg('errors', false), 'image/svg+xml');
     say('Saved flexarm-errors.svg.');
   }));
   byId('export-svg-maps').addEventListener('click', guarded('Saving the map figure failed', () => {
     let svg;
     try {
-      svg = on.session.svgMaps();
+      svg = on.session.figureSvg('maps', false);
     } catch (e) {
       say(messageOf(e)); // not computed yet: an expected state, not an error
       return;
@@ -246,6 +275,7 @@ export function createExport(on) {
     on.download('flexarm-maps.svg', svg, 'image/svg+xml');
     say('Saved flexarm-maps.svg.');
   }));
+  wireFigure(on, say, guarded);
   byId('export-data-json').addEventListener('click', guarded('Saving the data failed', () => {
     on.download('flexarm-data.json', dataJsonText(on.session.dataCsv()), 'application/json');
     say(`Saved flexarm-data.json${mapsNote(on.session)}.`);
@@ -254,7 +284,6 @@ export function createExport(on) {
     on.download('flexarm-data.csv', on.session.dataCsv(), 'text/csv');
     say(`Saved flexarm-data.csv${mapsNote(on.session)}.`);
   }));
-  byId('embed-snippet').addEventListener('click', guarded('Making the embed snippet failed', () => showEmbed(on.session.embedSnippet(window.location.href), say)));
 }
 
 /**
@@ -383,19 +412,87 @@ function record(type, from, to) {
   return { stop: finish };
 }
 
-/** Shows the embed snippet, selected, and copies it where the browser allows. @param {string} snippet @param {(text: string) => void} say */
-async function showEmbed(snippet, say) {
-  const code = /** @type {HTMLTextAreaElement} */ (byId('embed-code'));
-  code.value = snippet;
-  code.hidden = false;
-  byId('embed-label').hidden = false;
-  code.focus();
-  code.select();
+// ---------------------------------------------------------------- a figure per panel
+
+/**
+ * The Figure row: which panel (those shown, listed by Rust), SVG or PNG at 1×, 2× or 4×, light
+ * or dark. The SVG is Rust's; a PNG is that SVG drawn into a canvas at the scale.
+ * @param {{ session: any, download: (name: string, data: BlobPart | null | undefined, type: string) => void }} on
+ * @param {(text: string) => void} say
+ * @param {(what: string, fn: () => void | Promise<void>) => () => Promise<void>} guarded
+ */
+function wireFigure(on, say, guarded) {
+  const panel = /** @type {HTMLSelectElement} */ (byId('figure-panel'));
+  const format = /** @type {HTMLSelectElement} */ (byId('figure-format'));
+  const scale = /** @type {HTMLSelectElement} */ (byId('figure-scale'));
+  const dark = /** @type {HTMLInputElement} */ (byId('figure-dark'));
+  let listed = '';
+  const refresh = () => {
+    const panels = on.session.figurePanels();
+    const id = JSON.stringify(panels);
+    if (id === listed) return;
+    listed = id;
+    panel.replaceChildren(...figureOptions(panels, panel.value).map((o) => {
+      const option = document.createElement('option');
+      option.value = o.value;
+      option.textContent = o.text;
+      option.selected = o.selected;
+      return option;
+    }));
+  };
+  const syncScale = () => { scale.disabled = format.value !== 'png'; };
+  refresh();
+  syncScale();
+  panel.addEventListener('focus', refresh);
+  panel.addEventListener('pointerdown', refresh);
+  format.addEventListener('change', syncScale);
+  byId('figure-download').addEventListener('click', guarded('Saving the figure failed', async () => {
+    refresh();
+    const id = panel.value;
+    let svg;
+    try {
+      svg = on.session.figureSvg(id, dark.checked);
+    } catch (e) {
+      say(messageOf(e)); // maps not computed, student mode: expected states, not errors
+      return;
+    }
+    if (format.value !== 'png') {
+      const name = figureFileName(id, 'svg', 1);
+      on.download(name, svg, 'image/svg+xml');
+      say(`Saved ${name}.`);
+      return;
+    }
+    const k = Number(scale.value) || 1;
+    const png = await svgToPng(svg, k);
+    const name = figureFileName(id, 'png', k);
+    on.download(name, png.blob, 'image/png');
+    say(`Saved ${name} (${png.width}×${png.height} px).`);
+  }));
+}
+
+/**
+ * Draws an SVG document into a canvas at `scale` device px per figure px and makes a PNG of it.
+ * @param {string} svg @param {number} scale
+ */
+async function svgToPng(svg, scale) {
+  const url = URL.createObjectURL(new Blob([svg], { type: 'image/svg+xml' }));
   try {
-    if (!navigator.clipboard) throw new Error('no clipboard');
-    await navigator.clipboard.writeText(snippet);
-    say('Embed snippet copied to the clipboard.');
-  } catch {
-    say('The embed snippet is selected above: select and copy it.');
+    const img = new Image();
+    await new Promise((resolve, reject) => {
+      img.onload = resolve;
+      img.onerror = () => reject(new Error('the browser could not draw the SVG figure'));
+      img.src = url;
+    });
+    const out = document.createElement('canvas');
+    Object.assign(out, figurePngSize(img.naturalWidth, img.naturalHeight, scale));
+    const ctx = out.getContext('2d');
+    if (!ctx) throw new Error('this browser has no 2D canvas');
+    ctx.drawImage(img, 0, 0, out.width, out.height);
+    /** @type {Blob | null} */
+    const blob = await new Promise((resolve) => out.toBlob(resolve, 'image/png'));
+    if (!blob) throw new Error('the browser made no PNG');
+    return { blob, width: out.width, height: out.height };
+  } finally {
+    URL.revokeObjectURL(url);
   }
 }

@@ -1,7 +1,9 @@
 // The figures by keyboard: a focusable region over each map, the pole plot and ρ(δ). On a map
 // the arrow keys move the running point (δ across, α up) and Enter runs with that map's
 // feedback; on the pole plot they step from pole to pole and read each one out; on ρ(δ) they
-// step δ. What a key does to the settings is the session's; this routes keys and places regions.
+// step δ; on the z-plane + and − zoom, 0 shows the whole circle, P the flexible pair, and
+// Shift with the arrows pans. What a key does to the settings (and to the view) is the session's
+// and the renderer's; this routes keys and places regions.
 
 import { byId, make, setText } from './dom.js';
 
@@ -10,10 +12,21 @@ export function arrowSteps(key) {
   return { ArrowRight: [1, 0], ArrowLeft: [-1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] }[key] ?? null;
 }
 
+/** What a key does to the z-plane's view (pure): a zoom factor, a pan (fractions of the panel), a
+ * named view, or null. @param {{ key: string, shiftKey?: boolean }} ev */
+export function zKey(ev) {
+  if (ev.key === '+' || ev.key === '=') return { zoom: 1.5 };
+  if (ev.key === '-' || ev.key === '_' || ev.key === '\u2212') return { zoom: 1 / 1.5 };
+  if (ev.key === '0') return { view: 'whole' };
+  if (ev.key === 'p' || ev.key === 'P') return { view: 'pair' };
+  const steps = ev.shiftKey ? arrowSteps(ev.key) : null;
+  return steps ? { pan: steps } : null;
+}
+
 /**
  * @param {{ stepOnMap: (side: string, d: number, a: number) => void, enterMap: (side: string) => void,
  *   stepDelta: (d: number) => void, probe: (x: number, y: number) => any, showTip: (p: any) => void,
- *   hideTip: () => void }} on
+ *   hideTip: () => void, zKey: (action: any, panel: any) => void, attachZ: (el: HTMLElement) => void }} on
  */
 export function createFocus(on) {
   const layer = byId('focus-layer');
@@ -22,13 +35,15 @@ export function createFocus(on) {
   const regions = new Map();
   /** @type {any[]} */
   let poles = [];
+  /** The panels as last described, by id. @type {Map<string, any>} */
+  const panels = new Map();
   let poleIndex = 0;
 
   const DESCRIBE = {
     'map-off': 'Stability map without K_pr. Arrow keys move the running point: left and right change δ, up and down α; Enter runs without K_pr.',
     'map-on': 'Stability map with K_pr. Arrow keys move the running point: left and right change δ, up and down α; Enter runs with K_pr.',
     poles: 'Pole plot. Arrow keys step from pole to pole and read each one.',
-    'z-plane': 'The loop\u2019s eigenvalues λ and the unit circle. Arrow keys step from one to the next and read it.',
+    'z-plane': 'The loop\u2019s eigenvalues λ and the unit circle. Arrow keys step from one to the next and read it; plus and minus zoom, 0 shows the whole circle, P the flexible pair, Shift with the arrows pans.',
     'rho-curve': 'ρ along δ. Left and right arrow keys change δ.',
   };
 
@@ -39,6 +54,11 @@ export function createFocus(on) {
       const el = make('div', { class: 'panel-focus', tabindex: '0', role: 'group', 'aria-label': DESCRIBE[/** @type {keyof typeof DESCRIBE} */ (p.id)] });
       el.addEventListener('keydown', (ev) => onKey(p.id, ev));
       el.addEventListener('blur', on.hideTip);
+      // The z-plane's region takes the pointer too: touch gestures there pan and pinch the plane.
+      if (p.id === 'z-plane') {
+        el.classList.add('takes-pointer');
+        on.attachZ(el);
+      }
       layer.append(el);
       regions.set(p.id, el);
       r = el;
@@ -49,6 +69,12 @@ export function createFocus(on) {
 
   /** @param {string} id @param {KeyboardEvent} ev */
   function onKey(id, ev) {
+    const z = id === 'z-plane' && !ev.ctrlKey && !ev.metaKey && !ev.altKey ? zKey(ev) : null;
+    if (z) {
+      on.zKey(z, panels.get(id));
+      ev.preventDefault();
+      return;
+    }
     const steps = arrowSteps(ev.key);
     if (id === 'map-off' || id === 'map-on') {
       const side = id === 'map-off' ? 'off' : 'on';
@@ -78,6 +104,7 @@ export function createFocus(on) {
   function update(layout) {
     const ids = new Set();
     for (const p of layout.panels) {
+      panels.set(p.id, p);
       if (!(p.id in DESCRIBE)) continue;
       ids.add(p.id);
       region(p).hidden = false;

@@ -1,5 +1,6 @@
 // Keyboard shortcuts: Space plays or pauses, → steps one sampling period forward and ← back (in
-// the kept past), R resets — unless the focus is somewhere that needs the key itself.
+// the kept past), R resets; with the pointer over the z-plane, + − 0 P zoom it (`zoomKey` says
+// whether they did) — unless the focus is somewhere that needs the key itself.
 
 /** True if the key belongs to the focused element (typing, a select, a button's own Space). */
 export function keyBelongsTo(/** @type {{ tagName?: string, type?: string, isContentEditable?: boolean }} */ t, /** @type {string} */ key) {
@@ -11,11 +12,16 @@ export function keyBelongsTo(/** @type {{ tagName?: string, type?: string, isCon
   return false;
 }
 
-/** @param {{ togglePlay: () => void, step: () => void, stepBack: () => void, reset: () => void }} on */
+/** @param {{ togglePlay: () => void, step: () => void, stepBack: () => void, reset: () => void,
+ *   zoomKey?: (ev: KeyboardEvent) => boolean }} on */
 export function wireKeys(on) {
   document.addEventListener('keydown', (ev) => {
     if (ev.defaultPrevented || ev.ctrlKey || ev.metaKey || ev.altKey) return;
     const key = ev.code === 'Space' ? ' ' : ev.key;
+    if (on.zoomKey && !keyBelongsTo(/** @type {any} */ (ev.target ?? {}), key) && on.zoomKey(ev)) {
+      ev.preventDefault();
+      return;
+    }
     if (![' ', 'ArrowRight', 'ArrowLeft', 'r', 'R'].includes(key) || keyBelongsTo(/** @type {any} */ (ev.target ?? {}), key)) return;
     ev.preventDefault();
     if (key === ' ') on.togglePlay();

@@ -20,8 +20,11 @@ import { playAction } from './run.js';
 import { createTimeline } from './timeline.js';
 import { createTabs } from './tabs.js';
 import { createExport } from './export.js';
+import { createEmbedBuilder, createEmbedStrip } from './embed.js';
 import { createLegend } from './legend.js';
 import { createFocus } from './focus.js';
+import { createZoom } from './zoomz.js';
+import { createPresent } from './present.js';
 
 const store = createStore();
 const errors = createErrors(store);
@@ -68,12 +71,21 @@ async function main() {
   /** @type {any} */
   let layout = null;
   let layoutGeneration = -1;
+  /** @type {ReturnType<typeof createPresent> | null} */
+  let present = null;
 
   // ---------------------------------------------------------------- changes go to the session
   const controls = buildControls(wasm.schema(), {
     onSet: (key, text) => change(() => session.set(key, text)),
     onPosition: (key, f) => change(() => session.setPosition(linked(key), f)),
     onStep: (key, steps) => change(() => session.stepValue(linked(key), steps)),
+  });
+  // The embed's strip: the controls `strip=` names, its δ and α sliders built like the page's.
+  const embedStrip = createEmbedStrip(wasm.schema(), {
+    onSet: (key, text) => change(() => session.set(key, text)),
+    onPosition: (key, f) => change(() => session.setPosition(key, f)),
+    onStep: (key, steps) => change(() => session.stepValue(key, steps)),
+    reset: () => reset(),
   });
   /** With α linked, either α slider moves both. @param {string} key */
   const linked = (key) => (store.get().linkAlpha && (key === 'alpha1' || key === 'alpha2') ? 'alpha' : key);
@@ -95,7 +107,9 @@ async function main() {
   function syncControls() {
     const values = session.controls();
     controls.sync(values);
+    embedStrip.sync(values);
     const value = (/** @type {string} */ key) => values.find((v) => v.key === key)?.value;
+    present?.sync((key) => values.find((v) => v.key === key));
     const full = value('mode') === 'full';
     if (document.body.dataset.mode !== (full ? 'full' : 'intro')) document.body.dataset.mode = full ? 'full' : 'intro';
     byId('mode-intro').setAttribute('aria-pressed', String(!full));
@@ -139,12 +153,13 @@ async function main() {
   // ---------------------------------------------------------------- transport and view
   const play = byId('play');
   const embedPlay = byId('embed-play');
+  const presentPlay = byId('present-play');
   /** Every run has diverged (the session says so): the button restarts them. */
   let finished = false;
   /** The Play buttons (the page's and the embed's) say what a press will do. */
   const showPlay = () => {
     const next = playAction(store.get().playing, finished);
-    for (const button of [play, embedPlay]) {
+    for (const button of [play, embedPlay, presentPlay]) {
       setText(button, next.text);
       button.setAttribute('aria-pressed', String(next.pressed));
       button.setAttribute('aria-label', next.label);
@@ -180,6 +195,13 @@ async function main() {
     loop.touch();
   };
   const reset = () => change(() => session.reset());
+  present = createPresent({
+    set: (key, value) => change(() => session.set(key, value)),
+    step: (key, steps) => change(() => session.stepValue(key, steps)),
+    togglePlay,
+    reset,
+    textChoices: (wasm.schema().find((/** @type {any} */ p) => p.key === 'text')?.options ?? []).map((/** @type {string[]} */ [value, label]) => ({ value, label })),
+  });
   byId('step').addEventListener('click', step);
   byId('reset').addEventListener('click', reset);
   byId('poke').addEventListener('click', () => change(() => session.poke()));
@@ -199,6 +221,7 @@ async function main() {
     download,
     report: (/** @type {string} */ what, /** @type {unknown} */ e) => errors.report(what, e),
   });
+  createEmbedBuilder({ session });
   byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
   // The page's address with this moment: it opens paused at the instant shown.
   byId('copy-moment').addEventListener('click', () => copyCommand(`${window.location.origin}${window.location.pathname}?${session.momentQuery()}`));
@@ -216,7 +239,13 @@ async function main() {
     setText(sheetToggle, open ? 'Close ▾' : document.body.classList.contains('in-lesson') ? 'The lesson, controls and verdict ▴' : 'Controls, verdict and lesson ▴');
   };
   sheetToggle.addEventListener('click', () => openSheet(!sheet.classList.contains('open')));
-  wireKeys({ togglePlay, step, stepBack, reset });
+  wireKeys({
+    togglePlay,
+    step,
+    stepBack,
+    reset,
+    zoomKey: (ev) => zoom.key(ev, pointer.last()),
+  });
   wireTryButtons({
     preset: (id) => change(() => session.applyPreset(id)),
     set: (key, value) => change(() => session.set(key, value)),
@@ -313,7 +342,10 @@ async function main() {
     probe: (x, y) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, 2), null) : null),
     showTip: overlays.showTip,
     hideTip: overlays.hideTip,
+    zKey: (action) => zoom.by(action),
+    attachZ: (el) => pointer.attach(el),
   });
+  const zoom = createZoom({ session, renderer: () => renderer, layout: () => layout, guard, changed: () => (writeUrl(session.stateString()), loop.touch()) });
   const pointer = createPointer({
     probe: (x, y, reach) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, reach), null) : null),
     pick: (map, delta, alpha) => change(() => session.setFromMap(map, delta, alpha)),
@@ -322,6 +354,9 @@ async function main() {
     hideTip: overlays.hideTip,
     timeAt: (x, y) => renderer?.timeAt(x, y),
     scrubTo,
+    onZ: zoom.on,
+    zoomZ: zoom.zoomAt,
+    panZ: zoom.panBy,
   });
 
   /** Draws a frame; refreshes the labels when the frame's description changed. */
@@ -348,6 +383,7 @@ async function main() {
         tabs.render(layout.tabs);
         legend.render(layout.legend);
         focus.update(layout);
+        zoom.update(layout);
       }
     }
     overlays.scroll(renderer.windowStart(), renderer.windowEnd());
@@ -378,6 +414,7 @@ async function main() {
       showPlay();
     }
     status.renderLegend(s, layout?.series ?? []);
+    present?.render(s.runs);
     lesson.render(s.lesson);
     answers.sync(s.lesson, s.hidden);
     timeline.render(s.timeline);
@@ -462,7 +499,7 @@ async function main() {
     const size = { w: 0, h: 0 };
     const resize = () => {
       const r = current();
-      if (r && size.w > 0 && size.h > 0) guard('Renderer resize failed', () => r.resize(size.w, size.h, window.devicePixelRatio || 1));
+      if (r && size.w > 0 && size.h > 0) guard('Renderer resize failed', () => r.resize(size.w, size.h, window.devicePixelRatio || 1, window.innerHeight));
       loop.touch();
     };
     new ResizeObserver((entries) => {

@@ -1,23 +1,38 @@
 // The pointer on the canvas: hovering (mouse) or tapping (touch, pen) a pole shows what it is,
 // hovering a map shows ρ there, clicking a map runs at that point, dragging on ρ(δ) picks δ, and
-// pressing and dragging on an error plot looks back at that instant. What lies under the pointer
-// is the renderer's answer; this module only routes events.
+// pressing and dragging on an error plot looks back at that instant; on the z-plane the wheel and
+// a two-finger pinch zoom and a drag pans. What lies under the pointer, and what a gesture does to
+// the view, is the renderer's answer; this module only routes events and their sizes.
 
 import { byId } from './dom.js';
 
 /** How far from a pole the pointer may be and still pick it, CSS px. */
 const REACH = { mouse: 22, touch: 36 };
+/** A press on the z-plane becomes a drag (pan) after moving this far, CSS px: a tap stays a tap. */
+const DRAG_START = 5;
+
+/** The zoom factor of a wheel event: a notch (100 px, 3 lines) zooms by about 1.2 (pure). */
+export function wheelFactor(/** @type {{ deltaY: number, deltaMode: number }} */ ev) {
+  const px = ev.deltaY * (ev.deltaMode === 1 ? 33 : ev.deltaMode === 2 ? 400 : 1);
+  return Math.exp(-Math.max(-400, Math.min(400, px)) * 0.0018);
+}
 
 /**
  * @param {{ probe: (x: number, y: number, reach: number) => any, pick: (map: string, delta: number, alpha: number) => void,
  *   pickDelta: (delta: number) => void, showTip: (probe: any) => void, hideTip: () => void,
- *   timeAt: (x: number, y: number) => number | undefined, scrubTo: (t: number) => void }} on
+ *   timeAt: (x: number, y: number) => number | undefined, scrubTo: (t: number) => void,
+ *   onZ: (x: number, y: number) => boolean, zoomZ: (x: number, y: number, factor: number) => boolean,
+ *   panZ: (dx: number, dy: number) => boolean }} on
  */
 export function createPointer(on) {
   const canvas = byId('canvas');
   let pinned = false;
   /** The pointer that is dragging through time on an error plot, if any. */
   let scrubbing = /** @type {number | null} */ (null);
+  /** Pointers pressed on the z-plane: where each is now and whether it has started dragging. */
+  const zPointers = /** @type {Map<number, { x: number, y: number, dragging: boolean }>} */ (new Map());
+  /** The pointer's latest position over the figure (for the zoom keys), or null once it left. */
+  let last = /** @type {{ x: number, y: number } | null} */ (null);
 
   /** @param {PointerEvent | MouseEvent} ev */
   const at = (ev) => {
@@ -39,10 +54,44 @@ export function createPointer(on) {
     canvas.classList.toggle('over-map', probe.kind === 'map' || probe.kind === 'rho');
   }
 
+  /** The z-plane's gestures: one pointer drags the plane, two pinch it; true if the event was one.
+   * @param {PointerEvent} ev @param {number} x @param {number} y */
+  function zGesture(ev, x, y) {
+    if (ev.type === 'pointerdown' && ev.button === 0 && on.onZ(x, y)) {
+      zPointers.set(ev.pointerId, { x, y, dragging: false });
+      return false; // a press still shows what it is on (a tap on a pole)
+    }
+    const p = zPointers.get(ev.pointerId);
+    if (!p || ev.type !== 'pointermove') return false;
+    if (zPointers.size >= 2) {
+      // Pinch: zoom by the change of the fingers' distance about their midpoint, pan by its move.
+      const [a, b] = [...zPointers.values()];
+      const before = { d: Math.hypot(a.x - b.x, a.y - b.y), x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
+      Object.assign(p, { x, y, dragging: true });
+      const after = { d: Math.hypot(a.x - b.x, a.y - b.y), x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
+      if (before.d > 0 && after.d > 0) on.zoomZ(after.x, after.y, after.d / before.d);
+      on.panZ(after.x - before.x, after.y - before.y);
+    } else {
+      const [dx, dy] = [x - p.x, y - p.y];
+      if (!p.dragging && Math.hypot(dx, dy) < DRAG_START) return false;
+      if (!p.dragging) {
+        p.dragging = true;
+        /** @type {Element} */ (ev.target).setPointerCapture?.(ev.pointerId);
+      }
+      Object.assign(p, { x, y });
+      on.panZ(dx, dy);
+    }
+    hide();
+    ev.preventDefault();
+    return true;
+  }
+
   /** @param {PointerEvent} ev */
   function onPointer(ev) {
     const touch = isTouch(ev);
     const { x, y } = at(ev);
+    last = { x, y };
+    if (zGesture(ev, x, y)) return;
     // Pressing on an error plot looks back at that instant; dragging moves through time.
     if (ev.type === 'pointerdown' && ev.button === 0) {
       const t = on.timeAt(x, y);
@@ -94,19 +143,35 @@ export function createPointer(on) {
     else hide();
   }
 
-  canvas.addEventListener('pointermove', onPointer);
-  canvas.addEventListener('pointerdown', onPointer);
   const endScrub = (/** @type {PointerEvent} */ ev) => {
     if (scrubbing === ev.pointerId) scrubbing = null;
+    zPointers.delete(ev.pointerId);
   };
-  canvas.addEventListener('pointerup', endScrub);
-  canvas.addEventListener('pointercancel', endScrub);
-  canvas.addEventListener('pointerleave', (ev) => {
-    if (ev.pointerType === 'mouse' && !pinned) hide();
-  });
+  /** The wheel over the z-plane zooms about the pointer (elsewhere the page scrolls). @param {WheelEvent} ev */
+  const onWheel = (ev) => {
+    if (ev.ctrlKey && ev.deltaMode === 0 && Math.abs(ev.deltaY) < 1) return;
+    const { x, y } = at(ev);
+    if (on.zoomZ(x, y, wheelFactor(ev))) {
+      ev.preventDefault();
+      hide();
+    }
+  };
+  /** Listens on `el` (the canvas, and the z-plane's region over it, which takes touch gestures). @param {HTMLElement} el */
+  function attach(el) {
+    el.addEventListener('pointermove', onPointer);
+    el.addEventListener('pointerdown', onPointer);
+    el.addEventListener('pointerup', endScrub);
+    el.addEventListener('pointercancel', endScrub);
+    el.addEventListener('pointerleave', (ev) => {
+      if (ev.pointerType === 'mouse') last = null;
+      if (ev.pointerType === 'mouse' && !pinned) hide();
+    });
+    el.addEventListener('wheel', onWheel, { passive: false });
+  }
+  attach(canvas);
   canvas.addEventListener('click', onClick);
   document.addEventListener('pointerdown', (ev) => {
-    if (pinned && ev.target !== canvas) hide();
+    if (pinned && ev.target !== canvas && !(ev.target instanceof Element && ev.target.closest('.panel-focus'))) hide();
   });
-  return { hide };
+  return { hide, attach, last: () => last };
 }

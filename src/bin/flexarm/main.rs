@@ -9,7 +9,9 @@
 //!   feedback, summarizes it, and writes it as CSV, JSON or an SVG figure,
 //! * `flexarm export-python` writes the model as a Python script (NumPy, SciPy),
 //! * `flexarm data` writes the numbers behind every figure (model, A, B, C, D, Φ, eigenvalues, ρ(δ),
-//!   the maps) as JSON or one long CSV.
+//!   the maps) as JSON or one long CSV,
+//! * `flexarm figure` draws one panel of the page (arm, errors, pole plot, z-plane, ρ(δ), a map, …)
+//!   as an SVG figure with its key and the state string as its caption.
 //!
 //! The flags of the run settings come from the schema ([`flexarm::schema`]), as do their ranges
 //! and error messages. Bad input — including an output path that cannot be written — prints one
@@ -19,6 +21,7 @@ mod analyze;
 mod cli;
 mod data;
 mod export_python;
+mod figure;
 mod long_work;
 mod map;
 mod output;
@@ -47,6 +50,7 @@ fn commands() -> Vec<Command> {
         map::command(),
         export_python::command(),
         data::command(),
+        figure::command(),
     ]
 }
 
@@ -112,7 +116,7 @@ fn run(args: Vec<String>) -> Res<String> {
                 }
                 ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
                     Err(cli::usage_error(
-                        "no command given: use simulate, analyze, sweep, map, export-python, data or help (see 'flexarm --help')",
+                        "no command given: use simulate, analyze, sweep, map, export-python, data, figure or help (see 'flexarm --help')",
                     ))
                 }
                 _ => Err(cli::usage_error(one_line(&e, command.as_deref()))),
@@ -126,12 +130,13 @@ fn run(args: Vec<String>) -> Res<String> {
         Some(("map", m)) => map::run(m),
         Some(("export-python", m)) => export_python::run(m),
         Some(("data", m)) => data::run(m),
+        Some(("figure", m)) => figure::run(m),
         Some(("help", m)) => match m.get_one::<String>("command") {
             None => Ok(overview()),
             Some(name) => match commands().into_iter().find(|c| c.get_name() == name) {
                 Some(mut c) => Ok(c.render_help().to_string()),
                 None => Err(cli::usage_error(format!(
-                    "unknown command '{name}': use simulate, analyze, sweep, map, export-python or data"
+                    "unknown command '{name}': use simulate, analyze, sweep, map, export-python, data or figure"
                 ))),
             },
         },

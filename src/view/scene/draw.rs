@@ -17,7 +17,7 @@ use crate::view::rho_curve::draw_rho_marker;
 use crate::view::traces::{
     draw_background, draw_frame, draw_series, draw_series_within, max_abs, PlotFrame, TimeWindow,
 };
-use crate::view::zplane::{draw_zplane_background, draw_zplane_run, ZFrame};
+use crate::view::zplane::{draw_radial_tick, draw_zplane_background, draw_zplane_run, upper_flexible, z_ticks};
 
 impl Scene {
     pub(super) fn draw_arm(&mut self, panel: Panel, snapshot: &Snapshot) {
@@ -46,7 +46,7 @@ impl Scene {
 
     /// True if this plot shows log |e|.
     pub(super) fn log_plot(&self, kind: PanelKind) -> bool {
-        self.options.log_errors && matches!(kind, PanelKind::Error1 | PanelKind::Error2)
+        (self.options.log_errors || self.auto_log) && matches!(kind, PanelKind::Error1 | PanelKind::Error2)
     }
 
     /// The value range of a plot with half-range `y`: ±y, or [y·10^−LOG_DECADES, y] for log |e|.
@@ -157,7 +157,9 @@ impl Scene {
         // Kept half a line inside the frame, so that its ends do not stick out of the plot.
         let half = 0.875 * dpr;
         let r = frame.rect;
-        let inside = |p: [f64; 2]| [p[0], p[1].clamp(r.y + half, r.bottom() - half)];
+        // (A plot thinner than the line itself keeps it on its middle.)
+        let (top, bottom) = (r.y + half, (r.bottom() - half).max(r.y + half));
+        let inside = |p: [f64; 2]| [p[0], p[1].clamp(top, bottom)];
         let (a, b) = (inside([frame.x(start), frame.y(v_start)]), inside([frame.x(now), frame.y(e)]));
         self.painter.dashed_line(a, b, 1.75 * dpr, 7.0 * dpr, 5.0 * dpr, color);
     }
@@ -192,8 +194,13 @@ impl Scene {
 
     pub(super) fn draw_zplane(&mut self, panel: Panel) {
         let dpr = self.layout.device_pixel_ratio;
-        let frame = ZFrame::new(self.layout.to_physical(panel.rect));
-        draw_zplane_background(&mut self.painter, &frame, dpr);
+        let frame = self.z_frame(self.layout.to_physical(panel.rect));
+        let ticks = z_ticks(panel.rect, frame.view);
+        draw_zplane_background(&mut self.painter, &frame, ticks, dpr);
+        // How far run A's flexible pair is from the circle: the mark names it, this shows it.
+        if let Some(z) = self.runs[0].report.as_ref().and_then(upper_flexible) {
+            draw_radial_tick(&mut self.painter, &frame, z, dpr);
+        }
         for run in (0..self.run_count()).rev() {
             if let Some(report) = &self.runs[run].report {
                 draw_zplane_run(&mut self.painter, &frame, report, &run_pole_style(run), dpr);

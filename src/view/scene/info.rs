@@ -15,13 +15,15 @@ use crate::plot::Color;
 use crate::session::maps::MapSide;
 use crate::view::arm::ArmFrame;
 use crate::view::autoscale::Autoscale;
+use crate::view::labels::{font, LINE_HEIGHT};
 use crate::view::labels::{place_labels, Label};
+use crate::view::layout::margins;
 use crate::view::layout::{Panel, PanelKind};
 use crate::view::map::{map_ticks, side_of};
 use crate::view::poles::{describe_poles, flexible_aliased, nyquist, PoleInfo, PoleView, RE_RANGE};
 use crate::view::rho_curve::rho_ticks;
 use crate::view::traces::TimeWindow;
-use crate::view::zplane::ZFrame;
+use crate::view::zplane::{gap_text, label_fits, z_ticks, WHOLE_HALF};
 
 /// Least distance between log-axis labels, CSS px (x: a label's width, y: its height).
 const LOG_LABEL_SPACING: [f64; 2] = [38.0, 17.0];
@@ -114,6 +116,25 @@ fn linear_labels(ticks: &[f64]) -> Vec<TickLabel> {
     ticks.iter().map(|&value| TickLabel { value, text: f.format(value) }).collect()
 }
 
+/// Labels of linear ticks as whole steps from the middle tick, in a power of ten ("−4", "0",
+/// "4" for 0.70702, 0.70710, 0.70718), and the title's clause that reads them ("Im λ = 0.70710 +
+/// n × 1e−5", shorter forms where that is wider than `room` px); None for fewer than two ticks
+/// or no form that fits.
+fn offset_labels(ticks: &[f64], room: f64) -> Option<(Vec<TickLabel>, String)> {
+    let (&a, &b) = (ticks.first()?, ticks.get(1)?);
+    let step = b - a;
+    let unit = 10f64.powf((step.log10() + 1e-9).floor());
+    let mid = ticks[ticks.len() / 2];
+    let labels = ticks
+        .iter()
+        .map(|&value| TickLabel { value, text: format::minus(&format!("{}", ((value - mid) / unit).round() as i64)) })
+        .collect();
+    let (m, u) = (TickFormat::for_ticks(ticks).format(mid), format::log_tick(unit));
+    let forms = [format!("Im λ = {m} + n × {u}"), format!("Im λ = {m} + n·{u}"), format!("{m} + n·{u}")];
+    let base = forms.into_iter().find(|f| crate::view::labels::bold_width(f, font::TITLE) <= room)?;
+    Some((labels, base))
+}
+
 /// Text labels for the log ticks that fit along `length` pixels.
 fn log_labels(ticks: &[f64], range: [f64; 2], length: f64, spacing: f64) -> Vec<TickLabel> {
     label_log_ticks(ticks, range[0], range[1], length, spacing)
@@ -133,8 +154,19 @@ impl Scene {
     pub fn legend(&self) -> Vec<crate::view::legend::LegendGroup> {
         let kinds: Vec<PanelKind> = self.layout.panels.iter().map(|p| p.kind).collect();
         let zoom = self.cycle_window().is_some();
-        let mut groups =
-            crate::view::legend::legend(&kinds, self.pair, self.options.measure, self.options.log_errors, zoom);
+        let mut groups = crate::view::legend::legend(
+            &kinds,
+            self.pair,
+            self.options.measure,
+            self.options.log_errors || self.auto_log,
+            zoom,
+        );
+        if self.auto_log {
+            // The key says why the axes are logarithmic where the plot's header has no room.
+            if let Some(g) = groups.iter_mut().find(|g| g.title == "log |e|") {
+                g.title = super::compare::AUTO_LOG_KEY;
+            }
+        }
         groups.extend(self.swing_legend());
         groups
     }
@@ -211,6 +243,14 @@ impl Scene {
                     if panel.kind == PanelKind::Error1 && !self.options.hide_prediction {
                         info.note = "dashed: slope ln ρ/δ; as the analysis predicts".into();
                     }
+                    if self.auto_log {
+                        // Said where it is seen: the shared axes are logarithmic by the page's choice.
+                        info.note = if info.note.is_empty() {
+                            super::compare::AUTO_LOG_NOTE.into()
+                        } else {
+                            format!("{}; {}", super::compare::AUTO_LOG_NOTE, info.note)
+                        };
+                    }
                 } else {
                     info.y_ticks = y_ticks.collect();
                 }
@@ -239,17 +279,42 @@ impl Scene {
                 info.marks = self.flexible_mark();
             }
             PanelKind::ZPlane => {
-                let frame = ZFrame::new(r);
-                let [x0, y1] = frame.value_at([r.x, r.y]);
-                let [x1, y0] = frame.value_at([r.right(), r.bottom()]);
+                let frame = self.z_frame(r);
+                let (x_range, y_range) = frame.ranges();
+                let (x_ticks, y_ticks) = z_ticks(r, frame.view);
                 info.x_label = "Re λ".into();
                 info.y_label = "Im λ";
-                info.x_range = [x0, x1];
-                info.y_range = [y0, y1];
-                info.x_ticks = vec![-1.0, 0.0, 1.0];
-                info.y_ticks = vec![-1.0, 0.0, 1.0];
+                info.x_range = x_range;
+                info.y_range = y_range;
+                info.x_ticks = x_ticks.collect();
+                info.y_ticks = y_ticks.collect();
                 info.note = "eigenvalues λ; outside |λ| = 1: grows".into();
+                let zoom = WHOLE_HALF / frame.view.half;
+                if zoom > 1.05 {
+                    info.note += &format!("; zoomed ×{}", crate::plot::format::sig_trim(zoom, 2));
+                }
                 info.marks = self.flexible_mark();
+                // Only labels within the panel's sides (the grid lines stay).
+                let fits_x = |t: &TickLabel| {
+                    label_fits(t.value, x_range, r.w, crate::view::labels::text_width(&t.text, font::TICK))
+                };
+                let fits_y = |t: &TickLabel| label_fits(t.value, y_range, r.h, font::TICK * LINE_HEIGHT);
+                info.x_labels = linear_labels(&info.x_ticks).into_iter().filter(fits_x).collect();
+                let y_labels = linear_labels(&info.y_ticks);
+                // Labels wider than the gutter (0.70705 at the closest zoom) count steps from a
+                // tick in the middle instead, which the title names.
+                let room = margins::ANALYSIS_LEFT - 4.0;
+                let wide = y_labels.iter().any(|t| crate::view::labels::text_width(&t.text, font::TICK) > room);
+                let title_room = r.w + margins::ANALYSIS_LEFT;
+                info.y_labels = match (wide, offset_labels(&info.y_ticks, title_room)) {
+                    (true, Some((labels, base))) => {
+                        info.note = format!("{base}; {}", info.note);
+                        labels
+                    }
+                    (true, None) => Vec::new(),
+                    _ => y_labels,
+                };
+                info.y_labels.retain(fits_y);
             }
             PanelKind::RhoCurve => {
                 let frame = self.rho_frame(panel, false);
@@ -303,7 +368,7 @@ impl Scene {
         if info.x_scale == "linear" && info.x_labels.is_empty() {
             info.x_labels = linear_labels(&info.x_ticks);
         }
-        if info.y_scale == "linear" {
+        if info.y_scale == "linear" && panel.kind != PanelKind::ZPlane {
             info.y_labels = linear_labels(&info.y_ticks);
         }
         info
@@ -314,7 +379,7 @@ impl Scene {
     /// plot is hidden.
     pub fn pole_info(&self) -> Vec<PoleInfo> {
         let s_frame = self.layout.panel(PanelKind::Poles).map(|p| self.pole_frame(p.rect));
-        let z_frame = self.layout.panel(PanelKind::ZPlane).map(|p| ZFrame::new(p.rect));
+        let z_frame = self.layout.panel(PanelKind::ZPlane).map(|p| self.z_frame(p.rect));
         let view = match (&s_frame, &z_frame) {
             (Some(f), _) => PoleView::S(f),
             (None, Some(f)) => PoleView::Z(f),
@@ -341,6 +406,13 @@ impl Scene {
         let fits = |t: &str| crate::view::labels::bold_width(t, crate::view::labels::font::NOTE) <= room;
         let forms: &[&str] =
             if p.aliased { &["flexible pair, aliased", "aliased pair", "aliased"] } else { &["flexible pair", "pair"] };
+        // The z-plane says how far outside (or inside) the unit circle the pair is.
+        if self.layout.panel(PanelKind::ZPlane).is_some() {
+            let gap = gap_text(p.lambda);
+            let long = format!("{}: {gap}", forms[0]);
+            let text = [long.as_str(), gap.as_str()].into_iter().find(|t| fits(t)).unwrap_or(forms[forms.len() - 1]);
+            return vec![Mark { x, y, text: text.into() }];
+        }
         let text = forms.iter().copied().find(|t| fits(t)).unwrap_or(forms[forms.len() - 1]);
         vec![Mark { x, y, text: text.into() }]
     }

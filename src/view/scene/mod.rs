@@ -9,29 +9,32 @@
 //! The analyses come with the runs (the session computes them once per change); the scene keeps
 //! a copy of the latest for its descriptions, updated only when it changes.
 
+pub mod compare;
 mod cycle;
 mod draw;
 pub mod info;
+mod page;
 mod plots;
 mod probe;
 mod sources;
 mod split;
+mod static_layer;
 mod swing;
+mod zplane;
 
 use plots::{plot_series, plot_tick_counts, plot_ticks, pole_tick_counts, pole_ticks, y_label};
 
 use super::arm::VERTEX_BUDGET as ARM_VERTEX_BUDGET;
 use super::autoscale::{Autoscale, AutoscaleSettings};
 use super::layout::{Layout, Panel, PanelKind, Tab};
-use super::map::{draw_map_static, map_ticks, side_of, LogFrame, StabilityGrid, MARKER_VERTEX_BUDGET};
+use super::map::{StabilityGrid, MARKER_VERTEX_BUDGET};
 use super::painter::{Painter, Vertex};
 use super::poles::{PoleStyle, RUN_VERTEX_BUDGET as POLE_RUN_VERTEX_BUDGET};
-use super::rho_curve::{
-    curve_range, draw_rho_static, lag_band, rho_ticks, turn_omega, RhoFrame,
-    MARKER_VERTEX_BUDGET as RHO_MARKER_VERTEX_BUDGET,
-};
+use super::rho_curve::MARKER_VERTEX_BUDGET as RHO_MARKER_VERTEX_BUDGET;
 use super::traces::{vertex_budget, TimeWindow};
-use super::zplane::RUN_VERTEX_BUDGET as ZPLANE_RUN_VERTEX_BUDGET;
+use super::zplane::{
+    BACKGROUND_VERTEX_BUDGET as ZPLANE_BACKGROUND_BUDGET, RUN_VERTEX_BUDGET as ZPLANE_RUN_VERTEX_BUDGET,
+};
 use crate::analysis::{StabilityReport, StableWindows};
 use crate::control::config::SimulationConfig;
 use crate::control::predictive::Sweep;
@@ -159,6 +162,14 @@ pub struct Scene {
     zoom_scales: [Autoscale; 3],
     /// Wall-clock seconds of the latest frame (the swing's animation).
     clock: f64,
+    /// The canvas as the page has it: CSS width and height, device-pixel ratio; and the screen's
+    /// height (CSS px), which presentation mode's text size follows.
+    page: [f64; 3],
+    screen_height: f64,
+    /// Page CSS px per layout px: the text scale ([`crate::view::text_size::text_scale`]).
+    scale: f64,
+    /// The error plots are log |e| because the compared runs differ by a decade ([`compare`]).
+    auto_log: bool,
 }
 
 impl Scene {
@@ -166,6 +177,10 @@ impl Scene {
     pub fn new(options: ViewOptions, css_width: f64, css_height: f64, device_pixel_ratio: f64) -> Self {
         let mut scene = Self {
             layout: Layout::compute(css_width, css_height, device_pixel_ratio, &options.layout_options(false)),
+            page: [css_width, css_height, device_pixel_ratio],
+            screen_height: f64::NAN,
+            scale: 1.0,
+            auto_log: false,
             options,
             pair: false,
             painter: Painter::new(),
@@ -191,7 +206,7 @@ impl Scene {
                 Autoscale::new(AutoscaleSettings::TORQUE),
             ],
         };
-        scene.relayout(css_width, css_height, device_pixel_ratio);
+        scene.relayout();
         scene
     }
 
@@ -203,6 +218,12 @@ impl Scene {
         &self.layout
     }
 
+    /// The panels the view asks for that this layout does not show (on a narrow canvas, those
+    /// of the other tabs): an embed announces them rather than dropping them silently.
+    pub fn hidden_panels(&self) -> Vec<PanelKind> {
+        self.layout.hidden(&self.options.layout_options(self.pair))
+    }
+
     /// True if the latest frame compared two runs.
     pub fn is_pair(&self) -> bool {
         self.pair
@@ -211,7 +232,7 @@ impl Scene {
     /// Validates and applies a partial options update (re-laying out if panels change).
     pub fn set_options(&mut self, update: &OptionsUpdate) -> Result<(), String> {
         self.options.apply(update)?;
-        self.relayout(self.layout.css_width, self.layout.css_height, self.layout.device_pixel_ratio);
+        self.relayout();
         Ok(())
     }
 
@@ -220,6 +241,9 @@ impl Scene {
     pub fn follow_view(&mut self, view: &ViewSettings) {
         let v = view.shown();
         let next = ViewOptions {
+            show_arm: v.picture,
+            show_errors: v.errors,
+            exact_panels: v.embed,
             show_poles: v.poles,
             z_plane: v.z_plane,
             show_rho: v.rho,
@@ -231,6 +255,9 @@ impl Scene {
             show_swing: v.swing,
             tab: Tab::from_id(v.tab).unwrap_or_default(),
             hide_prediction: v.answers_hidden,
+            z_view: zplane::z_view_of(&v),
+            text: crate::view::text_size::TextSize::from_name(v.text),
+            present: v.present,
             time_window: if v.window.is_finite() && v.window > 0.0 {
                 v.window.min(MAX_TIME_WINDOW)
             } else {
@@ -239,22 +266,46 @@ impl Scene {
             ..self.options
         };
         if next != self.options {
+            // Zooming the z-plane changes its drawing and description, not the layout.
+            let zoom_only = ViewOptions { z_view: self.options.z_view, ..next } == self.options;
             self.options = next;
-            self.relayout(self.layout.css_width, self.layout.css_height, self.layout.device_pixel_ratio);
+            if zoom_only {
+                self.info_generation += 1;
+            } else {
+                self.relayout();
+            }
         }
     }
 
     /// Lays the panels out for a new canvas size.
     pub fn resize(&mut self, css_width: f64, css_height: f64, device_pixel_ratio: f64) {
-        self.relayout(css_width, css_height, device_pixel_ratio);
+        self.page = [css_width, css_height, device_pixel_ratio];
+        self.relayout();
     }
 
     /// Lays out again, reserves room for the largest frame this layout can produce (so that
     /// drawing never reallocates) and rebuilds the static layer. Only a new size or a new set of
-    /// panels gets here; drawing a frame never does.
-    fn relayout(&mut self, css_width: f64, css_height: f64, device_pixel_ratio: f64) {
+    /// panels gets here; drawing a frame never does. The panels are laid out for the canvas
+    /// divided by the text scale and drawn that much larger (see [`crate::view::text_size`]).
+    pub(super) fn relayout(&mut self) {
+        let [w, h, dpr] = self.page;
+        let screen = if self.screen_height.is_finite() { self.screen_height } else { h };
+        self.scale = crate::view::text_size::text_scale(self.options.text, self.options.present, screen);
+        let dpr = if dpr.is_finite() && dpr > 0.0 { dpr } else { 1.0 };
         self.layout =
-            Layout::compute(css_width, css_height, device_pixel_ratio, &self.options.layout_options(self.pair));
+            Layout::compute(w / self.scale, h / self.scale, dpr * self.scale, &self.options.layout_options(self.pair));
+        let budget: usize = self.layout.panels.iter().map(|panel| self.vertex_budget(panel)).sum();
+        self.painter.reserve_total(budget);
+        self.rebuild_static();
+        self.info_generation += 1;
+    }
+
+    /// Draws on `layout` instead of the one computed for the canvas: a figure of one panel
+    /// ([`crate::view::figure`]), at text scale 1. A later resize or change of the panels shown
+    /// lays out for the canvas again.
+    pub fn set_layout(&mut self, layout: Layout) {
+        self.layout = layout;
+        self.scale = 1.0;
         let budget: usize = self.layout.panels.iter().map(|panel| self.vertex_budget(panel)).sum();
         self.painter.reserve_total(budget);
         self.rebuild_static();
@@ -284,7 +335,7 @@ impl Scene {
                 let background = 6 * (x_ticks + y_ticks + 8) + 2 * 6 + 24 + 2 * DASHED_LINE_BUDGET;
                 background + runs * POLE_RUN_VERTEX_BUDGET
             }
-            PanelKind::ZPlane => 3 * 128 * 6 + 6 * 14 + 24 + runs * ZPLANE_RUN_VERTEX_BUDGET,
+            PanelKind::ZPlane => ZPLANE_BACKGROUND_BUDGET + 24 + runs * ZPLANE_RUN_VERTEX_BUDGET,
             PanelKind::RhoCurve => 24 + runs * RHO_MARKER_VERTEX_BUDGET,
             PanelKind::MapOff | PanelKind::MapOn => 24 + 2 * 6 * 8 + runs * MARKER_VERTEX_BUDGET,
         }
@@ -373,55 +424,6 @@ impl Scene {
         self.runs.get(run).and_then(|r| r.report.as_ref())
     }
 
-    fn rebuild_static(&mut self) {
-        self.static_painter.clear();
-        let dpr = self.layout.device_pixel_ratio;
-        let measure = self.options.measure;
-        for panel in &self.layout.panels {
-            if panel.kind == PanelKind::RhoCurve {
-                let frame = self.rho_frame(panel, true);
-                let (x_ticks, y_ticks) = rho_ticks(panel.rect, &frame);
-                let ticks = (&x_ticks[..], &y_ticks[..]);
-                let lag = lag_band(self.runs[0].config.as_ref(), self.runs[0].report.as_ref());
-                let omega = turn_omega(self.runs[0].report.as_ref());
-                let windows = self.windows.as_ref();
-                draw_rho_static(&mut self.static_painter, &frame, windows, lag, omega, ticks, measure, dpr);
-                continue;
-            }
-            let Some(side) = side_of(panel.kind) else { continue };
-            let grid = &self.maps[side.index()];
-            let frame = LogFrame {
-                rect: self.layout.to_physical(panel.rect),
-                x_range: grid.delta_range(),
-                y_range: grid.alpha_range(),
-            };
-            let (x_ticks, y_ticks) = map_ticks(panel.rect, grid);
-            draw_map_static(&mut self.static_painter, &frame, grid, (&x_ticks, &y_ticks), measure, dpr);
-        }
-        self.static_generation += 1;
-    }
-
-    /// The ρ(δ) panel's frame (ρ or ln ρ/δ, as the view's measure says), in physical pixels or
-    /// (for descriptions) CSS pixels.
-    fn rho_frame(&self, panel: &Panel, physical: bool) -> RhoFrame {
-        let rect = if physical { self.layout.to_physical(panel.rect) } else { panel.rect };
-        let x_range = self.windows.as_ref().map_or(crate::schema::DELTA_SPEC.control, |w| w.range);
-        RhoFrame { rect, x_range, y_range: curve_range(self.windows.as_ref(), self.options.measure) }
-    }
-
-    /// Takes run A's stable windows, rebuilding ρ(δ) when they changed.
-    fn update_windows(&mut self, windows: Option<&StableWindows>) {
-        if self.windows.as_ref() == windows {
-            return;
-        }
-        match (&mut self.windows, windows) {
-            (Some(mine), Some(w)) => mine.clone_from(w),
-            (mine, w) => *mine = w.cloned(),
-        }
-        self.rebuild_static();
-        self.info_generation += 1;
-    }
-
     /// Builds the frame for run A, and run B beside it if given. Allocates nothing once the
     /// painter has grown to the scene's size, except when the mode (one run / two runs) changes
     /// (a new layout) or a run's analysis changes (a copy for the descriptions).
@@ -429,7 +431,7 @@ impl Scene {
         let pair = b.is_some();
         if pair != self.pair {
             self.pair = pair;
-            self.relayout(self.layout.css_width, self.layout.css_height, self.layout.device_pixel_ratio);
+            self.relayout();
         }
         let mut changed = self.runs[0].update(a.config, a.analysis);
         changed |= match &b {
@@ -458,6 +460,7 @@ impl Scene {
         self.painter.clear();
         self.update_cycle(&a);
         let window = self.window();
+        self.update_auto_log(&a, b.as_ref(), window);
         let zoom = self.cycle_window().is_some();
         for i in 0..self.layout.panels.len() {
             let panel = self.layout.panels[i];

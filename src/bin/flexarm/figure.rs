@@ -1,0 +1,88 @@
+//! `flexarm figure`: one panel of the page as a standalone SVG figure — the same figure as the
+//! page's "Figure" download ([`flexarm::view::figure`]): the session runs to a time (`--time` or
+//! the state's `t=`), so that the traces exist, and the panel is drawn from the view's geometry
+//! with its title, axes, key and the state string as its caption.
+
+use clap::{ArgMatches, Command};
+use flexarm::session::{Session, Source};
+use flexarm::view::figure::{figure_svg, FigurePanel};
+
+use crate::cli::{self, lib_error, usage_error, write_file, Res};
+use crate::simulate::KEYS;
+
+/// Seconds run when neither `--time` nor the state's `t=` says.
+const DEFAULT_TIME: f64 = 5.0;
+
+const REDIRECTS: &[(&str, &str)] = &[(
+    "png",
+    "--svg (flexarm writes SVG only: rasterize it with a browser or an SVG converter, or save a PNG at 1×, 2× or 4× \
+     from the page's Figure row)",
+)];
+
+pub fn command() -> Command {
+    cli::command(
+        "figure",
+        "One panel as an SVG figure (the page's Figure download): its title, axes, key and the state string as its \
+         caption, after running the session to --time",
+    )
+    .args(cli::run_args(KEYS))
+    .arg(cli::option("panel", "NAME", format!("The panel to draw: {}", FigurePanel::names())).required(true))
+    .arg(cli::option("svg", "FILE", "Write the figure to FILE (default: standard output)"))
+    .arg(cli::option(
+        "time",
+        "S",
+        format!("Run the session to t = S seconds first (default: the state's t=, else {DEFAULT_TIME} s)"),
+    ))
+    .arg(cli::flag("dark", "Draw on a dark background (the page's dark scheme) instead of the light one"))
+    .args(cli::redirects(REDIRECTS))
+}
+
+pub fn run(m: &ArgMatches) -> Res<String> {
+    cli::check_redirects(m, "figure", REDIRECTS)?;
+    let name = m.get_one::<String>("panel").map(String::as_str).unwrap_or("");
+    let panel = FigurePanel::parse(name).map_err(|e| usage_error(format!("--panel: {e}")))?;
+    let mut settings = cli::read_settings(m, KEYS)?;
+    // The page's own keys, which other commands ignore, say what the figure shows (plane=z,
+    // log=1, predict=1, measure=rate, compare=1 and run B) and when (t=): read as strictly.
+    if let Some(state) = m.get_one::<String>("state") {
+        let mut page = settings;
+        page.read(state, Source::Lesson).map_err(|e| usage_error(format!("--state: {}", lib_error(e).0)))?;
+        settings.view = page.view;
+        settings.b = page.b;
+        settings.start = page.start;
+    }
+    let time = match m.get_one::<String>("time") {
+        Some(text) => cli::parse_number(text)
+            .filter(|t| *t >= 0.0)
+            .ok_or_else(|| usage_error(format!("invalid --time = '{text}': expected seconds ≥ 0")))?,
+        None if settings.start.time > 0.0 => settings.start.time,
+        None => DEFAULT_TIME,
+    };
+    let mut session = Session::new(settings).map_err(lib_error)?;
+    session.run_to(time).map_err(lib_error)?;
+    // ρ(δ) and the marks on the maps need the stable windows; the maps, every row.
+    session.refresh();
+    if panel.kinds().iter().any(|k| k.is_map()) && !session.answers_hidden() {
+        session.maps_mut().enabled = true;
+        let mut clock = 0.0;
+        let mut now = || {
+            clock += 1.0;
+            clock
+        };
+        while session.maps_mut().work(&mut now, 1e9) {}
+    }
+    let figure = figure_svg(&session, panel.id(), m.get_flag("dark")).map_err(lib_error)?;
+    match m.get_one::<String>("svg") {
+        Some(path) => {
+            write_file("--svg", path, &figure.svg)?;
+            Ok(format!(
+                "wrote the figure '{}' ({} × {} px) at t = {} s to {path}\n",
+                panel.id(),
+                figure.width,
+                figure.height,
+                flexarm::plot::format::sig_trim(session.run(0).map_or(0.0, |r| r.closed_loop().time()), 4)
+            ))
+        }
+        None => Ok(figure.svg),
+    }
+}

@@ -1,0 +1,317 @@
+//! A figure per panel, for slides and handouts: one panel (or the two error plots, or both maps)
+//! as a standalone SVG, drawn from the same view geometry as the canvas — a [`Scene`] laid out
+//! with only that panel at a figure's size and drawn from the session, its triangles written as
+//! paths, its labels as texts with the page's sizes and alignments, its key, and a caption with
+//! what it shows and the whole state string (never cut: it takes as many lines as it needs).
+//!
+//! Always on the light background unless the dark scheme is asked for (then every colour is
+//! inverted in lightness, as the canvas's shader does). The page rasterizes the SVG for a PNG at
+//! 1×, 2× or 4× (`www/js/export.js`); `flexarm figure` writes the same SVG.
+//!
+//! In student mode the panels that give the answer away (the pole plots, ρ(δ), the maps) are
+//! refused while the answers are hidden, as the page's other downloads are; the error plots follow
+//! what the page draws (no log |e| then).
+
+mod key;
+mod layout;
+mod svg;
+
+use core::fmt::Write as _;
+
+use crate::error::{Error, ParseError};
+use crate::plot::{palette, Color};
+use crate::session::{MapSide, Session};
+use crate::view::layout::PanelKind;
+use crate::view::scene::{Scene, ViewOptions};
+use key::{curve_key, key, Caption};
+use layout::{figure_layout, MARGIN};
+use svg::{wrap, Doc, INK};
+
+pub use svg::px;
+
+/// What a figure shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FigurePanel {
+    Arm,
+    ArmB,
+    /// e1 and e2, stacked on one time axis.
+    Errors,
+    E1,
+    E2,
+    Torque,
+    /// The pole plot in the s-plane.
+    Poles,
+    ZPlane,
+    Rho,
+    MapOff,
+    MapOn,
+    /// Both maps side by side.
+    Maps,
+}
+
+impl FigurePanel {
+    pub const ALL: [FigurePanel; 12] = [
+        FigurePanel::Arm,
+        FigurePanel::ArmB,
+        FigurePanel::Errors,
+        FigurePanel::E1,
+        FigurePanel::E2,
+        FigurePanel::Torque,
+        FigurePanel::Poles,
+        FigurePanel::ZPlane,
+        FigurePanel::Rho,
+        FigurePanel::MapOff,
+        FigurePanel::MapOn,
+        FigurePanel::Maps,
+    ];
+
+    /// The name in `flexarm figure --panel NAME`, the page's choice and the file's name.
+    pub fn id(self) -> &'static str {
+        match self {
+            FigurePanel::Arm => "arm",
+            FigurePanel::ArmB => "arm-b",
+            FigurePanel::Errors => "errors",
+            FigurePanel::E1 => "e1",
+            FigurePanel::E2 => "e2",
+            FigurePanel::Torque => "torque",
+            FigurePanel::Poles => "poles",
+            FigurePanel::ZPlane => "zplane",
+            FigurePanel::Rho => "rho",
+            FigurePanel::MapOff => "map-off",
+            FigurePanel::MapOn => "map-on",
+            FigurePanel::Maps => "maps",
+        }
+    }
+
+    /// Every name, for messages: "arm, arm-b, errors, …".
+    pub fn names() -> String {
+        FigurePanel::ALL.map(FigurePanel::id).join(", ")
+    }
+
+    /// A figure by its name (or by the canvas's panel id: "z-plane", "rho-curve").
+    pub fn parse(name: &str) -> Result<FigurePanel, Error> {
+        let name = name.trim().to_ascii_lowercase();
+        let alias = match name.as_str() {
+            "z-plane" | "z" => "zplane",
+            "rho-curve" | "ρ" => "rho",
+            "s-plane" | "s" | "pole-plot" => "poles",
+            "torques" => "torque",
+            n => n,
+        };
+        FigurePanel::ALL.into_iter().find(|p| p.id() == alias).ok_or_else(|| {
+            Error::Parse(ParseError { key: "panel".into(), text: name, expected: format!("one of {}", Self::names()) })
+        })
+    }
+
+    /// The canvas's panels it shows.
+    pub fn kinds(self) -> &'static [PanelKind] {
+        match self {
+            FigurePanel::Arm => &[PanelKind::Arm],
+            FigurePanel::ArmB => &[PanelKind::ArmB],
+            FigurePanel::Errors => &[PanelKind::Error1, PanelKind::Error2],
+            FigurePanel::E1 => &[PanelKind::Error1],
+            FigurePanel::E2 => &[PanelKind::Error2],
+            FigurePanel::Torque => &[PanelKind::Torque],
+            FigurePanel::Poles => &[PanelKind::Poles],
+            FigurePanel::ZPlane => &[PanelKind::ZPlane],
+            FigurePanel::Rho => &[PanelKind::RhoCurve],
+            FigurePanel::MapOff => &[PanelKind::MapOff],
+            FigurePanel::MapOn => &[PanelKind::MapOn],
+            FigurePanel::Maps => &[PanelKind::MapOff, PanelKind::MapOn],
+        }
+    }
+
+    /// True for the figures of the analysis, which student mode hides until answered.
+    pub fn gives_answer_away(self) -> bool {
+        self.kinds().iter().any(|k| k.is_analysis())
+    }
+
+    fn is_map(self) -> bool {
+        self.kinds().iter().any(|k| k.is_map())
+    }
+
+    /// The figure's title, as the session draws it now (log |e|, the zoom on tₙ, ρ or ln ρ/δ).
+    fn title(self, session: &Session) -> String {
+        let v = session.drawn_view();
+        let errors = |what: &str| {
+            if v.predict {
+                format!("{what}, zoomed on one sampling instant tₙ (Fig. 2.1)")
+            } else if v.log {
+                format!("{what}, log |e| with the slope ln ρ/δ the analysis predicts")
+            } else {
+                what.to_string()
+            }
+        };
+        match self {
+            FigurePanel::Arm => "The arm, top view".into(),
+            FigurePanel::ArmB => "Run B's arm, top view".into(),
+            FigurePanel::Errors => errors("Tracking errors e1, e2"),
+            FigurePanel::E1 => errors("Tracking error e1 (link 1)"),
+            FigurePanel::E2 => errors("Tracking error e2 (link 2)"),
+            FigurePanel::Torque => errors("Torques T1, T2"),
+            FigurePanel::Poles => "Poles of the sampled loop, s = ln λ/δ".into(),
+            FigurePanel::ZPlane => "Eigenvalues λ of the sampled loop (z-plane)".into(),
+            FigurePanel::Rho => format!("{} along δ", v.measure.quantity()),
+            FigurePanel::MapOff | FigurePanel::MapOn | FigurePanel::Maps => {
+                format!("{} of the sampled loop over (δ, α)", v.measure.quantity())
+            }
+        }
+    }
+}
+
+/// One choice of the page's "Figure" list.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct FigureChoice {
+    pub id: &'static str,
+    pub label: String,
+}
+
+/// The figures of the panels the page shows now (as drawn: student mode leaves the analysis out).
+pub fn figure_choices(session: &Session) -> Vec<FigureChoice> {
+    let v = session.drawn_view();
+    let pair = session.run(1).is_some();
+    let e = if v.predict {
+        " (zoom on tₙ)"
+    } else if v.log {
+        " (log |e|)"
+    } else {
+        ""
+    };
+    let mut out = Vec::new();
+    let mut add = |p: FigurePanel, label: String| out.push(FigureChoice { id: p.id(), label });
+    add(FigurePanel::Arm, if pair { "Arm A".into() } else { "Arm".into() });
+    if pair {
+        add(FigurePanel::ArmB, "Arm B".into());
+    }
+    add(FigurePanel::Errors, format!("Errors e1 and e2{e}"));
+    add(FigurePanel::E1, format!("Error e1{e}"));
+    add(FigurePanel::E2, format!("Error e2{e}"));
+    if v.torque {
+        add(FigurePanel::Torque, "Torques".into());
+    }
+    if v.poles && v.z_plane {
+        add(FigurePanel::ZPlane, "z-plane".into());
+    } else if v.poles {
+        add(FigurePanel::Poles, "Pole plot (s)".into());
+    }
+    if v.rho {
+        add(FigurePanel::Rho, format!("{} along δ", v.measure.symbol()));
+    }
+    if v.map {
+        add(FigurePanel::MapOff, "Map without Kₚᵣ".into());
+        add(FigurePanel::MapOn, "Map with Kₚᵣ".into());
+        add(FigurePanel::Maps, "Both maps".into());
+    }
+    out
+}
+
+/// A figure's SVG text and size (px at 1×).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Figure {
+    pub svg: String,
+    pub width: f64,
+    pub height: f64,
+}
+
+/// The figure `panel` of the session as it is now: light, or in the dark scheme if `dark`.
+pub fn figure_svg(session: &Session, panel: &str, dark: bool) -> Result<Figure, Error> {
+    let panel = FigurePanel::parse(panel)?;
+    if panel.gives_answer_away() && session.answers_hidden() {
+        return Err(Error::NotReady(
+            "student mode hides this figure (the pole plots, ρ(δ) and the maps) until you answer",
+        ));
+    }
+    if panel == FigurePanel::ArmB && session.run(1).is_none() {
+        return Err(Error::NotReady("there is no run B: compare two runs to draw run B's arm"));
+    }
+    if panel.is_map() && !MapSide::BOTH.iter().all(|&s| session.maps().shown(s).is_some_and(|e| e.is_done())) {
+        return Err(Error::NotReady(
+            "the stability maps are still being computed: show them and wait for the progress bar to fill",
+        ));
+    }
+    let width_guess = 800.0;
+    let title = panel.title(session);
+    let title_lines = wrap(&title, width_guess - 2.0 * MARGIN, 16.0, true);
+    let top = MARGIN + title_lines.len() as f64 * 21.0 + 6.0;
+    let (layout, width, panels_bottom) = figure_layout(panel.kinds(), top);
+    let inner = width - 2.0 * MARGIN;
+    let title_lines = wrap(&title, inner, 16.0, true);
+
+    // The scene: first as the session's view lays it out (its options, the runs), then on the
+    // figure's layout, drawn again.
+    let mut scene = Scene::new(ViewOptions::default(), layout.css_width, layout.css_height, 1.0);
+    scene.draw_session(session);
+    scene.set_layout(layout);
+    scene.draw_session(session);
+
+    let mut groups = scene.legend();
+    let kinds = panel.kinds();
+    if kinds.iter().any(|k| k.is_time_plot()) {
+        let curves: &[(Color, &str)] = match panel {
+            FigurePanel::Torque => {
+                &[(palette::TORQUE1, "T1, the motor's torque"), (palette::TORQUE2, "T2, joint 2's torque")]
+            }
+            FigurePanel::E1 => &[(palette::ERROR1, "e1 = q1 − q_d1, link 1's tracking error")],
+            FigurePanel::E2 => &[(palette::ERROR2, "e2 = q2 − q_d2, link 2's tracking error")],
+            _ => &[
+                (palette::ERROR1, "e1 = q1 − q_d1, link 1's tracking error"),
+                (palette::ERROR2, "e2 = q2 − q_d2, link 2's tracking error"),
+            ],
+        };
+        let pair = scene.is_pair().then_some(palette::RUN_B);
+        let ghost = session.ghost().map(|_| palette::GHOST_TRACE);
+        groups.insert(0, curve_key(curves, pair, ghost).expect("curves"));
+    }
+    let key_top = panels_bottom + 8.0;
+    let key_height = key(None, &groups, MARGIN, key_top, inner);
+    let state = session.state_string();
+    let status = session.status();
+    let t = session.run(0).map_or(0.0, |r| r.closed_loop().time());
+    let head = format!("flexarm at t = {} s — {}", crate::plot::format::sig_trim(t, 4), status.showing);
+    let caption = Caption::new(&head, &state, inner);
+    let caption_top = key_top + key_height + 4.0;
+    let height = (caption_top + caption.height() + MARGIN).ceil();
+
+    let background = palette::BACKGROUND;
+    let mut doc = Doc::new(width, height, &title, &state, background, dark);
+    for (k, line) in title_lines.iter().enumerate() {
+        let y = MARGIN + 16.0 + k as f64 * 21.0;
+        doc.text(width / 2.0, y, 16.0, "middle", 700, INK, "figure-title", line);
+    }
+    // Each panel's axes (its data area and what its edges stand for), for whoever reads the
+    // figure back: the tests, a script placing annotations.
+    // The page's entry points (at text scale 1 on the figure's layout: the layout's pixels), so
+    // that the page's module needs no second copy of them.
+    for p in scene.page_panel_info() {
+        let _ = writeln!(
+            doc.out,
+            "<g class=\"panel\" data-panel=\"{}\" data-rect=\"{} {} {} {}\" data-x-range=\"{} {}\" \
+             data-y-range=\"{} {}\" data-x-scale=\"{}\" data-y-scale=\"{}\"></g>",
+            p.id,
+            p.x,
+            p.y,
+            p.width,
+            p.height,
+            p.x_range[0],
+            p.x_range[1],
+            p.y_range[0],
+            p.y_range[1],
+            p.x_scale,
+            p.y_scale
+        );
+    }
+    doc.out.push_str("<g id=\"static\">\n");
+    doc.triangles(scene.static_vertices(), 0.4);
+    doc.out.push_str("</g>\n<g id=\"frame\">\n");
+    doc.triangles(scene.vertices(), 0.0);
+    doc.out.push_str("</g>\n<g id=\"labels\">\n");
+    for l in scene.page_labels() {
+        doc.label(&l);
+    }
+    doc.out.push_str("</g>\n<g id=\"key\">\n");
+    key(Some(&mut doc), &groups, MARGIN, key_top, inner);
+    doc.out.push_str("</g>\n<g id=\"caption\">\n");
+    caption.write(&mut doc, MARGIN, caption_top, inner);
+    doc.out.push_str("</g>\n");
+    Ok(Figure { svg: doc.finish(), width, height })
+}

@@ -1,0 +1,26 @@
+//! A figure per panel for the page's "Figure" row: the SVG Rust writes
+//! ([`crate::view::figure`]) and the list of panels shown. The page rasterizes the SVG for a PNG.
+//! Converts and forwards.
+
+use wasm_bindgen::prelude::*;
+
+use super::session::WebSession;
+use super::{js_error, to_js};
+use crate::view::figure::{figure_choices, figure_svg};
+
+#[wasm_bindgen(js_class = Session)]
+impl WebSession {
+    /// The panel `panel` ("arm", "errors", "e1", "poles", "zplane", "rho", "map-off", "maps", …) as
+    /// a standalone SVG figure: light, or in the dark scheme if `dark`. Throws for an unknown
+    /// panel, maps still being computed, or (student mode) a figure that gives the answer away.
+    #[wasm_bindgen(js_name = figureSvg)]
+    pub fn figure_svg(&self, panel: &str, dark: bool) -> Result<String, JsError> {
+        figure_svg(self.session(), panel, dark).map(|f| f.svg).map_err(js_error)
+    }
+
+    /// The figures of the panels shown now: `[{id, label}]`.
+    #[wasm_bindgen(js_name = figurePanels)]
+    pub fn figure_panels(&self) -> Result<JsValue, JsError> {
+        to_js(&figure_choices(self.session()))
+    }
+}

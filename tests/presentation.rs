@@ -1,0 +1,123 @@
+//! Presentation mode and the figure's text size (issue 23 item 2): on a projector the smallest
+//! figure text is at least 18 px at 1920 × 1080 and 14 px at 1024 × 768; at every text size no
+//! label overlaps another or the data, and the page's pointer still finds what it points at.
+
+mod common;
+use common::{play, session};
+
+use flexarm::view::{Label, PanelKind, Rect, Scene, ViewOptions};
+
+/// The presentation bar's height, CSS px (the canvas fills the screen above it).
+const BAR: f64 = 56.0;
+
+fn drawn(query: &str, w: f64, h: f64, screen: f64) -> Scene {
+    let mut s = session(&format!("preset=fig5.3&{query}"));
+    play(&mut s, 1.5);
+    s.refresh();
+    let mut scene = Scene::new(ViewOptions::default(), w, h, 1.0);
+    scene.set_screen_height(screen);
+    scene.draw_session(&s);
+    scene
+}
+
+fn smallest(labels: &[Label]) -> f64 {
+    labels.iter().map(|l| l.size).fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn presented_text_is_readable_from_the_back_of_a_room() {
+    for (w, h, need) in [(1920.0, 1080.0, 18.0), (1024.0, 768.0, 14.0)] {
+        for view in ["mode=full", "mode=full&plane=z&torque=1", "mode=intro", "mode=full&compare=1"] {
+            for text in ["normal", "large", "larger", "largest"] {
+                let q = format!("{view}&present=1&text={text}");
+                let scene = drawn(&q, w, h - BAR, h);
+                let labels = scene.page_labels();
+                assert!(!labels.is_empty(), "{q}");
+                let min = smallest(&labels);
+                assert!(min >= need - 1e-9, "{q} at {w}×{h}: smallest text {min:.1} px < {need} px");
+            }
+        }
+        // The same screen without presentation mode keeps the laptop's 12 px: the floor is
+        // presentation mode's doing, not the screen's.
+        let plain = drawn("mode=full", w, h - BAR, h);
+        assert!(smallest(&plain.page_labels()) < need, "{w}×{h} without present=1");
+    }
+}
+
+#[test]
+fn text_sizes_grow_in_order_and_apply_outside_presentation_mode_too() {
+    let mut last = 0.0;
+    for text in ["normal", "large", "larger", "largest"] {
+        let scene = drawn(&format!("mode=full&text={text}"), 1920.0, 1080.0, 1080.0);
+        let min = smallest(&scene.page_labels());
+        assert!(min > last + 1.0, "text={text}: {min} after {last}");
+        last = min;
+    }
+}
+
+fn overlap(a: &Rect, b: &Rect) -> bool {
+    a.x < b.right() - 0.5 && b.x < a.right() - 0.5 && a.y < b.bottom() - 0.5 && b.y < a.bottom() - 0.5
+}
+
+fn touch(a: &Rect, b: &Rect) -> bool {
+    let g = 2.0;
+    a.x < b.right() + g && b.x < a.right() + g && a.y < b.bottom() + g && b.y < a.bottom() + g
+}
+
+/// The no-overlap guarantee of tests/labels.rs, in the page's pixels, at every text size.
+#[test]
+fn no_text_overlaps_at_any_text_size() {
+    let mut checked = 0;
+    for text in ["large", "larger", "largest"] {
+        for view in ["mode=full", "mode=full&plane=z&log=1", "mode=full&compare=1&torque=1", "mode=intro", "embed=1"] {
+            for (w, h) in [(1920.0, 1024.0), (1280.0, 744.0), (1024.0, 712.0), (760.0, 480.0), (390.0, 600.0)] {
+                for present in ["0", "1"] {
+                    let q = format!("{view}&text={text}&present={present}");
+                    let scene = drawn(&q, w, h, h + BAR);
+                    let labels = scene.page_labels();
+                    let panels: Vec<(&str, Rect)> = scene
+                        .page_panel_info()
+                        .iter()
+                        .map(|p| (p.id, Rect::new(p.x, p.y, p.width, p.height)))
+                        .collect();
+                    let canvas = Rect::new(-0.5, -0.5, w + 1.0, h + 1.0);
+                    for (i, a) in labels.iter().enumerate() {
+                        let ba = a.bounds();
+                        assert!(canvas.contains_rect(&ba), "{q} {w}×{h}: '{}' off the canvas", a.text);
+                        for (id, r) in &panels {
+                            if *id != a.panel || a.class != flexarm::view::LabelClass::Mark {
+                                assert!(!overlap(&ba, r), "{q} {w}×{h}: '{}' covers {id}", a.text);
+                            }
+                        }
+                        for b in &labels[i + 1..] {
+                            assert!(!touch(&ba, &b.bounds()), "{q} {w}×{h}: '{}' touches '{}'", a.text, b.text);
+                        }
+                    }
+                    checked += labels.len();
+                }
+            }
+        }
+    }
+    println!("{checked} labels checked");
+}
+
+/// The page speaks CSS pixels of the screen: a pole reported at (x, y) is found by the pointer
+/// there, and a time plot's time under the pointer is the same at any text size.
+#[test]
+fn the_pointer_finds_what_the_page_was_told_at_any_text_size() {
+    for text in ["normal", "largest"] {
+        let scene = drawn(&format!("mode=full&present=1&text={text}"), 1920.0, 1024.0, 1080.0);
+        let poles = scene.page_pole_info();
+        let shown: Vec<_> = poles.iter().filter(|p| p.in_view).collect();
+        assert!(!shown.is_empty(), "text={text}: no pole in view");
+        for p in shown {
+            let (x, y) = (p.x.expect("in view"), p.y.expect("in view"));
+            let probe = scene.page_probe(x, y, 2.0).expect("a pole under the pointer");
+            assert!((probe.x - x).abs() < 1.0 && (probe.y - y).abs() < 1.0, "text={text}: {probe:?} vs ({x}, {y})");
+        }
+        let e1 = scene.page_panel_info().into_iter().find(|p| p.id == PanelKind::Error1.id()).expect("e1 shown");
+        let t = scene.page_time_at(e1.x + e1.width - 1.0, e1.y + e1.height / 2.0).expect("a time at e1's right edge");
+        let end = scene.time_window().end;
+        assert!((t - end).abs() < 0.05, "text={text}: t = {t} at the right edge, the window ends at {end} s");
+    }
+}

@@ -1,0 +1,115 @@
+// Presentation mode (`present=1`): the figure over the whole screen, the verdict in a corner, a
+// small bar of controls, full screen where the browser allows. The session holds the setting and
+// Rust's layout sizes the figure's text for the screen; this file switches the mode, wires the bar
+// and shows the verdicts over the figure (also when two runs are compared, outside the mode).
+
+import { byId, make, setText } from './dom.js';
+
+/**
+ * @typedef {{ run: string, verdict: string, headline: string, detail: string, settings: string }} RunLine
+ * @param {{ set: (key: string, value: string) => void, step: (key: string, steps: number) => void,
+ *   togglePlay: () => void, reset: () => void, textChoices: { value: string, label: string }[] }} on
+ */
+export function createPresent(on) {
+  const body = document.body;
+  const fullscreen = byId('present-fullscreen');
+  const text = /** @type {HTMLSelectElement} */ (byId('present-text'));
+  const pf = /** @type {HTMLInputElement} */ (byId('present-pf'));
+  const verdicts = byId('figure-verdicts');
+  // The bar is small: the choices' first words ("Large", not "Large (×1.25)").
+  for (const c of on.textChoices) text.append(make('option', { value: c.value, text: c.label.split(' (')[0] }));
+  const barVerdict = byId('present-verdict');
+  /** Presentation mode was entered with full screen: leaving full screen leaves it too. */
+  let withFullscreen = false;
+
+  const canFullscreen = Boolean(document.fullscreenEnabled && document.documentElement.requestFullscreen);
+  fullscreen.hidden = !canFullscreen;
+
+  async function toggleFullscreen() {
+    try {
+      if (document.fullscreenElement) await document.exitFullscreen();
+      else await document.documentElement.requestFullscreen();
+    } catch {
+      // Refused (an iframe without allowfullscreen, a browser setting): the mode works without it.
+    }
+  }
+
+  function enter() {
+    on.set('present', '1');
+    if (canFullscreen && !document.fullscreenElement) {
+      withFullscreen = true;
+      toggleFullscreen();
+    }
+  }
+
+  function leave() {
+    withFullscreen = false;
+    if (document.fullscreenElement) document.exitFullscreen().catch(() => {});
+    on.set('present', '0');
+  }
+
+  byId('present-enter').addEventListener('click', enter);
+  byId('present-leave').addEventListener('click', leave);
+  byId('present-play').addEventListener('click', on.togglePlay);
+  byId('present-reset').addEventListener('click', on.reset);
+  byId('present-delta-down').addEventListener('click', () => on.step('delta', -1));
+  byId('present-delta-up').addEventListener('click', () => on.step('delta', 1));
+  fullscreen.addEventListener('click', () => {
+    withFullscreen = false;
+    toggleFullscreen();
+  });
+  text.addEventListener('change', () => on.set('text', text.value));
+  pf.addEventListener('change', () => on.set('pf', pf.checked ? 'paper' : 'off'));
+  document.addEventListener('fullscreenchange', () => {
+    const full = Boolean(document.fullscreenElement);
+    fullscreen.setAttribute('aria-pressed', String(full));
+    setText(fullscreen, full ? 'Leave full screen' : 'Full screen');
+    if (!full && withFullscreen && body.dataset.present === 'true') leave();
+  });
+  document.addEventListener('keydown', (ev) => {
+    // Esc leaves the mode (in full screen the browser takes Esc itself: leaving full screen
+    // entered with the mode leaves the mode too, above).
+    if (ev.key === 'Escape' && body.dataset.present === 'true') leave();
+  });
+
+  /** The bar and the page follow the session's values. @param {(key: string) => { value: string, text: string } | undefined} value */
+  function sync(value) {
+    const present = value('present')?.value === '1';
+    if (body.dataset.present !== String(present)) body.dataset.present = String(present);
+    pf.checked = value('pf')?.value !== 'off';
+    setText(byId('present-delta'), `δ = ${value('delta')?.text ?? '—'}`);
+    const size = value('text')?.value ?? 'normal';
+    if (text.value !== size) text.value = size;
+  }
+
+  /** The verdicts: in the bar in presentation mode (clear of the figure), over the figure when
+   * two runs are compared. @param {RunLine[]} runs */
+  function render(runs) {
+    const present = body.dataset.present === 'true';
+    if (present) {
+      barVerdict.dataset.verdict = runs[0].verdict;
+      const line = runs.map((r) => (runs.length > 1 ? `${r.run}: ${r.headline}` : `${r.headline}`)).join(' · ');
+      setText(barVerdict.firstElementChild ?? barVerdict, line);
+      setText(byId('present-verdict-detail'), runs.length > 1 ? runs.map((r) => r.settings).join(' | ') : runs[0].detail);
+    }
+    const shown = runs.length > 1 && !present;
+    verdicts.hidden = !shown;
+    if (!shown) return;
+    const key = runs.map((r) => `${r.run}|${r.verdict}|${r.headline}|${r.detail}|${r.settings}`).join('\n');
+    if (verdicts.dataset.key === key) return;
+    verdicts.dataset.key = key;
+    verdicts.replaceChildren(
+      ...runs.map((r) => {
+        const chip = make('span', { class: 'figure-verdict' });
+        chip.dataset.verdict = r.verdict;
+        const head = make('span', { class: 'fv-head' });
+        if (runs.length > 1) head.append(make('span', { class: 'fv-run', text: `run ${r.run}` }), ' ');
+        head.append(make('strong', { text: r.headline }), ` · ${r.settings}`);
+        chip.append(head, make('span', { class: 'fv-detail', text: r.detail }));
+        return chip;
+      }),
+    );
+  }
+
+  return { sync, render };
+}

@@ -1,0 +1,69 @@
+// The z-plane's zoom: its buttons (+, −, the whole circle, the flexible pair), placed under the
+// panel's tick labels (the row of the x axis' title) from the rectangle the renderer reports, and
+// the one place the page's gestures, keys and buttons reach the view through. What they do to the
+// view is the renderer's (`zoomZ`, `panZ`) and the session's (`zView`); this routes them.
+
+import { byId } from './dom.js';
+import { zKey } from './focus.js';
+
+/** The buttons' actions, by their data-z attribute (pure). @param {string} name */
+export function zAction(name) {
+  return { in: { zoom: 1.5 }, out: { zoom: 1 / 1.5 }, whole: { view: 'whole' }, pair: { view: 'pair' } }[name] ?? null;
+}
+
+/**
+ * @param {{ session: any, renderer: () => any, layout: () => any,
+ *   guard: (what: string, fn: () => any, fallback: any) => any, changed: () => void }} on
+ */
+export function createZoom(on) {
+  const group = byId('zoom-z');
+  const coarse = matchMedia('(pointer: coarse)');
+  const panel = () => on.layout()?.panels?.find((/** @type {any} */ q) => q.id === 'z-plane');
+  /** Runs a change of the view; the URL and the picture follow (the runs go on). @param {() => any} fn */
+  const run = (fn) => {
+    const done = Boolean(on.guard('Zooming the z-plane failed', fn, false));
+    if (done) on.changed();
+    return done;
+  };
+  /** A zoom (about the centre), a pan (tenths of the panel) or a named view. @param {any} a */
+  const by = (a) => {
+    const r = on.renderer();
+    const p = panel();
+    if (a.view) return run(() => (on.session.zView(a.view), true));
+    if (a.zoom) return run(() => r?.zoomZ(on.session, NaN, NaN, a.zoom));
+    if (a.pan && p) return run(() => r?.panZ(on.session, (-a.pan[0] * p.width) / 10, (a.pan[1] * p.height) / 10));
+    return false;
+  };
+  for (const b of group.querySelectorAll('button')) {
+    b.addEventListener('click', () => {
+      const action = zAction(/** @type {HTMLElement} */ (b).dataset.z ?? '');
+      if (action) by(action);
+    });
+  }
+  return {
+    by,
+    /** True if (x, y) (CSS px of the canvas) is on the z-plane. @param {number} x @param {number} y */
+    on: (x, y) => Boolean(on.renderer()?.zAt(x, y)),
+    /** @param {number} x @param {number} y @param {number} f */
+    zoomAt: (x, y, f) => run(() => on.renderer()?.zoomZ(on.session, x, y, f)),
+    /** @param {number} dx @param {number} dy */
+    panBy: (dx, dy) => run(() => on.renderer()?.panZ(on.session, dx, dy)),
+    /** + − 0 P with the pointer at `at` over the z-plane (the arrows keep stepping time).
+     * @param {KeyboardEvent} ev @param {{ x: number, y: number } | null} at */
+    key: (ev, at) => {
+      const a = zKey(ev);
+      return Boolean(a && !a.pan && at && on.renderer()?.zAt(at.x, at.y) && by(a));
+    },
+    /** Places the buttons for a new description of the frame. @param {any} layout */
+    update(layout) {
+      group.classList.toggle('coarse', coarse.matches);
+      const p = (layout?.panels ?? []).find((/** @type {any} */ q) => q.id === 'z-plane');
+      group.hidden = !p;
+      if (!p) return;
+      // Under the tick labels, at the left of the row whose right end holds "Re λ"; on a touch
+      // screen, where a button must be a finger wide, in the plot's top-right corner instead.
+      if (coarse.matches) Object.assign(group.style, { left: `${p.x + p.width - group.offsetWidth - 4}px`, top: `${p.y + 4}px` });
+      else Object.assign(group.style, { left: `${p.x}px`, top: `${p.y + p.height + 20}px` });
+    },
+  };
+}
