@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { openPage, clickForDownload, shared, AXE } from './harness.mjs';
+import { openPage, clickForDownload, shared, AXE, pngPixel } from './harness.mjs';
 
 const env = shared();
 const SHOTS = '/tmp/shots23';
@@ -43,18 +43,7 @@ async function readSvg(page, text) {
 }
 
 /** The colour of a PNG's pixel (x, y), decoded by Chromium. */
-async function pixel(page, png, x, y) {
-  return page.evaluate(async ({ b64, x, y }) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.width; c.height = img.height;
-    const ctx = c.getContext('2d');
-    ctx.drawImage(img, 0, 0);
-    return [...ctx.getImageData(x, y, 1, 1).data];
-  }, { b64: png.toString('base64'), x, y });
-}
+const pixel = pngPixel;
 
 const lightness = (/** @type {number[]} */ [r, g, b]) => (0.2126 * r + 0.7152 * g + 0.0722 * b) / 255;
 

@@ -129,6 +129,20 @@ export async function clickForDownload(page, selector, timeout = 30000) {
 
 // ------------------------------------------------------------------- pixels, decoded by Chromium
 
+/** The RGBA of pixel (x, y) of a PNG (a Buffer), decoded by Chromium in `page`. */
+export async function pngPixel(page, png, x, y) {
+  return page.evaluate(async ({ b64, x, y }) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    return [...ctx.getImageData(x, y, 1, 1).data];
+  }, { b64: png.toString('base64'), x, y });
+}
+
 /** How far a pixel's colour must be from another (sum of |ΔR| + |ΔG| + |ΔB|) to count as different. */
 const INK = 30;
 

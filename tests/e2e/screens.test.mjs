@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { shots, shared, AXE, SIZES } from './harness.mjs';
+import { shots, shared, AXE, SIZES, pngPixel } from './harness.mjs';
 
 const env = shared();
 
@@ -103,16 +103,7 @@ test('the dark scheme: dark page, dark canvas, light ink', { timeout: 120000 }, 
   const { page, problems, close } = await open('?preset=fig5.3&mode=full', { ...SIZES.laptop, colorScheme: 'dark' });
   await page.waitForTimeout(2000);
   const png = await page.locator('#canvas').screenshot();
-  const corner = await page.evaluate(async (b64) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.width; c.height = img.height;
-    const ctx = c.getContext('2d');
-    ctx.drawImage(img, 0, 0);
-    return [...ctx.getImageData(2, 2, 1, 1).data.slice(0, 3)];
-  }, png.toString('base64'));
+  const corner = (await pngPixel(page, png, 2, 2)).slice(0, 3);
   assert.ok(corner.every((v) => v < 60), `the canvas background is dark: ${corner}`);
   const [bg, ink] = await page.evaluate(() => [getComputedStyle(document.body).backgroundColor, getComputedStyle(document.body).color]);
   assert.match(bg, /rgb\((\d|[1-4]\d), /, `page background ${bg}`);

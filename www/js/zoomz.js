@@ -62,8 +62,10 @@ export function createZoom(on) {
       if (!p) return;
       // Under the tick labels, at the left of the row whose right end holds "Re λ"; on a touch
       // screen, where a button must be a finger wide, in the plot's top-right corner instead.
-      if (coarse.matches) Object.assign(group.style, { left: `${p.x + p.width - group.offsetWidth - 4}px`, top: `${p.y + 4}px` });
-      else Object.assign(group.style, { left: `${p.x}px`, top: `${p.y + p.height + 20}px` });
+      // The tick labels' row grows with the figure's text (Rust's text scale), and so do the buttons.
+      const k = layout.text_scale ?? 1;
+      if (coarse.matches) Object.assign(group.style, { left: `${p.x + p.width - group.offsetWidth - 4}px`, top: `${p.y + 4}px`, transform: '' });
+      else Object.assign(group.style, { left: `${p.x}px`, top: `${p.y + p.height + 20 * k}px`, transform: k === 1 ? '' : `scale(${k})`, transformOrigin: '0 0' });
     },
   };
 }
