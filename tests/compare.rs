@@ -65,3 +65,15 @@ fn the_switch_has_hysteresis_and_ignores_runs_without_errors() {
     assert!(!wants_log(1.0, 0.3, true));
     assert!(wants_log(1.0, 0.0, true) && !wants_log(f64::NAN, 1.0, false));
 }
+
+#[test]
+fn starting_a_comparison_says_so_not_that_the_arm_changed() {
+    let mut s = session("preset=fig5.3&mode=full");
+    s.set("compare", "1").unwrap();
+    let note = s.status().note;
+    assert!(note.contains("Comparing two runs"), "{note}");
+    assert!(!note.contains("arm changed"), "{note}");
+    // Another arm for B while comparing is another arm.
+    s.set("b_arm", "softer").unwrap();
+    assert!(s.status().note.contains("arm changed"), "{}", s.status().note);
+}

@@ -156,7 +156,15 @@ fn the_builders_snippet_carries_its_choices_and_opens_as_chosen() {
     let plain = s.embed("https://example.org/flexarm/", "").unwrap();
     assert_eq!((plain.width, plain.height), (640, 400));
     assert!(!plain.src.contains("paused=") && !plain.src.contains("&t="), "{}", plain.src);
-    assert_eq!(s.embed_defaults(), "views=arm,traces,poles,rho,map&width=640&height=400&strip=play,pf");
+    let defaults = s.embed_defaults();
+    assert!(defaults.starts_with("views=arm,traces,poles,rho,map&width=640&height=400&strip=play,pf&"), "{defaults}");
+    // The form's limits are the ones the session holds to: the smallest size is taken, one pixel
+    // less is refused.
+    let limit = |k: &str| defaults.split('&').find_map(|kv| kv.strip_prefix(&format!("{k}="))).unwrap().to_string();
+    let (w0, h0) = (limit("min_width"), limit("min_height"));
+    assert!(s.embed("https://example.org/", &format!("width={w0}&height={h0}")).is_ok());
+    let below: u32 = w0.parse::<u32>().unwrap() - 1;
+    assert!(s.embed("https://example.org/", &format!("width={below}&height={h0}")).is_err());
     // From the intro: its arm and errors, not the analysis its switches hold for the full view.
     let intro = session("preset=fig5.3").embed("https://example.org/", "").unwrap();
     let q = intro.src.split_once('?').unwrap().1;

@@ -23,6 +23,10 @@ fn panels(s: &Session, w: f64, h: f64) -> Vec<PanelKind> {
 
 /// The panel a lesson step's `state:` turns on first (the one its text is about), if any.
 fn named_panel(state: &str) -> Option<PanelKind> {
+    // A step that names its tab itself (log |e| before the pole plot) is about that tab's panels.
+    if state.split('&').any(|kv| kv == "tab=run") {
+        return Some(PanelKind::Error1);
+    }
     let on = |key: &str| state.split('&').any(|kv| kv == format!("{key}=1"));
     let z = state.split('&').any(|kv| kv == "plane=z");
     state.split('&').find_map(|kv| match kv {

@@ -363,7 +363,7 @@ fn two_arms_share_the_stage() {
 }
 
 #[test]
-fn without_analysis_panels_the_arm_sits_left_on_wide_canvases_and_on_top_on_narrow_ones() {
+fn without_analysis_panels_the_arm_sits_left_on_landscape_canvases_and_on_top_on_portrait_ones() {
     let intro = LayoutOptions { show_poles: false, show_rho: false, show_map: false, ..LayoutOptions::default() };
     let wide = Layout::compute(1280.0, 720.0, 1.0, &intro);
     assert_eq!(wide.arrangement, Arrangement::SideBySide);
@@ -374,7 +374,17 @@ fn without_analysis_panels_the_arm_sits_left_on_wide_canvases_and_on_top_on_narr
     assert!((arm.w / 1280.0 - 0.4).abs() < 0.05, "arm ≈ 40 % wide: {}", arm.w);
     assert!(e1.bottom() < e2.y, "e1 above e2");
     assert!((e1.w - e2.w).abs() < 1e-9 && (e1.h - e2.h).abs() < 1e-9);
-    for (w, h) in [(390.0, 844.0), (600.0, 900.0), (500.0, 400.0)] {
+    // A small landscape canvas (presentation mode's largest text on a 1024 × 768 projector lays
+    // out 512 × 350) keeps the arm beside the plots too: its square is larger there than on top.
+    let small = Layout::compute(500.0, 400.0, 2.0, &intro);
+    assert_eq!(small.arrangement, Arrangement::SideBySide);
+    let arm = small.panel(PanelKind::Arm).unwrap().rect;
+    assert!(
+        arm.w.min(arm.h) > 0.42 * 400.0,
+        "the arm's square {} beats the stacked 42 % of the height",
+        arm.w.min(arm.h)
+    );
+    for (w, h) in [(390.0, 844.0), (600.0, 900.0), (360.0, 400.0)] {
         let narrow = Layout::compute(w, h, 2.0, &intro);
         assert_eq!(narrow.arrangement, Arrangement::Stacked, "{w}×{h}");
         let arm = narrow.panel(PanelKind::Arm).unwrap().rect;
@@ -571,6 +581,19 @@ fn a_ghost_beyond_the_range_is_clipped_at_the_edges() {
     let mut p = Painter::new();
     draw_series_within(&mut p, &frame, &t, &v, 2.0, Color::hex(0));
     assert!(p.vertices().is_empty(), "{} vertices for swings that never stop inside the range", p.vertices().len());
+    // A diverging swing, sampled finely enough to land inside the range at every crossing: once it
+    // is ten ranges out it is not followed (each crossing would be a near-vertical stroke: a
+    // comb); before, it is drawn as it crosses.
+    let n = 20_000;
+    let t: Vec<f64> = (0..n).map(|i| 10.0 * i as f64 / n as f64).collect();
+    let v: Vec<f64> = t.iter().map(|t| 0.5 * (0.8 * t).exp() * (30.0 * t).sin()).collect();
+    let mut p = Painter::new();
+    draw_series_within(&mut p, &frame, &t, &v, 2.0, Color::hex(0));
+    let xs: Vec<f32> = p.vertices().iter().map(|v| v.position[0]).collect();
+    // |v| first passes 21 (an edge plus ten ranges of 2) near t = ln 42 / 0.8 ≈ 4.67 s.
+    let last = xs.iter().cloned().fold(f32::MIN, f32::max);
+    let x_far = (100.0 + 400.0 * (42f64.ln() / 0.8) / 10.0) as f32;
+    assert!(!xs.is_empty() && last < x_far + 10.0, "strokes up to x = {last}, the run left the picture at {x_far}");
 }
 
 // ---------------------------------------------------------------- arm

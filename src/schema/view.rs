@@ -212,7 +212,7 @@ pub const TEXT: Param = Param {
     },
     scope: Scope::Page,
     help: "The size of the figure's labels: larger for the back of a room. In presentation mode the text is \
-           never smaller than the screen needs (18 px on a 1080-line screen, 15 px below).",
+           never smaller than the screen needs (18 px on a 1080-line screen, 14 px on a 768-line one).",
 };
 
 /// The z-plane's view: half its shorter side in units of λ (0: the default, around the flexible

@@ -63,7 +63,9 @@ impl Session {
         let new_reference = key == "repeat" && next.a.repeat != self.settings.a.repeat;
         // Another arm is another run: it starts from rest (the old state is not this arm's).
         let b_plant = |s: &Settings| s.b.map(|b| b.run(&s.a).plant);
-        let new_arm = next.a.plant != self.settings.a.plant || b_plant(&next) != b_plant(&self.settings);
+        // (A run B appearing or going is the comparison starting or stopping, not another arm.)
+        let b_changed = self.settings.b.is_some() && next.b.is_some() && b_plant(&next) != b_plant(&self.settings);
+        let new_arm = next.a.plant != self.settings.a.plant || b_changed;
         let restart = new_reference || new_arm;
         let why = if new_arm {
             "The arm changed, so the run restarted from rest."

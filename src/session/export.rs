@@ -56,6 +56,9 @@ impl Session {
         let [w, h] = EMBED_SIZE;
         let v = &self.settings.view;
         let mut q = format!("views={}&width={w}&height={h}&strip={}", v.views_list(), v.strip.text());
+        // The size's limits, for the form's number fields (written here once).
+        let ([w0, h0], [w1, h1]) = (EMBED_MIN, EMBED_MAX);
+        q.push_str(&format!("&min_width={w0}&max_width={w1}&min_height={h0}&max_height={h1}"));
         if let Some(step) = self.lesson.as_ref().and_then(|l| l.open_step()) {
             q.push_str(&format!("&lesson={}", step + 1));
         }
@@ -161,7 +164,7 @@ pub struct Embed {
 
 /// The smallest and largest embed accepted, CSS px (width, height): below the smallest the strip
 /// and one panel no longer fit; beyond the largest no course page has room.
-pub const EMBED_MIN: [u32; 2] = [240, 180];
+pub const EMBED_MIN: [u32; 2] = [320, 260];
 pub const EMBED_MAX: [u32; 2] = [2400, 1600];
 
 /// What the embed builder chose.

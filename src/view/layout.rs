@@ -153,7 +153,7 @@ impl Layout {
             let tab = if offered.contains(&options.tab) { options.tab } else { offered[0] };
             match tab {
                 Tab::Run => {
-                    run_panels(inner, &lists, w < TABBED_WIDTH || portrait, &mut panels);
+                    run_panels(inner, &lists, portrait, &mut panels);
                 }
                 _ => {
                     let shown: Vec<PanelKind> = lists.analysis.iter().copied().filter(|k| tab.holds(*k)).collect();
@@ -163,7 +163,7 @@ impl Layout {
             (Arrangement::Tabbed, offered, Some(tab))
         } else {
             // No analysis panels: the stage and the time plots (either may be left out).
-            let arrangement = run_panels(inner, &lists, w < TABBED_WIDTH || portrait, &mut panels);
+            let arrangement = run_panels(inner, &lists, portrait, &mut panels);
             (arrangement, Vec::new(), None)
         };
         // Panels in reading order: the stage first, then the plots, then the analysis panels.

@@ -167,11 +167,16 @@ pub fn draw_series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], valu
     series(painter, frame, times, values, width, color);
 }
 
+/// How many plot ranges beyond an edge a clipped curve may go before it is no longer followed
+/// ([`draw_series_within`]).
+const FAR: f64 = 10.0;
+
 /// Like [`draw_series`], but clipped at the plot's top and bottom edges instead of running along
 /// them: each segment between two samples is cut where it crosses an edge, so a piece that leaves
 /// the range ends exactly on the edge and nothing is drawn while the curve is outside — nor where
-/// it jumps from beyond one edge to beyond the other between two samples. For a faint comparison
-/// curve (the previous run) that must not look like data at the limit.
+/// it jumps from beyond one edge to beyond the other between two samples — and not at all from the
+/// first sample [`FAR`] ranges beyond an edge on (a diverged run). For a faint comparison curve (the
+/// previous run) that must not look like data at the limit.
 pub fn draw_series_within(
     painter: &mut Painter,
     frame: &PlotFrame,
@@ -203,6 +208,12 @@ pub fn draw_series_within(
             continue;
         }
         let c = coord(v);
+        // A curve that has left the plot by ten ranges is not followed further: a run diverging
+        // at hundreds of times the scale would cross it at every swing in near-vertical strokes,
+        // a grey comb over the data.
+        if !frame.log && (c > hi + FAR * (hi - lo) || c < lo - FAR * (hi - lo)) {
+            break;
+        }
         match prev {
             Some((t0, c0)) => {
                 // The part of the segment c0 → c inside [lo, hi], as fractions f0 ≤ f1 of it.

@@ -105,6 +105,9 @@ export function createEmbedBuilder(on) {
     for (const b of boxes('embed-strip')) b.checked = strip.includes(b.value);
     width.value = d.get('width') ?? '';
     height.value = d.get('height') ?? '';
+    // The limits are the session's (it refuses a size outside them, naming them).
+    Object.assign(width, { min: d.get('min_width') ?? '', max: d.get('max_width') ?? '' });
+    Object.assign(height, { min: d.get('min_height') ?? '', max: d.get('max_height') ?? '' });
     syncPreset();
     paused.checked = false;
     t.value = '';

@@ -414,7 +414,7 @@ async function main() {
       showPlay();
     }
     status.renderLegend(s, layout?.series ?? []);
-    present?.render(s.runs);
+    present?.render(s.runs, layout?.series ?? []);
     lesson.render(s.lesson);
     answers.sync(s.lesson, s.hidden);
     timeline.render(s.timeline);

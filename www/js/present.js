@@ -83,14 +83,26 @@ export function createPresent(on) {
   }
 
   /** The verdicts: in the bar in presentation mode (clear of the figure), over the figure when
-   * two runs are compared. @param {RunLine[]} runs */
-  function render(runs) {
+   * two runs are compared. @param {RunLine[]} runs @param {{ color: string }[]} [series] the runs' colours */
+  function render(runs, series = []) {
     const present = body.dataset.present === 'true';
     if (present) {
       barVerdict.dataset.verdict = runs[0].verdict;
-      const line = runs.map((r) => (runs.length > 1 ? `${r.run}: ${r.headline}` : `${r.headline}`)).join(' · ');
-      setText(barVerdict.firstElementChild ?? barVerdict, line);
-      setText(byId('present-verdict-detail'), runs.length > 1 ? runs.map((r) => r.settings).join(' | ') : runs[0].detail);
+      const key = runs.map((r, i) => `${r.run}|${r.headline}|${r.detail}|${series[i]?.color}`).join('\n');
+      if (barVerdict.dataset.key !== key) {
+        barVerdict.dataset.key = key;
+        // One run: its word and sentence. Two: each word with its curves' colour, so the error
+        // plots read without the key under the figure (hidden in this mode).
+        barVerdict.replaceChildren(
+          ...(runs.length > 1
+            ? runs.flatMap((r, i) => [
+              make('span', { class: 'run-swatch', style: `background:${series[i]?.color ?? 'currentColor'}`, 'aria-hidden': 'true' }),
+              make('strong', { class: `verdict-${r.verdict.replace(' ', '-')}`, text: `${r.run}: ${r.headline}` }),
+              ' ',
+            ])
+            : [make('strong', { text: runs[0].headline }), ' ', make('span', { text: runs[0].detail })]),
+        );
+      }
     }
     const shown = runs.length > 1 && !present;
     verdicts.hidden = !shown;

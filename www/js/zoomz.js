@@ -60,12 +60,17 @@ export function createZoom(on) {
       const p = (layout?.panels ?? []).find((/** @type {any} */ q) => q.id === 'z-plane');
       group.hidden = !p;
       if (!p) return;
-      // Under the tick labels, at the left of the row whose right end holds "Re λ"; on a touch
-      // screen, where a button must be a finger wide, in the plot's top-right corner instead.
-      // The tick labels' row grows with the figure's text (Rust's text scale), and so do the buttons.
+      // A touch screen's finger-wide buttons would cover the plot: they go under the figure.
+      if (coarse.matches) {
+        const wrap = byId('canvas-wrap');
+        if (group.parentElement === wrap) wrap.after(group);
+        Object.assign(group.style, { left: '', top: '', transform: '' });
+        return;
+      }
+      // Under the tick labels, at the left of the row whose right end holds "Re λ"; that row grows
+      // with the figure's text (Rust's text scale), and so do the buttons.
       const k = layout.text_scale ?? 1;
-      if (coarse.matches) Object.assign(group.style, { left: `${p.x + p.width - group.offsetWidth - 4}px`, top: `${p.y + 4}px`, transform: '' });
-      else Object.assign(group.style, { left: `${p.x}px`, top: `${p.y + p.height + 20 * k}px`, transform: k === 1 ? '' : `scale(${k})`, transformOrigin: '0 0' });
+      Object.assign(group.style, { left: `${p.x}px`, top: `${p.y + p.height + 20 * k}px`, transform: k === 1 ? '' : `scale(${k})`, transformOrigin: '0 0' });
     },
   };
 }
