@@ -375,13 +375,7 @@ impl Session {
         // Student mode set by the teacher's link stays on through the steps.
         next.view.answers_hidden = self.settings.view.answers_hidden;
         next.read(state, Source::Lesson)?;
-        // The panel the step is about in view; else the tab shown stays, if it still has panels.
-        next.view.tab = match super::named::tab_named_in(state, &next.view) {
-            Some(tab) => tab,
-            None if state.split('&').any(|kv| kv.starts_with("tab=")) => next.view.tab,
-            None if super::named::tab_has_panels(self.settings.view.tab, &next.view) => self.settings.view.tab,
-            None => next.view.tab,
-        };
+        next.view.tab = super::named::step_tab(state, &next.view, self.settings.view.tab);
         self.apply(next, true, "")?;
         // A step may start at a moment (`t=2&paused=1`).
         self.go_to_start()

@@ -40,6 +40,21 @@ pub fn tab_named_in(state: &str, view: &ViewSettings) -> Option<&'static str> {
     pairs.iter().find_map(|(k, _)| tab_of(k, view))
 }
 
+/// The tab a lesson step opens on, `view` being the settings its `state:` made (with the tab it
+/// says, if it says one) and `shown` the tab shown before: the panel the step names; else the tab
+/// it says; else the tab shown stays, if it still has panels.
+pub fn step_tab(state: &str, view: &ViewSettings, shown: &'static str) -> &'static str {
+    let pairs = split_query(state);
+    if pairs.iter().any(|(k, _)| k == "tab") {
+        return view.tab;
+    }
+    match pairs.iter().find_map(|(k, _)| tab_of(k, view)) {
+        Some(tab) => tab,
+        None if tab_has_panels(shown, view) => shown,
+        None => view.tab,
+    }
+}
+
 /// True if `view` shows a panel on the tab `tab` ("run" always has the arm and the errors).
 pub fn tab_has_panels(tab: &str, view: &ViewSettings) -> bool {
     let v = view.shown();
