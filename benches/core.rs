@@ -126,7 +126,7 @@ fn main() {
     let mode = model.report().unwrap().swing_mode.unwrap();
     let delta = config.controller.sampling_period;
     let (energy_med, energy_min) = time_it(21, 200, || {
-        black_box(flexarm::analysis::energy::swing_energy(&model, delta, &mode).unwrap());
+        black_box(model.swing_energy(delta, &mode).unwrap());
     });
 
     println!("flexarm core benchmarks (median of batches; min in parentheses)");

@@ -2,7 +2,7 @@
 //! period, `flexarm::analysis::energy`, checked against ρ over arms (K1 and I_r1 from a quarter to
 //! four times the paper's, the damped motor) and α.
 
-use flexarm::analysis::energy::{swing_energy, SwingEnergy};
+use flexarm::analysis::energy::SwingEnergy;
 use flexarm::analysis::{stable_windows, LinearSettings, LoopModel, StabilityReport};
 use flexarm::*;
 use nalgebra::Complex;
@@ -35,7 +35,7 @@ fn energy_at(model: &LoopModel, delta: f64) -> (StabilityReport, Complex<f64>, S
     let [re, im] = report.poles[i].discrete;
     let lambda = Complex::new(re, im);
     let mode = report.swing_mode.expect("the pair's mode");
-    let energy = swing_energy(model, delta, &mode).unwrap();
+    let energy = model.swing_energy(delta, &mode).unwrap();
     assert_eq!(report.swing_energy, Some(energy));
     (report, lambda, energy)
 }

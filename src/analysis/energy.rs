@@ -22,12 +22,13 @@
 use nalgebra::{Complex, SVector, Vector3};
 use serde::{Deserialize, Serialize};
 
-use super::sampled::LoopModel;
 use super::swing::SwingMode;
 use crate::control::config::InnerLoop;
-use crate::control::linear::{expm, Mat10};
+use crate::control::feedback::FeedbackGain;
+use crate::control::linear::{expm, LinearModel, Mat10};
 use crate::error::Error;
 use crate::model::plant::Plant;
+use crate::model::PlantParameters;
 
 /// Substeps of the period for the energy integrals (Simpson's rule): at least this many, and at
 /// least [`SUBSTEPS_PER_RADIAN`] per radian the arm's fastest motion turns.
@@ -55,15 +56,28 @@ impl SwingEnergy {
     }
 }
 
+/// The arm a swing's energy is taken on: linearized at rest, with its preliminary feedback.
+#[derive(Clone, Copy, Debug)]
+pub struct EnergyModel<'a> {
+    /// The arm linearized (what the sampled plant is).
+    pub arm: &'a LinearModel,
+    /// The preliminary feedback's gain K and whether it acts continuously or held over δ.
+    pub gain: &'a FeedbackGain,
+    pub inner_loop: InnerLoop,
+    /// The arm's parameters and the rest angle q2 (its mass matrix there).
+    pub plant: PlantParameters,
+    pub rest_q2: f64,
+}
+
 /// The swing's energy over one period at sampling period `delta` for the pair's `mode` (its
-/// eigenvector of the one-period map at the same δ).
-pub fn swing_energy(loop_model: &LoopModel, delta: f64, mode: &SwingMode) -> Result<SwingEnergy, Error> {
+/// eigenvector of the one-period map at the same δ); `LoopModel::swing_energy` gives the model.
+pub fn swing_energy(model: &EnergyModel<'_>, delta: f64, mode: &SwingMode) -> Result<SwingEnergy, Error> {
     let [re, im] = mode.shape_vectors();
-    let arm = loop_model.arm();
-    let gain = loop_model.gain();
-    let held_feedback = loop_model.settings().inner_loop == InnerLoop::Sampled;
-    let params = loop_model.settings().plant;
-    let mass = Plant::new(params).mass_matrix(loop_model.settings().rest[1]);
+    let arm = model.arm;
+    let gain = model.gain;
+    let held_feedback = model.inner_loop == InnerLoop::Sampled;
+    let params = model.plant;
+    let mass = Plant::new(params).mass_matrix(model.rest_q2);
     let input = Plant::input_matrix();
     let damping = [0.0, params.bv2, params.bv1];
 

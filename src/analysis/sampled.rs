@@ -9,6 +9,7 @@
 use nalgebra::{Complex, SMatrix};
 use serde::{Deserialize, Serialize};
 
+use super::energy::{swing_energy, EnergyModel, SwingEnergy};
 use super::resonance::ResonanceReport;
 use crate::control::config::{
     ControllerModel, ControllerParameters, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig,
@@ -153,6 +154,19 @@ impl LoopModel {
         Ok(a.lu().solve(&b).map(|v| [Complex::new(1.0, 0.0), v[0], v[1]]))
     }
 
+    /// The flexible pair's energy over one period at sampling period `delta`, for its `mode` at
+    /// that δ ([`super::energy`]).
+    pub fn swing_energy(&self, delta: f64, mode: &super::swing::SwingMode) -> Result<SwingEnergy, Error> {
+        let model = EnergyModel {
+            arm: &self.model,
+            gain: &self.gain,
+            inner_loop: self.settings.inner_loop,
+            plant: self.settings.plant,
+            rest_q2: self.settings.rest[1],
+        };
+        swing_energy(&model, delta, mode)
+    }
+
     /// The whole report at the model's own δ.
     pub fn report(&self) -> Result<StabilityReport, Error> {
         self.report_at(self.settings.controller.sampling_period)
@@ -200,7 +214,7 @@ impl LoopModel {
             let [re, im] = report.poles[i].discrete;
             report.swing_mode = super::swing::SwingMode::new(&phi, Complex::new(re, im));
             report.swing_energy =
-                report.swing_mode.as_ref().and_then(|m| super::energy::swing_energy(self, delta, m).ok());
+                report.swing_mode.as_ref().and_then(|m| self.swing_energy(delta, m).ok());
         }
         Ok(report)
     }
@@ -272,7 +286,7 @@ pub struct StabilityReport {
     pub swing_mode: Option<super::swing::SwingMode>,
     /// The flexible pair's energy over one period: who feeds it, who takes it out
     /// ([`super::energy`]); `None` without a flexible pair.
-    pub swing_energy: Option<super::energy::SwingEnergy>,
+    pub swing_energy: Option<SwingEnergy>,
 }
 
 impl StabilityReport {
