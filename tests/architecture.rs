@@ -3,7 +3,7 @@
 //! (error, sort ← plot ← schema ← … ← view ← web).
 //!
 //! The graph is read from the source text: every `use` (trees, renames, globs, `pub use`
-//! re-exports) and every path written inline in code (`crate::view::labels::text_width(…)`,
+//! re-exports) and every path written inline in code (`crate::view::text_metrics::text_width(…)`,
 //! `super::Scene`, `child::f()`). An imported name is followed through re-exports to the file
 //! that defines it, so a facade (`pub use layout::Panel` in a `mod.rs`) hides no edge: importing
 //! `crate::view::Panel` depends on `view/layout.rs`, and `view/mod.rs` depends on it too.

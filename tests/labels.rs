@@ -6,7 +6,7 @@
 mod common;
 use common::{play, session};
 
-use flexarm::view::labels::{bold_width, font};
+use flexarm::view::text_metrics::{bold_width, font};
 use flexarm::view::{Label, LabelClass, Rect, Scene, ViewOptions};
 
 const WIDTHS: [f64; 12] = [320.0, 360.0, 390.0, 480.0, 600.0, 640.0, 800.0, 1024.0, 1280.0, 1440.0, 1920.0, 2560.0];
@@ -99,7 +99,7 @@ fn no_text_overlaps_another_or_the_data_at_any_size() {
 
 #[test]
 fn texts_that_do_not_fit_are_shortened_not_spilled() {
-    use flexarm::view::labels::fit;
+    use flexarm::view::text_metrics::fit;
     assert_eq!(fit("ρ without K_pr", 1000.0, font::TITLE), "ρ without K_pr");
     let short = fit("dashed: π/δ = 20.9 rad/s — the flexible mode is faster: aliased", 120.0, font::NOTE);
     assert!(short.ends_with('…') && bold_width(&short, font::NOTE) <= 120.0, "{short}");

@@ -382,10 +382,12 @@ impl Param {
 }
 
 mod arm;
+mod panels;
 mod params;
 mod view;
 
 pub use arm::*;
+pub use panels::{PanelKind, Tab};
 pub use params::*;
 pub use view::*;
 

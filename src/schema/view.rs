@@ -2,7 +2,7 @@
 //! and a lesson step, so a link or a step of the lesson sets the figures as well as the physics.
 //! Page-only ([`Scope::Page`]): the command line ignores them.
 
-use super::{Choice, Kind, NumberSpec, Param, Scale, Scope};
+use super::{Choice, Kind, NumberSpec, Param, Scale, Scope, Tab};
 
 /// The intro (a first screen for beginners) or the full view.
 pub const MODE: Param = Param {
@@ -32,9 +32,9 @@ pub const TAB: Param = Param {
     name: "tab",
     kind: Kind::Choice {
         options: &[
-            Choice { value: "run", label: "Arm and errors" },
-            Choice { value: "poles", label: "Poles and ρ(δ)" },
-            Choice { value: "maps", label: "Stability maps" },
+            Choice { value: Tab::Run.id(), label: Tab::Run.label() },
+            Choice { value: Tab::Poles.id(), label: Tab::Poles.label() },
+            Choice { value: Tab::Maps.id(), label: Tab::Maps.label() },
         ],
         default: "run",
     },

@@ -5,8 +5,7 @@
 //! | module | contents |
 //! |---|---|
 //! | [`painter`] | [`Vertex`], [`Painter`]: thick lines, polylines, circles, rectangles → triangle list |
-//! | [`panels`] | [`PanelKind`], [`Tab`], [`LayoutOptions`]: which panels, and the notice of those not in view |
-//! | [`layout`] | [`Layout`]: where the arm and the plots go for a canvas size |
+//! | [`layout`] | [`Layout`]: where the arm and the plots go for a canvas size; [`LayoutOptions`]: which panels are asked for, and the notice of those not in view |
 //! | [`autoscale`] | the error/torque autoscale with hysteresis |
 //! | [`arm`] | the arm, motor, magnified spring twist and reference arm |
 //! | [`traces`] | scrolling time plots with min/max decimation |
@@ -36,12 +35,14 @@ pub mod map;
 pub mod markers;
 pub mod options;
 pub mod painter;
-pub mod panels;
+pub mod panel_info;
 pub mod poles;
 pub mod rect;
 pub mod rho_curve;
 pub mod scene;
+pub mod text_metrics;
 pub mod text_size;
+pub mod tick_labels;
 pub mod traces;
 pub mod zplane;
 

@@ -9,7 +9,7 @@
 
 use serde::Serialize;
 
-use super::labels::font;
+use super::text_metrics::font;
 
 /// The `text` setting: the figure's text size.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]

@@ -5,7 +5,8 @@
 use core::fmt::Write as _;
 
 use crate::plot::Color;
-use crate::view::labels::{bold_width, text_width, Label, LabelClass, LINE_HEIGHT};
+use crate::view::labels::{Label, LabelClass};
+use crate::view::text_metrics::{bold_width, text_width, LINE_HEIGHT};
 use crate::view::painter::Vertex;
 
 pub(crate) use crate::svg::escape;

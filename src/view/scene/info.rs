@@ -8,15 +8,16 @@ use super::{
     plot_series, plot_ticks, pole_ticks, run_pole_style, y_label, Scene, CURVE_WIDTH, CURVE_WIDTH_B, RUN_NAMES,
 };
 use crate::plot::color::Measure;
-use crate::plot::format::{self, TickFormat};
-use crate::plot::ticks::label_log_ticks;
+use crate::plot::format;
 use crate::plot::ticks::Decades;
 use crate::plot::Color;
 use crate::session::maps::MapSide;
 use crate::view::arm::ArmFrame;
 use crate::view::autoscale::Autoscale;
-use crate::view::labels::{font, LINE_HEIGHT};
 use crate::view::labels::{place_labels, Label};
+use crate::view::panel_info::{Mark, PanelInfo, TickLabel};
+use crate::view::text_metrics::{bold_width, font, text_width, LINE_HEIGHT};
+use crate::view::tick_labels::{linear_labels, log_labels, offset_labels};
 use crate::view::layout::margins;
 use crate::view::layout::{Panel, PanelKind};
 use crate::view::map::{map_ticks, side_of};
@@ -27,61 +28,6 @@ use crate::view::zplane::{gap_text, label_fits, z_ticks, WHOLE_HALF};
 
 /// Least distance between log-axis labels, CSS px (x: a label's width, y: its height).
 const LOG_LABEL_SPACING: [f64; 2] = [38.0, 17.0];
-
-/// A tick that gets a label, and the label.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct TickLabel {
-    pub value: f64,
-    pub text: String,
-}
-
-/// A panel as the page sees it, for placing HTML labels over the canvas (CSS pixels, origin at
-/// the canvas' top-left). For plots the rectangle is the data area: `x_range` maps onto
-/// [x, x + width] and `y_range` onto [y + height, y] — linearly, or logarithmically where
-/// `x_scale`/`y_scale` is "log" (then a fraction f of the width is x = lo·(hi/lo)^f). For the arms
-/// the ranges are the shown region in picture units (link 1 is 1 long) and there are no ticks.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct PanelInfo {
-    pub id: &'static str,
-    pub x: f64,
-    pub y: f64,
-    pub width: f64,
-    pub height: f64,
-    pub x_label: String,
-    pub y_label: &'static str,
-    /// A caption for panels without axis titles ("arm, top view").
-    pub title: String,
-    /// A note inside the panel ("ρ, no Kₚᵣ").
-    pub note: String,
-    pub x_range: [f64; 2],
-    pub y_range: [f64; 2],
-    /// Where the grid lines are.
-    pub x_ticks: Vec<f64>,
-    pub y_ticks: Vec<f64>,
-    /// Which ticks get a label, and the label text.
-    pub x_labels: Vec<TickLabel>,
-    pub y_labels: Vec<TickLabel>,
-    /// "linear" or "log".
-    pub x_scale: &'static str,
-    pub y_scale: &'static str,
-    /// The x axis is the scrolling time window: between descriptions its range moves with
-    /// `Renderer.windowStart()` and `windowEnd()`.
-    pub scrolls: bool,
-    /// Text placed at points of the panel (CSS pixels of the canvas), e.g. the flexible pair.
-    pub marks: Vec<Mark>,
-    /// A second x axis along the top (ρ(δ): ωδ, how far the swing turns per period): its
-    /// title and its labelled ticks, at values of the x axis.
-    pub x2_label: String,
-    pub x2_labels: Vec<TickLabel>,
-}
-
-/// A short text at a point of a panel.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Mark {
-    pub x: f64,
-    pub y: f64,
-    pub text: String,
-}
 
 /// How one run is drawn, for the page's legend (colours as CSS strings).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -108,39 +54,6 @@ pub struct SeriesInfo {
     /// Colours of the A4 markers: rings without preliminary feedback, diamonds with it.
     pub a4_open_color: String,
     pub a4_color: String,
-}
-
-/// Text labels for linear ticks.
-fn linear_labels(ticks: &[f64]) -> Vec<TickLabel> {
-    let f = TickFormat::for_ticks(ticks);
-    ticks.iter().map(|&value| TickLabel { value, text: f.format(value) }).collect()
-}
-
-/// Labels of linear ticks as whole steps from the middle tick, in a power of ten ("−4", "0",
-/// "4" for 0.70702, 0.70710, 0.70718), and the title's clause that reads them ("Im λ = 0.70710 +
-/// n × 1e−5", shorter forms where that is wider than `room` px); None for fewer than two ticks
-/// or no form that fits.
-fn offset_labels(ticks: &[f64], room: f64) -> Option<(Vec<TickLabel>, String)> {
-    let (&a, &b) = (ticks.first()?, ticks.get(1)?);
-    let step = b - a;
-    let unit = 10f64.powf((step.log10() + 1e-9).floor());
-    let mid = ticks[ticks.len() / 2];
-    let labels = ticks
-        .iter()
-        .map(|&value| TickLabel { value, text: format::minus(&format!("{}", ((value - mid) / unit).round() as i64)) })
-        .collect();
-    let (m, u) = (TickFormat::for_ticks(ticks).format(mid), format::log_tick(unit));
-    let forms = [format!("Im λ = {m} + n × {u}"), format!("Im λ = {m} + n·{u}"), format!("{m} + n·{u}")];
-    let base = forms.into_iter().find(|f| crate::view::labels::bold_width(f, font::TITLE) <= room)?;
-    Some((labels, base))
-}
-
-/// Text labels for the log ticks that fit along `length` pixels.
-fn log_labels(ticks: &[f64], range: [f64; 2], length: f64, spacing: f64) -> Vec<TickLabel> {
-    label_log_ticks(ticks, range[0], range[1], length, spacing)
-        .into_iter()
-        .map(|value| TickLabel { value, text: format::log_tick(value) })
-        .collect()
 }
 
 impl Scene {
@@ -296,7 +209,7 @@ impl Scene {
                 info.marks = self.flexible_mark();
                 // Only labels within the panel's sides (the grid lines stay).
                 let fits_x = |t: &TickLabel| {
-                    label_fits(t.value, x_range, r.w, crate::view::labels::text_width(&t.text, font::TICK))
+                    label_fits(t.value, x_range, r.w, text_width(&t.text, font::TICK))
                 };
                 let fits_y = |t: &TickLabel| label_fits(t.value, y_range, r.h, font::TICK * LINE_HEIGHT);
                 info.x_labels = linear_labels(&info.x_ticks).into_iter().filter(fits_x).collect();
@@ -304,7 +217,7 @@ impl Scene {
                 // Labels wider than the gutter (0.70705 at the closest zoom) count steps from a
                 // tick in the middle instead, which the title names.
                 let room = margins::ANALYSIS_LEFT - 4.0;
-                let wide = y_labels.iter().any(|t| crate::view::labels::text_width(&t.text, font::TICK) > room);
+                let wide = y_labels.iter().any(|t| text_width(&t.text, font::TICK) > room);
                 let title_room = r.w + margins::ANALYSIS_LEFT;
                 info.y_labels = match (wide, offset_labels(&info.y_ticks, title_room)) {
                     (true, Some((labels, base))) => {
@@ -403,7 +316,7 @@ impl Scene {
         let (Some(x), Some(y)) = (p.x, p.y) else { return Vec::new() };
         // A narrow pole plot gets the short form rather than a cut one ("flexible pair, alia…").
         let room = self.layout.panels.iter().find(|q| q.kind.is_pole_plot()).map_or(0.0, |q| q.rect.w - 8.0);
-        let fits = |t: &str| crate::view::labels::bold_width(t, crate::view::labels::font::NOTE) <= room;
+        let fits = |t: &str| bold_width(t, font::NOTE) <= room;
         let forms: &[&str] =
             if p.aliased { &["flexible pair, aliased", "aliased pair", "aliased"] } else { &["flexible pair", "pair"] };
         // The z-plane says how far outside (or inside) the unit circle the pair is.

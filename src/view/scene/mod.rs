@@ -44,7 +44,8 @@ use crate::plot::{palette, Color};
 use crate::session::{MapSide, ViewSettings};
 
 pub use super::options::{OptionsUpdate, ViewOptions, MAX_SPRING_MAGNIFICATION, MAX_TIME_WINDOW};
-pub use info::{PanelInfo, SeriesInfo, TickLabel};
+pub use super::panel_info::{Mark, PanelInfo, TickLabel};
+pub use info::SeriesInfo;
 pub use probe::{Probe, TipLine};
 pub use swing::{SwingShape, SWING_SLOWDOWN};
 

@@ -144,7 +144,7 @@ fn labelled(lo: f64, hi: f64, count: usize, length: f64, across: bool) -> Ticks 
 /// the digits [`crate::plot::format::TickFormat`] would print, a sign and a point (the exact
 /// labels are checked again with their text, `scene::info`).
 fn label_extent(step: f64, lo: f64, hi: f64, across: bool) -> f64 {
-    use super::labels::{font, EM_PER_CHAR, LINE_HEIGHT};
+    use crate::view::text_metrics::{font, EM_PER_CHAR, LINE_HEIGHT};
     if !across {
         return font::TICK * LINE_HEIGHT;
     }

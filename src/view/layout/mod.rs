@@ -18,9 +18,11 @@
 
 use serde::Serialize;
 
-pub use super::rect::Rect;
+mod asked;
 
-pub use super::panels::{hidden_note, LayoutOptions, Panel, PanelKind, PanelLists, Tab};
+pub use super::rect::Rect;
+pub use crate::schema::{PanelKind, Tab};
+pub use asked::{hidden_note, LayoutOptions, Panel, PanelLists};
 
 /// How the panels are arranged.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
