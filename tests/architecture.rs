@@ -88,21 +88,6 @@ const CYCLES_BEING_CUT: &[&[&str]] = &[
         "session/student.rs",
         "session/view.rs",
     ],
-    &[
-        "view/labels.rs",
-        "view/options.rs",
-        "view/poles.rs",
-        "view/scene/compare.rs",
-        "view/scene/cycle.rs",
-        "view/scene/info.rs",
-        "view/scene/mod.rs",
-        "view/scene/plots.rs",
-        "view/scene/split.rs",
-        "view/scene/swing.rs",
-        "view/scene/zplane.rs",
-        "view/text_size.rs",
-        "view/zplane/mod.rs",
-    ],
 ];
 
 #[test]
@@ -134,8 +119,7 @@ fn the_command_line_program_has_no_cycles_either() {
 fn no_import_runs_up_the_layers() {
     let krate = library();
     let bad = upward(&krate);
-    let text: String =
-        bad.iter().map(|(e, why)| format!("  {} → {} ({}): {why}\n", e.from, e.to, e.via)).collect();
+    let text: String = bad.iter().map(|(e, why)| format!("  {} → {} ({}): {why}\n", e.from, e.to, e.via)).collect();
     assert!(bad.is_empty(), "{} imports run up the layers:\n{text}", bad.len());
 }
 
@@ -170,9 +154,11 @@ fn architecture_md_states_these_layers() {
 #[test]
 fn no_panel_imports_another_panel() {
     let krate = library();
+    // A panel is a folder under view/panels/; the files beside them (the contract, the registry)
+    // are what every panel may read.
     let panel_of = |file: &str| -> Option<String> {
-        let rest = file.strip_prefix("view/panels/")?;
-        Some(rest.split(['/', '.']).next()?.to_string()).filter(|p| p != "mod")
+        let (panel, _) = file.strip_prefix("view/panels/")?.split_once('/')?;
+        Some(panel.to_string())
     };
     let mut bad = BTreeMap::new();
     for e in krate.edges() {

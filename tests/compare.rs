@@ -6,7 +6,7 @@
 mod common;
 use common::{play, session};
 
-use flexarm::view::scene::compare::{wants_log, AUTO_LOG_NOTE};
+use flexarm::view::panels::time_plots::compare::{wants_log, AUTO_LOG_NOTE};
 use flexarm::view::{PanelKind, Scene, ViewOptions};
 
 fn drawn(query: &str, seconds: f64) -> Scene {

@@ -9,7 +9,7 @@ use flexarm::plot::color::{ramp_color, rate_color, rate_position, Measure, RATE_
 use flexarm::plot::palette;
 use flexarm::session::{Session, Settings, Source};
 use flexarm::svg::stability_maps_svg;
-use flexarm::view::map::{draw_map_static, LogFrame, StabilityGrid};
+use flexarm::view::panels::stability_maps::grid::{draw_map_static, LogFrame, StabilityGrid};
 use flexarm::view::{Color, Painter, PanelInfo, PanelKind, Rect, Scene, Vertex, ViewOptions};
 use flexarm::{PreliminaryFeedbackChoice, SimulationConfig};
 

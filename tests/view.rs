@@ -6,12 +6,18 @@ use flexarm::plot::color::rho_color;
 use flexarm::plot::contour::{chain_segments, marching_squares};
 use flexarm::plot::ticks::{log_ticks, nice_ceil, Ticks};
 use flexarm::session::{Run, RunSettings};
-use flexarm::view::arm::{drawn_twist, spring_end_angle, ArmFrame, ArmPose, MAX_DRAWN_TWIST, WORLD_HALF_EXTENT};
 use flexarm::view::autoscale::{Autoscale, AutoscaleSettings};
 use flexarm::view::layout::{gutters, Arrangement, Tab};
-use flexarm::view::map::StabilityGrid;
-use flexarm::view::poles::{draw_a4, draw_flexible_halo, draw_poles, PoleFrame, PoleStyle, RUN_VERTEX_BUDGET};
-use flexarm::view::traces::{draw_series, draw_series_within, max_abs, PlotFrame, TimeWindow};
+use flexarm::view::loop_poles::PoleStyle;
+use flexarm::view::panels::arm::drawing::{
+    drawn_twist, spring_end_angle, ArmFrame, ArmPose, MAX_DRAWN_TWIST, WORLD_HALF_EXTENT,
+};
+use flexarm::view::panels::pole_plot::drawing::{
+    draw_a4, draw_flexible_halo, draw_poles, PoleFrame, RUN_VERTEX_BUDGET,
+};
+use flexarm::view::panels::stability_maps::grid::StabilityGrid;
+use flexarm::view::panels::time_plots::drawing::{draw_series, draw_series_within, max_abs, PlotFrame};
+use flexarm::view::time_window::TimeWindow;
 use flexarm::view::*;
 use flexarm::{ClosedLoop, PreliminaryFeedbackChoice, SimulationConfig};
 
@@ -744,7 +750,7 @@ fn scene_vertices_stay_on_the_canvas() {
 
 #[test]
 fn the_arm_stays_within_its_vertex_budget() {
-    use flexarm::view::arm::{draw_arm_panel, VERTEX_BUDGET};
+    use flexarm::view::panels::arm::drawing::{draw_arm_panel, VERTEX_BUDGET};
     let mut p = Painter::new();
     for (q1, q2, twist) in [(0.0, 0.0, 0.0), (1.0, 2.0, 0.3), (-2.0, 3.0, -5.0), (0.5, -0.5, 1e-4)] {
         for size in [100.0, 800.0, 4000.0] {
@@ -934,7 +940,7 @@ fn the_map_colours_diverge_around_rho_1() {
 fn a_stability_grid_validates_and_pads_partial_maps() {
     let mut g = StabilityGrid::default();
     assert!(g.is_empty());
-    assert_eq!(g.delta_range(), flexarm::view::map::DEFAULT_DELTA_RANGE);
+    assert_eq!(g.delta_range(), flexarm::view::panels::stability_maps::grid::DEFAULT_DELTA_RANGE);
     g.set(&[0.01, 0.02, 0.04], &[1.0, 2.0], &[0.9, 1.1, 1.2]).unwrap();
     assert_eq!(g.rho().len(), 6);
     assert_eq!(g.at(0, 1), 1.1);
@@ -1264,13 +1270,19 @@ fn the_key_has_the_dark_schemes_colours_too() {
     };
     // The same colour to a byte (the CSS text is rounded to bytes).
     let same = |a: Color, b: Color| a.0.iter().zip(b.0).all(|(x, y)| (x - y).abs() <= 1.5 / 255.0);
-    let kinds = [
-        flexarm::view::PanelKind::Poles,
-        flexarm::view::PanelKind::MapOff,
-        flexarm::view::PanelKind::Error1,
-        flexarm::view::PanelKind::Torque,
-    ];
-    for group in flexarm::view::legend::legend(&kinds, true, flexarm::plot::color::Measure::Rho, true, true) {
+    // Every panel's key at once: the pole plot, the maps, log |e| and the zoom's (Fig. 2.1) among
+    // them, two runs compared.
+    let (mut session, _) = flexarm::session::Session::open("mode=full&torque=1&log=1&predict=1&compare=1");
+    for _ in 0..30 {
+        session.advance(1.0 / 30.0).unwrap();
+    }
+    let mut scene = Scene::new(ViewOptions::default(), 1600.0, 1000.0, 1.0);
+    scene.draw_session(&session);
+    let groups = scene.legend();
+    for title in ["pole plot", "stability maps", "log |e|", "Fig. 2.1: one sampling instant tₙ"] {
+        assert!(groups.iter().any(|g| g.title == title), "no key to {title}");
+    }
+    for group in groups {
         for it in &group.items {
             if it.color.starts_with('#') {
                 assert!(same(parse(&it.dark), parse(&it.color).for_dark()), "{}: {} vs {}", it.text, it.dark, it.color);

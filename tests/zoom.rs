@@ -40,7 +40,7 @@ fn count(scene: &Scene, color: Color) -> usize {
     scene.vertices().iter().filter(|v| v.color == color.0).count()
 }
 
-fn zoomed(scene: &Scene) -> flexarm::view::traces::TimeWindow {
+fn zoomed(scene: &Scene) -> flexarm::view::time_window::TimeWindow {
     scene.time_window()
 }
 

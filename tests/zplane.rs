@@ -9,8 +9,9 @@ use common::session;
 use flexarm::plot::{palette, Ticks};
 use flexarm::session::Session;
 use flexarm::view::painter::Painter;
-use flexarm::view::zplane::view::{CENTER_LIMIT, MIN_HALF, WHOLE_HALF};
-use flexarm::view::zplane::{draw_zplane_background, ZFrame, ZView, BACKGROUND_VERTEX_BUDGET};
+use flexarm::view::panels::z_plane::drawing::{draw_zplane_background, ZFrame, BACKGROUND_VERTEX_BUDGET};
+use flexarm::view::panels::z_plane::view::ZView;
+use flexarm::view::panels::z_plane::view::{CENTER_LIMIT, MIN_HALF, WHOLE_HALF};
 use flexarm::view::{PanelInfo, PoleKind, Rect, Scene, ViewOptions};
 
 /// Canvas sizes: a wide desktop, a laptop, a phone.

@@ -213,8 +213,7 @@ impl LoopModel {
         if let [Some(i), _] = report.flexible_pair() {
             let [re, im] = report.poles[i].discrete;
             report.swing_mode = super::swing::SwingMode::new(&phi, Complex::new(re, im));
-            report.swing_energy =
-                report.swing_mode.as_ref().and_then(|m| self.swing_energy(delta, m).ok());
+            report.swing_energy = report.swing_mode.as_ref().and_then(|m| self.swing_energy(delta, m).ok());
         }
         Ok(report)
     }

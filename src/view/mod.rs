@@ -4,53 +4,46 @@
 //!
 //! | module | contents |
 //! |---|---|
-//! | [`painter`] | [`Vertex`], [`Painter`]: thick lines, polylines, circles, rectangles → triangle list |
-//! | [`layout`] | [`Layout`]: where the arm and the plots go for a canvas size; [`LayoutOptions`]: which panels are asked for, and the notice of those not in view |
-//! | [`autoscale`] | the error/torque autoscale with hysteresis |
-//! | [`arm`] | the arm, motor, magnified spring twist and reference arm |
-//! | [`traces`] | scrolling time plots with min/max decimation |
-//! | [`markers`] | the pole markers' style and sizes, the flexible pair (shared by s- and z-plane) |
-//! | [`poles`] | the pole plot: s = ln λ / δ, the imaginary axis, the δ → 0 pair A4 |
-//! | [`zplane`] | the loop's eigenvalues λ against the unit circle |
-//! | [`rho_curve`] | ρ(δ) at the current α with the stable windows |
-//! | [`map`] | stability maps ρ(δ, α) on log axes with the ρ = 1 contour, and their markers |
-//! | [`scene`] | [`Scene`]: one frame from a session's runs, and its description for the page |
+//! | [`panels`] | every panel in its own folder (the arm, the time plots, the pole plot, the z-plane, ρ(δ), the maps) behind one interface, [`panels::contract::PanelView`] |
+//! | [`scene`] | [`Scene`]: lays the panels out, keeps what persists between frames, asks each panel to draw, describe, read out and key itself |
+//! | [`layout`] | [`Layout`]: where the panels go for a canvas size; [`LayoutOptions`]: which panels are asked for, and the notice of those not in view |
+//! | [`loop_poles`] | what the s-plane pole plot and the z-plane share: markers, their readouts |
+//! | [`rho_readout`] | ρ read out in a tooltip (ρ(δ) and the maps) |
 //! | [`labels`] | where every text over the canvas goes (ticks, titles, notes), without overlaps |
-//! | [`legend`] | the key to the markers, lines and shades shown, and the colour bar of ρ |
+//! | [`legend`] | the key's groups and the maps' colour bar |
 //! | [`figure`] | a figure per panel: one panel laid out alone, drawn and written as SVG |
-//! | [`text_size`] | the figure's text scale (the `text` setting, presentation mode's floor) |
+//! | [`panel_info`], [`text_metrics`], [`tick_labels`] | the leaves: what the page reads of a panel; text widths; tick label text |
+//! | [`painter`], [`rect`], [`autoscale`], [`time_window`] | triangles; rectangles; the error/torque autoscale; the time plots' window |
+//! | [`options`], [`text_size`] | what the page can change about the picture; the figure's text scale |
 //!
 //! Ticks, number formats, colours and contours come from [`crate::plot`]. Simulation values
 //! arrive as f64 and stay f64 until a vertex is written (f32, physical pixels).
 //!
 //! Architecture invariant: `view` reads the session and draws; it computes no physics.
 
-pub mod arm;
 pub mod autoscale;
 pub mod figure;
 pub mod labels;
 pub mod layout;
 pub mod legend;
-pub mod map;
-pub mod markers;
+pub mod loop_poles;
 pub mod options;
 pub mod painter;
 pub mod panel_info;
-pub mod poles;
+pub mod panels;
 pub mod rect;
-pub mod rho_curve;
+pub mod rho_readout;
 pub mod scene;
 pub mod text_metrics;
 pub mod text_size;
 pub mod tick_labels;
-pub mod traces;
-pub mod zplane;
+pub mod time_window;
 
 pub use crate::plot::{palette, Color};
 pub use labels::{Label, LabelClass};
 pub use layout::{Layout, LayoutOptions, Panel, PanelKind, Rect, Tab};
-pub use map::MapSide;
+pub use loop_poles::{PoleInfo, PoleKind};
 pub use painter::{Painter, Vertex};
-pub use poles::{PoleInfo, PoleKind};
+pub use panels::stability_maps::grid::MapSide;
 pub use scene::{OptionsUpdate, PanelInfo, Probe, RunState, Scene, SeriesInfo, ViewOptions};
 pub use text_size::TextSize;

@@ -3,10 +3,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::arm::DEFAULT_SPRING_MAGNIFICATION;
 use super::layout::{LayoutOptions, Tab};
+use super::panels::arm::drawing::DEFAULT_SPRING_MAGNIFICATION;
 use super::text_size::TextSize;
-use super::traces::DEFAULT_TIME_WINDOW;
+use super::time_window::DEFAULT_TIME_WINDOW;
 use crate::plot::color::Measure;
 
 /// Longest time window accepted, s.
@@ -51,7 +51,7 @@ pub struct ViewOptions {
     /// Student mode: what the analysis predicts (the slope ln ρ/δ on log |e|) is not drawn.
     pub hide_prediction: bool,
     /// The z-plane's view as the page set it (`zsize` …), or None: around the flexible pair.
-    pub z_view: Option<super::zplane::ZView>,
+    pub z_view: Option<super::panels::z_plane::view::ZView>,
     /// The figure's text size (the session's view decides; not a page option).
     pub text: TextSize,
     /// Presentation mode: the text never smaller than the screen needs.

@@ -5,6 +5,8 @@
 
 use serde::Serialize;
 
+use crate::session::MapSide;
+
 /// A tick that gets a label, and the label.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TickLabel {
@@ -52,6 +54,35 @@ pub struct PanelInfo {
     pub x2_labels: Vec<TickLabel>,
 }
 
+impl PanelInfo {
+    /// A panel at (x, y), `width × height` CSS px, with linear axes and nothing on them yet.
+    pub fn new(id: &'static str, x: f64, y: f64, width: f64, height: f64) -> PanelInfo {
+        PanelInfo {
+            id,
+            x,
+            y,
+            width,
+            height,
+            x_label: String::new(),
+            y_label: "",
+            title: String::new(),
+            note: String::new(),
+            x_range: [0.0, 0.0],
+            y_range: [0.0, 0.0],
+            x_ticks: Vec::new(),
+            y_ticks: Vec::new(),
+            x_labels: Vec::new(),
+            y_labels: Vec::new(),
+            x_scale: "linear",
+            y_scale: "linear",
+            scrolls: false,
+            marks: Vec::new(),
+            x2_label: String::new(),
+            x2_labels: Vec::new(),
+        }
+    }
+}
+
 /// A short text at a point of a panel.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Mark {
@@ -60,3 +91,35 @@ pub struct Mark {
     pub text: String,
 }
 
+/// One line of a tooltip, with its tone ("good", "bad" or "").
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TipLine {
+    pub text: String,
+    pub tone: &'static str,
+}
+
+impl TipLine {
+    pub fn plain(text: impl Into<String>) -> Self {
+        Self { text: text.into(), tone: "" }
+    }
+
+    pub fn toned(text: impl Into<String>, good: bool) -> Self {
+        Self { text: text.into(), tone: if good { "good" } else { "bad" } }
+    }
+}
+
+/// What lies under the pointer: a pole or a point of a map, described for a tooltip.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Probe {
+    /// "pole" or "map".
+    pub kind: &'static str,
+    pub title: String,
+    pub lines: Vec<TipLine>,
+    /// Where the tooltip points, CSS pixels in the canvas.
+    pub x: f64,
+    pub y: f64,
+    /// For a map: which one ("off" or "on") and the (δ, α) under the pointer.
+    pub map: Option<MapSide>,
+    pub delta: Option<f64>,
+    pub alpha: Option<f64>,
+}

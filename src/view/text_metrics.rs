@@ -80,4 +80,3 @@ pub fn fit_clauses(text: &str, width: f64, size: f64) -> String {
         out
     }
 }
-

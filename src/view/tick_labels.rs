@@ -39,4 +39,3 @@ pub fn log_labels(ticks: &[f64], range: [f64; 2], length: f64, spacing: f64) -> 
         .map(|value| TickLabel { value, text: format::log_tick(value) })
         .collect()
 }
-

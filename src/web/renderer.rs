@@ -226,7 +226,7 @@ impl Renderer {
     fn take_z_view(
         &mut self,
         session: &mut WebSession,
-        view: Option<crate::view::zplane::ZView>,
+        view: Option<crate::view::panels::z_plane::view::ZView>,
     ) -> Result<bool, JsError> {
         let Some(v) = view.map(|v| v.rounded()) else { return Ok(false) };
         session.session_mut().set_z_view(v.center, v.half).map_err(|e| JsError::new(&e.to_string()))?;

@@ -384,7 +384,7 @@ impl WebSession {
     #[wasm_bindgen(js_name = zView)]
     pub fn z_view(&mut self, which: &str) -> Result<(), JsError> {
         let half = match which {
-            "whole" => crate::view::zplane::WHOLE_HALF,
+            "whole" => crate::view::panels::z_plane::view::WHOLE_HALF,
             "pair" => 0.0,
             _ => return Err(JsError::new(&format!("invalid z-plane view '{which}': expected whole or pair"))),
         };

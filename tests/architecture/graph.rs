@@ -199,8 +199,15 @@ fn strongly_connected(next: &[Vec<usize>]) -> Vec<Vec<usize>> {
         }
     }
     let n = next.len();
-    let mut s =
-        State { next, index: vec![None; n], low: vec![0; n], stack: Vec::new(), on: vec![false; n], counter: 0, out: Vec::new() };
+    let mut s = State {
+        next,
+        index: vec![None; n],
+        low: vec![0; n],
+        stack: Vec::new(),
+        on: vec![false; n],
+        counter: 0,
+        out: Vec::new(),
+    };
     for v in 0..n {
         if s.index[v].is_none() {
             visit(&mut s, v);
@@ -307,7 +314,8 @@ fn peek_at(chars: &[char], i: usize) -> char {
     chars.get(i).copied().unwrap_or('\0')
 }
 
-const ITEM_KEYWORDS: &[&str] = &["fn", "struct", "enum", "trait", "const", "static", "type", "union", "mod", "macro_rules"];
+const ITEM_KEYWORDS: &[&str] =
+    &["fn", "struct", "enum", "trait", "const", "static", "type", "union", "mod", "macro_rules"];
 
 /// Reads one file: its definitions, re-exports, child modules and the paths it names.
 fn parse(module: &[String], path: &str, text: &str) -> File {
@@ -380,7 +388,11 @@ fn parse(module: &[String], path: &str, text: &str) -> File {
                             file.reexports.insert(name, abs.clone());
                         }
                     }
-                    let abs = if abs.last().map(String::as_str) == Some("self") { abs[..abs.len() - 1].to_vec() } else { abs };
+                    let abs = if abs.last().map(String::as_str) == Some("self") {
+                        abs[..abs.len() - 1].to_vec()
+                    } else {
+                        abs
+                    };
                     file.paths.push((abs, text));
                 }
             }

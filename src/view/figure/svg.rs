@@ -6,8 +6,8 @@ use core::fmt::Write as _;
 
 use crate::plot::Color;
 use crate::view::labels::{Label, LabelClass};
-use crate::view::text_metrics::{bold_width, text_width, LINE_HEIGHT};
 use crate::view::painter::Vertex;
+use crate::view::text_metrics::{bold_width, text_width, LINE_HEIGHT};
 
 pub(crate) use crate::svg::escape;
 

@@ -15,6 +15,14 @@ pub struct Panel {
     pub rect: Rect,
 }
 
+impl Panel {
+    /// True if (x, y) (CSS px) lies on the panel's data area, edges included.
+    pub fn contains(&self, x: f64, y: f64) -> bool {
+        let r = &self.rect;
+        x >= r.x && x <= r.right() && y >= r.y && y <= r.bottom()
+    }
+}
+
 /// Which panels to show.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LayoutOptions {

@@ -5,7 +5,7 @@
 
 use super::{PanelInfo, Probe, Scene};
 use crate::view::labels::Label;
-use crate::view::poles::PoleInfo;
+use crate::view::loop_poles::PoleInfo;
 
 impl Scene {
     /// The height of the whole screen (CSS px; the page's window), which presentation mode sizes

@@ -14,13 +14,8 @@ impl Scene {
     fn sync_maps(&mut self, session: &Session) {
         for side in MapSide::BOTH {
             let Some(entry) = session.maps().shown(side) else { continue };
-            let generation = Some(entry.generation());
-            if self.map_sources[side.index()] == generation {
-                continue;
-            }
             let job = entry.job();
-            if self.maps[side.index()].set(job.deltas(), job.alphas(), job.values()).is_ok() {
-                self.map_sources[side.index()] = generation;
+            if self.panels.maps.follow(side, entry.generation(), job.deltas(), job.alphas(), job.values()) {
                 self.rebuild_static();
                 self.info_generation += 1;
             }
@@ -33,7 +28,7 @@ impl Scene {
         self.follow_view(&session.drawn_view());
         self.sync_maps(session);
         let a = session.run(0).expect("a session always has run A");
-        self.cursor = session.viewing();
+        self.frame.cursor = session.viewing();
         let sa = session.shown_snapshot(0).unwrap_or_else(|| a.closed_loop().snapshot());
         let ra = Reference::new(a.closed_loop().config().reference);
         let mut run_a = run_state(a, &sa, Some(&ra));
@@ -63,7 +58,7 @@ impl Scene {
         analysis: Option<&StabilityReport>,
         b: Option<(&ClosedLoop, Option<&StabilityReport>)>,
     ) -> &[Vertex] {
-        self.cursor = None;
+        self.frame.cursor = None;
         let reference = Reference::new(a.config().reference);
         let snap_a = a.snapshot();
         let run_a = RunState {

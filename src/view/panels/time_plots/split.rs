@@ -5,26 +5,35 @@
 //! does: the student sees it take over, or die out. Buffers are kept between frames: nothing is
 //! allocated once they are warm.
 
-use super::{RunState, Scene, CURVE_WIDTH};
+use super::drawing::{draw_series, PlotFrame};
+use super::series::CURVE_WIDTH;
 use crate::plot::palette;
-use crate::view::layout::PanelKind;
-use crate::view::traces::{draw_series, PlotFrame};
+use crate::schema::PanelKind;
+use crate::view::painter::Painter;
+use crate::view::panels::contract::RunState;
 
 /// The split's points of the latest frame (times, the swing's amplitude, the rest).
 #[derive(Clone, Debug, Default)]
-pub(super) struct SplitBuffers {
+pub struct SplitBuffers {
     time: Vec<f64>,
     swing: Vec<f64>,
     rest: Vec<f64>,
 }
 
 /// Curves the split adds to an error plot (for the vertex budget).
-pub(super) const SPLIT_SERIES: usize = 2;
+pub const SPLIT_SERIES: usize = 2;
 
-impl Scene {
+impl SplitBuffers {
     /// Computes run A's split for an error plot (`kind` Error1 or Error2) of log |e| and draws the
-    /// rest (under the error); [`Scene::draw_swing`] then draws the swing over it.
-    pub(super) fn draw_split(&mut self, frame: &PlotFrame, state: &RunState<'_>, kind: PanelKind) {
+    /// rest (under the error); [`SplitBuffers::draw_swing`] then draws the swing over it.
+    pub fn draw_split(
+        &mut self,
+        painter: &mut Painter,
+        frame: &PlotFrame,
+        state: &RunState<'_>,
+        kind: PanelKind,
+        dpr: f64,
+    ) {
         let component = match kind {
             PanelKind::Error1 => 0,
             PanelKind::Error2 => 1,
@@ -32,7 +41,7 @@ impl Scene {
         };
         let (history, reference, mode) =
             (state.history, state.reference, state.analysis.and_then(|r| r.swing_mode.as_ref()));
-        let b = &mut self.split;
+        let b = self;
         b.time.clear();
         b.swing.clear();
         b.rest.clear();
@@ -58,14 +67,14 @@ impl Scene {
             b.swing.push(amplitude);
             b.rest.push((zeta[component] - share).abs());
         }
-        let w = CURVE_WIDTH * self.layout.device_pixel_ratio;
-        draw_series(&mut self.painter, frame, &b.time, &b.rest, 0.75 * w, palette::SPLIT_REST);
+        let w = CURVE_WIDTH * dpr;
+        draw_series(painter, frame, &b.time, &b.rest, 0.75 * w, palette::SPLIT_REST);
     }
 
-    /// Draws the swing of the split [`Scene::draw_split`] computed last, over the error.
-    pub(super) fn draw_swing(&mut self, frame: &PlotFrame) {
-        let b = &self.split;
-        let w = CURVE_WIDTH * self.layout.device_pixel_ratio;
-        draw_series(&mut self.painter, frame, &b.time, &b.swing, 1.25 * w, palette::SWING);
+    /// Draws the swing of the split [`SplitBuffers::draw_split`] computed last, over the error.
+    pub fn draw_swing(&self, painter: &mut Painter, frame: &PlotFrame, dpr: f64) {
+        let b = self;
+        let w = CURVE_WIDTH * dpr;
+        draw_series(painter, frame, &b.time, &b.swing, 1.25 * w, palette::SWING);
     }
 }

@@ -5,19 +5,14 @@
 //! The analysis comes from the session, which computes it once per change that matters; drawing
 //! the ten poles and four A4 markers per frame is cheap.
 
-use serde::Serialize;
-
-use super::layout::Rect;
-pub use super::markers::{flexible_pair, size, with_feedback, PoleStyle, MAX_LOOP_POLES};
-use super::painter::{Painter, Point};
-use super::zplane::{exp_delta, marker_css, ZFrame};
 use crate::analysis::StabilityReport;
 use crate::plot::palette;
+use crate::view::loop_poles::{
+    flexible_pair, nyquist, size, with_feedback, PoleStyle, IM_RANGE, MAX_LOOP_POLES, RE_RANGE,
+};
+use crate::view::painter::{Painter, Point};
+use crate::view::rect::Rect;
 
-/// Re s shown by default, 1/s: the flexible pair at ≈ ±2.6 and the slow poles at ≈ −2.
-pub const RE_RANGE: [f64; 2] = [-8.0, 6.0];
-/// Im s shown by default, rad/s: the flexible pair at ≈ ±29.6.
-pub const IM_RANGE: [f64; 2] = [-40.0, 40.0];
 /// The Im s range that shows the flexible pairs of `reports` — their δ → 0 limits with and
 /// without K_pr, a quarter beyond — in steps of 20 rad/s, at least [`IM_RANGE`].
 pub fn im_range<'a>(reports: impl IntoIterator<Item = &'a StabilityReport>) -> [f64; 2] {
@@ -29,56 +24,6 @@ pub fn im_range<'a>(reports: impl IntoIterator<Item = &'a StabilityReport>) -> [
     let half = (1.25 * fastest / 20.0).ceil() * 20.0;
     let half = half.clamp(IM_RANGE[1], 400.0);
     [-half, half]
-}
-
-/// What a marker in the pole plot stands for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum PoleKind {
-    /// An eigenvalue of the sampled loop.
-    Loop,
-    /// The δ → 0 pair A4 without preliminary feedback.
-    A4Open,
-    /// The δ → 0 pair A4 with the configured preliminary feedback.
-    A4,
-}
-
-/// One marker of the pole plot as the page sees it (for hover readouts).
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct PoleInfo {
-    /// "A" or "B".
-    pub run: &'static str,
-    pub kind: PoleKind,
-    /// Re s, 1/s.
-    pub re: f64,
-    /// Im s, rad/s.
-    pub im: f64,
-    /// Damping ratio −Re s / |s| (null for s = 0).
-    pub zeta: Option<f64>,
-    /// |s|, rad/s.
-    pub omega: f64,
-    /// Re s > 0.
-    pub unstable: bool,
-    /// One of the flexible pair (the loop's complex pair with the largest |Im s|).
-    pub flexible: bool,
-    /// λ: the loop's eigenvalue; for A4, exp(A4 δ), where the limit pair would sit at this δ.
-    pub lambda: [f64; 2],
-    /// |λ| and its angle, rad (per sampling period).
-    pub modulus: f64,
-    pub angle: f64,
-    /// The flexible pair when its true frequency (|Im A4|) is above the Nyquist frequency π/δ:
-    /// s = ln λ / δ then shows an alias.
-    pub aliased: bool,
-    /// The marker's centre in CSS pixels (canvas top-left origin) in the pole plot shown (s- or
-    /// z-plane); for a pole outside the shown range, the chevron at the panel's edge. Null when
-    /// the pole plot is hidden.
-    pub x: Option<f64>,
-    pub y: Option<f64>,
-    /// False if the pole lies outside the shown range (drawn as a chevron at the edge).
-    pub in_view: bool,
-    /// One keyboard stop per ± pair (its readout names both): the upper half (Im λ ≥ 0), so a
-    /// real λ is a stop of its own.
-    pub keyboard_stop: bool,
 }
 
 /// The pole plot's data area in physical pixels and the s-plane region mapped onto it.
@@ -213,19 +158,6 @@ pub fn draw_poles(painter: &mut Painter, frame: &PoleFrame, report: &StabilityRe
     }
 }
 
-/// Where the pole plot is shown, in CSS pixels: the s-plane, the z-plane, or not at all.
-#[derive(Clone, Copy, Debug)]
-pub enum PoleView<'a> {
-    S(&'a PoleFrame),
-    Z(&'a ZFrame),
-    Hidden,
-}
-
-/// The Nyquist frequency π/δ, rad/s: s = ln λ / δ cannot show a mode faster than this.
-pub fn nyquist(delta: f64) -> f64 {
-    core::f64::consts::PI / delta
-}
-
 /// The dashed lines Im s = ±π/δ (where they fall inside the view).
 pub fn draw_nyquist(painter: &mut Painter, frame: &PoleFrame, delta: f64, dpr: f64) {
     let w = nyquist(delta);
@@ -235,67 +167,5 @@ pub fn draw_nyquist(painter: &mut Painter, frame: &PoleFrame, delta: f64, dpr: f
             let y = frame.y(im);
             painter.dashed_line([r.x, y], [r.right(), y], 1.5 * dpr, 5.0 * dpr, 4.0 * dpr, palette::NYQUIST);
         }
-    }
-}
-
-/// True if the flexible mode of `report` is faster than the Nyquist frequency: its loop poles in
-/// the s-plane are aliases.
-pub fn flexible_aliased(report: &StabilityReport) -> bool {
-    report.limit_pair[0][1].abs() > nyquist(report.sampling_period)
-}
-
-/// Appends the markers of one run's analysis to `out` for the page, with their positions in the
-/// pole plot shown.
-pub fn describe_poles(report: &StabilityReport, run: &'static str, view: PoleView<'_>, out: &mut Vec<PoleInfo>) {
-    let flexible = flexible_pair(report);
-    let aliased = flexible_aliased(report);
-    let delta = report.sampling_period;
-    let mut push = |kind: PoleKind, s: [f64; 2], lambda: [f64; 2], flexible: bool| {
-        let omega = s[0].hypot(s[1]);
-        let (pos, in_view) = match view {
-            PoleView::S(f) => {
-                let (p, off) = f.marker(s, size::EDGE);
-                (Some(p), off.is_none())
-            }
-            PoleView::Z(f) => {
-                let (p, in_view) = marker_css(f, lambda);
-                (Some(p), in_view)
-            }
-            PoleView::Hidden => {
-                (None, s[0] >= RE_RANGE[0] && s[0] <= RE_RANGE[1] && s[1] >= IM_RANGE[0] && s[1] <= IM_RANGE[1])
-            }
-        };
-        out.push(PoleInfo {
-            run,
-            kind,
-            re: s[0],
-            im: s[1],
-            zeta: (omega > 0.0).then(|| -s[0] / omega),
-            omega,
-            unstable: s[0] > 0.0,
-            flexible,
-            lambda,
-            modulus: lambda[0].hypot(lambda[1]),
-            angle: lambda[1].atan2(lambda[0]),
-            aliased: flexible && aliased,
-            x: pos.map(|p| p[0]),
-            y: pos.map(|p| p[1]),
-            in_view,
-            keyboard_stop: lambda[1] >= 0.0,
-        });
-    };
-    for (i, pole) in report.poles.iter().enumerate() {
-        if let Some(s) = pole.continuous {
-            if s[0].is_finite() && s[1].is_finite() {
-                push(PoleKind::Loop, s, pole.discrete, flexible.contains(&Some(i)));
-            }
-        }
-    }
-    for s in report.limit_pair_open {
-        push(PoleKind::A4Open, s, exp_delta(s, delta), false);
-    }
-    // Without preliminary feedback there is no "A4 with K_pr": the pair is A4 itself.
-    for &s in with_feedback(report) {
-        push(PoleKind::A4, s, exp_delta(s, delta), false);
     }
 }

@@ -8,9 +8,9 @@
 
 use core::f64::consts::PI;
 
-use super::layout::Rect;
-use super::painter::{Painter, Point};
 use crate::plot::{palette, Color};
+use crate::view::painter::{Painter, Point};
+use crate::view::rect::Rect;
 
 /// Drawn length of link 1 (picture units).
 ///
@@ -282,5 +282,5 @@ fn draw_motor(painter: &mut Painter, frame: &ArmFrame, theta: f64, reference_the
 
 /// The point at radius `r` and screen angle `a` (clockwise from +x) around `c`.
 fn at(c: Point, r: f64, a: f64) -> Point {
-    super::painter::polar(c, r, a)
+    crate::view::painter::polar(c, r, a)
 }

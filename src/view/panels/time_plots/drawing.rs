@@ -1,45 +1,11 @@
 //! Time plots: a scrolling window [t − W, t], grid, zero line, shading while the reference
 //! moves, and curves decimated to at most two vertices per pixel column.
 
-use core::ops::Range;
-
-use super::layout::Rect;
-use super::painter::{Painter, Point};
 use crate::model::reference::Reference;
 use crate::plot::{palette, Color};
-
-/// Default width W of the time window, s.
-pub const DEFAULT_TIME_WINDOW: f64 = 10.0;
-
-/// The time interval a plot shows.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TimeWindow {
-    pub start: f64,
-    pub end: f64,
-}
-
-impl TimeWindow {
-    /// [t − W, t], or [0, W] while t < W, so the first seconds fill the plot from the left.
-    pub fn ending_at(t: f64, width: f64) -> TimeWindow {
-        let t = if t.is_finite() { t } else { 0.0 };
-        if t < width {
-            TimeWindow { start: 0.0, end: width }
-        } else {
-            TimeWindow { start: t - width, end: t }
-        }
-    }
-
-    pub fn width(&self) -> f64 {
-        self.end - self.start
-    }
-
-    /// The indices of the sorted times `t` that fall inside the window (binary search).
-    pub fn indices(&self, t: &[f64]) -> Range<usize> {
-        let first = t.partition_point(|&s| s < self.start);
-        let last = t.partition_point(|&s| s <= self.end);
-        first..last.max(first)
-    }
-}
+use crate::view::painter::{Painter, Point};
+use crate::view::rect::Rect;
+use crate::view::time_window::TimeWindow;
 
 /// An upper bound on the vertices one plot `width_px` physical pixels wide writes with
 /// `series` curves and at most `ticks` grid lines: ≤ 2 points per column per curve (6 vertices

@@ -8,69 +8,82 @@
 //! index-3 DAE's jump to consistency, off the scale at its edge), and U_k, which lands on the
 //! torque held one period later. The horizon τ and that hold are shaded across all three panels.
 
-use super::{RunState, Scene};
+use super::drawing::{draw_background, draw_frame, draw_series, max_abs, PlotFrame};
+use super::series::{plot_tick_counts, y_label, CURVE_WIDTH};
 use crate::plot::palette;
-use crate::view::autoscale::Autoscale;
-use crate::view::layout::{Panel, PanelKind};
-use crate::view::traces::{draw_background, draw_frame, draw_series, max_abs, PlotFrame, TimeWindow};
+use crate::schema::PanelKind;
+use crate::view::autoscale::{Autoscale, AutoscaleSettings};
+use crate::view::layout::Panel;
+use crate::view::painter::Painter;
+use crate::view::panel_info::{PanelInfo, TickLabel};
+use crate::view::panels::contract::{Frame, RunState};
+use crate::view::time_window::TimeWindow;
 
 /// Predictions of more steps than this get a line but no dot per step.
-pub(super) const MAX_DOTS: usize = 48;
-/// Sampling periods shown before t_n and after t_n + 2δ.
-const MARGIN: f64 = 0.25;
+pub const MAX_DOTS: usize = 48;
 /// The first U_j drawn on the scale: U_1, U_2 are the jump to consistency (hundreds of
 /// thousands of N m at small ε).
 const FIRST_ON_SCALE: usize = 3;
 
 /// Vertices the zoom adds to one time plot at most: bands, the predicted lines and dots of two
 /// series (k ≤ 1000 steps), U_k, the planned hold, chevrons and the tick lines.
-pub(super) const ZOOM_VERTEX_BUDGET: usize = 2 * (1001 * 12 + MAX_DOTS * 3 * 32) + 64 * 6 + 12 * 6;
+pub const ZOOM_VERTEX_BUDGET: usize = 2 * (1001 * 12 + MAX_DOTS * 3 * 32) + 64 * 6 + 12 * 6;
 
-impl Scene {
-    /// Brings the zoom to the sampling instant run A shows (its newest, or the one looked back at).
-    pub(super) fn update_cycle(&mut self, a: &RunState<'_>) {
-        if !self.options.show_cycle {
-            return;
-        }
-        match a.history {
-            Some(history) => self.cycle.fill(history, a.sweep, a.traces, a.snapshot.time),
-            None => self.cycle.instant = f64::NAN,
+/// The sampling instants in the zoom's window, t_{n−1} … t_{n+2} (the grid and the ticks).
+pub fn cycle_ticks(frame: &Frame) -> impl Iterator<Item = f64> + '_ {
+    let window = frame.cycle_window();
+    let held = &frame.cycle.held;
+    held.iter()
+        .map(|p| p.start)
+        .chain(held.last().map(|p| p.end))
+        .filter(move |t| window.is_some_and(|w| *t >= w.start && *t <= w.end))
+}
+
+/// The zoom's ticks, at most eight, NaN past the last.
+fn cycle_ticks_array(frame: &Frame) -> [f64; 8] {
+    let mut out = [f64::NAN; 8];
+    for (slot, t) in out.iter_mut().zip(cycle_ticks(frame)) {
+        *slot = t;
+    }
+    out
+}
+
+/// The zoom's own scales (e1, e2, the torques), kept between frames.
+#[derive(Clone, Debug)]
+pub struct Zoom {
+    scales: [Autoscale; 3],
+}
+
+impl Default for Zoom {
+    fn default() -> Self {
+        Self {
+            scales: [
+                Autoscale::new(AutoscaleSettings::ERROR),
+                Autoscale::new(AutoscaleSettings::ERROR),
+                Autoscale::new(AutoscaleSettings::TORQUE),
+            ],
         }
     }
+}
 
-    /// The zoom's window, if the zoom is on and has an instant to show.
-    pub(super) fn cycle_window(&self) -> Option<TimeWindow> {
-        if !self.options.show_cycle || self.cycle.is_empty() {
-            return None;
+impl Zoom {
+    /// Forgets the scales (the simulation restarted).
+    pub fn reset(&mut self) {
+        for s in &mut self.scales {
+            s.reset();
         }
-        let (t, d) = (self.cycle.instant, self.cycle.period);
-        Some(TimeWindow { start: t - (1.0 + MARGIN) * d, end: t + (2.0 + MARGIN) * d })
-    }
-
-    /// The sampling instants in the zoom's window, t_{n−1} … t_{n+2} (the grid and the ticks).
-    pub(super) fn cycle_ticks(&self) -> impl Iterator<Item = f64> + '_ {
-        let window = self.cycle_window();
-        let held = &self.cycle.held;
-        held.iter()
-            .map(|p| p.start)
-            .chain(held.last().map(|p| p.end))
-            .filter(move |t| window.is_some_and(|w| *t >= w.start && *t <= w.end))
-    }
-
-    fn zoom_scale(&mut self, kind: PanelKind) -> &mut Autoscale {
-        &mut self.zoom_scales[zoom_index(kind)]
     }
 
     /// The zoom's half-range for a plot.
-    pub(super) fn zoom_limit(&self, kind: PanelKind) -> f64 {
-        self.zoom_scales[zoom_index(kind)].limit()
+    pub fn limit(&self, kind: PanelKind) -> f64 {
+        self.scales[zoom_index(kind)].limit()
     }
 
     /// One time plot of the zoom.
-    pub(super) fn draw_cycle_plot(&mut self, panel: Panel, window: TimeWindow, a: &RunState<'_>) {
-        let dpr = self.layout.device_pixel_ratio;
-        let rect = self.layout.to_physical(panel.rect);
-        let cycle = &self.cycle;
+    pub fn draw(&mut self, frame: &Frame, panel: &Panel, window: TimeWindow, a: &RunState<'_>, painter: &mut Painter) {
+        let dpr = frame.layout.device_pixel_ratio;
+        let rect = frame.layout.to_physical(panel.rect);
+        let cycle = &frame.cycle;
         let torque = panel.kind == PanelKind::Torque;
         let series: &[usize] = if torque {
             &[0, 1]
@@ -97,14 +110,11 @@ impl Scene {
                 data_max = data_max.max(e[i].abs());
             }
         }
-        let time = self.time;
-        let y = self.zoom_scale(panel.kind).update(data_max, time);
+        let y = self.scales[zoom_index(panel.kind)].update(data_max, frame.time);
+        let ticks = cycle_ticks_array(frame);
         let frame = PlotFrame { rect, window, y_lo: -y, y_hi: y, log: false };
-        let y_ticks = crate::plot::Ticks::new(-y, y, super::plot_tick_counts(panel.rect).1);
-        let ticks = self.cycle_ticks_vec();
-        draw_background(&mut self.painter, &frame, ticks.into_iter().filter(|t| t.is_finite()), y_ticks, None, dpr);
-        let cycle = &self.cycle;
-        let painter = &mut self.painter;
+        let y_ticks = crate::plot::Ticks::new(-y, y, plot_tick_counts(panel.rect).1);
+        draw_background(painter, &frame, ticks.into_iter().filter(|t| t.is_finite()), y_ticks, None, dpr);
         // The horizon τ = kε from t_n and the period U_k is held on, across the panel (translucent:
         // the grid shows through).
         let mut band = |t0: f64, t1: f64, color| {
@@ -121,13 +131,11 @@ impl Scene {
         } else {
             band(cycle.instant, cycle.instant + cycle.horizon, palette::HORIZON_BAND);
         }
-        let cycle = &self.cycle;
-        let painter = &mut self.painter;
         // t_n itself, darker.
         let xn = frame.x(cycle.instant);
         painter.line([xn, rect.y], [xn, rect.bottom()], 1.5 * dpr, palette::AXIS);
         let colors = [palette::ERROR1, palette::ERROR2];
-        let width = super::CURVE_WIDTH * dpr;
+        let width = CURVE_WIDTH * dpr;
         let dot = 2.25 * dpr;
         for &i in series {
             let color = colors[i];
@@ -196,18 +204,18 @@ impl Scene {
     /// A zoomed time plot as the page reads it: ticks at the sampling instants, named after
     /// t_n; the time's unit and δ in the axis title. The labels stay put while the window moves
     /// with t_n (they do not scroll).
-    pub(super) fn describe_cycle_plot(&self, panel: &Panel, window: TimeWindow, info: &mut super::PanelInfo) {
-        let y = self.zoom_limit(panel.kind);
+    pub fn describe(&self, frame: &Frame, panel: &Panel, window: TimeWindow, info: &mut PanelInfo) {
+        let y = self.limit(panel.kind);
         let torque = panel.kind == PanelKind::Torque;
         info.scrolls = false;
-        info.x_label = format!("t [s], δ = {} s", crate::plot::format::sig_trim(self.cycle.period, 3));
-        info.y_label = if torque { "u1, u2 [N m]" } else { super::y_label(panel.kind) };
+        info.x_label = format!("t [s], δ = {} s", crate::plot::format::sig_trim(frame.cycle.period, 3));
+        info.y_label = if torque { "u1, u2 [N m]" } else { y_label(panel.kind) };
         info.x_range = [window.start, window.end];
         info.y_range = [-y, y];
-        info.y_ticks = crate::plot::Ticks::new(-y, y, super::plot_tick_counts(panel.rect).1).collect();
-        let d = self.cycle.period;
-        for t in self.cycle_ticks() {
-            let m = ((t - self.cycle.instant) / d).round() as i32;
+        info.y_ticks = crate::plot::Ticks::new(-y, y, plot_tick_counts(panel.rect).1).collect();
+        let d = frame.cycle.period;
+        for t in cycle_ticks(frame) {
+            let m = ((t - frame.cycle.instant) / d).round() as i32;
             let text = match m {
                 0 => "tₙ".to_string(),
                 1 => "tₙ+δ".to_string(),
@@ -216,12 +224,12 @@ impl Scene {
                 m => format!("tₙ+{m}δ"),
             };
             info.x_ticks.push(t);
-            info.x_labels.push(super::TickLabel { value: t, text });
+            info.x_labels.push(TickLabel { value: t, text });
         }
         // The note sits in the header row, over no data; the jump's sizes are in the caption
         // under the figure (the note would go stale between descriptions).
         info.note = match panel.kind {
-            PanelKind::Torque if self.jump_off_scale() => {
+            PanelKind::Torque if self.jump_off_scale(frame) => {
                 "U₁, U₂ off the scale (sizes in the caption); ◆ Uₖ held from tₙ+δ to tₙ+2δ (green)".into()
             }
             PanelKind::Torque => "◆ Uₖ held from tₙ+δ to tₙ+2δ (green)".into(),
@@ -231,17 +239,9 @@ impl Scene {
     }
 
     /// True if the jump to consistency, U₁ or U₂, lies off the torque plot's scale.
-    pub(super) fn jump_off_scale(&self) -> bool {
-        let y = self.zoom_limit(PanelKind::Torque);
-        self.cycle.sweep.torques.iter().take(FIRST_ON_SCALE - 1).any(|u| u[0].abs() > y || u[1].abs() > y)
-    }
-
-    fn cycle_ticks_vec(&self) -> [f64; 8] {
-        let mut out = [f64::NAN; 8];
-        for (slot, t) in out.iter_mut().zip(self.cycle_ticks()) {
-            *slot = t;
-        }
-        out
+    pub fn jump_off_scale(&self, frame: &Frame) -> bool {
+        let y = self.limit(PanelKind::Torque);
+        frame.cycle.sweep.torques.iter().take(FIRST_ON_SCALE - 1).any(|u| u[0].abs() > y || u[1].abs() > y)
     }
 }
 

@@ -2,9 +2,9 @@
 //! far larger than the panel when zoomed in, and only the part in view is drawn (nothing spills
 //! onto the gutters, and the vertex count stays bounded).
 
-use super::super::layout::Rect;
-use super::super::painter::{Painter, Point};
 use crate::plot::Color;
+use crate::view::painter::{Painter, Point};
+use crate::view::rect::Rect;
 
 /// The most corners a polygon handed to [`fill_clipped`] may have.
 pub const MAX_CORNERS: usize = 140;

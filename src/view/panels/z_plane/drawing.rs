@@ -8,16 +8,13 @@
 //! inside is the panel's colour; at any zoom only the part of the disk and of the circle in view
 //! is drawn, cut to the panel ([`clip`]), from a bounded number of vertices.
 
-pub mod clip;
-pub mod view;
-
-use super::layout::Rect;
-use super::markers::{flexible_pair, size, with_feedback, PoleStyle, MAX_LOOP_POLES};
-use super::painter::{Painter, Point};
+use super::clip::{clip_segment, fill_clipped, fill_vertices};
+use super::view::ZView;
 use crate::analysis::StabilityReport;
 use crate::plot::{palette, Ticks};
-use clip::{clip_segment, fill_clipped, fill_vertices};
-pub use view::{ZView, WHOLE_HALF};
+use crate::view::loop_poles::{exp_delta, flexible_pair, size, with_feedback, PoleStyle, MAX_LOOP_POLES};
+use crate::view::painter::{Painter, Point};
+use crate::view::rect::Rect;
 
 /// About one Re λ tick per this many CSS px (labels such as "0.98302" need about 55).
 const X_TICK_SPACING: f64 = 80.0;
@@ -153,12 +150,6 @@ fn label_extent(step: f64, lo: f64, hi: f64, across: bool) -> f64 {
     let whole = if big >= 1.0 { big.log10().floor() + 1.0 } else { 1.0 };
     let digits = if big != 0.0 && !(1e-2..1e5).contains(&big) { 7.0 } else { whole + decimals };
     (digits * EM_PER_CHAR + 0.9 + 0.4) * font::TICK
-}
-
-/// λ = exp(s δ) for a continuous-time s.
-pub fn exp_delta(s: [f64; 2], delta: f64) -> [f64; 2] {
-    let r = (s[0] * delta).exp();
-    [r * (s[1] * delta).cos(), r * (s[1] * delta).sin()]
 }
 
 /// An upper bound on the vertices [`draw_zplane_run`] writes for one run.

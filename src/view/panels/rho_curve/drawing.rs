@@ -3,14 +3,14 @@
 //! current δ marked — the horizontal slice of the stability map, readable as a curve. Clicking or
 //! dragging on it picks δ.
 
-use super::layout::Rect;
-use super::painter::{Painter, Point};
 use crate::analysis::lag::LagLaw;
 use crate::analysis::{StabilityReport, StableWindows};
 use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
 use crate::plot::color::Measure;
 use crate::plot::ticks::log_ticks;
 use crate::plot::{palette, Color, Ticks};
+use crate::view::painter::{Painter, Point};
+use crate::view::rect::Rect;
 
 /// ρ shown at least over this range; widened to the data (within [0, 2]).
 pub const RHO_RANGE_MIN: [f64; 2] = [0.9, 1.1];

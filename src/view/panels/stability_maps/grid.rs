@@ -6,13 +6,14 @@
 //! computed missing). The cells and the contour change only when the page hands over new rows, so they are
 //! tessellated once into the scene's static layer; only the markers are drawn every frame.
 
-use super::layout::{PanelKind, Rect};
-use super::painter::{Painter, Point};
 use crate::plot::color::Measure;
 use crate::plot::contour::{chain_segments, marching_squares};
 use crate::plot::ticks::log_ticks;
 use crate::plot::{palette, Color};
+use crate::schema::PanelKind;
 pub use crate::session::maps::MapSide;
+use crate::view::painter::{Painter, Point};
+use crate::view::rect::Rect;
 
 /// The panel that shows a side's map.
 pub fn panel_of(side: MapSide) -> PanelKind {

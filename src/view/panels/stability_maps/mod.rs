@@ -1,0 +1,220 @@
+//! The two stability maps, ρ over (δ, α) without and with the preliminary feedback: the cells
+//! and the ρ = 1 contour in the static layer ([`grid`]), the runs' (δ, α) and run A's stable
+//! windows of δ marked every frame, and what lies under the pointer (a click runs there). The maps
+//! keep their grids between frames, copied from the session's map jobs as rows arrive.
+
+pub mod grid;
+
+use grid::{
+    draw_map_marker, draw_map_static, map_ticks, side_of, LogFrame, MapSide, StabilityGrid, MARKER_VERTEX_BUDGET,
+};
+
+use crate::control::config::PreliminaryFeedbackChoice;
+use crate::plot::{format, palette, Color};
+use crate::schema::PanelKind;
+use crate::session::maps::{feedback_short, point_text};
+use crate::view::layout::Panel;
+use crate::view::legend::{item, map_scale, Glyph, LegendGroup};
+use crate::view::painter::Painter;
+use crate::view::panel_info::{PanelInfo, Probe, TipLine};
+use crate::view::panels::contract::{Frame, PanelView, Runs};
+use crate::view::rho_readout::stability_lines;
+use crate::view::tick_labels::log_labels;
+
+/// Least distance between log-axis labels, CSS px (x: a label's width, y: its height).
+const LOG_LABEL_SPACING: [f64; 2] = [38.0, 17.0];
+
+/// The maps ([`PanelKind::MapOff`], [`PanelKind::MapOn`]) and their grids.
+#[derive(Clone, Debug, Default)]
+pub struct StabilityMaps {
+    /// Without ([`MapSide::Off`]) and with ([`MapSide::On`]) preliminary feedback.
+    grids: [StabilityGrid; 2],
+    /// Which session map (and how many rows of it) each grid holds.
+    sources: [Option<(u64, usize)>; 2],
+}
+
+impl StabilityMaps {
+    /// The map of one side.
+    pub fn grid(&self, side: MapSide) -> &StabilityGrid {
+        &self.grids[side.index()]
+    }
+
+    /// Takes a (possibly partial) map: `rho` row-major by α for the first rows.
+    pub fn set(&mut self, side: MapSide, deltas: &[f64], alphas: &[f64], rho: &[f64]) -> Result<(), String> {
+        self.grids[side.index()].set(deltas, alphas, rho)?;
+        self.sources[side.index()] = None;
+        Ok(())
+    }
+
+    /// Takes the rows of a session map (`source`: its generation and rows) unless the grid has
+    /// them already; true if it took them.
+    pub fn follow(&mut self, side: MapSide, source: (u64, usize), deltas: &[f64], alphas: &[f64], rho: &[f64]) -> bool {
+        if self.sources[side.index()] == Some(source) {
+            return false;
+        }
+        if self.grids[side.index()].set(deltas, alphas, rho).is_ok() {
+            self.sources[side.index()] = Some(source);
+            return true;
+        }
+        false
+    }
+
+    /// Forgets both maps.
+    pub fn clear(&mut self) {
+        for g in &mut self.grids {
+            g.clear();
+        }
+        self.sources = [None; 2];
+    }
+
+    /// The map and (δ, α) at (x, y) (CSS px), if (x, y) lies on a map of the layout.
+    pub fn point_at(&self, frame: &Frame, x: f64, y: f64) -> Option<(MapSide, f64, f64)> {
+        let panel = frame
+            .layout
+            .panels
+            .iter()
+            .find(|p| side_of(p.kind).is_some() && p.rect.w > 0.0 && p.rect.h > 0.0 && p.contains(x, y))?;
+        let side = side_of(panel.kind)?;
+        let grid = &self.grids[side.index()];
+        let r = panel.rect;
+        let fx = ((x - r.x) / r.w).clamp(0.0, 1.0);
+        let fy = (1.0 - (y - r.y) / r.h).clamp(0.0, 1.0);
+        let along = |f: f64, [lo, hi]: [f64; 2]| lo * (hi / lo).powf(f);
+        Some((side, along(fx, grid.delta_range()), along(fy, grid.alpha_range())))
+    }
+
+    fn log_frame(&self, frame: &Frame, panel: &Panel, side: MapSide) -> LogFrame {
+        let grid = &self.grids[side.index()];
+        LogFrame {
+            rect: frame.layout.to_physical(panel.rect),
+            x_range: grid.delta_range(),
+            y_range: grid.alpha_range(),
+        }
+    }
+}
+
+impl PanelView for StabilityMaps {
+    fn vertex_budget(&self, frame: &Frame, _panel: &Panel) -> usize {
+        24 + 2 * 6 * 8 + frame.run_count() * MARKER_VERTEX_BUDGET
+    }
+
+    fn draw_static(&self, frame: &Frame, panel: &Panel, painter: &mut Painter) {
+        let Some(side) = side_of(panel.kind) else { return };
+        let grid = &self.grids[side.index()];
+        let map = self.log_frame(frame, panel, side);
+        let (x_ticks, y_ticks) = map_ticks(panel.rect, grid);
+        let dpr = frame.layout.device_pixel_ratio;
+        draw_map_static(painter, &map, grid, (&x_ticks, &y_ticks), frame.options.measure, dpr);
+    }
+
+    fn draw(&mut self, frame: &Frame, _runs: &Runs<'_>, panel: &Panel, painter: &mut Painter) {
+        let Some(side) = side_of(panel.kind) else { return };
+        let dpr = frame.layout.device_pixel_ratio;
+        let map = self.log_frame(frame, panel, side);
+        // Run A's stable windows of δ at its α, on the map of its feedback.
+        if let (Some(config), Some(windows)) = (&frame.runs[0].config, &frame.windows) {
+            if MapSide::for_feedback(config.preliminary_feedback) == side {
+                let y = map.y_log(config.controller.alpha[0].ln());
+                if y >= map.rect.y && y <= map.rect.bottom() {
+                    for [lo, hi] in &windows.windows {
+                        let (x0, x1) = (map.x_log(lo.ln()), map.x_log(hi.ln()));
+                        let (x0, x1) = (x0.max(map.rect.x), x1.min(map.rect.right()));
+                        if x1 > x0 {
+                            painter.line([x0, y], [x1, y], 7.0 * dpr, palette::MARKER_HALO);
+                            painter.line([x0, y], [x1, y], 3.5 * dpr, palette::WINDOW_MARK);
+                        }
+                    }
+                }
+            }
+        }
+        for run in (0..frame.run_count()).rev() {
+            let Some(config) = &frame.runs[run].config else { continue };
+            let filled = MapSide::for_feedback(config.preliminary_feedback) == side;
+            let color: Color = if run == 0 { palette::MAP_MARKER } else { palette::RUN_B };
+            let (delta, alpha) = (config.controller.sampling_period, config.controller.alpha[0]);
+            draw_map_marker(painter, &map, delta, alpha, filled, color, dpr);
+        }
+        painter.rect_outline(map.rect, dpr.max(1.0), palette::FRAME);
+    }
+
+    fn describe(&self, frame: &Frame, panel: &Panel) -> PanelInfo {
+        let r = panel.rect;
+        let mut info = PanelInfo::new(panel.kind.id(), r.x, r.y, r.w, r.h);
+        let side = side_of(panel.kind).unwrap_or(MapSide::Off);
+        let grid = &self.grids[side.index()];
+        let (x_ticks, y_ticks) = map_ticks(r, grid);
+        info.x_label = "δ [s]".into();
+        info.y_label = "α [1/s]";
+        info.x_range = grid.delta_range();
+        info.y_range = grid.alpha_range();
+        info.x_labels = log_labels(&x_ticks, info.x_range, r.w, LOG_LABEL_SPACING[0]);
+        info.y_labels = log_labels(&y_ticks, info.y_range, r.h, LOG_LABEL_SPACING[1]);
+        info.x_ticks = x_ticks;
+        info.y_ticks = y_ticks;
+        info.x_scale = "log";
+        info.y_scale = "log";
+        let pf = frame.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
+        info.note = side.caption(pf, frame.options.measure);
+        info
+    }
+
+    fn probe(&self, frame: &Frame, panel: &Panel, x: f64, y: f64, _reach: f64) -> Option<Probe> {
+        if !(panel.rect.w > 0.0 && panel.rect.h > 0.0 && panel.contains(x, y)) {
+            return None;
+        }
+        let (side, delta, alpha) = self.point_at(frame, x, y)?;
+        let (cell_delta, rho) = self.grids[side.index()].near(delta, alpha);
+        let mut lines = vec![TipLine::plain(point_text(delta, alpha))];
+        stability_lines(rho, cell_delta, &mut lines);
+        let pf = frame.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
+        // Where the paper's gains stop damping the resonance, the map says why it turns red.
+        let limit = frame.runs[0].report.as_ref().map(|r| r.resonance.paper_alpha_limit);
+        if let (PreliminaryFeedbackChoice::Paper, Some(limit)) = (side.feedback(pf), limit) {
+            if alpha > limit {
+                lines.push(TipLine::plain(format!(
+                    "above α = {} 1/s the paper's K_pr leaves the δ → 0 pair unstable: at this α the smallest δ fail; its \
+                     shift of Re A4 is the same at every α, while the controller's feed 3α/2 grows",
+                    format::sig(limit, 3)
+                )));
+            }
+        }
+        // What a click runs: the point rounded as the controls round it (the session snaps the
+        // same way), beside the map cell's ρ above.
+        let spec = |p: &crate::schema::Param| *p.number().expect("δ and α are numbers");
+        let (d, a) = (spec(&crate::schema::DELTA).snap(delta), spec(&crate::schema::ALPHA).snap(alpha));
+        lines.push(TipLine::plain(format!(
+            "click to run at δ = {} s, α = {} 1/s",
+            crate::schema::format_number(d),
+            crate::schema::format_number(a)
+        )));
+        let title = match side.feedback(pf) {
+            PreliminaryFeedbackChoice::Off => "without preliminary feedback".to_string(),
+            f => format!("with {}", feedback_short(f)),
+        };
+        Some(Probe { kind: "map", title, lines, x, y, map: Some(side), delta: Some(delta), alpha: Some(alpha) })
+    }
+
+    fn legend(&self, frame: &Frame, kinds: &[PanelKind]) -> Vec<LegendGroup> {
+        if !kinds.iter().any(|k| k.is_map()) {
+            return Vec::new();
+        }
+        let rate = frame.options.measure == crate::plot::color::Measure::Rate;
+        let mut items = vec![
+            item(
+                Glyph::Line,
+                palette::CONTOUR,
+                if rate { "ln ρ/δ = 0 (ρ = 1): the edge of stability" } else { "ρ = 1: the edge of stability" },
+            ),
+            item(Glyph::Ring, palette::MAP_MARKER, "the (δ, α) running now"),
+            item(Glyph::Line, palette::WINDOW_MARK, "the stable windows of δ at this α"),
+        ];
+        if frame.pair {
+            items.push(item(Glyph::Ring, palette::RUN_B, "run B's (δ, α)"));
+        }
+        vec![LegendGroup { title: "stability maps", items, scale: Some(map_scale(frame.options.measure)) }]
+    }
+
+    fn figure_title(&self, frame: &Frame, _kinds: &[PanelKind]) -> String {
+        format!("{} of the sampled loop over (δ, α)", frame.options.measure.quantity())
+    }
+}
