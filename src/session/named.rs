@@ -7,32 +7,34 @@
 
 use super::query::split_query;
 use super::view::ViewSettings;
+use crate::schema::{PanelKind, Tab};
+
+/// The panel the setting `key` turns on or changes, if that panel is shown in `view`.
+fn panel_of(key: &str, view: &ViewSettings) -> Option<PanelKind> {
+    let v = view.shown();
+    let (shown, panel) = match key {
+        "poles" | "plane" => (v.poles, if v.z_plane { PanelKind::ZPlane } else { PanelKind::Poles }),
+        "rho" => (v.rho, PanelKind::RhoCurve),
+        "map" => (v.map, PanelKind::MapOff),
+        "torque" => (v.torque, PanelKind::Torque),
+        "log" => (v.log, PanelKind::Error1),
+        "predict" => (v.predict, PanelKind::Error1),
+        "swing" => (v.swing, PanelKind::Arm),
+        // An embed's list: its first analysis panel.
+        "views" => return panel_of("poles", view).or_else(|| panel_of("rho", view)).or_else(|| panel_of("map", view)),
+        _ => return None,
+    };
+    shown.then_some(panel)
+}
 
 /// The tab holding the panel that the setting `key` names, if that panel is shown in `view`.
-pub fn tab_of(key: &str, view: &ViewSettings) -> Option<&'static str> {
-    let v = view.shown();
-    let shown = match key {
-        "poles" | "plane" => v.poles,
-        "rho" => v.rho,
-        "map" => v.map,
-        "torque" => v.torque,
-        "log" => v.log,
-        "predict" => v.predict,
-        "swing" => v.swing,
-        // An embed's list: its first analysis panel.
-        "views" => return tab_of("poles", view).or_else(|| tab_of("rho", view)).or_else(|| tab_of("map", view)),
-        _ => false,
-    };
-    shown.then_some(match key {
-        "poles" | "plane" | "rho" => "poles",
-        "map" => "maps",
-        _ => "run",
-    })
+pub fn tab_of(key: &str, view: &ViewSettings) -> Option<Tab> {
+    panel_of(key, view).map(PanelKind::tab)
 }
 
 /// The tab a state string (a link, a lesson step's `state:`) brings into view with `view` its
 /// result: that of the first key naming a shown panel; none if it says `tab=` itself.
-pub fn tab_named_in(state: &str, view: &ViewSettings) -> Option<&'static str> {
+pub fn tab_named_in(state: &str, view: &ViewSettings) -> Option<Tab> {
     let pairs = split_query(state);
     if pairs.iter().any(|(k, _)| k == "tab") {
         return None;
@@ -43,7 +45,7 @@ pub fn tab_named_in(state: &str, view: &ViewSettings) -> Option<&'static str> {
 /// The tab a lesson step opens on, `view` being the settings its `state:` made (with the tab it
 /// says, if it says one) and `shown` the tab shown before: the panel the step names; else the tab
 /// it says; else the tab shown stays, if it still has panels.
-pub fn step_tab(state: &str, view: &ViewSettings, shown: &'static str) -> &'static str {
+pub fn step_tab(state: &str, view: &ViewSettings, shown: Tab) -> Tab {
     let pairs = split_query(state);
     if pairs.iter().any(|(k, _)| k == "tab") {
         return view.tab;
@@ -55,12 +57,12 @@ pub fn step_tab(state: &str, view: &ViewSettings, shown: &'static str) -> &'stat
     }
 }
 
-/// True if `view` shows a panel on the tab `tab` ("run" always has the arm and the errors).
-pub fn tab_has_panels(tab: &str, view: &ViewSettings) -> bool {
+/// True if `view` shows a panel on the tab `tab` (the run's always has the arm and the errors).
+pub fn tab_has_panels(tab: Tab, view: &ViewSettings) -> bool {
     let v = view.shown();
     match tab {
-        "poles" => v.poles || v.rho,
-        "maps" => v.map,
-        _ => true,
+        Tab::Poles => v.poles || v.rho,
+        Tab::Maps => v.map,
+        Tab::Run => true,
     }
 }

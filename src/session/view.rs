@@ -3,7 +3,7 @@
 
 use crate::error::{Error, ParseError};
 use crate::plot::color::Measure;
-use crate::schema::{self, Param, Value};
+use crate::schema::{self, Param, Tab, Value};
 
 /// What the page shows: the schema's view parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -30,8 +30,8 @@ pub struct ViewSettings {
     pub predict: bool,
     /// The flexible pair's shape animated on the arm.
     pub swing: bool,
-    /// The view a narrow canvas shows ("run", "poles", "maps").
-    pub tab: &'static str,
+    /// The view a narrow canvas shows.
+    pub tab: Tab,
     /// Embedded in another page: the canvas and a strip of controls.
     pub embed: bool,
     /// The time plots' window, s.
@@ -89,7 +89,7 @@ impl Default for ViewSettings {
             log: false,
             predict: false,
             swing: false,
-            tab: "run",
+            tab: Tab::Run,
             embed: false,
             window: 10.0,
             answers_hidden: false,
@@ -113,7 +113,7 @@ impl ViewSettings {
             "picture" => Value::Switch(self.picture),
             "errors" => Value::Switch(self.errors),
             "plane" => Value::Choice(if self.z_plane { "z" } else { "s" }),
-            "tab" => Value::Choice(self.tab),
+            "tab" => Value::Choice(self.tab.id()),
             "embed" => Value::Switch(self.embed),
             "window" => Value::Number(self.window),
             "poles" => Value::Switch(self.poles),
@@ -141,7 +141,7 @@ impl ViewSettings {
             ("picture", Value::Switch(b)) => self.picture = b,
             ("errors", Value::Switch(b)) => self.errors = b,
             ("plane", Value::Choice(p)) => self.z_plane = p == "z",
-            ("tab", Value::Choice(t)) => self.tab = t,
+            ("tab", Value::Choice(t)) => self.tab = Tab::from_id(t).unwrap_or_default(),
             ("embed", Value::Switch(b)) => self.embed = b,
             ("window", Value::Number(w)) => self.window = w,
             ("poles", Value::Switch(b)) => self.poles = b,

@@ -52,6 +52,21 @@ pub struct PanelInfo {
     /// title and its labelled ticks, at values of the x axis.
     pub x2_label: String,
     pub x2_labels: Vec<TickLabel>,
+    /// The panel as a keyboard region over the canvas (null: none): what a screen reader hears
+    /// there and what the keys do.
+    pub region: Option<Region>,
+}
+
+/// A panel the keyboard can work: focused, it is announced with `label`, and the arrow keys act
+/// as `keys` says.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Region {
+    pub label: &'static str,
+    /// "map": the arrows move the running (δ, α) on the map of `map`, Enter runs there; "delta":
+    /// left and right step δ; "poles": the arrows step from pole to pole and read each one;
+    /// "zplane": the same, and + − 0 P and Shift with the arrows zoom and pan.
+    pub keys: &'static str,
+    pub map: Option<MapSide>,
 }
 
 impl PanelInfo {
@@ -79,6 +94,7 @@ impl PanelInfo {
             marks: Vec::new(),
             x2_label: String::new(),
             x2_labels: Vec::new(),
+            region: None,
         }
     }
 }

@@ -1,9 +1,10 @@
-// The figures by keyboard: a focusable region over each map, the pole plot and ρ(δ). On a map
-// the arrow keys move the running point (δ across, α up) and Enter runs with that map's
-// feedback; on the pole plot they step from pole to pole and read each one out; on ρ(δ) they
-// step δ; on the z-plane + and − zoom, 0 shows the whole circle, P the flexible pair, and
-// Shift with the arrows pans. What a key does to the settings (and to the view) is the session's
-// and the renderer's; this routes keys and places regions.
+// The figures by keyboard: a focusable region over each panel whose description has a `region`
+// (the maps, the pole plot or z-plane, ρ(δ)), announced with its words. As the region's `keys`
+// say: on a map the arrow keys move the running point (δ across, α up) and Enter runs with that
+// map's feedback; on the pole plot they step from pole to pole and read each one out; on ρ(δ) they
+// step δ; on the z-plane + and − zoom, 0 shows the whole circle, P the flexible pair, and Shift
+// with the arrows pans. What a key does to the settings (and to the view) is the session's and the
+// renderer's; this routes keys and places regions.
 
 import { byId, make, setText } from './dom.js';
 
@@ -39,23 +40,15 @@ export function createFocus(on) {
   const panels = new Map();
   let poleIndex = 0;
 
-  const DESCRIBE = {
-    'map-off': 'Stability map without K_pr. Arrow keys move the running point: left and right change δ, up and down α; Enter runs without K_pr.',
-    'map-on': 'Stability map with K_pr. Arrow keys move the running point: left and right change δ, up and down α; Enter runs with K_pr.',
-    poles: 'Pole plot. Arrow keys step from pole to pole and read each one.',
-    'z-plane': 'The loop\u2019s eigenvalues λ and the unit circle. Arrow keys step from one to the next and read it; plus and minus zoom, 0 shows the whole circle, P the flexible pair, Shift with the arrows pans.',
-    'rho-curve': 'ρ along δ. Left and right arrow keys change δ.',
-  };
-
   /** A focusable region over panel `p`. @param {any} p */
   function region(p) {
     let r = regions.get(p.id);
     if (!r) {
-      const el = make('div', { class: 'panel-focus', tabindex: '0', role: 'group', 'aria-label': DESCRIBE[/** @type {keyof typeof DESCRIBE} */ (p.id)] });
+      const el = make('div', { class: 'panel-focus', tabindex: '0', role: 'group', 'aria-label': p.region.label });
       el.addEventListener('keydown', (ev) => onKey(p.id, ev));
       el.addEventListener('blur', on.hideTip);
       // The z-plane's region takes the pointer too: touch gestures there pan and pinch the plane.
-      if (p.id === 'z-plane') {
+      if (p.region.keys === 'zplane') {
         el.classList.add('takes-pointer');
         on.attachZ(el);
       }
@@ -67,21 +60,22 @@ export function createFocus(on) {
     return r;
   }
 
-  /** @param {string} id @param {KeyboardEvent} ev */
+  /** What the keys do on the panel `id`, as its description says. @param {string} id @param {KeyboardEvent} ev */
   function onKey(id, ev) {
-    const z = id === 'z-plane' && !ev.ctrlKey && !ev.metaKey && !ev.altKey ? zKey(ev) : null;
+    const region = panels.get(id)?.region;
+    if (!region) return;
+    const z = region.keys === 'zplane' && !ev.ctrlKey && !ev.metaKey && !ev.altKey ? zKey(ev) : null;
     if (z) {
       on.zKey(z, panels.get(id));
       ev.preventDefault();
       return;
     }
     const steps = arrowSteps(ev.key);
-    if (id === 'map-off' || id === 'map-on') {
-      const side = id === 'map-off' ? 'off' : 'on';
-      if (steps) on.stepOnMap(side, steps[0], steps[1]);
-      else if (ev.key === 'Enter') on.enterMap(side);
+    if (region.keys === 'map') {
+      if (steps) on.stepOnMap(region.map, steps[0], steps[1]);
+      else if (ev.key === 'Enter') on.enterMap(region.map);
       else return;
-    } else if (id === 'rho-curve') {
+    } else if (region.keys === 'delta') {
       if (!steps || steps[0] === 0) return;
       on.stepDelta(steps[0]);
     } else {
@@ -105,7 +99,7 @@ export function createFocus(on) {
     const ids = new Set();
     for (const p of layout.panels) {
       panels.set(p.id, p);
-      if (!(p.id in DESCRIBE)) continue;
+      if (!p.region) continue;
       ids.add(p.id);
       region(p).hidden = false;
     }

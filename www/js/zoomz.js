@@ -18,7 +18,7 @@ export function zAction(name) {
 export function createZoom(on) {
   const group = byId('zoom-z');
   const coarse = matchMedia('(pointer: coarse)');
-  const panel = () => on.layout()?.panels?.find((/** @type {any} */ q) => q.id === 'z-plane');
+  const panel = () => on.layout()?.panels?.find((/** @type {any} */ q) => q.region?.keys === 'zplane');
   /** Runs a change of the view; the URL and the picture follow (the runs go on). @param {() => any} fn */
   const run = (fn) => {
     const done = Boolean(on.guard('Zooming the z-plane failed', fn, false));
@@ -57,7 +57,7 @@ export function createZoom(on) {
     /** Places the buttons for a new description of the frame. @param {any} layout */
     update(layout) {
       group.classList.toggle('coarse', coarse.matches);
-      const p = (layout?.panels ?? []).find((/** @type {any} */ q) => q.id === 'z-plane');
+      const p = (layout?.panels ?? []).find((/** @type {any} */ q) => q.region?.keys === 'zplane');
       group.hidden = !p;
       if (!p) return;
       // A touch screen's finger-wide buttons would cover the plot: they go under the figure.

@@ -19,9 +19,10 @@ mod svg;
 use core::fmt::Write as _;
 
 use crate::error::{Error, ParseError};
-use crate::plot::{palette, Color};
+use crate::plot::palette;
 use crate::session::{MapSide, Session};
 use crate::view::layout::PanelKind;
+use crate::view::panels::time_plots::figure_curves;
 use crate::view::scene::{Scene, ViewOptions};
 use key::{curve_key, key, Caption};
 use layout::{figure_layout, MARGIN};
@@ -129,34 +130,6 @@ impl FigurePanel {
     fn is_map(self) -> bool {
         self.kinds().iter().any(|k| k.is_map())
     }
-
-    /// The figure's title, as the session draws it now (log |e|, the zoom on tₙ, ρ or ln ρ/δ).
-    fn title(self, session: &Session) -> String {
-        let v = session.drawn_view();
-        let errors = |what: &str| {
-            if v.predict {
-                format!("{what}, zoomed on one sampling instant tₙ (Fig. 2.1)")
-            } else if v.log {
-                format!("{what}, log |e| with the slope ln ρ/δ the analysis predicts")
-            } else {
-                what.to_string()
-            }
-        };
-        match self {
-            FigurePanel::Arm => "The arm, top view".into(),
-            FigurePanel::ArmB => "Run B's arm, top view".into(),
-            FigurePanel::Errors => errors("Tracking errors e1, e2"),
-            FigurePanel::E1 => errors("Tracking error e1 (link 1)"),
-            FigurePanel::E2 => errors("Tracking error e2 (link 2)"),
-            FigurePanel::Torque => errors("Torques T1, T2"),
-            FigurePanel::Poles => "Poles of the sampled loop, s = ln λ/δ".into(),
-            FigurePanel::ZPlane => "Eigenvalues λ of the sampled loop (z-plane)".into(),
-            FigurePanel::Rho => format!("{} along δ", v.measure.quantity()),
-            FigurePanel::MapOff | FigurePanel::MapOn | FigurePanel::Maps => {
-                format!("{} of the sampled loop over (δ, α)", v.measure.quantity())
-            }
-        }
-    }
 }
 
 /// One choice of the page's "Figure" list.
@@ -230,7 +203,10 @@ pub fn figure_svg(session: &Session, panel: &str, dark: bool) -> Result<Figure, 
         ));
     }
     let width_guess = 800.0;
-    let title = panel.title(session);
+    // The title, from the panel as the session shows it now (log |e|, the zoom on tₙ, ρ or ln ρ/δ).
+    let mut shown = Scene::new(ViewOptions::default(), width_guess, 600.0, 1.0);
+    shown.follow_view(&session.drawn_view());
+    let title = shown.figure_title(panel.kinds());
     let title_lines = wrap(&title, width_guess - 2.0 * MARGIN, 16.0, true);
     let top = MARGIN + title_lines.len() as f64 * 21.0 + 6.0;
     let (layout, width, panels_bottom) = figure_layout(panel.kinds(), top);
@@ -247,20 +223,9 @@ pub fn figure_svg(session: &Session, panel: &str, dark: bool) -> Result<Figure, 
     let mut groups = scene.legend();
     let kinds = panel.kinds();
     if kinds.iter().any(|k| k.is_time_plot()) {
-        let curves: &[(Color, &str)] = match panel {
-            FigurePanel::Torque => {
-                &[(palette::TORQUE1, "T1, the motor's torque"), (palette::TORQUE2, "T2, joint 2's torque")]
-            }
-            FigurePanel::E1 => &[(palette::ERROR1, "e1 = q1 − q_d1, link 1's tracking error")],
-            FigurePanel::E2 => &[(palette::ERROR2, "e2 = q2 − q_d2, link 2's tracking error")],
-            _ => &[
-                (palette::ERROR1, "e1 = q1 − q_d1, link 1's tracking error"),
-                (palette::ERROR2, "e2 = q2 − q_d2, link 2's tracking error"),
-            ],
-        };
         let pair = scene.is_pair().then_some(palette::RUN_B);
         let ghost = session.ghost().map(|_| palette::GHOST_TRACE);
-        groups.insert(0, curve_key(curves, pair, ghost).expect("curves"));
+        groups.insert(0, curve_key(figure_curves(kinds), pair, ghost).expect("curves"));
     }
     let key_top = panels_bottom + 8.0;
     let key_height = key(None, &groups, MARGIN, key_top, inner);

@@ -58,6 +58,11 @@ impl Scene {
         groups
     }
 
+    /// A figure's title for the panels `kinds` (of one panel type), as the view shows them now.
+    pub fn figure_title(&self, kinds: &[PanelKind]) -> String {
+        kinds.first().map_or_else(String::new, |k| self.panels.get(*k).figure_title(&self.frame, kinds))
+    }
+
     /// Every text over the canvas, placed (see [`crate::view::labels`]).
     pub fn labels(&self) -> Vec<Label> {
         let kinds = self.frame.layout.panels.iter().map(|p| p.kind);

@@ -25,7 +25,6 @@ use super::panels::Panels;
 use crate::analysis::{StabilityReport, StableWindows};
 use crate::control::Cycle;
 use crate::plot::{palette, Color};
-use crate::schema::Tab;
 use crate::session::{MapSide, ViewSettings};
 use crate::view::panels::stability_maps::grid::StabilityGrid;
 use crate::view::time_window::TimeWindow;
@@ -138,7 +137,7 @@ impl Scene {
             log_errors: v.log,
             show_cycle: v.predict,
             show_swing: v.swing,
-            tab: Tab::from_id(v.tab).unwrap_or_default(),
+            tab: v.tab,
             hide_prediction: v.answers_hidden,
             z_view: z_view_of(&v),
             text: crate::view::text_size::TextSize::from_name(v.text),

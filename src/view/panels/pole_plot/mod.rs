@@ -18,7 +18,7 @@ use crate::view::loop_poles::{
     describe_poles, flexible_aliased, legend_group, nyquist, size, PoleInfo, PoleStyle, RE_RANGE,
 };
 use crate::view::painter::Painter;
-use crate::view::panel_info::{PanelInfo, Probe};
+use crate::view::panel_info::{PanelInfo, Probe, Region};
 use crate::view::panels::contract::{Frame, PanelView, Runs, RUN_NAMES};
 use crate::view::rect::Rect;
 use crate::view::tick_labels::linear_labels;
@@ -118,6 +118,11 @@ impl PanelView for PolePlot {
         info.marks = flexible_mark(&poles, r.w, None);
         info.x_labels = linear_labels(&info.x_ticks);
         info.y_labels = linear_labels(&info.y_ticks);
+        info.region = Some(Region {
+            label: "Pole plot. Arrow keys step from pole to pole and read each one.",
+            keys: "poles",
+            map: None,
+        });
         info
     }
 

@@ -16,7 +16,7 @@ use crate::schema::PanelKind;
 use crate::view::layout::Panel;
 use crate::view::legend::{item, Glyph, LegendGroup};
 use crate::view::painter::Painter;
-use crate::view::panel_info::{PanelInfo, Probe, TickLabel, TipLine};
+use crate::view::panel_info::{PanelInfo, Probe, Region, TickLabel, TipLine};
 use crate::view::panels::contract::{Frame, PanelView, Runs};
 use crate::view::rho_readout::stability_lines;
 use crate::view::tick_labels::{linear_labels, log_labels};
@@ -100,6 +100,8 @@ impl PanelView for RhoCurve {
             format!("ρ(δ) at {alpha} 1/s; shaded: ρ < 1")
         };
         info.y_labels = linear_labels(&info.y_ticks);
+        info.region =
+            Some(Region { label: "ρ along δ. Left and right arrow keys change δ.", keys: "delta", map: None });
         info
     }
 

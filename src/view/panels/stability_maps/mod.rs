@@ -16,7 +16,7 @@ use crate::session::maps::{feedback_short, point_text};
 use crate::view::layout::Panel;
 use crate::view::legend::{item, map_scale, Glyph, LegendGroup};
 use crate::view::painter::Painter;
-use crate::view::panel_info::{PanelInfo, Probe, TipLine};
+use crate::view::panel_info::{PanelInfo, Probe, Region, TipLine};
 use crate::view::panels::contract::{Frame, PanelView, Runs};
 use crate::view::rho_readout::stability_lines;
 use crate::view::tick_labels::log_labels;
@@ -155,6 +155,20 @@ impl PanelView for StabilityMaps {
         info.y_scale = "log";
         let pf = frame.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
         info.note = side.caption(pf, frame.options.measure);
+        info.region = Some(Region {
+            label: match side {
+                MapSide::Off => {
+                    "Stability map without K_pr. Arrow keys move the running point: left and right change δ, up and \
+                     down α; Enter runs without K_pr."
+                }
+                MapSide::On => {
+                    "Stability map with K_pr. Arrow keys move the running point: left and right change δ, up and down \
+                     α; Enter runs with K_pr."
+                }
+            },
+            keys: "map",
+            map: Some(side),
+        });
         info
     }
 

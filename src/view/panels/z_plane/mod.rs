@@ -23,7 +23,7 @@ use crate::view::legend::LegendGroup;
 use crate::view::loop_poles::readout::{flexible_mark, probe_poles, PoleScene};
 use crate::view::loop_poles::{describe_poles, legend_group, PoleInfo, PoleStyle};
 use crate::view::painter::Painter;
-use crate::view::panel_info::{PanelInfo, Probe, TickLabel};
+use crate::view::panel_info::{PanelInfo, Probe, Region, TickLabel};
 use crate::view::panels::contract::{Frame, PanelView, Runs, RUN_NAMES};
 use crate::view::text_metrics::{font, text_width, LINE_HEIGHT};
 use crate::view::tick_labels::{linear_labels, offset_labels};
@@ -96,6 +96,12 @@ impl PanelView for ZPlane {
         if info.x_labels.is_empty() {
             info.x_labels = linear_labels(&info.x_ticks);
         }
+        info.region = Some(Region {
+            label: "The loop’s eigenvalues λ and the unit circle. Arrow keys step from one to the next and read it; \
+                    plus and minus zoom, 0 shows the whole circle, P the flexible pair, Shift with the arrows pans.",
+            keys: "zplane",
+            map: None,
+        });
         info
     }
 
