@@ -21,6 +21,7 @@
 //! | [`model`] | the arm, eq. (4.1), its one stepper, Dahl friction (4.4), the reference slew |
 //! | [`control`] | predictive controller (2.3)–(2.4), linearization and δ → 0 limit, K_pr, the closed loop of Fig. 2.1 |
 //! | [`analysis`] | ρ and eigenvalues of the sampled loop, stability maps, stable windows of δ, the pair A4 in closed form |
+//! | [`words`] | facts in words: verdicts, judgements, the explanation's numbers, for the page and the CLI alike |
 //! | [`lesson`] | the guided lesson as data: `www/lessons/paper.md`, read into steps, questions and goals |
 //! | [`session`] | what a user has open: settings and state string, runs A and B, analyses, maps, the timeline, the lesson's progress |
 //! | [`plot`] | ticks, number format, colours, contours — shared by the canvas and the SVG |
@@ -41,6 +42,7 @@ pub mod session;
 pub mod sort;
 pub mod svg;
 pub mod view;
+pub mod words;
 
 #[cfg(target_arch = "wasm32")]
 pub mod web;

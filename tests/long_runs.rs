@@ -5,8 +5,8 @@
 
 use std::process::Command;
 
-use flexarm::control::metrics::growth_text;
 use flexarm::control::{simulate_in_chunks, TraceEnvelope, Traces, Work};
+use flexarm::words::verdict::growth as growth_text;
 use flexarm::*;
 
 fn config(delta: f64, pf: PreliminaryFeedbackChoice, friction: FrictionCompensation) -> SimulationConfig {

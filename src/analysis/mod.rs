@@ -8,6 +8,7 @@
 //! is read by the session, the CLI and the figures; it never runs the nonlinear simulation.
 
 pub mod energy;
+pub mod judgement;
 pub mod lag;
 pub mod map;
 pub mod resonance;

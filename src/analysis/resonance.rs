@@ -250,3 +250,45 @@ impl ResonanceReport {
         }
     }
 }
+
+impl ResonanceReport {
+    /// The motor damping B_v1 that kills the pair without preliminary feedback as δ → 0, N m s/rad:
+    /// above 3β I_r1 (tr A4 < 0) and below the bound beyond which det A4 < 0 (a motor damped that
+    /// much stops swinging, and a slow real mode grows); None where the controller drains the
+    /// resonance (β ≤ 0) and no damping is needed. `plant` is the arm the report is of.
+    pub fn damping_window(&self, plant: &PlantParameters) -> Option<[f64; 2]> {
+        if self.beta <= 0.0 {
+            return None;
+        }
+        // det A4 without the motor's damping term: what B_v1 must stay below, over 3β.
+        let stiffness = self.determinant + 3.0 * self.beta * plant.bv1 / plant.ir1;
+        Some([3.0 * self.beta * plant.ir1, stiffness * plant.ir1 / (3.0 * self.beta)])
+    }
+}
+
+/// What the paper's K_pr, acting continuously, does to the pair at α and the rest point q2: the
+/// pair it makes (the upper eigenvalue, 1/s), its shift of Re A4 and the parts of that shift
+/// through T1 and through T2 (its two rows), 1/s.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PaperFeedbackEffect {
+    pub pair: [f64; 2],
+    pub shift: f64,
+    pub shift_t1: f64,
+    pub shift_t2: f64,
+}
+
+impl PaperFeedbackEffect {
+    pub fn new(plant: &PlantParameters, alpha: [f64; 2], q2: f64) -> Self {
+        let paper = crate::control::feedback::paper_gain();
+        let pair = closed_form_a4(plant, alpha, q2, &paper).complex_eigenvalues();
+        let upper = if pair[0].im >= pair[1].im { pair[0] } else { pair[1] };
+        let row = |r: usize| FeedbackGain::from_fn(|i, j| if i == r { paper[(i, j)] } else { 0.0 });
+        let shift_of = |gain: &FeedbackGain| feedback_shift(plant, alpha, q2, gain);
+        Self {
+            pair: [upper.re, upper.im],
+            shift: shift_of(&paper),
+            shift_t1: shift_of(&row(0)),
+            shift_t2: shift_of(&row(1)),
+        }
+    }
+}

@@ -69,7 +69,7 @@ pub enum Verdict {
 
 impl Verdict {
     /// "stable", "unstable", "bounded oscillation" or "diverged": the one name the CLI, the JSON
-    /// and the page use.
+    /// and the page use (an identifier; the verdict in words is [`crate::words::verdict`]).
     pub fn label(&self) -> &'static str {
         match self {
             Verdict::Stable | Verdict::SlewLocked { .. } => "stable",
@@ -77,53 +77,6 @@ impl Verdict {
             Verdict::BoundedOscillation { .. } => "bounded oscillation",
             Verdict::Diverged { .. } => "diverged",
         }
-    }
-
-    /// The verdict in a sentence, e.g. "unstable (errors grow at 2.273 1/s)"; `bound` is the
-    /// divergence bound, rad.
-    pub fn text(&self, bound: f64) -> String {
-        match *self {
-            Verdict::Stable => "stable".into(),
-            Verdict::Unstable { growth_rate } => format!("unstable (errors grow at {growth_rate:.3} 1/s)"),
-            Verdict::BoundedOscillation { amplitude, period } => format!(
-                "bounded oscillation (a limit cycle: amplitude {:.2e}, {:.2e} rad, period {period:.2} s)",
-                amplitude[0], amplitude[1]
-            ),
-            Verdict::SlewLocked { amplitude, period } => format!(
-                "stable (the errors come back with every slew, no larger: up to {:.2e}, {:.2e} rad, every {period:.2} s)",
-                amplitude[0], amplitude[1]
-            ),
-            Verdict::Diverged { at, reason } => format!(
-                "diverged at t = {at:.3} s ({})",
-                match reason {
-                    DivergenceReason::ErrorBound => format!("a tracking error exceeded {bound:.4} rad"),
-                    DivergenceReason::NonFinite => "the state became NaN or infinite".into(),
-                    DivergenceReason::NewtonFailure => "Newton's iteration in the predictor failed".into(),
-                }
-            ),
-        }
-    }
-
-    /// The verdict in a table cell: "unstable (2.27 1/s)", "limit cycle (7.8 s)", "diverged at 1.23 s".
-    pub fn short_text(&self) -> String {
-        match *self {
-            Verdict::Stable => "stable".into(),
-            Verdict::Unstable { growth_rate } => format!("unstable ({growth_rate:.2} 1/s)"),
-            Verdict::BoundedOscillation { period, .. } => format!("bounded oscillation ({period:.2} s)"),
-            Verdict::SlewLocked { period, .. } => format!("stable (repeats every {period:.2} s)"),
-            Verdict::Diverged { at, .. } => format!("diverged at {at:.2} s"),
-        }
-    }
-}
-
-/// The growth rate in words, the same in the CLI, the JSON and the page: "2.24 1/s", "none
-/// (errors at their floor)", or "n/a (run too short)".
-pub fn growth_text(growth_rate: Option<f64>, at_floor: bool) -> String {
-    match (growth_rate, at_floor) {
-        // Never "-0.00".
-        (Some(g), _) => format!("{:.2} 1/s", if g.abs() < 0.005 { 0.0 } else { g }),
-        (None, true) => "none (errors at their floor)".into(),
-        (None, false) => "n/a (run too short)".into(),
     }
 }
 

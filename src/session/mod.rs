@@ -11,7 +11,6 @@ mod changes;
 pub mod controls;
 mod cycle;
 pub mod data;
-pub mod equations;
 pub mod export;
 pub mod lesson;
 pub mod maps;
@@ -24,7 +23,6 @@ mod run_settings;
 pub mod settings;
 mod start;
 pub mod status;
-pub mod story;
 mod student;
 pub mod timeline;
 pub mod view;
@@ -83,7 +81,7 @@ pub struct Status {
     pub cycle: String,
     /// The explanation's live numbers for run A (null while its analysis is missing, or hidden
     /// in student mode).
-    pub story: Option<story::Story>,
+    pub story: Option<crate::words::story::Story>,
     /// Student mode: what is hidden now and how to show it (null when nothing is hidden).
     pub hidden: Option<HiddenStatus>,
 }
@@ -528,7 +526,13 @@ impl Session {
                 c => format!("{} The time plots are zoomed on one sampling instant. {c}", self.figure_text()),
             },
             cycle,
-            story: if hidden { None } else { story::story(&self.a) },
+            story: if hidden {
+                None
+            } else {
+                // The settings' configuration, as the analysis: a change reaches the loop only at its
+                // next sampling instant.
+                self.a.analysis().report().map(|report| crate::words::story::story(&self.a.settings().config(), report))
+            },
             hidden: hidden.then(|| self.hidden_status()),
         }
     }

@@ -1,21 +1,18 @@
 //! ρ read out in a tooltip, where the pointer picks a δ (ρ(δ)) or a (δ, α) (a stability map): ρ
 //! per period with the verdict's own word for it, and the rate ln ρ/δ per second.
 
+use crate::analysis::judgement::Prediction;
 use crate::plot::color::Measure;
 use crate::plot::format;
-use crate::session::status::Prediction;
 use crate::view::panel_info::TipLine;
+use crate::words::judgement::prediction_word;
 
 /// ρ and the rate ln ρ/δ at sampling period `delta` (s), whatever the view colours by: the
 /// verdict is read in ρ, the rate compares across δ.
 pub fn stability_lines(rho: f64, delta: f64, lines: &mut Vec<TipLine>) {
     if rho.is_finite() {
         // The verdict's own judgement (a rate within the borderline band is borderline here too).
-        let verdict = match Prediction::of_rate(Measure::Rate.value(rho, delta)) {
-            Prediction::Stable => "stable",
-            Prediction::Borderline => "borderline",
-            Prediction::Unstable => "unstable",
-        };
+        let verdict = prediction_word(Prediction::of_rate(Measure::Rate.value(rho, delta)));
         lines.push(TipLine::toned(format!("ρ = {rho:.3} per period: {verdict}"), verdict == "stable"));
         let rate = format::sig(Measure::Rate.value(rho, delta), 3);
         lines.push(TipLine::plain(format!("ln ρ/δ = {rate} 1/s (per second)")));

@@ -3,9 +3,9 @@
 use flexarm::control::Verdict;
 use flexarm::SimulationConfig;
 
-/// The verdict in words, e.g. "unstable (errors grow at 2.273 1/s)" (see [`Verdict::text`]).
+/// The verdict in words, e.g. "unstable (errors grow at 2.273 1/s)".
 pub fn verdict_text(verdict: Verdict, bound: f64) -> String {
-    verdict.text(bound)
+    flexarm::words::verdict::verdict(&verdict, bound)
 }
 
 /// "stable" for ρ < 1, else "unstable".

@@ -2,11 +2,12 @@
 
 use clap::{ArgMatches, Command};
 use flexarm::analysis;
-use flexarm::control::metrics::growth_text;
+use flexarm::analysis::judgement::judge;
 use flexarm::control::{Metrics, TraceEnvelope, Traces, Work};
 use flexarm::schema;
-use flexarm::session::status::{judge, Judgement};
 use flexarm::session::Settings;
+use flexarm::words::judgement::{judgement as in_words, JudgementText as Judgement};
+use flexarm::words::verdict::growth as growth_text;
 use flexarm::{SimulationConfig, Verdict};
 use serde_json::{json, Value};
 use std::io::{BufWriter, Write};
@@ -79,7 +80,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let report = analysis::analyze(&config, Some(q2));
     let rho = report.as_ref().ok().map(|r| r.spectral_radius);
     let failed = report.as_ref().err().map(|e| e.to_string());
-    let judgement = judge(&metrics, report.as_ref().ok(), failed.as_deref(), &config, metrics.error);
+    let judgement = in_words(&judge(&metrics, report.as_ref().ok(), failed.as_deref(), &config, metrics.error));
     let linear = Linear { rho, q2, describes: analysis::describes(&config), judgement };
     let mut out = if json_out {
         simulation_json(&settings, &config, duration, &metrics, &linear).to_string() + "\n"

@@ -10,7 +10,8 @@ use crate::cli::{self, lib_error, parse_number, usage_error, Res};
 use crate::long_work::{self, Progress, TraceSinks};
 use crate::output::linear_verdict;
 use crate::simulate::{simulation_json, Linear};
-use flexarm::session::status::judge;
+use flexarm::analysis::judgement::judge;
+use flexarm::words::judgement::judgement as in_words;
 
 /// The run settings `sweep` takes besides its lists of δ and α.
 pub const KEYS: &[&str] = &["pf", "friction", "inner", "repeat", "k", "eps_ratio"];
@@ -123,7 +124,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
                 let (m, _) = long_work::run(&c, duration, sinks, &mut quiet)?;
                 let q2 = c.reference.end[1];
                 let report = analysis::analyze(&c, Some(q2)).map_err(lib_error)?;
-                let judgement = judge(&m, Some(&report), None, &c, m.error);
+                let judgement = in_words(&judge(&m, Some(&report), None, &c, m.error));
                 let verdict = judgement.verdict;
                 let linear = Linear { rho: Some(rho), q2, describes: analysis::describes(&c), judgement };
                 row["simulation"] = simulation_json(&point, &c, duration, &m, &linear);

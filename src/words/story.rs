@@ -5,10 +5,10 @@
 
 use serde::Serialize;
 
-use super::run::Run;
-use crate::analysis::resonance::{closed_form_a4, feedback_shift};
-use crate::analysis::Pole;
-use crate::control::feedback::paper_gain;
+use super::numbers::{energy_shares, pair as pair_text, pair_of, percent, rate, rho as rho_text};
+use crate::analysis::resonance::PaperFeedbackEffect;
+use crate::analysis::{Pole, StabilityReport};
+use crate::control::config::SimulationConfig;
 use crate::plot::format::{minus, sig_trim};
 
 /// The numbers of the explanation, as text with units.
@@ -102,50 +102,6 @@ pub struct Story {
     pub math_energy: String,
 }
 
-/// "2.64 ± 29.58j 1/s".
-fn pair_text(re: f64, im: f64) -> String {
-    minus(&format!("{re:.2} ± {:.2}j 1/s", im.abs()))
-}
-
-/// The eigenvalues of a real 2×2 matrix from its trace and determinant: "2.64 ± 29.58j 1/s", or
-/// "−1.00 and −5.00 1/s" where they are real.
-fn pair_of(trace: f64, det: f64) -> String {
-    let (mean, disc) = (trace / 2.0, trace * trace / 4.0 - det);
-    if disc < 0.0 {
-        pair_text(mean, (-disc).sqrt())
-    } else {
-        minus(&format!("{:.2} and {:.2} 1/s", mean + disc.sqrt(), mean - disc.sqrt()))
-    }
-}
-
-/// "2.64 1/s" with a minus sign where negative.
-fn rate(v: f64) -> String {
-    minus(&format!("{v:.2} 1/s"))
-}
-
-/// ρ as the verdict prints it: five decimals where it is nearly 1.
-pub(super) fn rho_text(rho: f64) -> String {
-    if (rho - 1.0).abs() < 5e-4 {
-        format!("{rho:.5}")
-    } else {
-        format!("{rho:.4}")
-    }
-}
-
-/// "1.5 %" (one decimal, U+2212 for minus).
-fn percent(v: f64) -> String {
-    minus(&format!("{:.1} %", 100.0 * v))
-}
-
-/// The swing's energy shares as printed, as fractions: W_v, W_K, D and their net |λ|² − 1, each
-/// rounded to 0.1 % so that the printed balance adds up (the net is |λ|² − 1 rounded; a share
-/// may be rounded the other way, by less than 0.1 %).
-pub(super) fn energy_shares(e: &crate::analysis::energy::SwingEnergy) -> [f64; 4] {
-    let parts = [e.held_torque, e.preliminary_feedback, -e.damping].map(|v| 100.0 * v);
-    let [v, k, d] = crate::plot::format::rounded_summands(parts, 0.1);
-    [v, k, -d, v + k + d].map(|p| p / 100.0)
-}
-
 /// The swing's energy over one period at δ, in words (`law_lag`: the lag law's φ, for comparison).
 fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f64) -> String {
     // Both the computed lag and the law's φ in (−180°, 180°]: behind (lags) or ahead.
@@ -195,17 +151,14 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
     )
 }
 
-/// The story of run A's settings; `None` while its analysis is missing (the page keeps "—").
-pub fn story(run: &Run) -> Option<Story> {
-    let report = run.analysis().report()?;
-    let settings = run.settings();
-    // The settings' configuration, as the analysis: the loop takes a change only at its next sampling
-    // instant, and the story must not mix the new analysis with the old configuration.
-    let config = &settings.config();
+/// The story of run A's settings (`config`, the configuration its settings make — the loop takes
+/// a change only at its next sampling instant, and the story must not mix the new analysis with
+/// the old configuration) and their analysis, `report`.
+pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     let plant = &config.plant;
     let r = &report.resonance;
     let q2 = report.rest[1];
-    let [a1, a2] = settings.alpha;
+    let [a1, a2] = config.controller.alpha;
     let alpha = if a1 == a2 {
         format!("α = {} 1/s", sig_trim(a1, 3))
     } else {
@@ -251,7 +204,7 @@ pub fn story(run: &Run) -> Option<Story> {
                 |i: Option<usize>| i.map_or("—".into(), |i| minus(&format!("{:.3}", report.poles[i].discrete[0])));
             format!(
                 "the Nyquist frequency π/δ = {:.1} rad/s, as two real eigenvalues λ = {} and {} that flip sign every period",
-                core::f64::consts::PI / settings.delta,
+                core::f64::consts::PI / config.controller.sampling_period,
                 lambda(first),
                 lambda(second)
             )
@@ -259,12 +212,7 @@ pub fn story(run: &Run) -> Option<Story> {
         Some(Pole { continuous: Some([re, im]), .. }) => format!("s = {}", pair_text(re, im)),
         _ => "—".into(),
     };
-    let paper = paper_gain();
-    let kpr = closed_form_a4(plant, settings.alpha, q2, &paper).complex_eigenvalues();
-    let kpr = if kpr[0].im >= kpr[1].im { kpr[0] } else { kpr[1] };
-    let row =
-        |r: usize| crate::control::feedback::FeedbackGain::from_fn(|i, j| if i == r { paper[(i, j)] } else { 0.0 });
-    let shift_of = |gain: &crate::control::feedback::FeedbackGain| feedback_shift(plant, settings.alpha, q2, gain);
+    let paper = PaperFeedbackEffect::new(plant, config.controller.alpha, q2);
     // The minimum-energy LQ design reflects an unstable pair into the left half-plane and leaves a
     // stable one where it is (tests/resonance.rs checks it against the design).
     let lq_says = if model_error {
@@ -276,7 +224,8 @@ pub fn story(run: &Run) -> Option<Story> {
     } else {
         format!("leaves a stable pair where it is (here {})", pair_text(open_re, open_im))
     };
-    let loop_limit = match (settings.pf == crate::control::config::PreliminaryFeedbackChoice::Off, model_error) {
+    let pf = config.preliminary_feedback;
+    let loop_limit = match (pf == crate::control::config::PreliminaryFeedbackChoice::Off, model_error) {
         (true, false) => "A4 — the ring in the pole plot".to_string(),
         (true, true) => {
             format!("{} — the ring in the pole plot (not A4: the model error moves it)", pair_text(open_re, open_im))
@@ -298,8 +247,8 @@ pub fn story(run: &Run) -> Option<Story> {
         None => "—".into(),
     };
     let law = crate::analysis::lag::LagLaw::of(report);
-    let delta = settings.delta;
-    let equations = super::equations::equations(report, &law, settings.alpha, delta);
+    let delta = config.controller.sampling_period;
+    let equations = super::equations::equations(report, &law, config.controller.alpha, delta);
     let pi = core::f64::consts::PI;
     let lag_growth = if law.turn(delta) < pi {
         minus(&format!(
@@ -324,7 +273,7 @@ pub fn story(run: &Run) -> Option<Story> {
         }
         None => "every small δ: here the motor's damping outweighs the feed, and no lag is needed".into(),
     };
-    Some(Story {
+    Story {
         alpha: alpha.clone(),
         rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { sig_trim(q2, 3) }),
         arm_pair: pair_text(r.arm_pair[0], r.arm_pair[1]),
@@ -348,54 +297,46 @@ pub fn story(run: &Run) -> Option<Story> {
             "∞ (μ = 0 at this rest point)".into()
         },
         alpha_star: format!("{:.2} 1/s", r.alpha_star),
-        delta: format!("{} s", sig_trim(settings.delta, 3)),
+        delta: format!("{} s", sig_trim(delta, 3)),
         rho: rho_text(report.spectral_radius),
         growth: rate(report.growth_rate),
         loop_pair,
         loop_limit,
         rho_set_by,
-        kpr_shift: rate(shift_of(&paper)),
-        kpr_shift_t1: rate(shift_of(&row(0))),
-        kpr_shift_t2: rate(shift_of(&row(1))),
-        kpr_pair: pair_text(kpr.re, kpr.im),
+        kpr_shift: rate(paper.shift),
+        kpr_shift_t1: rate(paper.shift_t1),
+        kpr_shift_t2: rate(paper.shift_t2),
+        kpr_pair: pair_text(paper.pair[0], paper.pair[1]),
         kpr_alpha_limit: format!("{:.2} 1/s", r.paper_alpha_limit),
         lq_says,
         arm: crate::schema::arm_text(&plant.values()),
-        damping_needed: if r.beta > 0.0 {
-            // trace A4 < 0 needs B_v1 > 3β I_r1; det A4 > 0 needs B_v1 below the stiffness term
-            // over 3β (a motor damped beyond it stops swinging, and as δ → 0 a slow real mode grows).
-            let stiffness = r.determinant + 3.0 * r.beta * plant.bv1 / plant.ir1;
-            format!(
-                "B_v1 > {} I_r1 = {:.1} N m s/rad, and (as δ → 0) below {:.0} N m s/rad, beyond which the motor \
-                 no longer swings and a slow real mode grows (this arm: {} N m s/rad)",
+        damping_needed: match r.damping_window(plant) {
+            Some([lower, upper]) => {
+                format!(
+                "B_v1 > {} I_r1 = {lower:.1} N m s/rad, and (as δ → 0) below {upper:.0} N m s/rad, beyond which the \
+                 motor no longer swings and a slow real mode grows (this arm: {} N m s/rad)",
                 // With α1 ≠ α2 the pair is fed 3β/2, β = α1 + μ (α1 − α2) (the explanation derives it).
-                if a1 == a2 {
-                    "3α".to_string()
-                } else {
-                    format!("3β (β = α1 + μ (α1 − α2) = {:.2} 1/s)", r.beta)
-                },
-                3.0 * r.beta * plant.ir1,
-                stiffness * plant.ir1 / (3.0 * r.beta),
+                if a1 == a2 { "3α".to_string() } else { format!("3β (β = α1 + μ (α1 − α2) = {:.2} 1/s)", r.beta) },
                 crate::schema::format_number(plant.bv1)
             )
-        } else {
-            format!(
+            }
+            None => format!(
                 "none at these α: the controller drains the resonance (β = {:.2} 1/s ≤ 0; this arm: {} N m s/rad)",
                 r.beta,
                 crate::schema::format_number(plant.bv1)
-            )
+            ),
         },
         // Beside the feedback's selector while the paper's gains run on another arm or α.
         kpr_note: {
             let arm = *plant != crate::model::PlantParameters::default();
-            let alpha = settings.alpha != [crate::control::feedback::PAPER_GAIN_ALPHA; 2];
+            let alpha = config.controller.alpha != [crate::control::feedback::PAPER_GAIN_ALPHA; 2];
             let differs = match (arm, alpha) {
                 (true, true) => "the arm and α differ",
                 (true, false) => "the arm differs",
                 (false, true) => "α differs",
                 (false, false) => "",
             };
-            if differs.is_empty() || settings.pf != crate::control::config::PreliminaryFeedbackChoice::Paper {
+            if differs.is_empty() || pf != crate::control::config::PreliminaryFeedbackChoice::Paper {
                 String::new()
             } else {
                 format!(
@@ -406,7 +347,7 @@ pub fn story(run: &Run) -> Option<Story> {
         },
         model_note: if model_error {
             let [re, im] = report.limit_pair[0];
-            let with = if settings.pf == crate::control::config::PreliminaryFeedbackChoice::Off {
+            let with = if pf == crate::control::config::PreliminaryFeedbackChoice::Off {
                 String::new()
             } else {
                 format!(", and {} with its preliminary feedback", pair_text(re, im))
@@ -446,10 +387,10 @@ pub fn story(run: &Run) -> Option<Story> {
         math_lag: equations.lag,
         math_energy: equations.energy,
         energy: report.swing_energy.map_or(String::new(), |e| energy_text(&e, law.lag(delta), delta)),
-        kpr_works: if kpr.re < 0.0 {
+        kpr_works: if paper.pair[0] < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()
         } else {
             format!("not here: at {alpha} that pair is in the right half-plane, and the smallest δ fail")
         },
-    })
+    }
 }

@@ -130,7 +130,7 @@ pub fn equations(report: &StabilityReport, law: &LagLaw, alpha: [f64; 2], delta:
         ]
         .concat(),
     );
-    let rho_text = super::story::rho_text(report.spectral_radius);
+    let rho_text = super::numbers::rho(report.spectral_radius);
     let rho = math(&[mi("ρ"), mo("="), mi("max"), mo("|"), mi("λ"), mo("|"), mo("="), mn(&rho_text)].concat());
     let growth = math(
         &[
@@ -179,7 +179,7 @@ pub fn equations(report: &StabilityReport, law: &LagLaw, alpha: [f64; 2], delta:
         let signed = |v: f64| if v < 0.0 { [mo("−"), percent(-v)].concat() } else { [mo("+"), percent(v)].concat() };
         let with_feedback = e.preliminary_feedback != 0.0;
         // The shares as the sentence prints them: rounded so that the balance adds up.
-        let [held, preliminary, damping, net] = super::story::energy_shares(&e);
+        let [held, preliminary, damping, net] = super::numbers::energy_shares(&e);
         let mut terms = vec![sub(&mi("W"), &mi("v"))];
         let mut values = vec![percent(held)];
         if with_feedback {

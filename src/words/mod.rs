@@ -1,0 +1,20 @@
+//! Facts in words: the one place that turns what the analysis and the simulation found into
+//! sentences, MathML and screen-reader text — for the page's status and explanation and the CLI's
+//! summaries alike, one wording per fact. The layers below return values (a [`Verdict`], a
+//! [`crate::analysis::judgement::Judgement`], a report's numbers), never English.
+//!
+//! | module | says |
+//! |---|---|
+//! | [`verdict`] | the simulation's verdict, its growth rate, why a run diverged |
+//! | [`judgement`] | a run's judgement: headline, ρ's prediction, what was observed and why, the analysis line |
+//! | [`story`] | the explanation's live numbers, from run A's analysis |
+//! | [`equations`] | the same numbers as MathML equations |
+//! | [`numbers`] | numbers as the sentences write them (rates, ρ, percents, pairs, the swing's energy shares) |
+//!
+//! [`Verdict`]: crate::control::Verdict
+
+pub mod equations;
+pub mod judgement;
+pub mod numbers;
+pub mod story;
+pub mod verdict;

@@ -1,0 +1,62 @@
+//! Numbers as the sentences say them: a rate with two decimals, an e-folding time, ρ with as many
+//! decimals as tell it from 1, a share in percent, a complex pair, with U+2212 for every minus.
+
+use crate::plot::format::{minus, rounded_summands, sig_trim};
+
+/// A rate with two decimals and a real minus sign, never "−0.00".
+pub fn two_decimals(v: f64) -> String {
+    if v.abs() < 0.005 {
+        "0.00".into()
+    } else {
+        minus(&format!("{v:.2}"))
+    }
+}
+
+/// "e-fold every 0.42 s" for a rate (1/s).
+pub fn e_folding(rate: f64) -> String {
+    format!("e-fold every {} s", sig_trim(1.0 / rate.abs(), 2))
+}
+
+/// ρ as the verdict prints it: five decimals where it is nearly 1.
+pub fn rho(rho: f64) -> String {
+    if (rho - 1.0).abs() < 5e-4 {
+        format!("{rho:.5}")
+    } else {
+        format!("{rho:.4}")
+    }
+}
+
+/// "1.5 %" (one decimal, U+2212 for minus).
+pub fn percent(v: f64) -> String {
+    minus(&format!("{:.1} %", 100.0 * v))
+}
+
+/// "2.64 ± 29.58j 1/s".
+pub fn pair(re: f64, im: f64) -> String {
+    minus(&format!("{re:.2} ± {:.2}j 1/s", im.abs()))
+}
+
+/// The eigenvalues of a real 2×2 matrix from its trace and determinant: "2.64 ± 29.58j 1/s", or
+/// "−1.00 and −5.00 1/s" where they are real.
+pub fn pair_of(trace: f64, det: f64) -> String {
+    let (mean, disc) = (trace / 2.0, trace * trace / 4.0 - det);
+    if disc < 0.0 {
+        pair(mean, (-disc).sqrt())
+    } else {
+        minus(&format!("{:.2} and {:.2} 1/s", mean + disc.sqrt(), mean - disc.sqrt()))
+    }
+}
+
+/// "2.64 1/s" with a minus sign where negative.
+pub fn rate(v: f64) -> String {
+    minus(&format!("{v:.2} 1/s"))
+}
+
+/// The swing's energy shares as printed, as fractions: W_v, W_K, D and their net |λ|² − 1, each
+/// rounded to 0.1 % so that the printed balance adds up (the net is |λ|² − 1 rounded; a share
+/// may be rounded the other way, by less than 0.1 %).
+pub fn energy_shares(e: &crate::analysis::energy::SwingEnergy) -> [f64; 4] {
+    let parts = [e.held_torque, e.preliminary_feedback, -e.damping].map(|v| 100.0 * v);
+    let [v, k, d] = rounded_summands(parts, 0.1);
+    [v, k, -d, v + k + d].map(|p| p / 100.0)
+}
