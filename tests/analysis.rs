@@ -214,7 +214,7 @@ fn the_windows_miss_no_narrow_gap() {
         w.windows.iter().any(|[_, hi]| (hi - 0.1049).abs() < 3e-4)
             && w.windows.iter().any(|[lo, _]| (lo - 0.1065).abs() < 3e-4),
         "{}",
-        w.describe()
+        flexarm::words::settings::windows(&w)
     );
     for pf in [PreliminaryFeedbackChoice::Off, PreliminaryFeedbackChoice::Paper] {
         for alpha in [0.3, 0.5, 0.8, 1.0, 1.5, 2.0, 3.0, 5.0] {
@@ -231,7 +231,7 @@ fn the_windows_miss_no_narrow_gap() {
                         found.contains(d),
                         rho < 1.0,
                         "{pf:?} α = {alpha}, δ = {d}: ρ = {rho}; {}",
-                        found.describe()
+                        flexarm::words::settings::windows(&found)
                     );
                 }
             }

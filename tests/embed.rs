@@ -9,8 +9,9 @@ use common::session;
 use flexarm::error::Error;
 use flexarm::session::view::Strip;
 use flexarm::session::{Session, ViewSettings};
-use flexarm::view::layout::{hidden_note, Arrangement};
+use flexarm::view::layout::Arrangement;
 use flexarm::view::{Layout, LayoutOptions, PanelKind, Scene, Tab, ViewOptions};
+use flexarm::words::panels::hidden_note;
 
 use PanelKind::*;
 

@@ -69,7 +69,7 @@ fn the_stable_windows_are_the_ones_the_page_and_analyze_print() {
         ("delta=0.01&alpha=2&pf=paper", "with K_pr stable"),
     ] {
         let (mut s, _) = Session::open(query);
-        let words = s.windows().unwrap().describe();
+        let words = flexarm::words::settings::windows(s.windows().unwrap());
         assert_says(paper, &format!("at α = 2: {words}"));
     }
 }
@@ -140,13 +140,16 @@ fn small_alpha_and_the_papers_gains_at_large_alpha_are_as_printed() {
     assert_says("\"a change of α", &format!("α* = Bv1/(3 Ir1) = {:.4} 1/s", alpha_star(&p)));
     let (s, _) = Session::open("delta=0.01&alpha=0.2&pf=off");
     let mut s = s;
-    assert_says("\"a change of α", &format!("at α = 0.2: {}", s.windows().unwrap().describe()));
+    assert_says("\"a change of α", &format!("at α = 0.2: {}", flexarm::words::settings::windows(s.windows().unwrap())));
     let shift = feedback_shift(&p, [2.0, 2.0], 0.0, &paper_gain());
     let row = "(not in the paper) the paper's K_pr at larger α";
     assert_says(row, &fixed(shift, 3));
     assert_says(row, &format!("only for α < {:.3} 1/s", alpha_limit(&p, shift)));
     let (mut s, _) = Session::open("delta=0.01&alpha=5&pf=paper");
-    assert_says(row, &format!("at α = 5: {}", s.windows().unwrap().describe()));
+    assert_says(row, &format!("at α = 5: {}", flexarm::words::settings::windows(s.windows().unwrap())));
     let (mut s, _) = Session::open("delta=0.01&alpha=2&pf=paper&inner=sampled");
-    assert_says("with K_pr stable", &format!("sampled at δ: {}", s.windows().unwrap().describe()));
+    assert_says(
+        "with K_pr stable",
+        &format!("sampled at δ: {}", flexarm::words::settings::windows(s.windows().unwrap())),
+    );
 }

@@ -90,9 +90,13 @@ fn below_alpha_star_no_preliminary_feedback_is_needed() {
         LinearSettings::of(&c, None)
     };
     let w = stable_windows(&settings(0.2), [0.002, 0.25]).unwrap();
-    assert_eq!(w.windows, vec![[0.002, 0.25]], "{}", w.describe());
+    assert_eq!(w.windows, vec![[0.002, 0.25]], "{}", flexarm::words::settings::windows(&w));
     let w = stable_windows(&settings(0.3), [0.002, 0.25]).unwrap();
-    assert!(w.windows[0][0] > 0.002, "just above α* the smallest δ are unstable: {}", w.describe());
+    assert!(
+        w.windows[0][0] > 0.002,
+        "just above α* the smallest δ are unstable: {}",
+        flexarm::words::settings::windows(&w)
+    );
     // Unequal α: α1 = 0.5, α2 = 2 is stable at δ = 0.01 s (β < α*), though α1 = α2 = 0.5 is not.
     let mut c = SimulationConfig { preliminary_feedback: PreliminaryFeedbackChoice::Off, ..Default::default() };
     c.controller.alpha = [0.5, 2.0];
@@ -157,9 +161,9 @@ fn the_papers_gains_shift_the_pair_by_a_fixed_amount_and_fail_at_large_alpha() {
     let mut c = SimulationConfig::default();
     c.controller.alpha = [5.0, 5.0];
     let w = stable_windows(&LinearSettings::of(&c, None), [0.002, 0.25]).unwrap();
-    assert_eq!(w.windows.len(), 1, "{}", w.describe());
+    assert_eq!(w.windows.len(), 1, "{}", flexarm::words::settings::windows(&w));
     let [lo, hi] = w.windows[0];
-    assert!((lo - 0.018).abs() < 0.002 && (hi - 0.090).abs() < 0.002, "{}", w.describe());
+    assert!((lo - 0.018).abs() < 0.002 && (hi - 0.090).abs() < 0.002, "{}", flexarm::words::settings::windows(&w));
     // The minimum-energy LQ design mirrors the pair instead: −Re A4 at every α.
     for alpha in [1.0, 3.7, 5.0] {
         let d = design_lq(&plant, [alpha, alpha], [0.5 * PI, 0.0], &LqWeights::default()).unwrap();

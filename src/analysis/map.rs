@@ -4,8 +4,59 @@
 use serde::{Deserialize, Serialize};
 
 use super::sampled::{LinearSettings, LoopModel};
-use crate::control::config::SimulationConfig;
+use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
 use crate::error::Error;
+
+/// Which of the two maps: without or with preliminary feedback.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum MapSide {
+    Off,
+    On,
+}
+
+impl MapSide {
+    pub const BOTH: [MapSide; 2] = [MapSide::Off, MapSide::On];
+
+    /// "off" or "on", as the page names the maps.
+    pub fn parse(name: &str) -> Result<MapSide, String> {
+        match name {
+            "off" => Ok(MapSide::Off),
+            "on" => Ok(MapSide::On),
+            _ => Err(format!("unknown map '{name}': \"off\" (without preliminary feedback) or \"on\" (with it)")),
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            MapSide::Off => "off",
+            MapSide::On => "on",
+        }
+    }
+
+    /// The map a configuration with this preliminary feedback belongs to.
+    pub fn for_feedback(pf: PreliminaryFeedbackChoice) -> MapSide {
+        match pf {
+            PreliminaryFeedbackChoice::Off => MapSide::Off,
+            PreliminaryFeedbackChoice::Paper | PreliminaryFeedbackChoice::Lq => MapSide::On,
+        }
+    }
+
+    /// The preliminary feedback this side maps, given run A's: none on the left; on the right A's
+    /// own feedback if it is the LQ design, else the paper's.
+    pub fn feedback(self, current: PreliminaryFeedbackChoice) -> PreliminaryFeedbackChoice {
+        match (self, current) {
+            (MapSide::Off, _) => PreliminaryFeedbackChoice::Off,
+            (MapSide::On, PreliminaryFeedbackChoice::Lq) => PreliminaryFeedbackChoice::Lq,
+            (MapSide::On, _) => PreliminaryFeedbackChoice::Paper,
+        }
+    }
+
+    /// Index into two-element arrays.
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}
 
 /// Seconds to compute ρ of one cell on the development machine (measured 30 µs for the default
 /// grid with k = 12, rounded up): what [`crate::control::Work`] estimates a map or sweep with.

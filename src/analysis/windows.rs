@@ -32,32 +32,6 @@ impl StableWindows {
     pub fn contains(&self, delta: f64) -> bool {
         self.windows.iter().any(|w| delta >= w[0] && delta <= w[1])
     }
-
-    /// The windows in words: "stable only for 0.0350 s < δ < 0.1007 s and 0.1069 s < δ < …",
-    /// "stable for every δ from 0.002 s to 0.25 s", "unstable for every δ from … to … s".
-    pub fn describe(&self) -> String {
-        let [lo, hi] = self.range;
-        let edge = |v: f64| format!("{v:.4}");
-        match self.windows.as_slice() {
-            [] => format!("unstable for every δ from {} s to {} s", lo, hi),
-            [[a, b]] if *a <= lo && *b >= hi => format!("stable for every δ from {lo} s to {hi} s"),
-            windows => {
-                let parts: Vec<String> = windows
-                    .iter()
-                    .map(|[a, b]| match (*a <= lo, *b >= hi) {
-                        (true, false) => format!("δ < {} s", edge(*b)),
-                        (false, true) => format!("δ > {} s", edge(*a)),
-                        _ => format!("{} s < δ < {} s", edge(*a), edge(*b)),
-                    })
-                    .collect();
-                let list = match parts.split_last() {
-                    Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
-                    _ => parts.join(""),
-                };
-                format!("stable only for {list} (between {lo} s and {hi} s)")
-            }
-        }
-    }
 }
 
 /// The intervals of δ in `range` where ρ < 1 for `settings` (its δ is ignored): ρ on a

@@ -92,39 +92,6 @@ impl Work {
     pub fn wants_progress(&self) -> bool {
         self.seconds > PROGRESS_SECONDS
     }
-
-    /// The estimate in words, e.g. "2.0e6 sampling periods, about 9 s".
-    pub fn text(&self) -> String {
-        let mut parts = Vec::new();
-        if self.sampling_periods > 0.0 {
-            parts.push(format!("{:.1e} sampling periods", self.sampling_periods));
-        }
-        parts.push(format!("about {}", duration_text(self.seconds)));
-        parts.join(", ")
-    }
-}
-
-/// Seconds in words: "9 s", "4 min", "3.2 h", "12 days", "10^14 years".
-pub fn duration_text(seconds: f64) -> String {
-    const MINUTE: f64 = 60.0;
-    const HOUR: f64 = 3600.0;
-    const DAY: f64 = 86400.0;
-    const YEAR: f64 = 365.25 * DAY;
-    if !seconds.is_finite() {
-        "for ever".into()
-    } else if seconds < 1.0 {
-        "under a second".into()
-    } else if seconds < 2.0 * MINUTE {
-        format!("{seconds:.0} s")
-    } else if seconds < 2.0 * HOUR {
-        format!("{:.0} min", seconds / MINUTE)
-    } else if seconds < 2.0 * DAY {
-        format!("{:.1} h", seconds / HOUR)
-    } else if seconds < YEAR {
-        format!("{:.0} days", seconds / DAY)
-    } else {
-        format!("{:.1e} years", seconds / YEAR)
-    }
 }
 
 #[cfg(test)]
@@ -142,13 +109,5 @@ mod tests {
         assert!(b.seconds > 2.0 * a.seconds);
         assert!(!a.is_over_limit());
         assert!(Work::of_run(&c, 1e6).is_over_limit());
-    }
-
-    #[test]
-    fn durations_read_in_sensible_units() {
-        assert_eq!(duration_text(9.4), "9 s");
-        assert_eq!(duration_text(600.0), "10 min");
-        assert_eq!(duration_text(f64::INFINITY), "for ever");
-        assert!(duration_text(1e12).ends_with("years"));
     }
 }

@@ -18,7 +18,11 @@ impl Session {
     /// state string in its description.
     pub fn svg_traces(&self) -> String {
         let s = status::run_status("A", &self.a);
-        let title = format!("Tracking errors e1, e2: {} — {}", status::describe(&self.a), s.headline);
+        let title = format!(
+            "Tracking errors e1, e2: {} — {}",
+            crate::words::settings::run(&self.a.settings().config()),
+            s.headline
+        );
         crate::svg::error_traces_svg(self.a.closed_loop().traces(), &title, Some(&self.settings.run_query()))
     }
 

@@ -2,85 +2,11 @@
 //! current settings: which map a setting change needs (decided here, not in the page), a small
 //! cache of maps already computed, and the work spread over frames.
 
+pub use crate::analysis::map::MapSide;
 use crate::analysis::{LinearSettings, MapGrid, MapJob};
 use crate::control::config::PreliminaryFeedbackChoice;
 use crate::plot::color::Measure;
-use crate::plot::format;
-
-/// Which of the two maps: without or with preliminary feedback.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum MapSide {
-    Off,
-    On,
-}
-
-impl MapSide {
-    pub const BOTH: [MapSide; 2] = [MapSide::Off, MapSide::On];
-
-    /// "off" or "on", as the page names the maps.
-    pub fn parse(name: &str) -> Result<MapSide, String> {
-        match name {
-            "off" => Ok(MapSide::Off),
-            "on" => Ok(MapSide::On),
-            _ => Err(format!("unknown map '{name}': \"off\" (without preliminary feedback) or \"on\" (with it)")),
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        match self {
-            MapSide::Off => "off",
-            MapSide::On => "on",
-        }
-    }
-
-    /// The map a configuration with this preliminary feedback belongs to.
-    pub fn for_feedback(pf: PreliminaryFeedbackChoice) -> MapSide {
-        match pf {
-            PreliminaryFeedbackChoice::Off => MapSide::Off,
-            PreliminaryFeedbackChoice::Paper | PreliminaryFeedbackChoice::Lq => MapSide::On,
-        }
-    }
-
-    /// The preliminary feedback this side maps, given run A's: none on the left; on the right A's
-    /// own feedback if it is the LQ design, else the paper's.
-    pub fn feedback(self, current: PreliminaryFeedbackChoice) -> PreliminaryFeedbackChoice {
-        match (self, current) {
-            (MapSide::Off, _) => PreliminaryFeedbackChoice::Off,
-            (MapSide::On, PreliminaryFeedbackChoice::Lq) => PreliminaryFeedbackChoice::Lq,
-            (MapSide::On, _) => PreliminaryFeedbackChoice::Paper,
-        }
-    }
-
-    /// Index into two-element arrays.
-    pub fn index(self) -> usize {
-        self as usize
-    }
-
-    /// "ρ, no Kₚᵣ", "ρ, paper Kₚᵣ" ("ln ρ/δ, no Kₚᵣ" … when the maps show the rate): short enough
-    /// for a narrow map's title, with K_pr's subscript as the page's controls write it.
-    pub fn caption(self, pf: PreliminaryFeedbackChoice, measure: Measure) -> String {
-        // The quantity by its short name: the colour bar and the row's title give it in full.
-        let what = match measure {
-            Measure::Rho => "ρ",
-            Measure::Rate => "rate",
-        };
-        match self.feedback(pf) {
-            PreliminaryFeedbackChoice::Off => format!("{what}, no Kₚᵣ"),
-            PreliminaryFeedbackChoice::Paper => format!("{what}, paper Kₚᵣ"),
-            PreliminaryFeedbackChoice::Lq => format!("{what}, LQ Kₚᵣ"),
-        }
-    }
-}
-
-/// "no K_pr", "paper K_pr", "LQ K_pr".
-pub fn feedback_short(pf: PreliminaryFeedbackChoice) -> &'static str {
-    match pf {
-        PreliminaryFeedbackChoice::Off => "no K_pr",
-        PreliminaryFeedbackChoice::Paper => "paper K_pr",
-        PreliminaryFeedbackChoice::Lq => "LQ K_pr",
-    }
-}
+use crate::words::settings::{feedback_short, map_caption};
 
 /// Maps kept (each 6000 numbers); the least recently shown go first.
 pub const CACHE_SIZE: usize = 8;
@@ -320,11 +246,6 @@ impl Maps {
 
     /// The caption of a side's map for run A's feedback `pf`, naming what the cells show.
     pub fn caption(&self, side: MapSide, pf: PreliminaryFeedbackChoice, measure: Measure) -> String {
-        side.caption(pf, measure)
+        map_caption(side, pf, measure)
     }
-}
-
-/// "δ = 0.05 s, α = 2 1/s" for tooltips.
-pub fn point_text(delta: f64, alpha: f64) -> String {
-    format!("δ = {} s, α = {} 1/s", format::sig(delta, 3), format::sig(alpha, 3))
 }

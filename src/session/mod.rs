@@ -31,7 +31,6 @@ use serde::Serialize;
 
 use crate::analysis::{stable_windows, LinearSettings, StableWindows};
 use crate::control::config::PreliminaryFeedbackChoice;
-use crate::control::config::PreliminaryFeedbackChoice as Pf;
 use crate::error::{Error, ParseError};
 use crate::schema::{self, Kind, Scope, Value};
 
@@ -355,7 +354,7 @@ impl Session {
         }
         let t = sim.traces();
         let traces = Traces::from_columns([Column::T, Column::E1, Column::E2].map(|c| (c, t.column(c).to_vec())));
-        self.ghost = Some(Ghost { traces, settings: status::describe(&self.a) });
+        self.ghost = Some(Ghost { traces, settings: crate::words::settings::run(&self.a.settings().config()) });
     }
 
     /// The previous run of A, drawn faint (None until a run restarted).
@@ -448,22 +447,9 @@ impl Session {
     fn windows_status(&self) -> Option<WindowsStatus> {
         let w = self.cached_windows()?;
         let a = self.settings.a;
-        let who = match a.pf {
-            Pf::Off => "Without preliminary feedback".to_string(),
-            pf => format!("With {}", maps::feedback_short(pf)),
-        };
-        let alpha = if a.alpha[0] == a.alpha[1] {
-            format!("α = {} 1/s", crate::plot::format::sig_trim(a.alpha[0], 3))
-        } else {
-            format!(
-                "α1 = {}, α2 = {} 1/s",
-                crate::plot::format::sig_trim(a.alpha[0], 3),
-                crate::plot::format::sig_trim(a.alpha[1], 3)
-            )
-        };
         let spec = schema::DELTA.number().expect("δ is a number");
         Some(WindowsStatus {
-            text: format!("{who} ({alpha}) the loop is {}.", w.describe()),
+            text: crate::words::settings::windows_sentence(a.pf, a.alpha, w),
             windows: w.windows.clone(),
             bands: w.windows.iter().map(|[lo, hi]| [spec.position(*lo), spec.position(*hi)]).collect(),
         })
@@ -486,7 +472,7 @@ impl Session {
             for (i, r) in runs.iter_mut().enumerate() {
                 if let Some(s) = self.shown_snapshot(i) {
                     r.readouts.time = format!("{:.2} s (looking back)", s.time);
-                    r.readouts.error = status::error_pair(s.error);
+                    r.readouts.error = crate::words::settings::errors(s.error);
                 }
             }
         }
@@ -496,7 +482,7 @@ impl Session {
             preset: self.preset().map_or(String::new(), |p| p.id.to_string()),
             arm: self.settings.arm_preset().map_or(String::new(), |p| p.id.to_string()),
             showing: self.preset().map_or_else(
-                || format!("your settings — {}", status::describe(&self.a)),
+                || format!("your settings — {}", crate::words::settings::run(&self.a.settings().config())),
                 // A preset names the paper's figure; the paper slews once.
                 |p| {
                     let repeating =

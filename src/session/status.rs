@@ -5,12 +5,13 @@
 
 use serde::Serialize;
 
-use super::maps::feedback_short;
 use super::run::Run;
 use crate::analysis::judgement::judge;
 use crate::control::metrics::Verdict;
-use crate::plot::format::{minus, sci, sig, sig_trim};
+use crate::plot::format::{minus, sci, sig};
+use crate::schema::PanelKind;
 use crate::words::judgement::{judgement, JudgementText};
+use crate::words::panels::{figure_contents, figure_run};
 
 /// The readouts under the canvas.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -69,7 +70,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     let pair = |v: [f64; 2], unit: &str| format!("{}, {} {unit}", sci(v[0], 3), sci(v[1], 3));
     let readouts = Readouts {
         time: format!("{:.2} s", m.time),
-        error: error_pair(s.error),
+        error: crate::words::settings::errors(s.error),
         max_slew: pair(m.max_error_slew, "rad"),
         // Nothing to show until the reference has rested once.
         max_after: if m.time <= sim.config().reference.slew_time {
@@ -102,45 +103,8 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         spectral_radius: report.map(|r| r.spectral_radius),
         growth_rate: report.map(|r| r.growth_rate),
         readouts,
-        settings: describe(run),
+        settings: crate::words::settings::run(&run.settings().config()),
     }
-}
-
-/// "1.23e−3, −4.56e−4 rad".
-pub(super) fn error_pair(e: [f64; 2]) -> String {
-    // Exponents where errors are small (comparable at a glance), plain numbers near a radian.
-    let f = |v: f64| if v.abs() >= 0.1 { sig(v, 3) } else { sci(v, 3) };
-    format!("{}, {} rad", f(e[0]), f(e[1]))
-}
-
-/// "no K_pr, δ = 0.01 s, α = 2 1/s", and what departs from the paper's model ("…, friction
-/// compensation held").
-pub fn describe(run: &Run) -> String {
-    let s = run.settings();
-    let alpha = if s.alpha[0] == s.alpha[1] {
-        format!("α = {}", sig_trim(s.alpha[0], 3))
-    } else {
-        format!("α = {}, {}", sig_trim(s.alpha[0], 3), sig_trim(s.alpha[1], 3))
-    };
-    let mut text = format!("{}, δ = {} s, {alpha} 1/s", feedback_short(s.pf), sig_trim(s.delta, 3));
-    // What departs from the paper's model, so "your settings" never hide it.
-    let paper = super::settings::RunSettings::default();
-    if s.friction != paper.friction {
-        text += &format!(", friction compensation {}", s.friction.name());
-    }
-    if s.inner != paper.inner {
-        text += &format!(", inner loop {}", s.inner.name());
-    }
-    if s.k != paper.k || s.eps_ratio != paper.eps_ratio {
-        text += &format!(", k = {}, m = {}", s.k, sig_trim(s.eps_ratio, 3));
-    }
-    if s.plant != paper.plant {
-        text += &format!(", arm: {}", crate::schema::arm_text(&s.plant.values()));
-    }
-    if s.repeat {
-        text += ", slew repeating";
-    }
-    text
 }
 
 impl super::Session {
@@ -149,25 +113,20 @@ impl super::Session {
     pub fn figure_text(&self) -> String {
         let v = self.drawn_view();
         let hidden = self.answers_hidden();
-        let mut shown = vec!["the arm (top view)", "the tracking errors e1, e2 over time"];
+        let mut kinds = vec![PanelKind::Arm, PanelKind::Error1];
         if v.torque {
-            shown.push("the torques");
+            kinds.push(PanelKind::Torque);
         }
         if v.poles {
-            shown.push(if v.z_plane {
-                "the loop's eigenvalues λ with the unit circle"
-            } else {
-                "the pole plot s = ln λ / δ"
-            });
+            kinds.push(if v.z_plane { PanelKind::ZPlane } else { PanelKind::Poles });
         }
-        let rate = v.measure == crate::plot::color::Measure::Rate;
         if v.rho {
-            shown.push(if rate { "the rate ln ρ/δ along δ" } else { "ρ along δ" });
+            kinds.push(PanelKind::RhoCurve);
         }
         if v.map {
-            shown.push(if rate { "the stability maps coloured by ln ρ/δ" } else { "the stability maps ρ(δ, α)" });
+            kinds.push(PanelKind::MapOff);
         }
-        let mut text = format!("The figure shows {}.", shown.join(", "));
+        let mut text = figure_contents(&kinds, v.measure == crate::plot::color::Measure::Rate);
         for (i, run) in self.runs().enumerate() {
             let name = if i == 0 { "A" } else { "B" };
             let mut s = run_status(name, run);
@@ -175,12 +134,10 @@ impl super::Session {
                 super::student::hide_answers(&mut s);
             }
             let at = self.shown_snapshot(i).map_or(f64::NAN, |snap| snap.time);
-            let when = if self.viewing().is_some() { "looking back at" } else { "at" };
-            let who = if self.run(1).is_some() { format!("Run {name} ({}): ", s.settings) } else { String::new() };
-            text += &format!(
-                " {who}{} — {}; {when} t = {at:.2} s the errors are {}; {}.",
-                s.headline, s.detail, s.readouts.error, s.observed
-            );
+            let settings = self.run(1).is_some().then_some(s.settings.as_str());
+            let looking_back = self.viewing().is_some();
+            text +=
+                &figure_run(name, settings, s.headline, &s.detail, at, looking_back, &s.readouts.error, &s.observed);
         }
         text
     }

@@ -163,7 +163,7 @@ impl Renderer {
             text_scale: self.scene.page_scale(),
             legend: self.scene.legend(),
             hidden: self.scene.hidden_panels().into_iter().map(|k| k.id()).collect(),
-            hidden_note: crate::view::layout::hidden_note(&self.scene.hidden_panels()),
+            hidden_note: crate::words::panels::hidden_note(&self.scene.hidden_panels()),
             tabs: {
                 let layout = self.scene.layout();
                 let tabs = layout.tabs.iter();

@@ -9,6 +9,9 @@
 //! | [`judgement`] | a run's judgement: headline, ρ's prediction, what was observed and why, the analysis line |
 //! | [`story`] | the explanation's live numbers, from run A's analysis |
 //! | [`equations`] | the same numbers as MathML equations |
+//! | [`settings`] | a run's settings, its feedback, a map's caption, a point of it, the errors, the stable windows of δ |
+//! | [`panels`] | the panels a small canvas leaves out, and where they are |
+//! | [`work`] | what a run will cost, a duration in sensible units |
 //! | [`numbers`] | numbers as the sentences write them (rates, ρ, percents, pairs, the swing's energy shares) |
 //!
 //! [`Verdict`]: crate::control::Verdict
@@ -16,5 +19,8 @@
 pub mod equations;
 pub mod judgement;
 pub mod numbers;
+pub mod panels;
+pub mod settings;
 pub mod story;
 pub mod verdict;
+pub mod work;

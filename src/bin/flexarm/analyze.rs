@@ -54,8 +54,11 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         text += "(the closed form below is for a controller that knows this arm; the pairs above include the model error)\n";
     }
     text += &resonance_text(&report.resonance);
-    text +=
-        &format!("stable windows of δ at these α (edges within {:.0e} s): {}\n", windows.tolerance, windows.describe());
+    text += &format!(
+        "stable windows of δ at these α (edges within {:.0e} s): {}\n",
+        windows.tolerance,
+        flexarm::words::settings::windows(&windows)
+    );
     Ok(text)
 }
 

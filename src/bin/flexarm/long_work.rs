@@ -5,8 +5,9 @@ use std::io::{IsTerminal, Write};
 use std::time::Instant;
 
 use clap::{Arg, ArgMatches};
-use flexarm::control::work::{duration_text, WORK_LIMIT_SECONDS};
+use flexarm::control::work::WORK_LIMIT_SECONDS;
 use flexarm::control::{simulate_in_chunks, Metrics, TraceEnvelope, Work};
+use flexarm::words::work::{duration as duration_text, estimate};
 use flexarm::SimulationConfig;
 
 use crate::cli::{self, usage_error, Failure, Res};
@@ -44,7 +45,7 @@ pub fn check(m: &ArgMatches, what: &str, work: Work, shorter: &str) -> Res<()> {
         return Err(usage_error(format!(
             "{what} would take too long: {} (the limit is {}, set by {LIMIT_VARIABLE}); {shorter}, or add --force \
              to run it anyway",
-            work.text(),
+            estimate(&work),
             duration_text(limit)
         )));
     }

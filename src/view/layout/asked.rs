@@ -1,6 +1,7 @@
 //! Which panels a figure asks for (the options that choose them, the tabs a narrow canvas then
-//! offers), and — when a canvas is too small to show every panel asked for at once — the words
-//! that say which are not in view and where they are (an embed must never drop a panel silently).
+//! offers); when a canvas is too small to show every panel asked for at once, [`super::Layout`]
+//! says which are not in view and [`crate::words::panels::hidden_note`] says it in words (an embed
+//! must never drop a panel silently).
 //! What the panels and tabs are is the schema's vocabulary ([`crate::schema::PanelKind`],
 //! [`crate::schema::Tab`]); where they go is [`super`]'s business.
 
@@ -116,65 +117,5 @@ impl LayoutOptions {
     pub fn tabs(&self) -> Vec<Tab> {
         let lists = self.panels();
         Tab::ALL.into_iter().filter(|t| lists.all().any(|k| t.holds(k))).collect()
-    }
-}
-
-/// What a notice says of the panels asked for that a layout does not show (`hidden`, in the
-/// order asked), or None when every one is in view: which they are and the tabs they are on,
-/// e.g. "ρ(δ) and the stability maps do not fit beside the rest at this size: see the tabs
-/// “Poles and ρ(δ)” and “Stability maps” (or open flexarm ↗)".
-pub fn hidden_note(hidden: &[PanelKind]) -> Option<String> {
-    if hidden.is_empty() {
-        return None;
-    }
-    let both_maps = hidden.contains(&PanelKind::MapOff) && hidden.contains(&PanelKind::MapOn);
-    let both_errors = hidden.contains(&PanelKind::Error1) && hidden.contains(&PanelKind::Error2);
-    let mut names: Vec<&str> = Vec::with_capacity(hidden.len());
-    for &k in hidden {
-        let name = match k {
-            PanelKind::MapOff | PanelKind::MapOn if both_maps => "the stability maps",
-            PanelKind::Error1 | PanelKind::Error2 if both_errors => "the errors",
-            k => k.name(),
-        };
-        if !names.contains(&name) {
-            names.push(name);
-        }
-    }
-    let tabs: Vec<String> = Tab::ALL
-        .into_iter()
-        .filter(|t| hidden.iter().any(|k| t.holds(*k)))
-        .map(|t| format!("“{}”", t.label()))
-        .collect();
-    let verb = if names.len() == 1 && !names[0].starts_with("the stability") && names[0] != "the errors" {
-        "does"
-    } else {
-        "do"
-    };
-    let tab_word = if tabs.len() == 1 { "the tab" } else { "the tabs" };
-    Some(format!(
-        "{} {verb} not fit beside the rest at this size: see {tab_word} {} (or open flexarm ↗)",
-        capitalised(&and_list(&names)),
-        and_list(&tabs)
-    ))
-}
-
-/// "a", "a and b", "a, b and c".
-fn and_list<S: AsRef<str>>(items: &[S]) -> String {
-    match items {
-        [] => String::new(),
-        [one] => one.as_ref().to_string(),
-        [rest @ .., last] => {
-            let head: Vec<&str> = rest.iter().map(|s| s.as_ref()).collect();
-            format!("{} and {}", head.join(", "), last.as_ref())
-        }
-    }
-}
-
-/// The text with its first letter upper-case ("The z-plane"; "ρ(δ)" stays as it is).
-fn capitalised(text: &str) -> String {
-    let mut chars = text.chars();
-    match chars.next() {
-        Some(c) if c.is_ascii_lowercase() => c.to_ascii_uppercase().to_string() + chars.as_str(),
-        _ => text.to_string(),
     }
 }

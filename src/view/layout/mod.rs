@@ -22,7 +22,7 @@ mod asked;
 
 pub use super::rect::Rect;
 pub use crate::schema::{PanelKind, Tab};
-pub use asked::{hidden_note, LayoutOptions, Panel, PanelLists};
+pub use asked::{LayoutOptions, Panel, PanelLists};
 
 /// How the panels are arranged.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

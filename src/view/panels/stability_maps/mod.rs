@@ -12,7 +12,6 @@ use grid::{
 use crate::control::config::PreliminaryFeedbackChoice;
 use crate::plot::{format, palette, Color};
 use crate::schema::PanelKind;
-use crate::session::maps::{feedback_short, point_text};
 use crate::view::layout::Panel;
 use crate::view::legend::{item, map_scale, Glyph, LegendGroup};
 use crate::view::painter::Painter;
@@ -20,6 +19,7 @@ use crate::view::panel_info::{PanelInfo, Probe, Region, TipLine};
 use crate::view::panels::contract::{Frame, PanelView, Runs};
 use crate::view::rho_readout::stability_lines;
 use crate::view::tick_labels::log_labels;
+use crate::words::settings::{map_caption, point as point_text, with_feedback};
 
 /// Least distance between log-axis labels, CSS px (x: a label's width, y: its height).
 const LOG_LABEL_SPACING: [f64; 2] = [38.0, 17.0];
@@ -154,7 +154,7 @@ impl PanelView for StabilityMaps {
         info.x_scale = "log";
         info.y_scale = "log";
         let pf = frame.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
-        info.note = side.caption(pf, frame.options.measure);
+        info.note = map_caption(side, pf, frame.options.measure);
         info.region = Some(Region {
             label: match side {
                 MapSide::Off => {
@@ -201,10 +201,7 @@ impl PanelView for StabilityMaps {
             crate::schema::format_number(d),
             crate::schema::format_number(a)
         )));
-        let title = match side.feedback(pf) {
-            PreliminaryFeedbackChoice::Off => "without preliminary feedback".to_string(),
-            f => format!("with {}", feedback_short(f)),
-        };
+        let title = with_feedback(side.feedback(pf));
         Some(Probe { kind: "map", title, lines, x, y, map: Some(side), delta: Some(delta), alpha: Some(alpha) })
     }
 
