@@ -24,6 +24,7 @@
 //! | [`words`] | facts in words: verdicts, judgements, the explanation's numbers, for the page and the CLI alike |
 //! | [`lesson`] | the guided lesson as data: `www/lessons/paper.md`, read into steps, questions and goals |
 //! | [`session`] | what a user has open: settings and state string, runs A and B, analyses, maps, the timeline, the lesson's progress |
+//! | [`classroom`] | the lesson, the answers, student mode, a link's moment and embeds, around a session |
 //! | [`plot`] | ticks, number format, colours, contours — shared by the canvas and the SVG |
 //! | [`view`] | what the page draws, as plain geometry (no GPU types) |
 //! | [`svg`] | publication figures from the same `plot` decisions |
@@ -32,6 +33,7 @@
 //! The core has no web types and no global state; it builds for native targets and wasm32.
 
 pub mod analysis;
+pub mod classroom;
 pub mod control;
 pub mod error;
 pub mod lesson;

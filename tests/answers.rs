@@ -9,18 +9,18 @@ use common::play;
 
 use flexarm::analysis::analyze;
 use flexarm::lesson::{parse, LESSON_TEXT};
-use flexarm::session::answers::{split_csv as cells, text_hash, Record, CSV_COLUMNS};
-use flexarm::session::lesson::LessonOrigin;
-use flexarm::session::Session;
+use flexarm::classroom::answers::{split_csv as cells, text_hash, Record, CSV_COLUMNS};
+use flexarm::classroom::progress::LessonOrigin;
+use common::Visit;
 
 const HOMEWORK: &str = include_str!("../www/lessons/windows.md");
 /// 2026-11-26T05:03:00Z.
 const NOW_MS: f64 = 1_795_669_380_000.0;
 
-fn homework(query: &str) -> Session {
+fn homework(query: &str) -> Visit {
     let q = format!("lesson_src=lessons/windows.md&{query}");
     let (s, notices) =
-        Session::open_with_lessons(&q, None, Some(("lessons/windows.md".into(), HOMEWORK.as_bytes().to_vec())));
+        Visit::open_with_lessons(&q, None, Some(("lessons/windows.md".into(), HOMEWORK.as_bytes().to_vec())));
     assert!(notices.is_empty(), "{notices:?}");
     s
 }
@@ -153,7 +153,7 @@ fn a_kept_record_comes_back_after_a_reload_and_only_for_its_own_text() {
 
     // Another text of the lesson (one character changed): its answers are not these.
     let changed = HOMEWORK.replacen("Homework", "Homework ", 1);
-    let mut other = Session::open_with_lessons("", None, None).0;
+    let mut other = Visit::open_with_lessons("", None, None).0;
     other.load_lesson(LessonOrigin::File("changed.md".into()), changed.as_bytes()).unwrap();
     let before = other.answers_record().unwrap().clone();
     let err = other.restore_answers_csv(&kept).unwrap_err().to_string();
@@ -176,7 +176,7 @@ fn a_kept_record_comes_back_after_a_reload_and_only_for_its_own_text() {
 
 #[test]
 fn the_builtin_lessons_record_hashes_its_text() {
-    let mut s = Session::open("").0;
+    let mut s = Visit::open("").0;
     s.lesson_open(0).unwrap();
     assert_eq!(s.answers_record().unwrap().lesson_hash, text_hash(LESSON_TEXT));
     assert_eq!(s.answers_record().unwrap().steps, parse(LESSON_TEXT).unwrap().steps.len());
@@ -191,14 +191,14 @@ fn a_teachers_link_opens_a_given_step_with_a_given_state() {
 }
 
 /// Everything the page says, as text: the status and the figure's description.
-fn said(s: &Session) -> String {
+fn said(s: &Visit) -> String {
     serde_json::to_string(&s.status()).unwrap()
 }
 
 #[test]
 fn student_mode_hides_what_gives_the_answer_away_until_the_step_is_answered() {
     // The paper's Fig. 5.3 (ρ = 1.0239): nothing the page says may carry ρ or the verdict.
-    let mut s = Session::open("preset=fig5.3&mode=full&rho=1&map=1&log=1&answers=hidden").0;
+    let mut s = Visit::open("preset=fig5.3&mode=full&rho=1&map=1&log=1&answers=hidden").0;
     play(&mut s, 2.0);
     s.refresh();
     let rho = analyze(&s.run(0).unwrap().closed_loop().config().clone(), None).unwrap().spectral_radius;
@@ -217,7 +217,7 @@ fn student_mode_hides_what_gives_the_answer_away_until_the_step_is_answered() {
     assert!(!drawn.rho && !drawn.map && drawn.answers_hidden);
     assert!(s.cached_windows().is_none());
     // The same settings without student mode say it all (the test above can fail).
-    let open = Session::open("preset=fig5.3&mode=full&rho=1&map=1").0;
+    let open = Visit::open("preset=fig5.3&mode=full&rho=1&map=1").0;
     assert!(said(&open).contains(&format!("{rho:.4}")));
 
     // The downloads that carry ρ are held back too, with the reason.
@@ -265,7 +265,7 @@ fn in_a_lesson_student_mode_lifts_once_the_step_is_answered_and_says_so_in_the_r
 #[test]
 fn a_lessons_header_sets_student_mode_and_a_step_can_show_the_answers() {
     let text = "# Exam\nanswers: hidden\n\n## Predict\nstate: preset=fig5.3\n\nWhat happens?\n\n? Stable?\n+ no\n- yes\n\n= It grows.\n\n## Look\nstate: preset=fig5.3\nanswers: shown\n\nNow look at the verdict.\n";
-    let mut s = Session::open("").0;
+    let mut s = Visit::open("").0;
     s.load_lesson(LessonOrigin::File("exam.md".into()), text.as_bytes()).unwrap();
     assert!(s.student_mode() && s.answers_hidden());
     s.lesson_next().unwrap();

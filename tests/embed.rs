@@ -4,7 +4,7 @@
 //! step can be embedded.
 
 mod common;
-use common::session;
+use common::visit as session;
 
 use flexarm::error::Error;
 use flexarm::session::view::Strip;
@@ -150,7 +150,7 @@ fn the_builders_snippet_carries_its_choices_and_opens_as_chosen() {
     assert!(opened.take_start_paused());
     assert!(opened.settings().view.strip.has("delta") && !opened.settings().view.strip.has("play"));
     let mut scene = Scene::new(ViewOptions::default(), 1200.0, 700.0, 1.0);
-    scene.draw_session(&opened);
+    scene.draw_session(&opened.session);
     let kinds: Vec<PanelKind> = scene.layout().panels.iter().map(|p| p.kind).collect();
     assert_eq!(kinds, [ZPlane, RhoCurve]);
     // Without choices: what is on screen, 640 × 400, playing.

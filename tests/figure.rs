@@ -10,10 +10,10 @@ use flexarm::plot::palette;
 use flexarm::session::{MapSide, Session};
 use flexarm::view::figure::{figure_choices, figure_svg, FigurePanel};
 
-/// The page's session for `query` in the full view, run to `t` seconds, with ρ(δ)'s windows and
-/// (if `maps`) both maps computed.
+/// The page's session for `query` in the full view (what its classroom hides, hidden), run to `t`
+/// seconds, with ρ(δ)'s windows and (if `maps`) both maps computed.
 fn session(query: &str, t: f64, maps: bool) -> Session {
-    let mut s = common::session(&format!("mode=full&{query}"));
+    let mut s = common::visit(&format!("mode=full&{query}")).session;
     s.run_to(t).unwrap();
     s.refresh();
     if maps {

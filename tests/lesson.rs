@@ -4,15 +4,15 @@
 //! lesson quotes are the program's.
 
 mod common;
-use common::{play, session};
+use common::{play, visit as session};
 
 use flexarm::analysis::analyze;
 use flexarm::lesson::{builtin, LESSON_TEXT};
-use flexarm::session::Session;
+use common::Visit;
 use flexarm::*;
 
 /// Run A's verdict as the page states it.
-fn verdict(s: &Session) -> &'static str {
+fn verdict(s: &Visit) -> &'static str {
     s.status().runs[0].verdict
 }
 
@@ -139,7 +139,7 @@ fn the_windows_stay_hidden_until_the_student_finds_one() {
     s.set("delta", "0.07").unwrap();
     s.refresh();
     assert!(s.status().lesson.unwrap().done);
-    assert_eq!(s.status().windows.unwrap().windows.len(), 3, "revealed: three windows at α = 2");
+    assert_eq!(s.status().windows.clone().unwrap().windows.len(), 3, "revealed: three windows at α = 2");
     // "Show me" reveals them too, and puts δ in a window, so the answer describes what is shown.
     let mut s = session("");
     s.lesson_open(step_index("Find where")).unwrap();
@@ -184,13 +184,13 @@ fn a_link_reopens_the_same_step_with_the_same_settings() {
     let again = session(&link);
     assert_eq!(again.status().lesson.unwrap().index, 4);
     assert_eq!(again.settings(), s.settings());
-    let (_, notices) = Session::open("lesson=abc");
+    let (_, notices) = Visit::open("lesson=abc");
     assert_eq!(notices.len(), 1, "{notices:?}");
     assert!(notices[0].text.contains("step number"), "{}", notices[0].text);
     // Beyond the last step: the last step, and a notice that says so; the last step itself
     // opens without one.
     let count = builtin().unwrap().steps.len();
-    let (last, notices) = Session::open("lesson=99");
+    let (last, notices) = Visit::open("lesson=99");
     assert_eq!(last.status().lesson.unwrap().index, count - 1);
     assert_eq!(notices.len(), 1, "{notices:?}");
     assert_eq!(notices[0].key, "lesson");

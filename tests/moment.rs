@@ -6,10 +6,10 @@
 mod common;
 use common::play;
 
-use flexarm::session::Session;
+use common::Visit;
 
-fn open(query: &str) -> Session {
-    let (s, notices) = Session::open(query);
+fn open(query: &str) -> Visit {
+    let (s, notices) = Visit::open(query);
     assert!(notices.is_empty(), "{notices:?}");
     s
 }
@@ -61,7 +61,7 @@ fn a_moment_past_divergence_stops_there_and_bad_values_are_refused_with_a_notice
     let run = s.run(0).unwrap().closed_loop();
     assert!(run.is_finished() && run.time() < 100.0, "t = {}", run.time());
     for bad in ["t=-1", "t=1e9", "t=abc", "paused=maybe"] {
-        let (s, notices) = Session::open(&format!("preset=fig5.3&{bad}"));
+        let (s, notices) = Visit::open(&format!("preset=fig5.3&{bad}"));
         assert_eq!(notices.len(), 1, "{bad}: {notices:?}");
         assert_eq!(s.run(0).unwrap().closed_loop().time(), 0.0);
     }
@@ -70,8 +70,8 @@ fn a_moment_past_divergence_stops_there_and_bad_values_are_refused_with_a_notice
 #[test]
 fn a_lesson_step_can_start_at_a_moment() {
     let text = "# L\n\n## At three seconds\nstate: preset=fig5.3&t=3&paused=1\n\nLook at the errors now.\n";
-    let mut s = Session::open("").0;
-    s.load_lesson(flexarm::session::lesson::LessonOrigin::File("l.md".into()), text.as_bytes()).unwrap();
+    let mut s = Visit::open("").0;
+    s.load_lesson(flexarm::classroom::progress::LessonOrigin::File("l.md".into()), text.as_bytes()).unwrap();
     assert!(s.run(0).unwrap().closed_loop().time() >= 3.0 - 1e-9);
     assert!(s.take_start_paused());
 }

@@ -40,7 +40,7 @@ fn named_panel(state: &str) -> Option<PanelKind> {
 #[test]
 fn every_lesson_step_shows_the_panel_it_is_about() {
     let lesson = builtin().expect("the built-in lesson");
-    let mut s = session("");
+    let mut s = common::visit("");
     let mut checked = 0;
     for (i, step) in lesson.steps.iter().enumerate() {
         s.lesson_open(i).expect("the step opens");

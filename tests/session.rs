@@ -352,7 +352,7 @@ fn the_page_exports_the_clis_figures_and_an_embed_snippet() {
     while s.maps_mut().work(&mut clock, 50.0) {}
     let maps = s.svg_maps().unwrap();
     assert!(maps.contains("no Kₚᵣ") && maps.contains("paper Kₚᵣ"), "both maps, captioned");
-    let snippet = s.embed("https://example.org/flexarm/index.html?x=1#top", "").unwrap().html;
+    let snippet = flexarm::classroom::Classroom::default().embed(&s, "https://example.org/flexarm/index.html?x=1#top", "").unwrap().html;
     assert!(snippet.starts_with("<iframe src=\"https://example.org/flexarm/index.html?delta=0.01"), "{snippet}");
     assert!(snippet.contains("embed=1") && snippet.contains("width=\"640\" height=\"400\""), "{snippet}");
     assert!(snippet.contains("&amp;"), "the query is escaped in the attribute: {snippet}");

@@ -6,20 +6,20 @@
 //! here and the numbers it quotes are the program's.
 
 mod common;
-use common::{play, session};
+use common::{play, visit as session};
 
 use flexarm::analysis::{analyze, stable_windows, LinearSettings};
 use flexarm::lesson::{parse, read_file, source_path, MAX_LESSON_BYTES};
-use flexarm::session::lesson::{validate, LessonOrigin};
-use flexarm::session::Session;
+use flexarm::classroom::progress::{validate, LessonOrigin};
+use common::Visit;
 use flexarm::*;
 
 const HOMEWORK: &str = include_str!("../www/lessons/windows.md");
 const TEACHING: &str = include_str!("../docs/teaching.md");
 
-fn open_homework(query: &str) -> (Session, Vec<flexarm::session::Notice>) {
+fn open_homework(query: &str) -> (Visit, Vec<flexarm::session::Notice>) {
     let q = format!("lesson_src=lessons/windows.md&{query}");
-    Session::open_with_lessons(&q, None, Some(("lessons/windows.md".into(), HOMEWORK.as_bytes().to_vec())))
+    Visit::open_with_lessons(&q, None, Some(("lessons/windows.md".into(), HOMEWORK.as_bytes().to_vec())))
 }
 
 #[test]
@@ -37,7 +37,7 @@ fn the_homework_lesson_reads_passes_the_checks_and_opens_from_its_link() {
     let link = s.state_string();
     assert!(link.contains("lesson_src=lessons%2Fwindows.md&lesson=2"), "{link}");
     let (again, notices) =
-        Session::open_with_lessons(&link, None, Some(("lessons/windows.md".into(), HOMEWORK.as_bytes().to_vec())));
+        Visit::open_with_lessons(&link, None, Some(("lessons/windows.md".into(), HOMEWORK.as_bytes().to_vec())));
     assert!(notices.is_empty(), "{notices:?}");
     assert_eq!(again.status().lesson.unwrap().index, 1);
     assert_eq!(again.settings(), s.settings());
@@ -168,15 +168,15 @@ fn a_lesson_comes_only_from_the_pages_own_site() {
     }
     // In a link: refused with the reason, the built-in lesson stays; a path whose file did not
     // load says so.
-    let (s, notices) = Session::open_with_lessons("lesson_src=https://example.org/l.md&lesson=1", None, None);
+    let (s, notices) = Visit::open_with_lessons("lesson_src=https://example.org/l.md&lesson=1", None, None);
     assert_eq!(notices.len(), 1, "{notices:?}");
     assert!(notices[0].text.contains("another site") && notices[0].text.contains("built-in lesson is used"));
     assert_eq!(s.status().lesson.unwrap().source, "");
-    let (_, notices) = Session::open_with_lessons("lesson_src=lessons/missing.md", None, None);
+    let (_, notices) = Visit::open_with_lessons("lesson_src=lessons/missing.md", None, None);
     assert!(notices[0].text.contains("could not be loaded"), "{notices:?}");
     // A broken file named by a link: its mistake, and the built-in lesson.
     let (s, notices) =
-        Session::open_with_lessons("lesson_src=l.md&lesson=1", None, Some(("l.md".into(), b"# T\n\n## S\n".to_vec())));
+        Visit::open_with_lessons("lesson_src=l.md&lesson=1", None, Some(("l.md".into(), b"# T\n\n## S\n".to_vec())));
     assert!(notices[0].text.starts_with("l.md: lesson, line 3: step 1 ('S'): no 'state:' line"), "{notices:?}");
     assert_eq!(s.status().lesson.unwrap().source, "");
 }

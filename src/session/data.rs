@@ -366,7 +366,7 @@ impl Session {
         let config = self.settings.a.config();
         let report = self.a.analysis().report().ok_or(Error::Analysis("run A's settings have no linear analysis"))?;
         let mut omitted = String::new();
-        let windows = if self.lesson_hides_windows() {
+        let windows = if self.hidden.windows {
             omitted.push_str("the rho(delta) curve: hidden until the lesson step's question is answered");
             None
         } else {

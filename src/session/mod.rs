@@ -6,13 +6,12 @@
 //! Architecture invariant: no web types; every decision about which change restarts a run, which
 //! settings change ρ or which map is needed is made here, not in the page.
 
-pub mod answers;
 mod changes;
 pub mod controls;
 mod cycle;
 pub mod data;
+mod figure_text;
 pub mod export;
-pub mod lesson;
 pub mod maps;
 pub mod named;
 pub mod presets;
@@ -21,9 +20,7 @@ pub mod query;
 pub mod run;
 mod run_settings;
 pub mod settings;
-mod start;
 pub mod status;
-mod student;
 pub mod timeline;
 pub mod view;
 
@@ -35,11 +32,8 @@ use crate::error::{Error, ParseError};
 use crate::schema::{self, Kind, Scope, Value};
 
 pub use controls::{display, ControlValue};
-pub use export::EMBED_SIZE;
-pub use lesson::{LessonProgress, LessonStatus, QuestionStatus};
 pub use maps::{MapSide, Maps};
 pub use presets::{arm, preset, ArmPreset, Preset, ARMS, PRESETS};
-use query::split_query;
 pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS, HISTORY_SECONDS};
 pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source, ViewSettings};
 pub use status::{run_status, RunStatus};
@@ -72,8 +66,6 @@ pub struct Status {
     pub ghost: String,
     /// The instant shown and the span that can be looked back at.
     pub timeline: TimelineStatus,
-    /// The lesson's step, while the lesson is open.
-    pub lesson: Option<LessonStatus>,
     /// The figure in words (the canvas' text alternative).
     pub figure: String,
     /// The zoom on one sampling instant in words (Fig. 2.1; "" when it is not shown).
@@ -81,17 +73,17 @@ pub struct Status {
     /// The explanation's live numbers for run A (null while its analysis is missing, or hidden
     /// in student mode).
     pub story: Option<crate::words::story::Story>,
-    /// Student mode: what is hidden now and how to show it (null when nothing is hidden).
-    pub hidden: Option<HiddenStatus>,
 }
 
-/// What student mode hides at this moment, as the page says it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct HiddenStatus {
-    /// "Student mode: the verdict, ρ, … are hidden until you answer this step's question."
-    pub text: String,
-    /// The figures' switches that show nothing while hidden (the page disables them).
-    pub controls: Vec<&'static str>,
+/// What the classroom hides from the session's status and figures now
+/// ([`crate::classroom::Classroom::follow`] decides; the session only obeys).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Hidden {
+    /// Student mode: the verdict, ρ, the windows, the analysis' figures and the downloads that
+    /// carry ρ wait for the student's answer.
+    pub answers: bool,
+    /// The lesson step hides the stable windows of δ until its answer.
+    pub windows: bool,
 }
 
 /// The stable windows of δ for run A's settings, as the page shows them.
@@ -134,18 +126,8 @@ pub struct Session {
     trace_seconds: f64,
     /// The kept instant looked at (None: the newest state).
     viewing: Option<f64>,
-    /// The guided lesson, once opened.
-    lesson: Option<LessonProgress>,
-    /// The lesson's text (the page fetches it; the native build has it built in).
-    lesson_text: Option<String>,
-    /// Where that text comes from.
-    lesson_origin: lesson::LessonOrigin,
-    /// The wall clock the page last gave, ms since 1970 (NaN: none): the answers' times.
-    wall_clock_ms: f64,
-    /// The student lifted student mode for this session ("Show them").
-    answers_shown: bool,
-    /// A link or a lesson step asked to start paused; the page takes it once.
-    start_paused: bool,
+    /// What the classroom hides now.
+    hidden: Hidden,
 }
 
 impl Session {
@@ -163,12 +145,7 @@ impl Session {
             note: String::new(),
             trace_seconds: DEFAULT_TRACE_SECONDS,
             viewing: None,
-            lesson: None,
-            lesson_text: None,
-            lesson_origin: lesson::LessonOrigin::BuiltIn,
-            wall_clock_ms: f64::NAN,
-            answers_shown: false,
-            start_paused: false,
+            hidden: Hidden::default(),
         };
         session.maps.show(&session.linear_settings());
         session.maps.enabled = settings.view.shown().map;
@@ -176,83 +153,22 @@ impl Session {
     }
 
     /// The page's session for a URL query: the page's start settings with the query read over
-    /// them. Bad values become notices; settings that cannot run together fall back to the start.
+    /// them (the tab a panel it names is on). Bad values become notices; settings that cannot run
+    /// together fall back to the start. The lesson, a teacher's file and the link's moment it may
+    /// name are the classroom's ([`crate::classroom::Classroom::open`]).
     pub fn open(query: &str) -> (Self, Vec<Notice>) {
-        Self::open_with_lesson(query, None)
-    }
-
-    /// [`Session::open`] with the lesson's text (the page fetches it; `None`: the built-in
-    /// lesson where the build has one).
-    pub fn open_with_lesson(query: &str, lesson_text: Option<String>) -> (Self, Vec<Notice>) {
-        Self::open_with_lessons(query, lesson_text, None)
-    }
-
-    /// [`Session::open_with_lesson`] with a teacher's lesson file (`lesson_src=PATH`: the path and
-    /// the bytes the page fetched from it), used instead of the built-in lesson if it reads and
-    /// passes the checks; else a notice says why, and the built-in lesson stays.
-    pub fn open_with_lessons(
-        query: &str,
-        lesson_text: Option<String>,
-        teacher: Option<(String, Vec<u8>)>,
-    ) -> (Self, Vec<Notice>) {
         let mut settings = Settings::page_start();
         let mut notices = settings.read(query, Source::Page).unwrap_or_default();
         if let Some(tab) = named::tab_named_in(query, &settings.view) {
             settings.view.tab = tab;
         }
-        let mut session = match Self::new(settings) {
+        let session = match Self::new(settings) {
             Ok(s) => s,
             Err(e) => {
                 notices.push(Notice { key: "state".into(), text: format!("{e}; using the defaults") });
                 Self::new(Settings::page_start()).unwrap_or_else(|e| panic!("the page's start settings are valid: {e}"))
             }
         };
-        session.lesson_text = lesson_text;
-        // `lesson_src=PATH`: a teacher's lesson, which the page fetched if the path is on its site.
-        let source = split_query(query).into_iter().rev().find(|(k, _)| k == "lesson_src").map(|(_, v)| v);
-        let teacher = match (source, teacher) {
-            (None, _) => None,
-            (Some(value), teacher) => match crate::lesson::source_path(&value) {
-                Err(e) => {
-                    notices.push(Notice {
-                        key: "lesson_src".into(),
-                        text: format!("{e} — the built-in lesson is used instead"),
-                    });
-                    None
-                }
-                Ok(path) if teacher.is_none() => {
-                    notices.push(Notice {
-                        key: "lesson_src".into(),
-                        text: format!(
-                            "lesson_src={path}: the file could not be loaded from this site (is it beside the page?) — the built-in lesson is used instead"
-                        ),
-                    });
-                    None
-                }
-                Ok(_) => teacher,
-            },
-        };
-        if let Some((path, bytes)) = teacher {
-            match lesson::checked(&bytes) {
-                Ok((text, _)) => {
-                    session.lesson_text = Some(text);
-                    session.lesson_origin = lesson::LessonOrigin::Path(path);
-                }
-                Err(e) => notices.push(Notice {
-                    key: "lesson_src".into(),
-                    text: format!("{path}: {e} — the built-in lesson is used instead"),
-                }),
-            }
-        }
-        // `lesson=3` opens the lesson at that step, with the URL's settings over the step's.
-        match session.open_lesson_from(query) {
-            Ok(notice) => notices.extend(notice),
-            Err(e) => notices.push(Notice { key: "lesson".into(), text: e.to_string() }),
-        }
-        // `t=3&paused=1`: the link's moment.
-        if let Err(e) = session.go_to_start() {
-            notices.push(Notice { key: "t".into(), text: e.to_string() });
-        }
         (session, notices)
     }
 
@@ -428,13 +344,12 @@ impl Session {
     /// milliseconds; call it a few times a second, not per slider event).
     pub fn refresh(&mut self) {
         let _ = self.windows();
-        self.check_lesson_goal();
     }
 
     /// The stable windows as last computed for the current settings (None if stale or failed,
-    /// or while a lesson step hides them until its answer).
+    /// or while the classroom hides them until an answer).
     pub fn cached_windows(&self) -> Option<&StableWindows> {
-        if self.lesson_hides_windows() || self.answers_hidden() {
+        if self.hidden.windows || self.hidden.answers {
             return None;
         }
         let key = self.linear_settings().at(0.0, self.settings.a.alpha);
@@ -465,7 +380,7 @@ impl Session {
         }
         let hidden = self.answers_hidden();
         if hidden {
-            runs.iter_mut().for_each(student::hide_answers);
+            runs.iter_mut().for_each(status::hide_answers);
         }
         if self.viewing.is_some() {
             // The readouts of the moment looked at; the verdict and the maxima are the run's.
@@ -506,7 +421,6 @@ impl Session {
                 .as_ref()
                 .map_or(String::new(), |g| format!("faint grey: the previous run ({})", g.settings)),
             timeline: self.timeline(),
-            lesson: self.lesson_status(),
             figure: match cycle.as_str() {
                 "" => self.figure_text(),
                 c => format!("{} The time plots are zoomed on one sampling instant. {c}", self.figure_text()),
@@ -519,18 +433,61 @@ impl Session {
                 // next sampling instant.
                 self.a.analysis().report().map(|report| crate::words::story::story(&self.a.settings().config(), report))
             },
-            hidden: hidden.then(|| self.hidden_status()),
         }
     }
 
     // ------------------------------------------------------------------------------ export
 
-    /// The state string (the page's URL query).
+    /// The state string of the settings (the page's URL query, but for the lesson step the
+    /// classroom adds).
     pub fn state_string(&self) -> String {
-        match self.lesson_query() {
-            Some(lesson) => format!("{}&{lesson}", self.settings.to_query()),
-            None => self.settings.to_query(),
+        self.settings.to_query()
+    }
+
+    // ------------------------------------------------------------------------ the classroom's
+
+    /// What the classroom hides now (student mode, a lesson step hiding the windows).
+    pub fn set_hidden(&mut self, hidden: Hidden) {
+        self.hidden = hidden;
+    }
+
+    /// The answers are hidden now (student mode): the verdict, ρ, the analysis' figures.
+    pub fn answers_hidden(&self) -> bool {
+        self.hidden.answers
+    }
+
+    /// The figures drawn: while the answers are hidden, only those that show the run itself (the
+    /// arm, the errors, the torques, the zoom on one instant) — not the analysis' (the pole plot,
+    /// ρ(δ), the maps, log |e| with its slope and the swing's split, the swing's shape).
+    pub fn drawn_view(&self) -> ViewSettings {
+        let v = self.settings.view.shown();
+        if self.hidden.answers {
+            ViewSettings { poles: false, rho: false, map: false, log: false, swing: false, answers_hidden: true, ..v }
+        } else {
+            ViewSettings { answers_hidden: false, ..v }
         }
+    }
+
+    /// Makes `next` the settings (see the changes' rules): a lesson step's, applied whole;
+    /// `restart` runs from rest; `why` is the note.
+    pub fn apply_settings(&mut self, next: Settings, restart: bool, why: &str) -> Result<(), Error> {
+        self.apply(next, restart, why)
+    }
+
+    /// Forgets the faint previous run (a lesson step starts clean).
+    pub fn forget_ghost(&mut self) {
+        self.ghost = None;
+    }
+
+    /// The moment a link named (`t=3&paused=1`), taken once.
+    pub fn take_start(&mut self) -> settings::Start {
+        std::mem::take(&mut self.settings.start)
+    }
+
+    /// The student lifted student mode outside a lesson ("Show them"): the link's `answers=hidden`
+    /// no longer holds.
+    pub fn lift_student_mode(&mut self) {
+        self.settings.view.answers_hidden = false;
     }
 
     /// `flexarm simulate …` reproducing run A up to its current time.

@@ -46,7 +46,7 @@ fn hex(b: Option<&u8>) -> Option<u8> {
 }
 
 /// Percent-encodes what a query value must not contain raw.
-pub(super) fn encode(s: &str) -> String {
+pub fn encode(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for b in s.bytes() {
         if b.is_ascii_alphanumeric() || b"-._~".contains(&b) {

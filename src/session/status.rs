@@ -9,9 +9,7 @@ use super::run::Run;
 use crate::analysis::judgement::judge;
 use crate::control::metrics::Verdict;
 use crate::plot::format::{minus, sci, sig};
-use crate::schema::PanelKind;
 use crate::words::judgement::{judgement, JudgementText};
-use crate::words::panels::{figure_contents, figure_run};
 
 /// The readouts under the canvas.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -107,38 +105,26 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     }
 }
 
-impl super::Session {
-    /// The figure in words, for screen readers (the canvas' description): what it shows, at
-    /// which instant, the verdict and the newest numbers of each run.
-    pub fn figure_text(&self) -> String {
-        let v = self.drawn_view();
-        let hidden = self.answers_hidden();
-        let mut kinds = vec![PanelKind::Arm, PanelKind::Error1];
-        if v.torque {
-            kinds.push(PanelKind::Torque);
-        }
-        if v.poles {
-            kinds.push(if v.z_plane { PanelKind::ZPlane } else { PanelKind::Poles });
-        }
-        if v.rho {
-            kinds.push(PanelKind::RhoCurve);
-        }
-        if v.map {
-            kinds.push(PanelKind::MapOff);
-        }
-        let mut text = figure_contents(&kinds, v.measure == crate::plot::color::Measure::Rate);
-        for (i, run) in self.runs().enumerate() {
-            let name = if i == 0 { "A" } else { "B" };
-            let mut s = run_status(name, run);
-            if hidden {
-                super::student::hide_answers(&mut s);
-            }
-            let at = self.shown_snapshot(i).map_or(f64::NAN, |snap| snap.time);
-            let settings = self.run(1).is_some().then_some(s.settings.as_str());
-            let looking_back = self.viewing().is_some();
-            text +=
-                &figure_run(name, settings, s.headline, &s.detail, at, looking_back, &s.readouts.error, &s.observed);
-        }
-        text
-    }
+/// What a student in student mode (`answers=hidden`) may not see yet: the verdict and ρ, the
+/// observation (it says whether the simulation agrees with ρ), the growth rates and A4. What the
+/// figure shows (the errors, the torques, the time) stays; the words say what is hidden, for the
+/// eye and the screen reader alike.
+pub fn hide_answers(r: &mut RunStatus) {
+    const HIDDEN: &str = "hidden until you answer";
+    r.verdict = "hidden";
+    r.headline = "Verdict hidden";
+    r.detail = "student mode: the verdict and ρ wait for your answer".into();
+    r.observed = if r.finished {
+        // What the run did is on screen: say why it stopped, not what ρ says.
+        "The run stopped: the errors passed π rad. Restart to watch it again.".into()
+    } else {
+        "Watch the errors: do they grow or die out?".into()
+    };
+    r.measured = false;
+    r.rho = format!("linear analysis: {HIDDEN}");
+    r.spectral_radius = None;
+    r.growth_rate = None;
+    r.announce = format!("Run {}: the verdict is hidden until you answer.", r.run);
+    r.readouts.growth = HIDDEN.into();
+    r.readouts.a4 = HIDDEN.into();
 }

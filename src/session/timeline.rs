@@ -5,6 +5,7 @@
 
 use serde::Serialize;
 
+use super::MAX_ADVANCE_PER_CALL;
 use super::run::HISTORY_SECONDS;
 use super::{CompareSettings, Session};
 use crate::control::{ClosedLoop, Snapshot};
@@ -27,6 +28,32 @@ pub struct TimelineStatus {
 }
 
 impl Session {
+    /// Advances both runs to A's time `t` (s), flat out, whatever the playback speed; a run that
+    /// diverges on the way stops there.
+    pub fn run_to(&mut self, t: f64) -> Result<(), Error> {
+        if !(t.is_finite() && t >= 0.0) {
+            return Err(Error::InvalidDuration(t));
+        }
+        self.viewing = None;
+        let keep = self.trace_seconds;
+        loop {
+            let now = self.a.closed_loop().time();
+            if now >= t - 1e-9 || self.a.closed_loop().is_finished() {
+                break;
+            }
+            let dt = (t - now).min(MAX_ADVANCE_PER_CALL);
+            for run in self.runs_mut() {
+                run.advance(dt, keep)?;
+            }
+            if self.a.closed_loop().time() <= now {
+                break;
+            }
+        }
+        self.maps.show(&self.linear_settings());
+        Ok(())
+    }
+
+
     /// The run whose clock the timeline follows: the one furthest in time (B goes on alone when
     /// A has diverged in a comparison).
     fn clock(&self) -> &ClosedLoop {

@@ -295,17 +295,3 @@ fn list_error(key: &str, text: &str, known: &[&str], more: &str) -> Error {
     };
     Error::Parse(ParseError { key: key.into(), text: text.into(), expected })
 }
-
-impl super::Session {
-    /// Shows this part of the z-plane: centre (Re λ, Im λ) and half the shorter side (0: the
-    /// default view around the flexible pair, centre ignored). Checked against the schema's
-    /// limits (`zre`, `zim`, `zsize`) like any setting; the runs go on.
-    pub fn set_z_view(&mut self, center: [f64; 2], half: f64) -> Result<(), Error> {
-        let mut next = self.settings;
-        let center = if half > 0.0 { center } else { [0.0, 0.0] };
-        for (p, v) in [(&schema::ZRE, center[0]), (&schema::ZIM, center[1]), (&schema::ZSIZE, half)] {
-            next.view.set(p.key, Value::Number(p.check(v)?));
-        }
-        self.apply(next, false, "")
-    }
-}

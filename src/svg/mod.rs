@@ -22,23 +22,7 @@ const FONT: &str = "DejaVu Sans, Helvetica, Arial, sans-serif";
 /// Text and frames.
 pub(crate) const INK: &str = "#1a1a1a";
 
-/// Escapes text for element content and attribute values.
-pub fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            // Characters that XML 1.0 does not allow at all.
-            c if (c as u32) < 0x20 && !matches!(c, '\t' | '\n' | '\r') => out.push(' '),
-            c => out.push(c),
-        }
-    }
-    out
-}
+pub use crate::words::markup::escape;
 
 /// A coordinate with two decimals, trailing zeros trimmed; never NaN or inf (callers skip those).
 pub(crate) fn num(v: f64) -> String {

@@ -6,16 +6,17 @@ use wasm_bindgen::prelude::*;
 
 use super::session::WebSession;
 use super::{js_error, to_js};
-use crate::view::figure::{figure_choices, figure_svg};
+use crate::view::figure::{figure_choices, figure_svg_captioned};
 
 #[wasm_bindgen(js_class = Session)]
 impl WebSession {
     /// The panel `panel` ("arm", "errors", "e1", "poles", "zplane", "rho", "map-off", "maps", …) as
-    /// a standalone SVG figure: light, or in the dark scheme if `dark`. Throws for an unknown
-    /// panel, maps still being computed, or (student mode) a figure that gives the answer away.
+    /// a standalone SVG figure captioned with `state` (the whole state string, the classroom's):
+    /// light, or in the dark scheme if `dark`. Throws for an unknown panel, maps still being
+    /// computed, or (student mode) a figure that gives the answer away.
     #[wasm_bindgen(js_name = figureSvg)]
-    pub fn figure_svg(&self, panel: &str, dark: bool) -> Result<String, JsError> {
-        figure_svg(self.session(), panel, dark).map(|f| f.svg).map_err(js_error)
+    pub fn figure_svg(&self, panel: &str, dark: bool, state: &str) -> Result<String, JsError> {
+        figure_svg_captioned(self.session(), state, panel, dark).map(|f| f.svg).map_err(js_error)
     }
 
     /// The figures of the panels shown now: `[{id, label}]`.

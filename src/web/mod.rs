@@ -1,11 +1,13 @@
-//! The browser binding (wasm32 only): a [`Session`](session::WebSession) handle that JavaScript
-//! drives and the wgpu [`Renderer`](renderer::Renderer) that draws it. This layer converts and
+//! The browser binding (wasm32 only): one raw binding per core type — the physics
+//! [`Session`](session::WebSession) and the [`Classroom`](classroom::WebClassroom) around it, which
+//! the page's typed façade (`www/js/flexarm.js`) composes — and the wgpu
+//! [`Renderer`](renderer::Renderer) that draws the session. This layer converts and
 //! forwards — Rust values to JS objects, core errors to JS `Error`s — and decides nothing.
 //!
 //! A Rust panic is reported to the page through `window.flexarmPanic(message)` if the page
 //! defines it.
 
-mod answers;
+pub mod classroom;
 mod data;
 mod figure;
 mod gpu;
@@ -16,6 +18,7 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 pub use renderer::Renderer;
+pub use classroom::WebClassroom;
 pub use session::{arms, lesson_source_path, presets, schema, spectral_radius, WebSession};
 
 #[wasm_bindgen(start)]

@@ -108,7 +108,9 @@ struct MetricsView {
     max_torque: [f64; 2],
 }
 
-/// What a session has open, for the page: create it from the URL's query with `new Session(q)`.
+/// The physics session the page has open — runs, analyses, maps — for the page's façade
+/// (`www/js/flexarm.js`), which composes it with the [`super::classroom::WebClassroom`]: create it
+/// from the URL's query with `new Session(q)`.
 #[wasm_bindgen(js_name = Session)]
 pub struct WebSession {
     inner: Session,
@@ -134,21 +136,11 @@ impl WebSession {
 #[wasm_bindgen(js_class = Session)]
 impl WebSession {
     /// The page's session for a URL query (`?delta=0.01&pf=off`, or ""): the page's start with the
-    /// query over it, and the lesson's text the page fetched (`lessons/paper.md`; without it the
-    /// lesson cannot open). Values it could not take are in `notices()`.
-    ///
-    /// With `lesson_src=PATH` in the query the page fetches that file too and passes its path and
-    /// bytes: a teacher's lesson, used instead of the built-in one if it reads and passes the
-    /// checks (else a notice says why).
+    /// query over it. Values it could not take are in `notices()`; the lesson and the moment the
+    /// query may name are the classroom's (`new Classroom(session, q, …)`).
     #[wasm_bindgen(constructor)]
-    pub fn new(
-        query: &str,
-        lesson_text: Option<String>,
-        teacher_path: Option<String>,
-        teacher_bytes: Option<Vec<u8>>,
-    ) -> WebSession {
-        let teacher = teacher_path.zip(teacher_bytes);
-        let (inner, notices) = Session::open_with_lessons(query, lesson_text, teacher);
+    pub fn new(query: &str) -> WebSession {
+        let (inner, notices) = Session::open(query);
         WebSession { inner, notices }
     }
 
@@ -250,10 +242,8 @@ impl WebSession {
     /// spectral_radius, growth_rate, announce, readouts: {time, error, max_slew, max_after, torque,
     /// growth, a4}, settings}], note, preset, maps: {percent, done, text, points},
     /// windows: {text, windows, bands} | null, ghost, timeline: {live, time, start, end, text},
-    /// lesson: {lesson_title, steps, index, title, text, terms, task, done, question: {prompt,
-    /// choices, chosen, correct} | null, answer, can_back, can_next} | null}`. Brings the stable
-    /// windows and the lesson's goal up to date first (a few ms after a change of α or the
-    /// feedback), so call it a few times a second.
+    /// figure, cycle, story}`. Brings the stable windows up to date first (a few ms after a change
+    /// of α or the feedback), so call it a few times a second.
     pub fn status(&mut self) -> Result<JsValue, JsError> {
         self.inner.refresh();
         to_js(&self.inner.status())
@@ -287,53 +277,6 @@ impl WebSession {
         self.inner.continue_from_here().map_err(js_error)
     }
 
-    // -------------------------------------------------------------------------- the lesson
-
-    /// Replaces the lesson by a file the user opened or dropped (its name and bytes), checked as
-    /// the built-in lesson is, and opens it; throws with the line and the mistake, and the lesson
-    /// stays as it was.
-    #[wasm_bindgen(js_name = loadLesson)]
-    pub fn load_lesson(&mut self, name: &str, bytes: &[u8]) -> Result<(), JsError> {
-        let origin = crate::session::lesson::LessonOrigin::File(name.to_string());
-        self.inner.load_lesson(origin, bytes).map_err(|e| JsError::new(&format!("{name}: {e}")))
-    }
-
-    /// Opens the guided lesson at `step` (0-based).
-    #[wasm_bindgen(js_name = lessonOpen)]
-    pub fn lesson_open(&mut self, step: usize) -> Result<(), JsError> {
-        self.inner.lesson_open(step).map_err(js_error)
-    }
-
-    /// The next step of the lesson.
-    #[wasm_bindgen(js_name = lessonNext)]
-    pub fn lesson_next(&mut self) -> Result<(), JsError> {
-        self.inner.lesson_next().map_err(js_error)
-    }
-
-    /// The previous step, as it was left.
-    #[wasm_bindgen(js_name = lessonBack)]
-    pub fn lesson_back(&mut self) -> Result<(), JsError> {
-        self.inner.lesson_back().map_err(js_error)
-    }
-
-    /// Answers the step's question (0-based choice).
-    #[wasm_bindgen(js_name = lessonAnswer)]
-    pub fn lesson_answer(&mut self, choice: usize) -> Result<(), JsError> {
-        self.inner.lesson_answer(choice).map_err(js_error)
-    }
-
-    /// Shows the step's result without doing the task.
-    #[wasm_bindgen(js_name = lessonReveal)]
-    pub fn lesson_reveal(&mut self) -> Result<(), JsError> {
-        self.inner.lesson_reveal().map_err(js_error)
-    }
-
-    /// Closes the lesson; the settings stay.
-    #[wasm_bindgen(js_name = lessonLeave)]
-    pub fn lesson_leave(&mut self) {
-        self.inner.lesson_leave();
-    }
-
     /// Runs A at a sampling period picked on ρ(δ).
     #[wasm_bindgen(js_name = pickDelta)]
     pub fn pick_delta(&mut self, delta: f64) -> Result<(), JsError> {
@@ -353,32 +296,6 @@ impl WebSession {
         self.inner.python_script(template).map_err(js_error)
     }
 
-    /// An embed of the page at `page_url` as the embed builder's `choices` say (a query:
-    /// `views=zplane,rho&width=760&height=480&paused=1&t=3&strip=delta,reset&lesson=4`):
-    /// `{html, src, width, height, title}`; throws naming a bad choice.
-    pub fn embed(&self, page_url: &str, choices: &str) -> Result<JsValue, JsError> {
-        to_js(&self.inner.embed(page_url, choices).map_err(js_error)?)
-    }
-
-    /// The embed builder's choices to start from (what is on screen), as a query.
-    #[wasm_bindgen(js_name = embedDefaults)]
-    pub fn embed_defaults(&self) -> String {
-        self.inner.embed_defaults()
-    }
-
-    /// The state string (the URL query) of everything set.
-    /// True once after a link or a lesson step asked to start paused (`paused=1`).
-    #[wasm_bindgen(js_name = takeStartPaused)]
-    pub fn take_start_paused(&mut self) -> bool {
-        self.inner.take_start_paused()
-    }
-
-    /// The state string with the moment shown (`…&paused=1&t=3.25`): "Copy link to this moment".
-    #[wasm_bindgen(js_name = momentQuery)]
-    pub fn moment_query(&self) -> String {
-        self.inner.moment_query()
-    }
-
     /// The z-plane's view: "whole" (the whole unit circle) or "pair" (the default, around the
     /// flexible pair); zooming and panning are the renderer's (`zoomZ`, `panZ`).
     #[wasm_bindgen(js_name = zView)]
@@ -391,6 +308,7 @@ impl WebSession {
         self.inner.set_z_view([0.0, 0.0], half).map_err(js_error)
     }
 
+    /// The settings' state string (the classroom's `stateString` adds the lesson step).
     #[wasm_bindgen(js_name = stateString)]
     pub fn state_string(&self) -> String {
         self.inner.state_string()

@@ -1,13 +1,23 @@
 //! Helpers shared by the session-level tests.
 #![allow(dead_code)]
 
+pub mod visit;
+
 use flexarm::session::Session;
+pub use visit::Visit;
 
 /// The page's session for `query`, which must read without notices.
 pub fn session(query: &str) -> Session {
     let (s, notices) = Session::open(query);
     assert!(notices.is_empty(), "{notices:?}");
     s
+}
+
+/// The page (session and classroom) for `query`, which must read without notices.
+pub fn visit(query: &str) -> Visit {
+    let (v, notices) = Visit::open(query);
+    assert!(notices.is_empty(), "{notices:?}");
+    v
 }
 
 /// Plays run A for `seconds` of simulated time (or until it diverges), as the page's frames do.

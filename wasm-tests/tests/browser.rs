@@ -2,7 +2,7 @@
 //! handle the page uses.
 //! Run: `wasm-pack test --headless --chrome wasm-tests` (scripts/test.sh does).
 
-use flexarm::web::{spectral_radius, WebSession};
+use flexarm::web::{spectral_radius, WebClassroom, WebSession};
 use js_sys::Reflect;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
@@ -31,7 +31,7 @@ fn pair(obj: &JsValue, key: &str) -> [f64; 2] {
 
 /// Runs `seconds` of simulated time in browser-sized frames and returns run A's metrics.
 fn run(delta: f64, pf: &str, seconds: f64) -> JsValue {
-    let mut session = WebSession::new(&state(delta, 2.0, pf), None, None, None);
+    let mut session = WebSession::new(&state(delta, 2.0, pf));
     while session.time() < seconds - 1e-9 && !session.is_finished() {
         session.advance(0.1).map_err(JsValue::from).unwrap();
     }
@@ -62,7 +62,7 @@ fn larger_delta_is_stable_without_feedback() {
 /// restarts from rest when the arm changes.
 #[wasm_bindgen_test]
 fn a_damped_motor_is_stable_without_feedback() {
-    let mut session = WebSession::new(&format!("arm=damped&{}", state(0.01, 2.0, "off")), None, None, None);
+    let mut session = WebSession::new(&format!("arm=damped&{}", state(0.01, 2.0, "off")));
     assert!(session.state_string().contains("bv1=15"), "{}", session.state_string());
     while session.time() < 6.0 - 1e-9 && !session.is_finished() {
         session.advance(0.1).map_err(JsValue::from).unwrap();
@@ -94,7 +94,7 @@ fn spectral_radius_matches_the_native_core() {
             "δ = {delta}, α = {alpha}, {pf}: wasm {wasm} vs native {native}"
         );
         // The session's analysis reports the same ρ.
-        let session = WebSession::new(&state(delta, alpha, pf), None, None, None);
+        let session = WebSession::new(&state(delta, alpha, pf));
         let report = session.analysis(0).map_err(JsValue::from).unwrap();
         assert!((number(&report, "spectral_radius") - native).abs() <= 1e-9 * native);
     }
@@ -110,7 +110,7 @@ fn error_message(e: wasm_bindgen::JsError) -> String {
 /// nothing.
 #[wasm_bindgen_test]
 fn bad_settings_throw_a_readable_error() {
-    let mut session = WebSession::new(&state(0.01, 2.0, "paper"), None, None, None);
+    let mut session = WebSession::new(&state(0.01, 2.0, "paper"));
     let msg = error_message(session.set("delta", "-0.01").err().expect("δ < 0 is rejected"));
     assert!(msg.contains("sampling_period") && msg.contains("from 1e-5 s to 10 s"), "{msg}");
     let msg = error_message(session.set("pf", "maybe").err().expect("unknown PF is rejected"));
@@ -130,7 +130,7 @@ fn bad_settings_throw_a_readable_error() {
     assert!(session.trace(0, "nope").is_err());
     assert!(session.trace(1, "t").is_err(), "no run B without a comparison");
     // A bad URL value becomes a notice, not an exception.
-    let s = WebSession::new("delta=abc&pf=maybe", None, None, None);
+    let s = WebSession::new("delta=abc&pf=maybe");
     let notices = s.notices().map_err(JsValue::from).unwrap();
     assert_eq!(js_sys::Array::from(&notices).length(), 2);
 }
@@ -138,7 +138,7 @@ fn bad_settings_throw_a_readable_error() {
 /// Traces come out as typed arrays of equal length; the CSV is headed by the state string.
 #[wasm_bindgen_test]
 fn traces_are_typed_arrays() {
-    let mut session = WebSession::new("", None, None, None);
+    let mut session = WebSession::new("");
     session.advance(0.2).map_err(JsValue::from).unwrap();
     let t = session.trace(0, "t").map_err(JsValue::from).unwrap();
     let e1 = session.trace(0, "e1").map_err(JsValue::from).unwrap();
@@ -157,7 +157,7 @@ fn traces_are_typed_arrays() {
 /// its ρ the one the analysis reports.
 #[wasm_bindgen_test]
 fn the_data_behind_the_figures_is_a_long_table() {
-    let session = WebSession::new(&state(0.01, 2.0, "off"), None, None, None);
+    let session = WebSession::new(&state(0.01, 2.0, "off"));
     let csv = session.data_csv().map_err(JsValue::from).unwrap();
     assert!(csv.lines().any(|l| l.starts_with("# flexarm state: delta=0.01&alpha=2&pf=off")), "{}", &csv[..200]);
     assert!(csv.lines().any(|l| l == "quantity,i,j,row,column,value,unit"));
@@ -176,7 +176,7 @@ fn the_data_behind_the_figures_is_a_long_table() {
 #[wasm_bindgen_test]
 fn stability_map_in_chunks() {
     // The full view shows (and computes) the maps; the intro does not.
-    let mut session = WebSession::new(&format!("{}&mode=full", state(0.01, 2.0, "off")), None, None, None);
+    let mut session = WebSession::new(&format!("{}&mode=full", state(0.01, 2.0, "off")));
     let deltas = session.map_deltas().to_vec();
     let alphas = session.map_alphas().to_vec();
     let mut steps = 0;
@@ -210,9 +210,12 @@ fn stability_map_in_chunks() {
 fn a_teachers_lesson_and_the_python_script_in_the_page() {
     let homework = include_bytes!("../../www/lessons/windows.md").to_vec();
     let query = "lesson_src=lessons/windows.md&lesson=2";
-    let session = WebSession::new(query, None, Some("lessons/windows.md".into()), Some(homework));
+    let mut session = WebSession::new(query);
+    let classroom = WebClassroom::new(&mut session, query, None, Some("lessons/windows.md".into()), Some(homework));
     assert_eq!(js_sys::Array::from(&session.notices().map_err(JsValue::from).unwrap()).length(), 0);
-    assert!(session.state_string().contains("lesson_src=lessons%2Fwindows.md&lesson=2"), "{}", session.state_string());
+    assert_eq!(js_sys::Array::from(&classroom.notices().map_err(JsValue::from).unwrap()).length(), 0);
+    let state = classroom.state_string(&session);
+    assert!(state.contains("lesson_src=lessons%2Fwindows.md&lesson=2"), "{state}");
     assert_eq!(
         flexarm::web::lesson_source_path("lessons/windows.md").map_err(JsValue::from).unwrap(),
         "lessons/windows.md"
@@ -231,14 +234,17 @@ fn a_teachers_lesson_and_the_python_script_in_the_page() {
 fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
     let homework = include_bytes!("../../www/lessons/windows.md").to_vec();
     let query = "lesson_src=lessons/windows.md&lesson=1&answers=hidden";
-    let mut session = WebSession::new(query, None, Some("lessons/windows.md".into()), Some(homework.clone()));
+    let teacher = || (Some("lessons/windows.md".to_string()), Some(homework.clone()));
+    let mut session = WebSession::new(query);
+    let (path, bytes) = teacher();
+    let mut classroom = WebClassroom::new(&mut session, query, None, path, bytes);
     let status = session.status().map_err(JsValue::from).unwrap();
     let runs = js_sys::Array::from(&get(&status, "runs"));
     assert_eq!(verdict(&runs.get(0)), "hidden");
-    assert!(!get(&status, "hidden").is_null());
-    session.set_wall_clock(1_795_669_380_000.0);
-    session.lesson_answer(2).map_err(JsValue::from).unwrap();
-    let csv = session.answers_csv();
+    assert!(!get(&classroom.status(&session).map_err(JsValue::from).unwrap(), "hidden").is_null());
+    classroom.set_wall_clock(1_795_669_380_000.0);
+    classroom.lesson_answer(&mut session, 2).map_err(JsValue::from).unwrap();
+    let csv = classroom.answers_csv();
     assert!(
         csv.contains(",1,Where does the controller alone work?,prediction,3,") && csv.contains("2026-11-26T05:03:00Z"),
         "{csv}"
@@ -246,14 +252,17 @@ fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
     let status = session.status().map_err(JsValue::from).unwrap();
     assert_ne!(verdict(&js_sys::Array::from(&get(&status, "runs")).get(0)), "hidden", "answered: shown");
 
-    let mut reloaded = WebSession::new(query, None, Some("lessons/windows.md".into()), Some(homework));
-    reloaded.restore_answers(&csv).map_err(JsValue::from).unwrap();
+    let mut again = WebSession::new(query);
+    let (path, bytes) = teacher();
+    let mut reloaded = WebClassroom::new(&mut again, query, None, path, bytes);
+    reloaded.restore_answers(&mut again, &csv).map_err(JsValue::from).unwrap();
     assert_eq!(reloaded.answers_csv(), csv);
-    let mut other = WebSession::new("lesson=1", Some(flexarm_lesson()), None, None);
-    let e = other.restore_answers(&csv).map_err(error_message).unwrap_err();
+    let mut other_session = WebSession::new("lesson=1");
+    let mut other = WebClassroom::new(&mut other_session, "lesson=1", Some(flexarm_lesson()), None, None);
+    let e = other.restore_answers(&mut other_session, &csv).map_err(error_message).unwrap_err();
     assert!(e.contains("another text of the lesson"), "{e}");
-    reloaded.show_answers();
-    let status = reloaded.status().map_err(JsValue::from).unwrap();
+    reloaded.show_answers(&mut again);
+    let status = reloaded.status(&again).map_err(JsValue::from).unwrap();
     assert!(get(&status, "hidden").is_null());
 }
 

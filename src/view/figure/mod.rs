@@ -188,6 +188,12 @@ pub struct Figure {
 
 /// The figure `panel` of the session as it is now: light, or in the dark scheme if `dark`.
 pub fn figure_svg(session: &Session, panel: &str, dark: bool) -> Result<Figure, Error> {
+    figure_svg_captioned(session, &session.state_string(), panel, dark)
+}
+
+/// [`figure_svg`] captioned with the state string `state` (the session's with the lesson step,
+/// where the classroom has one open).
+pub fn figure_svg_captioned(session: &Session, state: &str, panel: &str, dark: bool) -> Result<Figure, Error> {
     let panel = FigurePanel::parse(panel)?;
     if panel.gives_answer_away() && session.answers_hidden() {
         return Err(Error::NotReady(
@@ -229,16 +235,15 @@ pub fn figure_svg(session: &Session, panel: &str, dark: bool) -> Result<Figure, 
     }
     let key_top = panels_bottom + 8.0;
     let key_height = key(None, &groups, MARGIN, key_top, inner);
-    let state = session.state_string();
     let status = session.status();
     let t = session.run(0).map_or(0.0, |r| r.closed_loop().time());
     let head = format!("flexarm at t = {} s — {}", crate::plot::format::sig_trim(t, 4), status.showing);
-    let caption = Caption::new(&head, &state, inner);
+    let caption = Caption::new(&head, state, inner);
     let caption_top = key_top + key_height + 4.0;
     let height = (caption_top + caption.height() + MARGIN).ceil();
 
     let background = palette::BACKGROUND;
-    let mut doc = Doc::new(width, height, &title, &state, background, dark);
+    let mut doc = Doc::new(width, height, &title, state, background, dark);
     for (k, line) in title_lines.iter().enumerate() {
         let y = MARGIN + 16.0 + k as f64 * 21.0;
         doc.text(width / 2.0, y, 16.0, "middle", 700, INK, "figure-title", line);

@@ -1,125 +1,19 @@
-//! Walking the guided lesson ([`crate::lesson`]): entering a step sets the simulator up from its
-//! state string, an answer is remembered and may change the settings ("then"), a goal is checked
-//! against the session, "back" restores the previous step as the student left it, and leaving
-//! keeps everything as it is for exploring.
+//! Walking the guided lesson: entering a step sets the session up from its state string, an
+//! answer is remembered and may change the settings ("then"), a goal is checked against the
+//! session, "back" restores the previous step as the student left it, and leaving keeps
+//! everything as it is for exploring; a teacher's lesson replaces the built-in one; the answers'
+//! record is given back after a reload or cleared.
 
-use serde::Serialize;
-
-use super::answers::{self, AnswersStatus, Entry, Record};
-use super::query::split_query;
-use super::settings::{Notice, Settings, Source};
-use super::Session;
+use super::answers::{Entry, Record};
+use super::progress::{checked, LessonOrigin, LessonProgress, LessonStatus, QuestionStatus};
+use super::room::Classroom;
 use crate::error::Error;
-use crate::lesson::{self, Goal, Lesson, Term};
+use crate::lesson::{self, Goal, Lesson};
 use crate::schema;
+use crate::session::query::{encode, split_query};
+use crate::session::{Notice, Session, Source};
 
-/// Where the student is in the lesson and what they did.
-#[derive(Clone, Debug)]
-pub struct LessonProgress {
-    lesson: Lesson,
-    /// The step shown (0-based).
-    step: usize,
-    /// The lesson panel is open (false after leaving; the progress stays for coming back).
-    active: bool,
-    /// Each step's chosen answer.
-    answers: Vec<Option<usize>>,
-    /// Each step's goal met (or revealed on request).
-    done: Vec<bool>,
-    /// The settings each step had when the student left it.
-    left: Vec<Option<Settings>>,
-    /// What the student did, to hand in.
-    record: Record,
-    /// Each step where the student showed the answers student mode hid ("Show them").
-    lifted: Vec<bool>,
-}
-
-/// The question of the step shown, as the page shows it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct QuestionStatus {
-    pub prompt: String,
-    pub choices: Vec<String>,
-    /// The student's answer, remembered.
-    pub chosen: Option<usize>,
-    /// The right answer, once the student has chosen.
-    pub correct: Option<usize>,
-}
-
-/// The step shown, as the page shows it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct LessonStatus {
-    pub lesson_title: String,
-    /// Where the lesson comes from ("" for the built-in one, else the teacher's file).
-    pub source: String,
-    /// Every step's title (for the list of steps).
-    pub steps: Vec<String>,
-    /// 0-based.
-    pub index: usize,
-    pub title: String,
-    pub text: Vec<String>,
-    pub terms: Vec<Term>,
-    pub task: Option<String>,
-    /// The task is done.
-    pub done: bool,
-    pub question: Option<QuestionStatus>,
-    /// The answer and why: shown once answered or done (at once for a step with neither).
-    pub answer: Vec<String>,
-    pub can_back: bool,
-    pub can_next: bool,
-    /// The answers so far, to hand in (the summary the last step shows).
-    pub record: AnswersStatus,
-}
-
-impl LessonProgress {
-    fn new(lesson: Lesson, text: &str) -> Self {
-        let n = lesson.steps.len();
-        let record = Record::new(&lesson, answers::text_hash(text));
-        Self {
-            lesson,
-            step: 0,
-            active: false,
-            answers: vec![None; n],
-            done: vec![false; n],
-            left: vec![None; n],
-            record,
-            lifted: vec![false; n],
-        }
-    }
-
-    /// The lesson.
-    pub fn lesson(&self) -> &Lesson {
-        &self.lesson
-    }
-
-    /// The step shown (0-based) while the lesson is open.
-    pub fn open_step(&self) -> Option<usize> {
-        self.active.then_some(self.step)
-    }
-
-    /// In student mode, the step shown lets the answers be seen: its teacher says so
-    /// (`answers: shown`), or it asks something and the student has answered it (and met its goal).
-    pub(super) fn answers_revealed_here(&self) -> bool {
-        let s = &self.lesson.steps[self.step];
-        self.active
-            && (s.answers_shown
-                || self.lifted[self.step]
-                || ((s.question.is_some() || s.goal.is_some()) && self.revealed(self.step)))
-    }
-
-    /// The student showed the hidden answers on step `step` ("Show them").
-    pub(super) fn lift(&mut self, step: usize) {
-        self.lifted[step] = true;
-    }
-
-    /// The answer of step `i` may be shown.
-    fn revealed(&self, i: usize) -> bool {
-        let s = &self.lesson.steps[i];
-        let answered = s.question.is_none() || self.answers[i].is_some();
-        let done = s.goal.is_none() || self.done[i];
-        answered && done
-    }
-}
-
-impl Session {
+impl Classroom {
     /// The lesson's progress (None until the lesson is first opened).
     pub fn lesson(&self) -> Option<&LessonProgress> {
         self.lesson.as_ref()
@@ -131,7 +25,7 @@ impl Session {
     }
 
     /// Opens the lesson at `step` (0-based; the last step if beyond): the step's settings, run from rest.
-    pub fn lesson_open(&mut self, step: usize) -> Result<(), Error> {
+    pub fn lesson_open(&mut self, session: &mut Session, step: usize) -> Result<(), Error> {
         if self.lesson.is_none() {
             let text: &str = match &self.lesson_text {
                 Some(text) => text,
@@ -147,34 +41,39 @@ impl Session {
         let progress = self.lesson.as_mut().expect("just made");
         progress.active = true;
         let step = step.min(progress.lesson.steps.len() - 1);
-        self.enter(step)?;
-        self.note = "The lesson uses the full view; leave it any time to explore from where it is.".into();
+        self.enter(session, step)?;
+        session.set_note("The lesson uses the full view; leave it any time to explore from where it is.");
+        self.sync(session);
         Ok(())
     }
 
     /// Goes on to the next step, remembering how this one was left.
-    pub fn lesson_next(&mut self) -> Result<(), Error> {
+    pub fn lesson_next(&mut self, session: &mut Session) -> Result<(), Error> {
         let (step, count) = self.lesson_position()?;
         if step + 1 >= count {
             return Err(lesson_error("this is the last step"));
         }
-        self.remember_step(step);
-        self.enter(step + 1)
+        self.remember_step(session, step);
+        self.enter(session, step + 1)?;
+        self.sync(session);
+        Ok(())
     }
 
     /// Goes back to the previous step exactly as the student left it.
-    pub fn lesson_back(&mut self) -> Result<(), Error> {
+    pub fn lesson_back(&mut self, session: &mut Session) -> Result<(), Error> {
         let (step, _) = self.lesson_position()?;
         if step == 0 {
             return Err(lesson_error("this is the first step"));
         }
-        self.remember_step(step);
-        self.enter(step - 1)
+        self.remember_step(session, step);
+        self.enter(session, step - 1)?;
+        self.sync(session);
+        Ok(())
     }
 
     /// Answers the step's question with choice `choice` (0-based): the first answer is remembered
     /// (later ones change nothing) and the step's "then" settings, if any, are applied (from rest).
-    pub fn lesson_answer(&mut self, choice: usize) -> Result<(), Error> {
+    pub fn lesson_answer(&mut self, session: &mut Session, choice: usize) -> Result<(), Error> {
         let (step, _) = self.lesson_position()?;
         let progress = self.lesson.as_mut().expect("positioned");
         let s = &progress.lesson.steps[step];
@@ -198,53 +97,55 @@ impl Session {
         };
         let then = s.then.clone();
         progress.answers[step] = Some(choice);
-        self.record(entry);
-        match then {
-            Some(state) => self.apply_lesson_state(&state),
-            None => Ok(()),
+        self.record(session, entry);
+        if let Some(state) = then {
+            self.apply_lesson_state(session, &state)?;
         }
+        self.sync(session);
+        Ok(())
     }
 
     /// Shows a task's result without the student having done it ("show me"): the step's "show"
     /// settings, if any, are applied over the current ones, so the result the answer describes is
     /// on screen.
-    pub fn lesson_reveal(&mut self) -> Result<(), Error> {
+    pub fn lesson_reveal(&mut self, session: &mut Session) -> Result<(), Error> {
         let (step, _) = self.lesson_position()?;
         let progress = self.lesson.as_mut().expect("positioned");
         if !progress.done[step] && progress.lesson.steps[step].goal.is_some() {
             let entry = task_entry(&progress.lesson, step, "shown");
-            self.record(entry);
+            self.record(session, entry);
         }
         let progress = self.lesson.as_mut().expect("positioned");
         progress.done[step] = true;
         if let Some(show) = progress.lesson.steps[step].show.clone() {
-            let mut next = self.settings;
-            next.read(&show, Source::Lesson)?;
-            self.apply(next, false, "")?;
+            let next = Self::read_over(session, &show)?;
+            session.apply_settings(next, false, "")?;
         }
+        self.sync(session);
         Ok(())
     }
 
     /// Closes the lesson panel; the settings stay as they are, to explore from.
-    pub fn lesson_leave(&mut self) {
+    pub fn lesson_leave(&mut self, session: &mut Session) {
         if let Some(l) = self.lesson.as_mut() {
             l.active = false;
         }
+        self.sync(session);
     }
 
     /// Marks the step's goal met if it is (called with the other periodic work).
-    pub(super) fn check_lesson_goal(&mut self) {
+    pub(super) fn check_lesson_goal(&mut self, session: &Session) {
         let Some(l) = self.lesson.as_ref().filter(|l| l.active) else { return };
         let step = l.step;
         if l.done[step] {
             return;
         }
-        let met = l.lesson.steps[step].goal.as_ref().is_some_and(|g| self.goal_met(g));
+        let met = l.lesson.steps[step].goal.as_ref().is_some_and(|g| goal_met(session, g));
         if met {
             let l = self.lesson.as_mut().expect("active");
             l.done[step] = true;
             let entry = task_entry(&l.lesson, step, "done");
-            self.record(entry);
+            self.record(session, entry);
         }
     }
 
@@ -291,7 +192,7 @@ impl Session {
         match &self.lesson_origin {
             LessonOrigin::BuiltIn => Some(format!("lesson={}", l.step + 1)),
             LessonOrigin::Path(path) => {
-                Some(format!("lesson_src={}&lesson={}", super::query::encode(path), l.step + 1))
+                Some(format!("lesson_src={}&lesson={}", encode(path), l.step + 1))
             }
             // A file from the user's disk: a link cannot bring it back.
             LessonOrigin::File(_) => None,
@@ -301,7 +202,7 @@ impl Session {
     /// Opens the lesson a URL names (`lesson=3`), then reads the URL's other settings over the
     /// step's: a link written while in the lesson comes back as it was. A step past the last
     /// opens the last, with a notice.
-    pub(super) fn open_lesson_from(&mut self, query: &str) -> Result<Option<Notice>, Error> {
+    pub(super) fn open_lesson_from(&mut self, session: &mut Session, query: &str) -> Result<Option<Notice>, Error> {
         let pairs = split_query(query);
         let named = pairs.iter().rev().find(|(k, _)| k == "lesson").map(|(_, n)| n.clone());
         // A teacher's lesson named by the link opens at once, at its first step unless it says.
@@ -318,7 +219,7 @@ impl Session {
                 expected: "a step number from 1".into(),
             })
         })?;
-        self.lesson_open(step - 1)?;
+        self.lesson_open(session, step - 1)?;
         let (opened, count) = self.lesson_position()?;
         let notice = (opened + 1 < step).then(|| Notice {
             key: "lesson".into(),
@@ -329,12 +230,12 @@ impl Session {
         let rest: Vec<String> = pairs
             .iter()
             .filter(|(k, _)| k != "lesson" && k != "lesson_src")
-            .map(|(k, v)| format!("{}={}", super::query::encode(k), super::query::encode(v)))
+            .map(|(k, v)| format!("{}={}", encode(k), encode(v)))
             .collect();
         if !rest.is_empty() {
-            let mut next = self.settings;
+            let mut next = *session.settings();
             next.read(&rest.join("&"), Source::Page)?;
-            self.apply(next, true, "")?;
+            session.apply_settings(next, true, "")?;
         }
         Ok(notice)
     }
@@ -344,129 +245,72 @@ impl Session {
         Ok((l.step, l.lesson.steps.len()))
     }
 
-    fn remember_step(&mut self, step: usize) {
-        let settings = self.settings;
+    fn remember_step(&mut self, session: &Session, step: usize) {
+        let settings = *session.settings();
         if let Some(l) = self.lesson.as_mut() {
             l.left[step] = Some(settings);
         }
     }
 
     /// Shows step `step`: as the student left it, or from its state string.
-    fn enter(&mut self, step: usize) -> Result<(), Error> {
+    fn enter(&mut self, session: &mut Session, step: usize) -> Result<(), Error> {
         let l = self.lesson.as_mut().expect("the lesson is open");
         l.step = step;
         let left = l.left[step];
         let state = l.lesson.steps[step].state.clone();
         match left {
-            Some(settings) => self.apply(settings, true, "")?,
-            None => self.apply_lesson_state(&state)?,
+            Some(settings) => session.apply_settings(settings, true, "")?,
+            None => self.apply_lesson_state(session, &state)?,
         }
         // A new step starts clean: the faint ghost compares within a step (before and after its
         // answer), not with whatever ran before.
-        self.ghost = None;
+        session.forget_ghost();
         Ok(())
     }
 
     /// A step's state string over the page's start, in the full view, run from rest.
-    fn apply_lesson_state(&mut self, state: &str) -> Result<(), Error> {
-        let mut next = Settings::page_start();
-        next.view.full = true;
-        next.speed = self.settings.speed;
-        // Student mode set by the teacher's link stays on through the steps.
-        next.view.answers_hidden = self.settings.view.answers_hidden;
+    fn apply_lesson_state(&mut self, session: &mut Session, state: &str) -> Result<(), Error> {
+        let mut next = Self::step_start(session);
         next.read(state, Source::Lesson)?;
-        next.view.tab = super::named::step_tab(state, &next.view, self.settings.view.tab);
-        self.apply(next, true, "")?;
+        next.view.tab = crate::session::named::step_tab(state, &next.view, session.settings().view.tab);
+        session.apply_settings(next, true, "")?;
         // A step may start at a moment (`t=2&paused=1`).
-        self.go_to_start()
+        self.go_to_start(session)
     }
+}
 
-    fn goal_met(&self, goal: &Goal) -> bool {
-        let a = self.run(0).expect("run A");
-        if goal.time.is_some_and(|t| a.closed_loop().time() < t - 1e-9) {
+/// The step's goal is met by the session's run A and settings.
+fn goal_met(session: &Session, goal: &Goal) -> bool {
+    let a = session.run(0).expect("run A");
+    if goal.time.is_some_and(|t| a.closed_loop().time() < t - 1e-9) {
+        return false;
+    }
+    if let Some(v) = &goal.verdict {
+        if crate::session::run_status("A", a).verdict != v {
             return false;
         }
-        if let Some(v) = &goal.verdict {
-            if super::run_status("A", a).verdict != v {
-                return false;
-            }
-        }
-        goal.settings.iter().all(|(key, text)| {
-            let Some(p) = schema::param(key) else { return false };
-            p.parse(text, false).ok().is_some_and(|v| self.settings.get(key) == Some(v))
-        })
     }
+    goal.settings.iter().all(|(key, text)| {
+        let Some(p) = schema::param(key) else { return false };
+        p.parse(text, false).ok().is_some_and(|v| session.settings().get(key) == Some(v))
+    })
 }
 
-/// Checks a lesson against the settings it uses: every step's `state:`, `then:` and `show:` reads
-/// as a state string, every goal names settings with values they can take. The built-in lesson and
-/// a teacher's file pass the same checks; a mistake names its step's line.
-pub fn validate(lesson: &Lesson) -> Result<(), Error> {
-    for (i, step) in lesson.steps.iter().enumerate() {
-        let at = |what: &str, e: &dyn std::fmt::Display| Error::Lesson {
-            line: step.line,
-            message: format!("step {} ('{}'): {what}: {e}", i + 1, step.title),
-        };
-        let mut settings = Settings::page_start();
-        settings.read(&step.state, Source::Lesson).map_err(|e| at("state", &e))?;
-        for (what, text) in [("then", &step.then), ("show", &step.show)] {
-            if let Some(text) = text {
-                let mut next = settings;
-                next.read(text, Source::Lesson).map_err(|e| at(what, &e))?;
-            }
-        }
-        for (key, value) in step.goal.iter().flat_map(|g| g.settings.iter()) {
-            let p = schema::param(key).ok_or_else(|| {
-                at(
-                    "goal",
-                    &format!("'{key}' is not a setting (a goal takes verdict=, time= and settings such as pf=off)"),
-                )
-            })?;
-            // Within the page's control: what a student can set.
-            p.parse(value, true).map_err(|e| at("goal", &format!("{key}={value} can never be met: {e}")))?;
-        }
-    }
-    Ok(())
-}
-
-/// A teacher's lesson file read, parsed and checked as the built-in lesson is: its text and the
-/// lesson, or the first mistake.
-pub(super) fn checked(bytes: &[u8]) -> Result<(String, Lesson), Error> {
-    let text = lesson::read_file(bytes)?;
-    let parsed = lesson::parse(&text)?;
-    validate(&parsed)?;
-    Ok((text, parsed))
-}
-
-/// Where the lesson shown comes from.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub enum LessonOrigin {
-    /// `lessons/paper.md`, beside the page (or built into the native build).
-    #[default]
-    BuiltIn,
-    /// A teacher's file at this path of the page's site (`lesson_src=`): a link can name it.
-    Path(String),
-    /// A file the user opened or dropped on the page: no link can name it.
-    File(String),
-}
-
-impl Session {
+impl Classroom {
     /// Replaces the lesson by a teacher's: its file's bytes, read, parsed and checked as the
     /// built-in lesson is, then opened at its first step. A mistake leaves the lesson as it was and
     /// says which line and what is wrong.
-    pub fn load_lesson(&mut self, origin: LessonOrigin, bytes: &[u8]) -> Result<(), Error> {
+    pub fn load_lesson(&mut self, session: &mut Session, origin: LessonOrigin, bytes: &[u8]) -> Result<(), Error> {
         let (text, parsed) = checked(bytes)?;
         self.lesson_origin = origin;
         self.lesson = Some(LessonProgress::new(parsed, &text));
         self.lesson_text = Some(text);
-        self.lesson_open(0)
+        self.lesson_open(session, 0)
     }
-}
 
-impl Session {
-    /// Gives the session the wall clock (ms since 1970), for the answers' times.
+    /// Gives the classroom the wall clock (ms since 1970), for the answers' times.
     pub fn set_wall_clock(&mut self, ms: f64) {
-        self.wall_clock_ms = ms;
+        self.wall_clock_ms = Some(ms);
     }
 
     /// What the student did in the lesson, to hand in (None before the lesson is opened).
@@ -496,7 +340,7 @@ impl Session {
         Ok(())
     }
 
-    /// [`Session::restore_answers`] from the CSV the page kept ([`Record::to_csv`]).
+    /// [`Classroom::restore_answers`] from the CSV the page kept ([`Record::to_csv`]).
     pub fn restore_answers_csv(&mut self, csv: &str) -> Result<(), Error> {
         let steps = self.lesson.as_ref().map_or(0, |l| l.lesson.steps.len());
         self.restore_answers(Record::from_csv(csv, steps)?)
@@ -504,7 +348,7 @@ impl Session {
 
     /// Forgets every answer and task of the lesson (the page's "Clear my answers"); the step shown
     /// stays, from its start.
-    pub fn clear_answers(&mut self) -> Result<(), Error> {
+    pub fn clear_answers(&mut self, session: &mut Session) -> Result<(), Error> {
         let l = self.lesson.as_mut().ok_or_else(|| lesson_error("the lesson is not open"))?;
         let n = l.lesson.steps.len();
         l.answers = vec![None; n];
@@ -514,18 +358,10 @@ impl Session {
         l.record.entries.clear();
         let (step, active) = (l.step, l.active);
         if active {
-            self.enter(step)?;
+            self.enter(session, step)?;
         }
+        self.sync(session);
         Ok(())
-    }
-
-    /// Adds an entry to the record, stamped with the state string and the clock.
-    pub(super) fn record(&mut self, mut entry: Entry) {
-        entry.state = self.state_string();
-        entry.time = answers::iso_time(self.wall_clock_ms);
-        if let Some(l) = self.lesson.as_mut() {
-            l.record.entries.push(entry);
-        }
     }
 }
 

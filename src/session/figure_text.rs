@@ -1,0 +1,44 @@
+//! The figure in words, for screen readers (the canvas' description): what it shows, at which
+//! instant, and each run's verdict and newest numbers.
+
+use super::status::{hide_answers, run_status};
+use super::Session;
+use crate::schema::PanelKind;
+use crate::words::panels::{figure_contents, figure_run};
+
+impl Session {
+    /// The figure in words, for screen readers (the canvas' description): what it shows, at
+    /// which instant, the verdict and the newest numbers of each run.
+    pub fn figure_text(&self) -> String {
+        let v = self.drawn_view();
+        let hidden = self.answers_hidden();
+        let mut kinds = vec![PanelKind::Arm, PanelKind::Error1];
+        if v.torque {
+            kinds.push(PanelKind::Torque);
+        }
+        if v.poles {
+            kinds.push(if v.z_plane { PanelKind::ZPlane } else { PanelKind::Poles });
+        }
+        if v.rho {
+            kinds.push(PanelKind::RhoCurve);
+        }
+        if v.map {
+            kinds.push(PanelKind::MapOff);
+        }
+        let mut text = figure_contents(&kinds, v.measure == crate::plot::color::Measure::Rate);
+        for (i, run) in self.runs().enumerate() {
+            let name = if i == 0 { "A" } else { "B" };
+            let mut s = run_status(name, run);
+            if hidden {
+                hide_answers(&mut s);
+            }
+            let at = self.shown_snapshot(i).map_or(f64::NAN, |snap| snap.time);
+            let settings = self.run(1).is_some().then_some(s.settings.as_str());
+            let looking_back = self.viewing().is_some();
+            text +=
+                &figure_run(name, settings, s.headline, &s.detail, at, looking_back, &s.readouts.error, &s.observed);
+        }
+        text
+    }
+}
+

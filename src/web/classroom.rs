@@ -1,0 +1,176 @@
+//! The classroom the page has open — the lesson, the answers to hand in, student mode, a link's
+//! moment, embeds — for the page's façade (`www/js/flexarm.js`), which composes it with the
+//! physics [`WebSession`]: every method that changes something takes that session, and after it
+//! the classroom re-derives what the session hides. Converts and forwards.
+
+use wasm_bindgen::prelude::*;
+
+use super::session::WebSession;
+use super::{js_error, to_js};
+use crate::classroom::answers::Record;
+use crate::classroom::progress::LessonOrigin;
+use crate::classroom::Classroom;
+use crate::session::Notice;
+
+/// What the classroom adds to the page: `new Classroom(session, query, lessonText, teacherPath,
+/// teacherBytes)` right after `new Session(query)`.
+#[wasm_bindgen(js_name = Classroom)]
+pub struct WebClassroom {
+    inner: Classroom,
+    notices: Vec<Notice>,
+}
+
+/// Runs a classroom change on the session, then lets the classroom follow it.
+fn change<T>(c: &mut WebClassroom, s: &mut WebSession, f: impl FnOnce(&mut Classroom, &mut crate::session::Session) -> T) -> T {
+    let out = f(&mut c.inner, s.session_mut());
+    c.inner.follow(s.session_mut());
+    out
+}
+
+#[wasm_bindgen(js_class = Classroom)]
+impl WebClassroom {
+    /// The classroom of a URL query (the same the session was opened from): the lesson it names
+    /// (`lesson=3`; with `lesson_src=PATH` the page fetched that file and passes its path and
+    /// bytes: a teacher's lesson, used instead of the built-in one if it reads and passes the
+    /// checks) over the session, and the link's moment (`t=3&paused=1`). `lesson_text`: the
+    /// built-in lesson the page fetched (`lessons/paper.md`; without it the lesson cannot open).
+    /// Values it could not take are in `notices()`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        session: &mut WebSession,
+        query: &str,
+        lesson_text: Option<String>,
+        teacher_path: Option<String>,
+        teacher_bytes: Option<Vec<u8>>,
+    ) -> WebClassroom {
+        let teacher = teacher_path.zip(teacher_bytes);
+        let (inner, notices) = Classroom::open_on(session.session_mut(), query, lesson_text, teacher);
+        WebClassroom { inner, notices }
+    }
+
+    /// `[{key, text}]`: what the query's lesson and moment could not take, and why.
+    pub fn notices(&self) -> Result<JsValue, JsError> {
+        to_js(&self.notices)
+    }
+
+    /// After the session changed by itself (a setting, a reset, time): checks the lesson step's
+    /// goal and what student mode hides.
+    pub fn follow(&mut self, session: &mut WebSession) {
+        self.inner.follow(session.session_mut());
+    }
+
+    /// `{lesson: {lesson_title, source, steps, index, title, text, terms, task, done, question:
+    /// {prompt, choices, chosen, correct} | null, answer, can_back, can_next, record} | null,
+    /// hidden: {text, controls} | null}`.
+    pub fn status(&self, session: &WebSession) -> Result<JsValue, JsError> {
+        to_js(&self.inner.status(session.session()))
+    }
+
+    /// The state string (the URL query) of everything set, the lesson step among it.
+    #[wasm_bindgen(js_name = stateString)]
+    pub fn state_string(&self, session: &WebSession) -> String {
+        self.inner.state_string(session.session())
+    }
+
+    /// Replaces the lesson by a file the user opened or dropped (its name and bytes), checked as
+    /// the built-in lesson is, and opens it; throws with the line and the mistake, and the lesson
+    /// stays as it was.
+    #[wasm_bindgen(js_name = loadLesson)]
+    pub fn load_lesson(&mut self, session: &mut WebSession, name: &str, bytes: &[u8]) -> Result<(), JsError> {
+        let origin = LessonOrigin::File(name.to_string());
+        change(self, session, |c, s| c.load_lesson(s, origin, bytes)).map_err(|e| JsError::new(&format!("{name}: {e}")))
+    }
+
+    /// Opens the guided lesson at `step` (0-based).
+    #[wasm_bindgen(js_name = lessonOpen)]
+    pub fn lesson_open(&mut self, session: &mut WebSession, step: usize) -> Result<(), JsError> {
+        change(self, session, |c, s| c.lesson_open(s, step)).map_err(js_error)
+    }
+
+    /// The next step of the lesson.
+    #[wasm_bindgen(js_name = lessonNext)]
+    pub fn lesson_next(&mut self, session: &mut WebSession) -> Result<(), JsError> {
+        change(self, session, |c, s| c.lesson_next(s)).map_err(js_error)
+    }
+
+    /// The previous step, as it was left.
+    #[wasm_bindgen(js_name = lessonBack)]
+    pub fn lesson_back(&mut self, session: &mut WebSession) -> Result<(), JsError> {
+        change(self, session, |c, s| c.lesson_back(s)).map_err(js_error)
+    }
+
+    /// Answers the step's question (0-based choice).
+    #[wasm_bindgen(js_name = lessonAnswer)]
+    pub fn lesson_answer(&mut self, session: &mut WebSession, choice: usize) -> Result<(), JsError> {
+        change(self, session, |c, s| c.lesson_answer(s, choice)).map_err(js_error)
+    }
+
+    /// Shows the step's result without doing the task.
+    #[wasm_bindgen(js_name = lessonReveal)]
+    pub fn lesson_reveal(&mut self, session: &mut WebSession) -> Result<(), JsError> {
+        change(self, session, |c, s| c.lesson_reveal(s)).map_err(js_error)
+    }
+
+    /// Closes the lesson; the settings stay.
+    #[wasm_bindgen(js_name = lessonLeave)]
+    pub fn lesson_leave(&mut self, session: &mut WebSession) {
+        change(self, session, |c, s| c.lesson_leave(s));
+    }
+
+    /// True once after a link or a lesson step asked to start paused (`paused=1`).
+    #[wasm_bindgen(js_name = takeStartPaused)]
+    pub fn take_start_paused(&mut self) -> bool {
+        self.inner.take_start_paused()
+    }
+
+    /// The state string with the moment shown (`…&paused=1&t=3.25`): "Copy link to this moment".
+    #[wasm_bindgen(js_name = momentQuery)]
+    pub fn moment_query(&self, session: &WebSession) -> String {
+        self.inner.moment_query(session.session())
+    }
+
+    /// An embed of the page at `page_url` as the embed builder's `choices` say (a query:
+    /// `views=zplane,rho&width=760&height=480&paused=1&t=3&strip=delta,reset&lesson=4`):
+    /// `{html, src, width, height, title}`; throws naming a bad choice.
+    pub fn embed(&self, session: &WebSession, page_url: &str, choices: &str) -> Result<JsValue, JsError> {
+        to_js(&self.inner.embed(session.session(), page_url, choices).map_err(js_error)?)
+    }
+
+    /// The embed builder's choices to start from (what is on screen), as a query.
+    #[wasm_bindgen(js_name = embedDefaults)]
+    pub fn embed_defaults(&self, session: &WebSession) -> String {
+        self.inner.embed_defaults(session.session())
+    }
+
+    /// Gives the classroom the wall clock (`Date.now()`), for the answers' times.
+    #[wasm_bindgen(js_name = setWallClock)]
+    pub fn set_wall_clock(&mut self, ms: f64) {
+        self.inner.set_wall_clock(ms);
+    }
+
+    /// The record as CSV (empty before the lesson is opened): the page downloads it, reshapes it
+    /// into JSON, keeps it in localStorage and gives it back after a reload.
+    #[wasm_bindgen(js_name = answersCsv)]
+    pub fn answers_csv(&self) -> String {
+        self.inner.answers_record().map_or(String::new(), Record::to_csv)
+    }
+
+    /// Gives back the record the page kept (the CSV of `answersCsv()`): throws if it is not this
+    /// lesson's (its text changed) or does not read, and nothing changes then.
+    #[wasm_bindgen(js_name = restoreAnswers)]
+    pub fn restore_answers(&mut self, session: &mut WebSession, csv: &str) -> Result<(), JsError> {
+        change(self, session, |c, _| c.restore_answers_csv(csv)).map_err(js_error)
+    }
+
+    /// Forgets the lesson's answers ("Clear my answers").
+    #[wasm_bindgen(js_name = clearAnswers)]
+    pub fn clear_answers(&mut self, session: &mut WebSession) -> Result<(), JsError> {
+        change(self, session, |c, s| c.clear_answers(s)).map_err(js_error)
+    }
+
+    /// Lifts student mode ("Show them"): on a lesson step for that step, else for the visit.
+    #[wasm_bindgen(js_name = showAnswers)]
+    pub fn show_answers(&mut self, session: &mut WebSession) {
+        change(self, session, |c, s| c.show_answers(s));
+    }
+}
