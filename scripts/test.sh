@@ -25,9 +25,10 @@ step "wasm tests in headless Chromium (wasm-pack test)"
 wasm-pack test --headless --chrome --chromedriver "$(command -v chromedriver)" wasm-tests
 
 build_wasm
-step "type-checking the page's modules against the wasm-bindgen declarations (tsc --checkJs)"
+step "type-checking the page's modules against the wasm-bindgen declarations (tsc --checkJs; the façade strictly)"
 (cd tests/e2e && npm ci --no-audit --no-fund --loglevel=error)
 tests/e2e/node_modules/.bin/tsc -p www/jsconfig.json
+tests/e2e/node_modules/.bin/tsc -p www/jsconfig.strict.json
 
 step "end-to-end tests of the page (Playwright + Chromium)"
 node --test tests/e2e/

@@ -124,6 +124,7 @@ impl Classroom {
     /// After a change the session made itself (a setting, a reset, time passing): checks the
     /// lesson step's goal and tells the session what is hidden now (student mode may have been
     /// switched by `answers=`).
+    #[inline(never)] // one copy for every change the page makes, not one inlined into each
     pub fn follow(&mut self, session: &mut Session) {
         self.check_lesson_goal(session);
         self.sync(session);

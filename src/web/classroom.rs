@@ -12,6 +12,13 @@ use crate::classroom::progress::LessonOrigin;
 use crate::classroom::Classroom;
 use crate::session::Notice;
 
+/// The session's status and the classroom's, as the page reads them.
+#[derive(serde::Serialize)]
+struct PageStatus {
+    session: crate::session::Status,
+    classroom: crate::classroom::ClassroomStatus,
+}
+
 /// What the classroom adds to the page: `new Classroom(session, query, lessonText, teacherPath,
 /// teacherBytes)` right after `new Session(query)`.
 #[wasm_bindgen(js_name = Classroom)]
@@ -59,11 +66,18 @@ impl WebClassroom {
         self.inner.follow(session.session_mut());
     }
 
-    /// `{lesson: {lesson_title, source, steps, index, title, text, terms, task, done, question:
-    /// {prompt, choices, chosen, correct} | null, answer, can_back, can_next, record} | null,
-    /// hidden: {text, controls} | null}`.
-    pub fn status(&self, session: &WebSession) -> Result<JsValue, JsError> {
-        to_js(&self.inner.status(session.session()))
+    /// Everything the page says, in one object (one conversion, not two): `{session: {runs: [{run,
+    /// verdict, headline, detail, observed, measured, finished, rho, spectral_radius, growth_rate,
+    /// announce, readouts, settings}], note, preset, arm, showing, maps, windows, ghost, timeline,
+    /// figure, cycle, story}, classroom: {lesson: {lesson_title, source, steps, index, title, text,
+    /// terms, task, done, question, answer, can_back, can_next, record} | null, hidden: {text,
+    /// controls} | null}}`. Brings the stable windows and the lesson step's goal up to date first
+    /// (a few ms after a change of α or the feedback), so call it a few times a second.
+    pub fn status(&mut self, session: &mut WebSession) -> Result<JsValue, JsError> {
+        let s = session.session_mut();
+        s.refresh();
+        self.inner.follow(s);
+        to_js(&PageStatus { session: s.status(), classroom: self.inner.status(s) })
     }
 
     /// The state string (the URL query) of everything set, the lesson step among it.

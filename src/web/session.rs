@@ -238,17 +238,6 @@ impl WebSession {
         self.inner.run(0).is_some_and(|r| r.closed_loop().is_finished())
     }
 
-    /// `{runs: [{run, verdict, headline, detail, observed, measured, finished, rho,
-    /// spectral_radius, growth_rate, announce, readouts: {time, error, max_slew, max_after, torque,
-    /// growth, a4}, settings}], note, preset, maps: {percent, done, text, points},
-    /// windows: {text, windows, bands} | null, ghost, timeline: {live, time, start, end, text},
-    /// figure, cycle, story}`. Brings the stable windows up to date first (a few ms after a change
-    /// of α or the feedback), so call it a few times a second.
-    pub fn status(&mut self) -> Result<JsValue, JsError> {
-        self.inner.refresh();
-        to_js(&self.inner.status())
-    }
-
     // ------------------------------------------------------------------------ the timeline
 
     /// Looks at the kept sampling instant at or before `t` (s); at or past the newest state,
@@ -338,6 +327,12 @@ impl WebSession {
 /// to the page: the page needs none of them, and each export would keep in the module the
 /// serialization it carries (the whole analysis report, the metrics).
 impl WebSession {
+    /// The session's status (the page asks the classroom's `status`, which carries it).
+    pub fn status(&mut self) -> Result<JsValue, JsError> {
+        self.inner.refresh();
+        to_js(&self.inner.status())
+    }
+
     /// A run's metrics: `{time, verdict, growth_rate, diverged_at, max_error_slew,
     /// max_error_after, rms_error, max_torque}`.
     pub fn metrics(&self, run: usize) -> Result<JsValue, JsError> {

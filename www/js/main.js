@@ -2,6 +2,7 @@
 // schema, and wires controls, canvas, keyboard and frame loop to the session and the renderer.
 // Every decision about the physics is the session's (Rust); this file only connects.
 
+import { Page } from './flexarm.js';
 import { byId, make, messageOf, setText } from './dom.js';
 import { createErrors } from './errors.js';
 import { createStore } from './store.js';
@@ -61,7 +62,7 @@ async function main() {
   // A teacher's lesson (`lesson_src=PATH`): fetched only from a path of this site (the session
   // says why anything else is refused, and checks the file as it checks the built-in lesson).
   const teacher = await fetchTeacherLesson(wasm);
-  const session = new wasm.Session(window.location.search, await lessonText, teacher?.path, teacher?.bytes);
+  const session = new Page(wasm, window.location.search, await lessonText, teacher);
   performance.mark('flexarm:session-ready');
   showNotices(session.notices());
   const status = createStatus();
@@ -363,7 +364,7 @@ async function main() {
   function render() {
     if (!renderer) return false;
     try {
-      renderer.render(session);
+      renderer.render(session.session);
       store.dispatch({ type: 'render-ok' });
     } catch (e) {
       store.dispatch({ type: 'render-failed' });

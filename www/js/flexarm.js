@@ -1,0 +1,284 @@
+// The page's one handle on the simulation: the physics session (runs, analyses, maps) and the
+// classroom around it (the lesson, the answers, student mode, a link's moment, embeds) — two raw
+// wasm bindings, Rust's `Session` and `Classroom` — composed as one typed object, as rapier.js
+// puts a typed façade over its raw bindings. Every change the session makes itself is followed by
+// the classroom (a lesson step's goal, what student mode hides); every classroom call is given the
+// session. Nothing here decides anything: it composes and forwards. Type-checked strictly
+// (`www/jsconfig.strict.json`).
+
+/** @typedef {typeof import('../pkg/flexarm.js')} Wasm */
+/** @typedef {import('../pkg/flexarm.js').Session} RawSession */
+/** @typedef {import('../pkg/flexarm.js').Classroom} RawClassroom */
+
+export class Page {
+  /** @type {RawSession} */
+  #session;
+  /** @type {RawClassroom} */
+  #classroom;
+
+  /**
+   * The page for the URL's query: the session's settings from it, then the lesson it names
+   * (`lesson=3`, or a teacher's file the page fetched) and the link's moment.
+   * @param {Wasm} wasm
+   * @param {string} query
+   * @param {string | undefined} lessonText the built-in lesson (`lessons/paper.md`)
+   * @param {{ path: string, bytes: Uint8Array } | null | undefined} teacher a teacher's lesson file
+   */
+  constructor(wasm, query, lessonText, teacher) {
+    this.#session = new wasm.Session(query);
+    this.#classroom = new wasm.Classroom(this.#session, query, lessonText, teacher?.path, teacher?.bytes);
+  }
+
+  /** The physics session, which the renderer draws. @returns {RawSession} */
+  get session() {
+    return this.#session;
+  }
+
+  /**
+   * Runs a change of the session, then lets the classroom follow it.
+   * @template T
+   * @param {(s: RawSession) => T} fn
+   * @returns {T}
+   */
+  #change(fn) {
+    const out = fn(this.#session);
+    this.#classroom.follow(this.#session);
+    return out;
+  }
+
+  // ------------------------------------------------------------------------------- notices, status
+
+  /** What the query could not take: the session's and the classroom's. @returns {{ key: string, text: string }[]} */
+  notices() {
+    return [...this.#session.notices(), ...this.#classroom.notices()];
+  }
+
+  /**
+   * Everything the page says: the session's status with the classroom's lesson step and what
+   * student mode hides (`lesson`, `hidden`). Brings the windows and the lesson's goal up to date.
+   * @returns {any}
+   */
+  status() {
+    const all = this.#classroom.status(this.#session);
+    return { ...all.session, ...all.classroom };
+  }
+
+  /** The URL's query: the settings and the lesson step. @returns {string} */
+  stateString() {
+    return this.#classroom.stateString(this.#session);
+  }
+
+  /** @returns {any[]} */
+  controls() {
+    return this.#session.controls();
+  }
+
+  // ------------------------------------------------------------------------------------- settings
+
+  /** @param {string} key @param {string} text */
+  set(key, text) {
+    this.#change((s) => s.set(key, text));
+  }
+
+  /** @param {string} key @param {number} position */
+  setPosition(key, position) {
+    this.#change((s) => s.setPosition(key, position));
+  }
+
+  /** @param {string} key @param {number} steps */
+  stepValue(key, steps) {
+    this.#change((s) => s.stepValue(key, steps));
+  }
+
+  /** @param {string} id */
+  applyPreset(id) {
+    this.#change((s) => s.applyPreset(id));
+  }
+
+  /** @param {string} state @returns {{ key: string, text: string }[]} */
+  readState(state) {
+    return this.#change((s) => s.readState(state));
+  }
+
+  /** @param {string} side @param {number} delta @param {number} alpha */
+  setFromMap(side, delta, alpha) {
+    this.#change((s) => s.setFromMap(side, delta, alpha));
+  }
+
+  /** @param {string} side @param {number} deltaSteps @param {number} alphaSteps */
+  stepOnMap(side, deltaSteps, alphaSteps) {
+    this.#change((s) => s.stepOnMap(side, deltaSteps, alphaSteps));
+  }
+
+  /** @param {number} delta */
+  pickDelta(delta) {
+    this.#change((s) => s.pickDelta(delta));
+  }
+
+  /** @param {string} which "whole" or "pair" */
+  zView(which) {
+    this.#change((s) => s.zView(which));
+  }
+
+  /** @param {string} note */
+  setNote(note) {
+    this.#session.setNote(note);
+  }
+
+  // ----------------------------------------------------------------------------------------- time
+
+  /** @param {number} wallSeconds @returns {number} */
+  advance(wallSeconds) {
+    return this.#session.advance(wallSeconds);
+  }
+
+  stepPeriod() {
+    this.#change((s) => s.stepPeriod());
+  }
+
+  reset() {
+    this.#change((s) => s.reset());
+  }
+
+  poke() {
+    this.#change((s) => s.poke());
+  }
+
+  /** @returns {boolean} */
+  isFinished() {
+    return this.#session.isFinished();
+  }
+
+  /** @param {number} t */
+  viewAt(t) {
+    this.#session.viewAt(t);
+  }
+
+  stepBack() {
+    this.#session.stepBack();
+  }
+
+  continueFromHere() {
+    this.#change((s) => s.continueFromHere());
+  }
+
+  /** @param {number} budgetMs @returns {boolean} */
+  workMaps(budgetMs) {
+    return this.#session.workMaps(budgetMs);
+  }
+
+  /** @returns {any[]} */
+  mapTimes() {
+    return this.#session.mapTimes();
+  }
+
+  // -------------------------------------------------------------------------------------- exports
+
+  /** @returns {string} */
+  csv() {
+    return this.#session.csv();
+  }
+
+  /** @returns {string} */
+  commandLine() {
+    return this.#session.commandLine();
+  }
+
+  /** @param {string} template @returns {string} */
+  pythonScript(template) {
+    return this.#session.pythonScript(template);
+  }
+
+  /** @returns {string} */
+  dataCsv() {
+    return this.#session.dataCsv();
+  }
+
+  /** A panel's figure, captioned with the whole state string. @param {string} panel @param {boolean} dark @returns {string} */
+  figureSvg(panel, dark) {
+    return this.#session.figureSvg(panel, dark, this.stateString());
+  }
+
+  /** @returns {{ id: string, label: string }[]} */
+  figurePanels() {
+    return this.#session.figurePanels();
+  }
+
+  /** @param {string} pageUrl @param {string} choices @returns {any} */
+  embed(pageUrl, choices) {
+    return this.#classroom.embed(this.#session, pageUrl, choices);
+  }
+
+  /** @returns {string} */
+  embedDefaults() {
+    return this.#classroom.embedDefaults(this.#session);
+  }
+
+  /** @returns {boolean} */
+  takeStartPaused() {
+    return this.#classroom.takeStartPaused();
+  }
+
+  /** @returns {string} */
+  momentQuery() {
+    return this.#classroom.momentQuery(this.#session);
+  }
+
+  // ------------------------------------------------------------------------------------ the lesson
+
+  /** @param {string} name @param {Uint8Array} bytes */
+  loadLesson(name, bytes) {
+    this.#classroom.loadLesson(this.#session, name, bytes);
+  }
+
+  /** @param {number} step */
+  lessonOpen(step) {
+    this.#classroom.lessonOpen(this.#session, step);
+  }
+
+  lessonNext() {
+    this.#classroom.lessonNext(this.#session);
+  }
+
+  lessonBack() {
+    this.#classroom.lessonBack(this.#session);
+  }
+
+  /** @param {number} choice */
+  lessonAnswer(choice) {
+    this.#classroom.lessonAnswer(this.#session, choice);
+  }
+
+  lessonReveal() {
+    this.#classroom.lessonReveal(this.#session);
+  }
+
+  lessonLeave() {
+    this.#classroom.lessonLeave(this.#session);
+  }
+
+  // ----------------------------------------------------------------------- answers, student mode
+
+  /** @param {number} ms */
+  setWallClock(ms) {
+    this.#classroom.setWallClock(ms);
+  }
+
+  /** @returns {string} */
+  answersCsv() {
+    return this.#classroom.answersCsv();
+  }
+
+  /** @param {string} csv */
+  restoreAnswers(csv) {
+    this.#classroom.restoreAnswers(this.#session, csv);
+  }
+
+  clearAnswers() {
+    this.#classroom.clearAnswers(this.#session);
+  }
+
+  showAnswers() {
+    this.#classroom.showAnswers(this.#session);
+  }
+}
