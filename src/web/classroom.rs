@@ -95,40 +95,24 @@ impl WebClassroom {
         change(self, session, |c, s| c.load_lesson(s, origin, bytes)).map_err(|e| JsError::new(&format!("{name}: {e}")))
     }
 
-    /// Opens the guided lesson at `step` (0-based).
-    #[wasm_bindgen(js_name = lessonOpen)]
-    pub fn lesson_open(&mut self, session: &mut WebSession, step: usize) -> Result<(), JsError> {
-        change(self, session, |c, s| c.lesson_open(s, step)).map_err(js_error)
-    }
-
-    /// The next step of the lesson.
-    #[wasm_bindgen(js_name = lessonNext)]
-    pub fn lesson_next(&mut self, session: &mut WebSession) -> Result<(), JsError> {
-        change(self, session, |c, s| c.lesson_next(s)).map_err(js_error)
-    }
-
-    /// The previous step, as it was left.
-    #[wasm_bindgen(js_name = lessonBack)]
-    pub fn lesson_back(&mut self, session: &mut WebSession) -> Result<(), JsError> {
-        change(self, session, |c, s| c.lesson_back(s)).map_err(js_error)
-    }
-
-    /// Answers the step's question (0-based choice).
-    #[wasm_bindgen(js_name = lessonAnswer)]
-    pub fn lesson_answer(&mut self, session: &mut WebSession, choice: usize) -> Result<(), JsError> {
-        change(self, session, |c, s| c.lesson_answer(s, choice)).map_err(js_error)
-    }
-
-    /// Shows the step's result without doing the task.
-    #[wasm_bindgen(js_name = lessonReveal)]
-    pub fn lesson_reveal(&mut self, session: &mut WebSession) -> Result<(), JsError> {
-        change(self, session, |c, s| c.lesson_reveal(s)).map_err(js_error)
-    }
-
-    /// Closes the lesson; the settings stay.
-    #[wasm_bindgen(js_name = lessonLeave)]
-    pub fn lesson_leave(&mut self, session: &mut WebSession) {
-        change(self, session, |c, s| c.lesson_leave(s));
+    /// One of the classroom's changes of the session, named (one export for all: the façade gives
+    /// each its typed method): "open" the lesson at step `n` (0-based), "next", "back", "answer"
+    /// with choice `n` (0-based), "reveal" the step's result without the task, "leave" the lesson,
+    /// "clear" the answers, "show" what student mode hides. Throws with the reason, or for an
+    /// unknown action.
+    pub fn act(&mut self, session: &mut WebSession, action: &str, n: usize) -> Result<(), JsError> {
+        change(self, session, |c, s| match action {
+            "open" => c.lesson_open(s, n),
+            "next" => c.lesson_next(s),
+            "back" => c.lesson_back(s),
+            "answer" => c.lesson_answer(s, n),
+            "reveal" => c.lesson_reveal(s),
+            "leave" => Ok(c.lesson_leave(s)),
+            "clear" => c.clear_answers(s),
+            "show" => Ok(c.show_answers(s)),
+            _ => Err(crate::error::Error::NotReady("no such classroom action")),
+        })
+        .map_err(js_error)
     }
 
     /// True once after a link or a lesson step asked to start paused (`paused=1`).
@@ -174,17 +158,5 @@ impl WebClassroom {
     #[wasm_bindgen(js_name = restoreAnswers)]
     pub fn restore_answers(&mut self, session: &mut WebSession, csv: &str) -> Result<(), JsError> {
         change(self, session, |c, _| c.restore_answers_csv(csv)).map_err(js_error)
-    }
-
-    /// Forgets the lesson's answers ("Clear my answers").
-    #[wasm_bindgen(js_name = clearAnswers)]
-    pub fn clear_answers(&mut self, session: &mut WebSession) -> Result<(), JsError> {
-        change(self, session, |c, s| c.clear_answers(s)).map_err(js_error)
-    }
-
-    /// Lifts student mode ("Show them"): on a lesson step for that step, else for the visit.
-    #[wasm_bindgen(js_name = showAnswers)]
-    pub fn show_answers(&mut self, session: &mut WebSession) {
-        change(self, session, |c, s| c.show_answers(s));
     }
 }

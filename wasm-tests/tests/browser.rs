@@ -244,7 +244,7 @@ fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
     let all = classroom.status(&mut session).map_err(JsValue::from).unwrap();
     assert!(!get(&get(&all, "classroom"), "hidden").is_null());
     classroom.set_wall_clock(1_795_669_380_000.0);
-    classroom.lesson_answer(&mut session, 2).map_err(JsValue::from).unwrap();
+    classroom.act(&mut session, "answer", 2).map_err(JsValue::from).unwrap();
     let csv = classroom.answers_csv();
     assert!(
         csv.contains(",1,Where does the controller alone work?,prediction,3,") && csv.contains("2026-11-26T05:03:00Z"),
@@ -262,7 +262,7 @@ fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
     let mut other = WebClassroom::new(&mut other_session, "lesson=1", Some(flexarm_lesson()), None, None);
     let e = other.restore_answers(&mut other_session, &csv).map_err(error_message).unwrap_err();
     assert!(e.contains("another text of the lesson"), "{e}");
-    reloaded.show_answers(&mut again);
+    reloaded.act(&mut again, "show", 0).map_err(JsValue::from).unwrap();
     let all = reloaded.status(&mut again).map_err(JsValue::from).unwrap();
     assert!(get(&get(&all, "classroom"), "hidden").is_null());
 }

@@ -233,28 +233,28 @@ export class Page {
 
   /** @param {number} step */
   lessonOpen(step) {
-    this.#classroom.lessonOpen(this.#session, step);
+    this.#classroom.act(this.#session, 'open', step);
   }
 
   lessonNext() {
-    this.#classroom.lessonNext(this.#session);
+    this.#classroom.act(this.#session, 'next', 0);
   }
 
   lessonBack() {
-    this.#classroom.lessonBack(this.#session);
+    this.#classroom.act(this.#session, 'back', 0);
   }
 
   /** @param {number} choice */
   lessonAnswer(choice) {
-    this.#classroom.lessonAnswer(this.#session, choice);
+    this.#classroom.act(this.#session, 'answer', choice);
   }
 
   lessonReveal() {
-    this.#classroom.lessonReveal(this.#session);
+    this.#classroom.act(this.#session, 'reveal', 0);
   }
 
   lessonLeave() {
-    this.#classroom.lessonLeave(this.#session);
+    this.#classroom.act(this.#session, 'leave', 0);
   }
 
   // ----------------------------------------------------------------------- answers, student mode
@@ -275,10 +275,10 @@ export class Page {
   }
 
   clearAnswers() {
-    this.#classroom.clearAnswers(this.#session);
+    this.#classroom.act(this.#session, 'clear', 0);
   }
 
   showAnswers() {
-    this.#classroom.showAnswers(this.#session);
+    this.#classroom.act(this.#session, 'show', 0);
   }
 }

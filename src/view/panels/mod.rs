@@ -1,7 +1,8 @@
 //! Every panel of the figure, each in its own folder with everything about it — how it is drawn,
 //! described for the page, read out under the pointer, keyed, titled as a figure — behind one
 //! interface ([`contract::PanelView`]). The scene lays the panels out, keeps what they share
-//! ([`contract::Frame`]) and asks them; it knows no panel's insides.
+//! ([`contract::Frame`]) and asks them through [`Panels`], which dispatches on the panel's kind;
+//! it knows no panel's insides.
 //!
 //! | folder | panels |
 //! |---|---|
@@ -24,8 +25,13 @@ pub mod time_plots;
 pub mod z_plane;
 
 use crate::schema::PanelKind;
+use crate::view::layout::Panel;
+use crate::view::legend::LegendGroup;
+use crate::view::loop_poles::PoleInfo;
+use crate::view::painter::Painter;
+use crate::view::panel_info::{PanelInfo, Probe};
 use arm::Arm;
-use contract::PanelView;
+use contract::{Frame, PanelView, Runs};
 use pole_plot::PolePlot;
 use rho_curve::RhoCurve;
 use stability_maps::StabilityMaps;
@@ -43,33 +49,89 @@ pub struct Panels {
     pub maps: StabilityMaps,
 }
 
+/// Calls `$call` on the panel type that draws `$kind`, bound to `$p` (statically: each arm is
+/// that type's own method, which the compiler may inline).
+macro_rules! dispatch {
+    ($panels:expr, $kind:expr, $p:ident => $call:expr) => {
+        match $kind {
+            PanelKind::Arm | PanelKind::ArmB => {
+                let $p = &$panels.arm;
+                $call
+            }
+            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
+                let $p = &$panels.time_plots;
+                $call
+            }
+            PanelKind::Poles => {
+                let $p = &$panels.pole_plot;
+                $call
+            }
+            PanelKind::ZPlane => {
+                let $p = &$panels.z_plane;
+                $call
+            }
+            PanelKind::RhoCurve => {
+                let $p = &$panels.rho_curve;
+                $call
+            }
+            PanelKind::MapOff | PanelKind::MapOn => {
+                let $p = &$panels.maps;
+                $call
+            }
+        }
+    };
+}
+
+/// One kind of each panel type, in the order their keys are listed.
+const ONE_OF_EACH: [PanelKind; 6] =
+    [PanelKind::Arm, PanelKind::Error1, PanelKind::Poles, PanelKind::ZPlane, PanelKind::RhoCurve, PanelKind::MapOff];
+
 impl Panels {
-    /// The panel type that draws `kind`.
-    pub fn get(&self, kind: PanelKind) -> &dyn PanelView {
-        match kind {
-            PanelKind::Arm | PanelKind::ArmB => &self.arm,
-            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => &self.time_plots,
-            PanelKind::Poles => &self.pole_plot,
-            PanelKind::ZPlane => &self.z_plane,
-            PanelKind::RhoCurve => &self.rho_curve,
-            PanelKind::MapOff | PanelKind::MapOn => &self.maps,
+    pub fn vertex_budget(&self, frame: &Frame, panel: &Panel) -> usize {
+        dispatch!(self, panel.kind, p => p.vertex_budget(frame, panel))
+    }
+
+    pub fn draw_static(&self, frame: &Frame, panel: &Panel, painter: &mut Painter) {
+        dispatch!(self, panel.kind, p => p.draw_static(frame, panel, painter))
+    }
+
+    pub fn draw(&mut self, frame: &Frame, runs: &Runs<'_>, panel: &Panel, painter: &mut Painter) {
+        match panel.kind {
+            PanelKind::Arm | PanelKind::ArmB => self.arm.draw(frame, runs, panel, painter),
+            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => self.time_plots.draw(frame, runs, panel, painter),
+            PanelKind::Poles => self.pole_plot.draw(frame, runs, panel, painter),
+            PanelKind::ZPlane => self.z_plane.draw(frame, runs, panel, painter),
+            PanelKind::RhoCurve => self.rho_curve.draw(frame, runs, panel, painter),
+            PanelKind::MapOff | PanelKind::MapOn => self.maps.draw(frame, runs, panel, painter),
         }
     }
 
-    /// The same, to draw with.
-    pub fn get_mut(&mut self, kind: PanelKind) -> &mut dyn PanelView {
-        match kind {
-            PanelKind::Arm | PanelKind::ArmB => &mut self.arm,
-            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => &mut self.time_plots,
-            PanelKind::Poles => &mut self.pole_plot,
-            PanelKind::ZPlane => &mut self.z_plane,
-            PanelKind::RhoCurve => &mut self.rho_curve,
-            PanelKind::MapOff | PanelKind::MapOn => &mut self.maps,
-        }
+    pub fn describe(&self, frame: &Frame, panel: &Panel) -> PanelInfo {
+        dispatch!(self, panel.kind, p => p.describe(frame, panel))
     }
 
-    /// Each panel type once, in the order their keys are listed.
-    pub fn each(&self) -> [&dyn PanelView; 6] {
-        [&self.arm, &self.time_plots, &self.pole_plot, &self.z_plane, &self.rho_curve, &self.maps]
+    pub fn probe(&self, frame: &Frame, panel: &Panel, x: f64, y: f64, reach: f64) -> Option<Probe> {
+        dispatch!(self, panel.kind, p => p.probe(frame, panel, x, y, reach))
+    }
+
+    pub fn pole_markers(&self, frame: &Frame, panel: &Panel) -> Option<Vec<PoleInfo>> {
+        dispatch!(self, panel.kind, p => p.pole_markers(frame, panel))
+    }
+
+    pub fn figure_title(&self, frame: &Frame, kinds: &[PanelKind]) -> String {
+        kinds.first().map_or_else(String::new, |k| dispatch!(self, *k, p => p.figure_title(frame, kinds)))
+    }
+
+    /// Every panel type's key for the panels `kinds` shown, then the keys that carry this frame's
+    /// numbers.
+    pub fn legend(&self, frame: &Frame, kinds: &[PanelKind]) -> Vec<LegendGroup> {
+        let mut groups = Vec::new();
+        for k in ONE_OF_EACH {
+            groups.extend(dispatch!(self, k, p => p.legend(frame, kinds)));
+        }
+        for k in ONE_OF_EACH {
+            groups.extend(dispatch!(self, k, p => p.readings(frame)));
+        }
+        groups
     }
 }

@@ -45,22 +45,19 @@ impl Scene {
     /// The panels with their axis ranges, ticks and labels as of the latest frame.
     pub fn panel_info(&self) -> Vec<PanelInfo> {
         let frame = &self.frame;
-        frame.layout.panels.iter().map(|panel| self.panels.get(panel.kind).describe(frame, panel)).collect()
+        frame.layout.panels.iter().map(|panel| self.panels.describe(frame, panel)).collect()
     }
 
     /// The key to the panels shown: each panel type's groups, then the keys carrying this
     /// frame's numbers.
     pub fn legend(&self) -> Vec<LegendGroup> {
         let kinds: Vec<PanelKind> = self.frame.layout.panels.iter().map(|p| p.kind).collect();
-        let each = self.panels.each();
-        let mut groups: Vec<LegendGroup> = each.iter().flat_map(|p| p.legend(&self.frame, &kinds)).collect();
-        groups.extend(each.iter().flat_map(|p| p.readings(&self.frame)));
-        groups
+        self.panels.legend(&self.frame, &kinds)
     }
 
     /// A figure's title for the panels `kinds` (of one panel type), as the view shows them now.
     pub fn figure_title(&self, kinds: &[PanelKind]) -> String {
-        kinds.first().map_or_else(String::new, |k| self.panels.get(*k).figure_title(&self.frame, kinds))
+        self.panels.figure_title(&self.frame, kinds)
     }
 
     /// Every text over the canvas, placed (see [`crate::view::labels`]).
@@ -74,7 +71,7 @@ impl Scene {
     /// plot is hidden.
     pub fn pole_info(&self) -> Vec<PoleInfo> {
         let frame = &self.frame;
-        let shown = frame.layout.panels.iter().find_map(|p| self.panels.get(p.kind).pole_markers(frame, p));
+        let shown = frame.layout.panels.iter().find_map(|p| self.panels.pole_markers(frame, p));
         shown.unwrap_or_else(|| {
             let mut out = Vec::new();
             for (memory, name) in frame.runs.iter().zip(RUN_NAMES).take(frame.run_count()) {

@@ -195,7 +195,7 @@ impl Scene {
     fn reserve(&mut self) {
         let frame = &self.frame;
         let budget: usize =
-            frame.layout.panels.iter().map(|panel| self.panels.get(panel.kind).vertex_budget(frame, panel)).sum();
+            frame.layout.panels.iter().map(|panel| self.panels.vertex_budget(frame, panel)).sum();
         self.painter.reserve_total(budget);
         self.rebuild_static();
         self.info_generation += 1;
@@ -205,7 +205,7 @@ impl Scene {
     fn rebuild_static(&mut self) {
         self.static_painter.clear();
         for panel in &self.frame.layout.panels {
-            self.panels.get(panel.kind).draw_static(&self.frame, panel, &mut self.static_painter);
+            self.panels.draw_static(&self.frame, panel, &mut self.static_painter);
         }
         self.static_generation += 1;
     }
@@ -331,7 +331,7 @@ impl Scene {
             self.info_generation += 1;
         }
         for panel in &self.frame.layout.panels {
-            self.panels.get_mut(panel.kind).draw(&self.frame, &runs, panel, &mut self.painter);
+            self.panels.draw(&self.frame, &runs, panel, &mut self.painter);
         }
         self.note_info_changes(window);
         self.painter.vertices()

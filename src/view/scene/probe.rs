@@ -11,7 +11,7 @@ impl Scene {
     /// else the point of a map or of ρ(δ) under the pointer; `None` elsewhere.
     pub fn probe(&self, x: f64, y: f64, reach: f64) -> Option<Probe> {
         let frame = &self.frame;
-        frame.layout.panels.iter().find_map(|p| self.panels.get(p.kind).probe(frame, p, x, y, reach))
+        frame.layout.panels.iter().find_map(|p| self.panels.probe(frame, p, x, y, reach))
     }
 
     /// The map and (δ, α) at (x, y), if (x, y) lies on a map.
