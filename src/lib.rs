@@ -23,9 +23,8 @@
 //! | [`analysis`] | ρ and eigenvalues of the sampled loop, stability maps, stable windows of δ, the pair A4 in closed form |
 //! | [`lesson`] | the guided lesson as data: `www/lessons/paper.md`, read into steps, questions and goals |
 //! | [`session`] | what a user has open: settings and state string, runs A and B, analyses, maps, the timeline, the lesson's progress |
-//! | [`plot`] | ticks, number format, colours, contours — shared by the canvas and the SVG |
-//! | [`view`] | what the page draws, as plain geometry (no GPU types) |
-//! | [`svg`] | publication figures from the same `plot` decisions |
+//! | [`plot`] | ticks, number format, colours, contours — shared by the canvas and the SVG figures |
+//! | [`view`] | what the page draws, as plain geometry (no GPU types), and every figure as SVG from it ([`view::figure`]) |
 //! | `web` | wasm32 only: the JS handle and the wgpu renderer |
 //!
 //! The core has no web types and no global state; it builds for native targets and wasm32.
@@ -39,7 +38,6 @@ pub mod plot;
 pub mod schema;
 pub mod session;
 pub mod sort;
-pub mod svg;
 pub mod view;
 
 #[cfg(target_arch = "wasm32")]

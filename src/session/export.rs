@@ -1,55 +1,18 @@
-//! What the page exports besides the CSV: the same SVG figures as `flexarm simulate --svg` and
-//! `flexarm map --svg` (written by [`crate::svg`]), and the snippet that embeds the current state
-//! in a course page.
+//! The snippet that embeds the current state (or a lesson step) in a course page: the embed
+//! builder's choices, checked, and the `<iframe>` they make. (The figures are
+//! [`crate::view::figure`]'s, the data [`super::data`]'s.)
 
 use super::lesson::LessonOrigin;
-use super::maps::MapSide;
 use super::query::{encode, split_query};
 use super::view::{Strip, ViewSettings};
-use super::{status, Session};
-use crate::analysis::StabilityMap;
+use super::Session;
 use crate::error::{Error, ParseError};
+use crate::plot::format::escape;
 
 /// The embedded page's size, CSS px (a canvas and a strip of controls fit it without scrolling).
 pub const EMBED_SIZE: [u32; 2] = [640, 400];
 
 impl Session {
-    /// Run A's tracking errors as an SVG figure headed by the settings and the verdict, the
-    /// state string in its description.
-    pub fn svg_traces(&self) -> String {
-        let s = status::run_status("A", &self.a);
-        let title = format!("Tracking errors e1, e2: {} — {}", status::describe(&self.a), s.headline);
-        crate::svg::error_traces_svg(self.a.closed_loop().traces(), &title, Some(&self.settings.run_query()))
-    }
-
-    /// The two stability maps shown, side by side with their colour bar and the current (δ, α),
-    /// coloured by the view's measure (ρ or ln ρ/δ), once they are computed.
-    pub fn svg_maps(&self) -> Result<String, Error> {
-        if self.answers_hidden() {
-            return Err(Error::NotReady("student mode hides the stability maps until you answer"));
-        }
-        let pf = self.settings.a.pf;
-        let measure = self.settings.view.measure;
-        let mut maps: Vec<(StabilityMap, String)> = Vec::new();
-        for side in MapSide::BOTH {
-            let entry = self.maps.shown(side).filter(|e| e.is_done()).ok_or(Error::NotReady(
-                "the stability maps are still being computed: show them and wait for the progress bar to fill",
-            ))?;
-            maps.push((entry.job().clone().finish()?, self.maps.caption(side, pf, measure)));
-        }
-        let panels: Vec<(&StabilityMap, &str)> = maps.iter().map(|(m, c)| (m, c.as_str())).collect();
-        let a = &self.settings.a;
-        let title = format!(
-            "{} of the sampled loop (k = {}, m = {}, inner loop {})",
-            measure.quantity(),
-            a.k,
-            a.eps_ratio,
-            a.inner.name()
-        );
-        let mark = (a.alpha[0] == a.alpha[1]).then_some((a.delta, a.alpha[0]));
-        Ok(crate::svg::stability_maps_svg(&panels, &title, mark, Some(&self.settings.run_query()), measure))
-    }
-
     /// The embed builder's choices to start from: what is on screen now
     /// (`views=arm,traces&width=640&height=400&strip=play,pf`, and `lesson=N` in the lesson).
     pub fn embed_defaults(&self) -> String {
@@ -119,8 +82,8 @@ impl Session {
         let [width, height] = c.size;
         let html = format!(
             "<iframe src=\"{}\" width=\"{width}\" height=\"{height}\" title=\"{}\" style=\"border:0\" loading=\"lazy\"></iframe>",
-            crate::svg::escape(&src),
-            crate::svg::escape(&title)
+            escape(&src),
+            escape(&title)
         );
         Ok(Embed { html, src, width, height, title })
     }

@@ -317,11 +317,6 @@ impl Maps {
         };
         MapStatus { percent, done, text, points, shown: self.enabled, title: String::new() }
     }
-
-    /// The caption of a side's map for run A's feedback `pf`, naming what the cells show.
-    pub fn caption(&self, side: MapSide, pf: PreliminaryFeedbackChoice, measure: Measure) -> String {
-        side.caption(pf, measure)
-    }
 }
 
 /// "δ = 0.05 s, α = 2 1/s" for tooltips.
