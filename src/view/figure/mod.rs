@@ -1,12 +1,18 @@
-//! A figure per panel, for slides and handouts: one panel (or the two error plots, or both maps)
-//! as a standalone SVG, drawn from the same view geometry as the canvas — a [`Scene`] laid out
-//! with only that panel at a figure's size and drawn from the session, its triangles written as
+//! Every figure flexarm writes, for slides and handouts — the one SVG writer: one panel (or the
+//! two error plots, or both maps) as a standalone SVG, drawn from the same view geometry as the
+//! canvas — a [`Scene`] laid out with only that panel at a figure's size, its triangles written as
 //! paths, its labels as texts with the page's sizes and alignments, its key, and a caption with
-//! what it shows and the whole state string (never cut: it takes as many lines as it needs).
+//! what it shows and the whole state string (never cut: it takes as many lines as it needs), on
+//! one sheet for all (`sheet.rs`).
+//!
+//! The page's figures are drawn from its session ([`figure_svg`]): the page rasterizes the SVG for
+//! a PNG at 1×, 2× or 4× (`www/js/export.js`) and `flexarm figure` writes the same SVG. The
+//! command line's figures are drawn from what a command has: `flexarm simulate --svg` a run's
+//! errors over its whole duration ([`errors_figure`]), `flexarm map --svg` the maps on the user's
+//! grid ([`maps_figure`]).
 //!
 //! Always on the light background unless the dark scheme is asked for (then every colour is
-//! inverted in lightness, as the canvas's shader does). The page rasterizes the SVG for a PNG at
-//! 1×, 2× or 4× (`www/js/export.js`); `flexarm figure` writes the same SVG.
+//! inverted in lightness, as the canvas's shader does).
 //!
 //! In student mode the panels that give the answer away (the pole plots, ρ(δ), the maps) are
 //! refused while the answers are hidden, as the page's other downloads are; the error plots follow
