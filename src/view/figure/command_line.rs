@@ -18,11 +18,20 @@ use crate::session::MapSide;
 use crate::view::legend::LegendGroup;
 use crate::view::panels::contract::RunState;
 use crate::view::panels::time_plots::figure_curves;
-use crate::view::scene::ViewOptions;
+use crate::view::scene::{Scene, ViewOptions};
 
 /// Rows an envelope keeps for [`errors_figure`]: about 24 a pixel column of its plots, so that
 /// each column's extremes are the run's own, whatever its length.
 pub const ENVELOPE_ROWS: usize = 16_000;
+
+/// The sheet of the panels `kinds` as a scene with `options` shows them (their title says what
+/// the options show: ρ or ln ρ/δ, …), and that scene laid out on it, drawn from nothing yet.
+fn sheet_and_scene(kinds: &[PanelKind], options: ViewOptions) -> (Sheet, Scene) {
+    let mut scene = Scene::new(options, 800.0, 600.0, 1.0);
+    let (sheet, layout) = Sheet::new(kinds, scene.figure_title(kinds));
+    scene.set_layout(layout);
+    (sheet, scene)
+}
 
 /// A state at simulated time `t` that only says the time: the time plots read nothing else of it,
 /// and the figures of the command line draw no arm.
@@ -51,7 +60,7 @@ pub fn errors_figure(traces: &Traces, config: &SimulationConfig, about: &str, st
     let end = traces.t().iter().copied().filter(|t| t.is_finite()).fold(0.0, f64::max);
     // A run that has not left t = 0 still gets an axis.
     let options = ViewOptions { time_window: if end > 0.0 { end } else { 1.0 }, ..ViewOptions::default() };
-    let (sheet, mut scene) = Sheet::with_scene(kinds, options);
+    let (sheet, mut scene) = sheet_and_scene(kinds, options);
     let reference = Reference::new(config.reference);
     let snapshot = at(end);
     scene.draw_runs(
@@ -96,7 +105,7 @@ pub fn maps_figure(
     run.controller.alpha = [alpha; 2];
 
     let options = ViewOptions { measure, ..ViewOptions::default() };
-    let (sheet, mut scene) = Sheet::with_scene(kinds, options);
+    let (sheet, mut scene) = sheet_and_scene(kinds, options);
     for (side, (_, map)) in sides.iter().zip(maps) {
         scene.set_map(*side, &map.sampling_periods, &map.alphas, &map.spectral_radius).map_err(|e| bad(&e))?;
     }

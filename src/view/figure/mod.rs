@@ -18,6 +18,10 @@
 //! refused while the answers are hidden, as the page's other downloads are; the error plots follow
 //! what the page draws (no log |e| then).
 
+// The command line's figures are not in the page's module: nothing there draws them, and without
+// them the sheet's functions have one caller there, inlined as the page's figure was before the
+// command line shared them (the module does not grow).
+#[cfg(not(target_arch = "wasm32"))]
 mod command_line;
 mod key;
 mod layout;
@@ -33,6 +37,7 @@ use crate::view::scene::{Scene, ViewOptions};
 use key::curve_key;
 use sheet::{at_time, Sheet};
 
+#[cfg(not(target_arch = "wasm32"))]
 pub use command_line::{errors_figure, maps_figure, ENVELOPE_ROWS};
 pub use sheet::Figure;
 pub use svg::px;
@@ -202,15 +207,14 @@ pub fn figure_svg(session: &Session, panel: &str, dark: bool) -> Result<Figure, 
         ));
     }
     // The title, from the panel as the session shows it now (log |e|, the zoom on tₙ, ρ or ln ρ/δ).
-    let mut shown = Scene::new(ViewOptions::default(), 800.0, 600.0, 1.0);
-    shown.follow_view(&session.drawn_view());
+    let mut scene = Scene::new(ViewOptions::default(), 800.0, 600.0, 1.0);
+    scene.follow_view(&session.drawn_view());
     let kinds = panel.kinds();
-    let sheet = Sheet::new(kinds, shown.figure_title(kinds));
+    let (sheet, layout) = Sheet::new(kinds, scene.figure_title(kinds));
 
-    // The scene: first as the session's view lays it out (its options, the runs), then on the
-    // figure's layout, drawn again.
-    let layout = sheet.layout();
-    let mut scene = Scene::new(ViewOptions::default(), layout.css_width, layout.css_height, 1.0);
+    // The scene: first as the session's view lays it out (its options, the runs) on a canvas of
+    // the figure's size, then on the figure's layout, drawn again.
+    scene.resize(layout.css_width, layout.css_height, 1.0);
     scene.draw_session(session);
     scene.set_layout(layout);
     scene.draw_session(session);

@@ -13,7 +13,7 @@ use crate::plot::palette;
 use crate::schema::PanelKind;
 use crate::view::layout::Layout;
 use crate::view::legend::LegendGroup;
-use crate::view::scene::{Scene, ViewOptions};
+use crate::view::scene::Scene;
 
 /// The title's font size and line pitch, px.
 const TITLE: f64 = 16.0;
@@ -27,42 +27,27 @@ pub struct Figure {
     pub height: f64,
 }
 
-/// Where a figure's parts go: the title's lines, the panels' layout, the figure's width and the
+/// Where a figure's parts go around its panels: the title's lines, the figure's width and the
 /// panels' bottom edge (the key starts below it).
 #[derive(Clone, Debug)]
 pub struct Sheet {
     title: String,
     title_lines: Vec<String>,
-    layout: Layout,
     width: f64,
     panels_bottom: f64,
 }
 
 impl Sheet {
-    /// The sheet of the panels `kinds` under `title`. The title is broken for a first guess of the
-    /// width (the panels go below it), then again for the width the panels give.
-    pub fn new(kinds: &[PanelKind], title: String) -> Sheet {
+    /// The sheet of the panels `kinds` under `title`, and the panels' layout on it, for a scene to
+    /// draw on ([`Scene::set_layout`]). The title is broken for a first guess of the width (the
+    /// panels go below it), then again for the width the panels give.
+    pub fn new(kinds: &[PanelKind], title: String) -> (Sheet, Layout) {
         let width_guess = 800.0;
         let title_lines = wrap(&title, width_guess - 2.0 * MARGIN, TITLE, true);
         let top = MARGIN + title_lines.len() as f64 * TITLE_PITCH + 6.0;
         let (layout, width, panels_bottom) = figure_layout(kinds, top);
         let title_lines = wrap(&title, width - 2.0 * MARGIN, TITLE, true);
-        Sheet { title, title_lines, layout, width, panels_bottom }
-    }
-
-    /// The panels' layout, for a scene to draw on ([`Scene::set_layout`]).
-    pub fn layout(&self) -> Layout {
-        self.layout.clone()
-    }
-
-    /// The sheet of the panels `kinds` as a scene with `options` shows them (their title says
-    /// what the options show: ρ or ln ρ/δ, …), and that scene laid out on it, drawn from nothing
-    /// yet.
-    pub fn with_scene(kinds: &[PanelKind], options: ViewOptions) -> (Sheet, Scene) {
-        let mut scene = Scene::new(options, 800.0, 600.0, 1.0);
-        let sheet = Sheet::new(kinds, scene.figure_title(kinds));
-        scene.set_layout(sheet.layout());
-        (sheet, scene)
+        (Sheet { title, title_lines, width, panels_bottom }, layout)
     }
 
     /// The figure of `scene` (drawn on this sheet's layout): its panels, their labels, the key
