@@ -238,10 +238,10 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         written.push(format!("ρ written to {path} ({} rows)", results.len() * grid.n_delta * grid.n_alpha));
     }
     if let Some(path) = text("svg") {
+        // What the title (the measure) does not say: the grid and the loop's settings.
         let about = format!(
-            "flexarm map: {} of the sampled loop linearized at rest on {} δ × {} α (logarithmic grid); k = {}, m = {}, \
+            "flexarm map: the sampled loop linearized at rest on {} δ × {} α (logarithmic grid); k = {}, m = {}, \
              inner loop {}",
-            measure.quantity(),
             grid.n_delta,
             grid.n_alpha,
             config.controller.horizon_steps,
