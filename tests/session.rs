@@ -5,10 +5,8 @@ mod common;
 use common::{play, session};
 
 use flexarm::analysis::spectral_radius;
-use flexarm::plot::format::escape;
 use flexarm::session::{MapSide, Session, Settings, Source};
-use flexarm::view::figure::figure_svg;
-use flexarm::{FrictionCompensation, PreliminaryFeedbackChoice as Pf};
+use flexarm::{plot::format::escape, view::figure::figure_svg, FrictionCompensation, PreliminaryFeedbackChoice as Pf};
 
 /// Runs the session for `seconds` in page-sized steps.
 
@@ -342,11 +340,7 @@ fn the_page_exports_the_clis_figures_and_an_embed_snippet() {
     let mut s = session("preset=fig5.3&mode=full");
     play(&mut s, 1.0);
     let svg = figure_svg(&s, "errors", false).unwrap().svg;
-    assert!(
-        svg.starts_with("<svg") && svg.contains("Tracking errors") && svg.contains("(unstable)"),
-        "{}",
-        &svg[..200]
-    );
+    assert!(svg.starts_with("<svg") && svg.contains("Tracking errors") && svg.contains("(unstable)"), "{}", &svg[..99]);
     assert!(svg.contains(&escape(&s.settings().run_query())), "the state string in the figure");
     let e = figure_svg(&s, "maps", false).unwrap_err().to_string();
     assert!(e.starts_with("the stability maps are still being computed"), "{e}");
