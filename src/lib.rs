@@ -25,9 +25,8 @@
 //! | [`lesson`] | the guided lesson as data: `www/lessons/paper.md`, read into steps, questions and goals |
 //! | [`session`] | what a user has open: settings and state string, runs A and B, analyses, maps, the timeline, the lesson's progress |
 //! | [`classroom`] | the lesson, the answers, student mode, a link's moment and embeds, around a session |
-//! | [`plot`] | ticks, number format, colours, contours — shared by the canvas and the SVG |
-//! | [`view`] | what the page draws, as plain geometry (no GPU types) |
-//! | [`svg`] | publication figures from the same `plot` decisions |
+//! | [`plot`] | ticks, number format, colours, contours — shared by the canvas and the SVG figures |
+//! | [`view`] | what the page draws, as plain geometry (no GPU types), and every figure as SVG from it ([`view::figure`]) |
 //! | `web` | wasm32 only: the JS handle and the wgpu renderer |
 //!
 //! The core has no web types and no global state; it builds for native targets and wasm32.
@@ -42,7 +41,6 @@ pub mod plot;
 pub mod schema;
 pub mod session;
 pub mod sort;
-pub mod svg;
 pub mod view;
 pub mod words;
 

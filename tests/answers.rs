@@ -7,11 +7,11 @@
 mod common;
 use common::play;
 
+use common::Visit;
 use flexarm::analysis::analyze;
-use flexarm::lesson::{parse, LESSON_TEXT};
 use flexarm::classroom::answers::{split_csv as cells, text_hash, Record, CSV_COLUMNS};
 use flexarm::classroom::progress::LessonOrigin;
-use common::Visit;
+use flexarm::lesson::{parse, LESSON_TEXT};
 
 const HOMEWORK: &str = include_str!("../www/lessons/windows.md");
 /// 2026-11-26T05:03:00Z.
@@ -222,7 +222,7 @@ fn student_mode_hides_what_gives_the_answer_away_until_the_step_is_answered() {
 
     // The downloads that carry ρ are held back too, with the reason.
     assert!(s.figure_data_csv().unwrap_err().to_string().contains("student mode"));
-    assert!(s.svg_maps().unwrap_err().to_string().contains("student mode"));
+    assert!(flexarm::view::figure::figure_svg(&s, "maps", false).unwrap_err().to_string().contains("student mode"));
     assert!(s.python_script(flexarm::session::python::TEMPLATE).unwrap_err().to_string().contains("student mode"));
     let drawn = s.drawn_view();
     assert!(!drawn.poles && !drawn.log && !drawn.swing, "the analysis' figures are not drawn");

@@ -28,7 +28,6 @@ const LAYERS: &[&[&str]] = &[
     &["control"],
     &["analysis"],
     &["words"],
-    &["svg"],
     &["session"],
     &["classroom"],
     &["view"],

@@ -295,7 +295,9 @@ fn map_and_simulate_write_svg_figures() {
     let svg = std::fs::read_to_string(&path).expect("SVG written");
     std::fs::remove_file(&path).ok();
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
-    for needle in ["δ [s]", "α [1/s]", "ρ (spectral radius)", "without preliminary feedback", "K_pr", "<circle"] {
+    // The axes with their units, the colour bar, which map is which, the point marked.
+    for needle in ["δ [s]", "α [1/s]", "<linearGradient", "no Kₚᵣ", "paper Kₚᵣ", "marked: δ = 0.01 s, α = 2 1/s"]
+    {
         assert!(svg.contains(needle), "the map figure lacks {needle}");
     }
     assert!(!svg.contains("NaN") && !svg.contains("inf"));

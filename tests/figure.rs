@@ -5,10 +5,13 @@
 //! run's errors rise to the plot's edge; student mode refuses the analysis' figures.
 
 mod common;
+#[path = "figure/reading.rs"]
+mod reading;
 
 use flexarm::plot::palette;
 use flexarm::session::{MapSide, Session};
 use flexarm::view::figure::{figure_choices, figure_svg, FigurePanel};
+use reading::{assert_wellformed, attr, background, centroid, count, luminance, texts, triangles, Axes};
 
 /// The page's session for `query` in the full view (what its classroom hides, hidden), run to `t`
 /// seconds, with ρ(δ)'s windows and (if `maps`) both maps computed.
@@ -30,110 +33,6 @@ fn session(query: &str, t: f64, maps: bool) -> Session {
 
 fn svg(s: &Session, panel: &str) -> String {
     figure_svg(s, panel, false).unwrap_or_else(|e| panic!("{panel}: {e}")).svg
-}
-
-fn count(s: &str, pat: &str) -> usize {
-    s.matches(pat).count()
-}
-
-/// A standalone SVG whose elements open and close in balance, with nothing non-finite in it.
-fn assert_wellformed(svg: &str, what: &str) {
-    assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""), "{what}");
-    assert!(svg.trim_end().ends_with("</svg>"), "{what}");
-    assert_eq!(count(svg, "<svg"), 1, "{what}");
-    // Every element is closed in order: a stack of open tags.
-    let mut stack: Vec<&str> = Vec::new();
-    for piece in svg.split('<').skip(1) {
-        let tag = piece.split('>').next().unwrap();
-        assert!(piece.contains('>'), "{what}: unclosed tag {tag}");
-        if let Some(name) = tag.strip_prefix('/') {
-            assert_eq!(stack.pop(), Some(name.trim()), "{what}: </{name}> closes another element");
-        } else if !tag.ends_with('/') {
-            stack.push(tag.split([' ', '\n']).next().unwrap());
-        }
-    }
-    assert!(stack.is_empty(), "{what}: left open {stack:?}");
-    assert_eq!(count(svg, "<"), count(svg, ">"), "{what}: angle brackets balance (text is escaped)");
-    for bad in ["NaN", "inf", "Infinity"] {
-        assert!(!svg.contains(bad), "{what}: {bad} in the output");
-    }
-}
-
-fn unescape(s: &str) -> String {
-    s.replace("&lt;", "<").replace("&gt;", ">").replace("&quot;", "\"").replace("&#39;", "'").replace("&amp;", "&")
-}
-
-/// The contents of the texts of a class, in order.
-fn texts(svg: &str, class: &str) -> Vec<String> {
-    svg.split(&format!("<text class=\"{class}\""))
-        .skip(1)
-        .map(|rest| unescape(rest.split_once('>').unwrap().1.split("</text>").next().unwrap()))
-        .collect()
-}
-
-/// An attribute's value in a tag.
-fn attr<'a>(tag: &'a str, name: &str) -> &'a str {
-    tag.split(&format!(" {name}=\"")).nth(1).unwrap_or_else(|| panic!("no {name} in {tag}")).split('"').next().unwrap()
-}
-
-fn numbers(s: &str) -> Vec<f64> {
-    s.split(' ').map(|v| v.parse().unwrap()).collect()
-}
-
-/// A panel's data area [x, y, w, h] and its axes' ranges, as the figure states them.
-struct Axes {
-    rect: Vec<f64>,
-    x: Vec<f64>,
-    y: Vec<f64>,
-}
-
-impl Axes {
-    fn of(svg: &str, id: &str) -> Axes {
-        let tag = svg.split(&format!("data-panel=\"{id}\"")).nth(1).unwrap_or_else(|| panic!("no panel {id}"));
-        let tag = tag.split('>').next().unwrap();
-        Axes {
-            rect: numbers(attr(tag, "data-rect")),
-            x: numbers(attr(tag, "data-x-range")),
-            y: numbers(attr(tag, "data-y-range")),
-        }
-    }
-
-    /// The value at a point of the figure (linear axes).
-    fn value(&self, p: [f64; 2]) -> [f64; 2] {
-        let fx = (p[0] - self.rect[0]) / self.rect[2];
-        let fy = (self.rect[1] + self.rect[3] - p[1]) / self.rect[3];
-        [self.x[0] + fx * (self.x[1] - self.x[0]), self.y[0] + fy * (self.y[1] - self.y[0])]
-    }
-}
-
-/// The triangles the figure draws in `color` (the per-frame layer), each as its three corners.
-fn triangles(svg: &str, color: flexarm::plot::Color) -> Vec<[[f64; 2]; 3]> {
-    let frame = svg.split("<g id=\"frame\">").nth(1).unwrap().split("<g id=\"labels\">").next().unwrap();
-    let fill = format!("fill=\"{}\"", color.with_alpha(1.0).css());
-    let mut out = Vec::new();
-    for path in frame.split("<path d=\"").skip(1).filter(|p| p.split('>').next().unwrap().contains(&fill)) {
-        let d = path.split('"').next().unwrap();
-        for sub in d.split('M').filter(|s| s.contains('L')) {
-            let v: Vec<f64> =
-                sub.trim_end_matches('Z').replace('L', " ").split(' ').map(|x| x.parse().unwrap()).collect();
-            out.push([[v[0], v[1]], [v[2], v[3]], [v[4], v[5]]]);
-        }
-    }
-    out
-}
-
-fn centroid(t: &[[f64; 2]; 3]) -> [f64; 2] {
-    [(t[0][0] + t[1][0] + t[2][0]) / 3.0, (t[0][1] + t[1][1] + t[2][1]) / 3.0]
-}
-
-fn luminance(hex: &str) -> f64 {
-    let c = |i: usize| u8::from_str_radix(&hex[i..i + 2], 16).unwrap() as f64 / 255.0;
-    0.2126 * c(1) + 0.7152 * c(3) + 0.0722 * c(5)
-}
-
-fn background(svg: &str) -> String {
-    let tag = svg.split("<rect id=\"background\"").nth(1).unwrap().split('>').next().unwrap();
-    attr(tag, "fill").to_string()
 }
 
 #[test]

@@ -6,9 +6,9 @@
 mod common;
 use common::{play, visit as session};
 
+use common::Visit;
 use flexarm::analysis::analyze;
 use flexarm::lesson::{builtin, LESSON_TEXT};
-use common::Visit;
 use flexarm::*;
 
 /// Run A's verdict as the page states it.

@@ -8,7 +8,7 @@ use flexarm::analysis::{log_space, stability_map, StabilityMap};
 use flexarm::plot::color::{ramp_color, rate_color, rate_position, Measure, RATE_SHOWN};
 use flexarm::plot::palette;
 use flexarm::session::{Session, Settings, Source};
-use flexarm::svg::stability_maps_svg;
+use flexarm::view::figure::{figure_svg, maps_figure};
 use flexarm::view::panels::stability_maps::grid::{draw_map_static, LogFrame, StabilityGrid};
 use flexarm::view::{Color, Painter, PanelInfo, PanelKind, Rect, Scene, Vertex, ViewOptions};
 use flexarm::{PreliminaryFeedbackChoice, SimulationConfig};
@@ -143,22 +143,42 @@ fn the_contour_is_the_same_line_under_both_measures() {
     assert!(line.len() > 100, "the map without K_pr has a contour: {} vertices", line.len());
     assert!(line == contour(&rate), "the same contour");
     assert!(rho != rate, "but the cells differ");
-    // The same in the SVG figure.
-    let path = |svg: &str| svg.split("id=\"rho-contour-0\" d=\"").nth(1).unwrap().split('"').next().unwrap().to_owned();
-    let svg_rho = stability_maps_svg(&[(&map, "off")], "t", None, None, Measure::Rho);
-    let svg_rate = stability_maps_svg(&[(&map, "off")], "t", None, None, Measure::Rate);
-    assert_eq!(path(&svg_rho), path(&svg_rate));
+    // The same in the SVG figure (`flexarm map --svg`): the contour's paths, in its colour.
+    let paths = |svg: &str| -> Vec<String> {
+        let fill = format!("fill=\"{}\"", palette::CONTOUR.css());
+        svg.split("<path ").filter(|p| p.split('>').next().unwrap().contains(&fill)).map(str::to_owned).collect()
+    };
+    let svg_rho = map_svg(&map, Measure::Rho, None);
+    let svg_rate = map_svg(&map, Measure::Rate, None);
+    assert!(!paths(&svg_rho).is_empty(), "a contour");
+    assert_eq!(paths(&svg_rho), paths(&svg_rate));
     assert_ne!(svg_rho, svg_rate);
+}
+
+/// The figure `flexarm map --svg` writes of one map without preliminary feedback.
+fn map_svg(map: &StabilityMap, measure: Measure, mark: Option<(f64, f64)>) -> String {
+    let config = SimulationConfig::default();
+    maps_figure(&[(PreliminaryFeedbackChoice::Off, map)], &config, measure, mark, "t", "").unwrap().svg
 }
 
 #[test]
 fn the_svg_figure_follows_the_measure() {
     let map = real_map(PreliminaryFeedbackChoice::Paper);
-    let svg = stability_maps_svg(&[(&map, "with K_pr")], "t", Some((0.01, 2.0)), None, Measure::Rate);
-    assert!(svg.contains("ln ρ/δ (1/s), per second"), "the colour bar's title");
-    assert!(!svg.contains("ρ (spectral radius)"));
-    assert!(svg.contains("ln ρ/δ = 0 (ρ = 1): stability boundary"));
-    for tick in [">≤ −5<", ">−1<", ">0<", ">0.2<", ">≥ 5<"] {
+    let config = SimulationConfig::default();
+    let svg =
+        maps_figure(&[(PreliminaryFeedbackChoice::Paper, &map)], &config, Measure::Rate, Some((0.01, 2.0)), "t", "")
+            .unwrap()
+            .svg;
+    let key = |class: &str| -> Vec<String> {
+        svg.split(&format!("<text class=\"{class}\""))
+            .skip(1)
+            .map(|t| t.split_once('>').unwrap().1.split('<').next().unwrap().to_owned())
+            .collect()
+    };
+    assert!(key("key").iter().any(|t| t == "ln ρ/δ (1/s)"), "the colour bar's title: {:?}", key("key"));
+    assert!(!key("key").iter().any(|t| t == "ρ"), "not ρ's");
+    assert!(key("key").iter().any(|t| t.starts_with("ln ρ/δ = 0 (ρ = 1)")), "the boundary in the key");
+    for tick in [">≤ −5<", ">−1<", ">0<", ">1<", ">≥ 5<"] {
         assert!(svg.contains(tick), "colour-bar tick {tick}");
     }
     // Every cell's fill is the rate ramp at that cell.
@@ -282,8 +302,8 @@ fn switching_the_measure_redraws_the_maps_and_the_curve() {
     assert!(scene.static_vertices() == &rho_layer[..], "back to ρ");
     // The page's "Maps as a figure" follows the switch too.
     s.set("measure", "rate").unwrap();
-    let svg = s.svg_maps().unwrap();
-    assert!(svg.contains("Rate ln ρ/δ") && svg.contains("ln ρ/δ (1/s), per second"), "{}", &svg[..300]);
+    let svg = figure_svg(&s, "maps", false).unwrap().svg;
+    assert!(svg.contains("Rate ln ρ/δ") && svg.contains(">ln ρ/δ (1/s)<"), "{}", &svg[..300]);
     assert!(svg.contains(">rate, no Kₚᵣ<") && svg.contains(">rate, paper Kₚᵣ<"), "the panels' captions");
 }
 
@@ -335,10 +355,11 @@ fn flexarm_map_measure_rate_writes_the_rate_figure_and_refuses_other_words() {
     let svg = std::fs::read_to_string(&path).unwrap();
     std::fs::remove_file(&path).ok();
     assert!(svg.contains("Rate ln ρ/δ (1/s) of the sampled loop"), "{}", &svg[..400]);
-    assert!(svg.contains("ln ρ/δ (1/s), per second"));
+    // The colour bar's title (in the key).
+    assert!(svg.contains(">ln ρ/δ (1/s)</text>"));
     let out = flexarm(&["map", "--n-delta", "8", "--n-alpha", "3", "--measure", "rho", "--svg", p]);
     assert!(out.status.success());
-    assert!(std::fs::read_to_string(&path).unwrap().contains("ρ (spectral radius)"));
+    assert!(std::fs::read_to_string(&path).unwrap().contains(">ρ</text>"));
     std::fs::remove_file(&path).ok();
     let out = flexarm(&["map", "--measure", "ln", "--svg", p]);
     let stderr = String::from_utf8_lossy(&out.stderr);

@@ -6,7 +6,7 @@ use common::{play, session};
 
 use flexarm::analysis::spectral_radius;
 use flexarm::session::{MapSide, Session, Settings, Source};
-use flexarm::{FrictionCompensation, PreliminaryFeedbackChoice as Pf};
+use flexarm::{plot::format::escape, view::figure::figure_svg, FrictionCompensation, PreliminaryFeedbackChoice as Pf};
 
 /// Runs the session for `seconds` in page-sized steps.
 
@@ -339,10 +339,10 @@ fn the_windows_status_says_them_in_words_and_as_slider_bands() {
 fn the_page_exports_the_clis_figures_and_an_embed_snippet() {
     let mut s = session("preset=fig5.3&mode=full");
     play(&mut s, 1.0);
-    let svg = s.svg_traces();
-    assert!(svg.starts_with("<svg") && svg.contains("Tracking errors") && svg.contains("Unstable"), "{}", &svg[..200]);
-    assert!(svg.contains(&flexarm::svg::escape(&s.settings().run_query())), "the state string in the figure");
-    let e = s.svg_maps().unwrap_err().to_string();
+    let svg = figure_svg(&s, "errors", false).unwrap().svg;
+    assert!(svg.starts_with("<svg") && svg.contains("Tracking errors") && svg.contains("(unstable)"), "{}", &svg[..99]);
+    assert!(svg.contains(&escape(&s.settings().run_query())), "the state string in the figure");
+    let e = figure_svg(&s, "maps", false).unwrap_err().to_string();
     assert!(e.starts_with("the stability maps are still being computed"), "{e}");
     let mut tick = 0.0;
     let mut clock = || {
@@ -350,9 +350,12 @@ fn the_page_exports_the_clis_figures_and_an_embed_snippet() {
         tick
     };
     while s.maps_mut().work(&mut clock, 50.0) {}
-    let maps = s.svg_maps().unwrap();
+    let maps = figure_svg(&s, "maps", false).unwrap().svg;
     assert!(maps.contains("no Kₚᵣ") && maps.contains("paper Kₚᵣ"), "both maps, captioned");
-    let snippet = flexarm::classroom::Classroom::default().embed(&s, "https://example.org/flexarm/index.html?x=1#top", "").unwrap().html;
+    let snippet = flexarm::classroom::Classroom::default()
+        .embed(&s, "https://example.org/flexarm/index.html?x=1#top", "")
+        .unwrap()
+        .html;
     assert!(snippet.starts_with("<iframe src=\"https://example.org/flexarm/index.html?delta=0.01"), "{snippet}");
     assert!(snippet.contains("embed=1") && snippet.contains("width=\"640\" height=\"400\""), "{snippet}");
     assert!(snippet.contains("&amp;"), "the query is escaped in the attribute: {snippet}");

@@ -8,10 +8,10 @@
 mod common;
 use common::{play, visit as session};
 
-use flexarm::analysis::{analyze, stable_windows, LinearSettings};
-use flexarm::lesson::{parse, read_file, source_path, MAX_LESSON_BYTES};
-use flexarm::classroom::progress::{validate, LessonOrigin};
 use common::Visit;
+use flexarm::analysis::{analyze, stable_windows, LinearSettings};
+use flexarm::classroom::progress::{validate, LessonOrigin};
+use flexarm::lesson::{parse, read_file, source_path, MAX_LESSON_BYTES};
 use flexarm::*;
 
 const HOMEWORK: &str = include_str!("../www/lessons/windows.md");

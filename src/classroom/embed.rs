@@ -5,10 +5,10 @@
 use super::progress::LessonOrigin;
 use super::room::Classroom;
 use crate::error::{Error, ParseError};
+use crate::plot::format::escape;
 use crate::session::query::{encode, split_query};
 use crate::session::view::{Strip, ViewSettings};
 use crate::session::Session;
-use crate::words::markup::escape;
 
 /// The embedded page's size, CSS px (a canvas and a strip of controls fit it without scrolling).
 pub const EMBED_SIZE: [u32; 2] = [640, 400];

@@ -191,9 +191,7 @@ impl Classroom {
         let l = self.lesson.as_ref().filter(|l| l.active)?;
         match &self.lesson_origin {
             LessonOrigin::BuiltIn => Some(format!("lesson={}", l.step + 1)),
-            LessonOrigin::Path(path) => {
-                Some(format!("lesson_src={}&lesson={}", encode(path), l.step + 1))
-            }
+            LessonOrigin::Path(path) => Some(format!("lesson_src={}&lesson={}", encode(path), l.step + 1)),
             // A file from the user's disk: a link cannot bring it back.
             LessonOrigin::File(_) => None,
         }

@@ -9,7 +9,6 @@ use super::answers::Entry;
 use super::room::{Classroom, HiddenStatus};
 use crate::session::Session;
 
-
 /// The page's controls that show nothing while the answers are hidden (the figures' switches and
 /// the downloads that carry ρ): the page disables them.
 pub const HIDDEN_CONTROLS: [&str; 9] =
@@ -68,16 +67,19 @@ impl Classroom {
         let l = self.lesson.as_mut().expect("open");
         l.lift(step);
         let title = l.lesson().steps[step].title.clone();
-        self.record(session, Entry {
-            step: step + 1,
-            step_title: title,
-            kind: "answers shown".into(),
-            choice: None,
-            choice_text: String::new(),
-            result: "shown".into(),
-            state: String::new(),
-            time: String::new(),
-        });
+        self.record(
+            session,
+            Entry {
+                step: step + 1,
+                step_title: title,
+                kind: "answers shown".into(),
+                choice: None,
+                choice_text: String::new(),
+                result: "shown".into(),
+                state: String::new(),
+                time: String::new(),
+            },
+        );
         self.sync(session);
     }
 }

@@ -1,5 +1,6 @@
 //! Numbers as people read them: tick labels, readouts and figures all format through here, with
-//! a real minus sign (−) and no trailing zeros.
+//! a real minus sign (−) and no trailing zeros; and any text as markup carries it ([`escape`]: the
+//! SVG figures and the embed's HTML, which sit in layers that cannot share a module above this).
 
 /// Replaces a leading ASCII hyphen (and the one of an exponent) by the minus sign −.
 pub fn minus(s: &str) -> String {
@@ -183,9 +184,33 @@ pub fn log_tick(v: f64) -> String {
     sig_trim(v, 3)
 }
 
+/// Text escaped for XML and HTML element content and attribute values.
+pub fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            // Characters that XML 1.0 does not allow at all.
+            c if (c as u32) < 0x20 && !matches!(c, '\t' | '\n' | '\r') => out.push(' '),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn markup_is_escaped_and_control_characters_dropped() {
+        assert_eq!(escape("a<b> & \"c\" 'd'\u{1}"), "a&lt;b&gt; &amp; &quot;c&quot; &#39;d&#39; ");
+        assert_eq!(escape("δ = 0.01\n"), "δ = 0.01\n");
+    }
 
     #[test]
     fn numbers_read_cleanly() {

@@ -5,8 +5,7 @@
 pub use crate::analysis::map::MapSide;
 use crate::analysis::{LinearSettings, MapGrid, MapJob};
 use crate::control::config::PreliminaryFeedbackChoice;
-use crate::plot::color::Measure;
-use crate::words::settings::{feedback_short, map_caption};
+use crate::words::settings::feedback_short;
 
 /// Maps kept (each 6000 numbers); the least recently shown go first.
 pub const CACHE_SIZE: usize = 8;
@@ -242,10 +241,5 @@ impl Maps {
             format!("computing {points} points per map… {percent} %")
         };
         MapStatus { percent, done, text, points, shown: self.enabled, title: String::new() }
-    }
-
-    /// The caption of a side's map for run A's feedback `pf`, naming what the cells show.
-    pub fn caption(&self, side: MapSide, pf: PreliminaryFeedbackChoice, measure: Measure) -> String {
-        map_caption(side, pf, measure)
     }
 }

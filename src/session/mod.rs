@@ -11,7 +11,6 @@ pub mod controls;
 mod cycle;
 pub mod data;
 mod figure_text;
-pub mod export;
 pub mod maps;
 pub mod named;
 pub mod presets;

@@ -5,8 +5,8 @@
 
 use serde::Serialize;
 
-use super::MAX_ADVANCE_PER_CALL;
 use super::run::HISTORY_SECONDS;
+use super::MAX_ADVANCE_PER_CALL;
 use super::{CompareSettings, Session};
 use crate::control::{ClosedLoop, Snapshot};
 use crate::error::Error;
@@ -52,7 +52,6 @@ impl Session {
         self.maps.show(&self.linear_settings());
         Ok(())
     }
-
 
     /// The run whose clock the timeline follows: the one furthest in time (B goes on alone when
     /// A has diverged in a comparison).

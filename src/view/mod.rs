@@ -11,7 +11,7 @@
 //! | [`rho_readout`] | ρ read out in a tooltip (ρ(δ) and the maps) |
 //! | [`labels`] | where every text over the canvas goes (ticks, titles, notes), without overlaps |
 //! | [`legend`] | the key's groups and the maps' colour bar |
-//! | [`figure`] | a figure per panel: one panel laid out alone, drawn and written as SVG |
+//! | [`figure`] | every figure as SVG (the page's, `flexarm figure`, `simulate --svg`, `map --svg`): its panels laid out alone, drawn and written |
 //! | [`panel_info`], [`text_metrics`], [`tick_labels`] | the leaves: what the page reads of a panel; text widths; tick label text |
 //! | [`painter`], [`rect`], [`autoscale`], [`time_window`] | triangles; rectangles; the error/torque autoscale; the time plots' window |
 //! | [`options`], [`text_size`] | what the page can change about the picture; the figure's text scale |

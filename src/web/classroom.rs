@@ -28,7 +28,11 @@ pub struct WebClassroom {
 }
 
 /// Runs a classroom change on the session, then lets the classroom follow it.
-fn change<T>(c: &mut WebClassroom, s: &mut WebSession, f: impl FnOnce(&mut Classroom, &mut crate::session::Session) -> T) -> T {
+fn change<T>(
+    c: &mut WebClassroom,
+    s: &mut WebSession,
+    f: impl FnOnce(&mut Classroom, &mut crate::session::Session) -> T,
+) -> T {
     let out = f(&mut c.inner, s.session_mut());
     c.inner.follow(s.session_mut());
     out

@@ -17,8 +17,8 @@ pub mod session;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
-pub use renderer::Renderer;
 pub use classroom::WebClassroom;
+pub use renderer::Renderer;
 pub use session::{arms, lesson_source_path, presets, schema, spectral_radius, WebSession};
 
 #[wasm_bindgen(start)]

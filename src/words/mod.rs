@@ -12,14 +12,12 @@
 //! | [`settings`] | a run's settings, its feedback, a map's caption, a point of it, the errors, the stable windows of δ |
 //! | [`panels`] | the panels a small canvas leaves out, and where they are |
 //! | [`work`] | what a run will cost, a duration in sensible units |
-//! | [`markup`] | text inside markup: escaping for SVG, MathML and HTML |
 //! | [`numbers`] | numbers as the sentences write them (rates, ρ, percents, pairs, the swing's energy shares) |
 //!
 //! [`Verdict`]: crate::control::Verdict
 
 pub mod equations;
 pub mod judgement;
-pub mod markup;
 pub mod numbers;
 pub mod panels;
 pub mod settings;

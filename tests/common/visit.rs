@@ -8,8 +8,8 @@ use std::ops::{Deref, DerefMut};
 use flexarm::classroom::answers::Record;
 use flexarm::classroom::embed::Embed;
 use flexarm::classroom::progress::{LessonOrigin, LessonProgress, LessonStatus};
-use flexarm::classroom::HiddenStatus;
 use flexarm::classroom::Classroom;
+use flexarm::classroom::HiddenStatus;
 use flexarm::error::Error;
 use flexarm::session::{Notice, Session, Status};
 

@@ -10,6 +10,7 @@ use flexarm::control::Work;
 use flexarm::plot::color::Measure;
 use flexarm::plot::format::sig_trim;
 use flexarm::schema;
+use flexarm::view::figure::maps_figure;
 use flexarm::PreliminaryFeedbackChoice;
 use serde_json::{json, Value};
 
@@ -114,15 +115,6 @@ fn parse_count(flag: &str, text: &str) -> Res<usize> {
             MapGrid::MAX_POINTS
         ))
     })
-}
-
-/// The figure's caption for one map.
-fn pf_caption(pf: PreliminaryFeedbackChoice) -> &'static str {
-    match pf {
-        PreliminaryFeedbackChoice::Off => "without preliminary feedback (PF off)",
-        PreliminaryFeedbackChoice::Paper => "with the paper's preliminary feedback K_pr",
-        PreliminaryFeedbackChoice::Lq => "with the LQ preliminary feedback",
-    }
 }
 
 /// One computed map and how long it took.
@@ -246,15 +238,19 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         written.push(format!("ρ written to {path} ({} rows)", results.len() * grid.n_delta * grid.n_alpha));
     }
     if let Some(path) = text("svg") {
-        let title = format!(
-            "{} of the sampled loop (k = {}, m = {}, inner loop {})",
-            measure.quantity(),
+        // What the title (the measure) does not say: the grid and the loop's settings.
+        let about = format!(
+            "flexarm map: the sampled loop linearized at rest on {} δ × {} α (logarithmic grid); k = {}, m = {}, \
+             inner loop {}",
+            grid.n_delta,
+            grid.n_alpha,
             config.controller.horizon_steps,
             config.controller.eps_ratio,
             config.inner_loop.name()
         );
-        let panels: Vec<(&StabilityMap, &str)> = results.iter().map(|r| (&r.map, pf_caption(r.pf))).collect();
-        write_file("--svg", path, &flexarm::svg::stability_maps_svg(&panels, &title, mark, Some(&state), measure))?;
+        let maps: Vec<(PreliminaryFeedbackChoice, &StabilityMap)> = results.iter().map(|r| (r.pf, &r.map)).collect();
+        let figure = maps_figure(&maps, &config, measure, mark, &about, &state).map_err(lib_error)?;
+        write_file("--svg", path, &figure.svg)?;
         written.push(format!("figure written to {path}"));
     }
 

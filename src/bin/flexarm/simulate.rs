@@ -6,6 +6,7 @@ use flexarm::analysis::judgement::judge;
 use flexarm::control::{Metrics, TraceEnvelope, Traces, Work};
 use flexarm::schema;
 use flexarm::session::Settings;
+use flexarm::view::figure;
 use flexarm::words::judgement::{judgement as in_words, JudgementText as Judgement};
 use flexarm::words::verdict::growth as growth_text;
 use flexarm::{SimulationConfig, Verdict};
@@ -63,7 +64,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     if let Some(path) = svg_path {
         std::fs::File::create(path).map_err(|e| cli::write_error("--svg", path, e))?;
     }
-    let mut envelope = svg_path.map(|_| TraceEnvelope::new(8 * flexarm::svg::MAX_TRACE_POINTS));
+    let mut envelope = svg_path.map(|_| TraceEnvelope::new(figure::ENVELOPE_ROWS));
     let sinks = TraceSinks {
         csv: csv_file.as_mut().map(|(out, path)| (out as &mut dyn std::io::Write, *path)),
         envelope: envelope.as_mut(),
@@ -91,13 +92,14 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         out += &format!("traces ({rows} rows) written to {path}\n");
     }
     if let (Some(path), Some(envelope)) = (svg_path, envelope) {
-        let title = format!(
-            "Tracking errors: {}, PF {} — {}",
+        let about = format!(
+            "{}, PF {} — {}",
             delta_alpha_text(&config),
             config.preliminary_feedback.name(),
             verdict_text(metrics.verdict, config.divergence_bound)
         );
-        write_file("--svg", path, &flexarm::svg::error_traces_svg(&envelope.traces(), &title, Some(&state)))?;
+        let figure = figure::errors_figure(&envelope.traces(), &config, &about, &state);
+        write_file("--svg", path, &figure.svg)?;
         if !json_out {
             out += &format!("figure of the tracking errors written to {path}\n");
         }

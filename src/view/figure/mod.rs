@@ -1,22 +1,32 @@
-//! A figure per panel, for slides and handouts: one panel (or the two error plots, or both maps)
-//! as a standalone SVG, drawn from the same view geometry as the canvas — a [`Scene`] laid out
-//! with only that panel at a figure's size and drawn from the session, its triangles written as
+//! Every figure flexarm writes, for slides and handouts — the one SVG writer: one panel (or the
+//! two error plots, or both maps) as a standalone SVG, drawn from the same view geometry as the
+//! canvas — a [`Scene`] laid out with only that panel at a figure's size, its triangles written as
 //! paths, its labels as texts with the page's sizes and alignments, its key, and a caption with
-//! what it shows and the whole state string (never cut: it takes as many lines as it needs).
+//! what it shows and the whole state string (never cut: it takes as many lines as it needs), on
+//! one sheet for all (`sheet.rs`).
+//!
+//! The page's figures are drawn from its session ([`figure_svg`]): the page rasterizes the SVG for
+//! a PNG at 1×, 2× or 4× (`www/js/export.js`) and `flexarm figure` writes the same SVG. The
+//! command line's figures are drawn from what a command has: `flexarm simulate --svg` a run's
+//! errors over its whole duration ([`errors_figure`]), `flexarm map --svg` the maps on the user's
+//! grid ([`maps_figure`]).
 //!
 //! Always on the light background unless the dark scheme is asked for (then every colour is
-//! inverted in lightness, as the canvas's shader does). The page rasterizes the SVG for a PNG at
-//! 1×, 2× or 4× (`www/js/export.js`); `flexarm figure` writes the same SVG.
+//! inverted in lightness, as the canvas's shader does).
 //!
 //! In student mode the panels that give the answer away (the pole plots, ρ(δ), the maps) are
 //! refused while the answers are hidden, as the page's other downloads are; the error plots follow
 //! what the page draws (no log |e| then).
 
+// The command line's figures are not in the page's module: nothing there draws them, and without
+// them the sheet's functions have one caller there, inlined as the page's figure was before the
+// command line shared them (the module does not grow).
+#[cfg(not(target_arch = "wasm32"))]
+mod command_line;
 mod key;
 mod layout;
+mod sheet;
 mod svg;
-
-use core::fmt::Write as _;
 
 use crate::error::{Error, ParseError};
 use crate::plot::palette;
@@ -24,10 +34,12 @@ use crate::session::{MapSide, Session};
 use crate::view::layout::PanelKind;
 use crate::view::panels::time_plots::figure_curves;
 use crate::view::scene::{Scene, ViewOptions};
-use key::{curve_key, key, Caption};
-use layout::{figure_layout, MARGIN};
-use svg::{wrap, Doc, INK};
+use key::curve_key;
+use sheet::{at_time, Sheet};
 
+#[cfg(not(target_arch = "wasm32"))]
+pub use command_line::{errors_figure, maps_figure, ENVELOPE_ROWS};
+pub use sheet::Figure;
 pub use svg::px;
 
 /// What a figure shows.
@@ -178,14 +190,6 @@ pub fn figure_choices(session: &Session) -> Vec<FigureChoice> {
     out
 }
 
-/// A figure's SVG text and size (px at 1×).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Figure {
-    pub svg: String,
-    pub width: f64,
-    pub height: f64,
-}
-
 /// The figure `panel` of the session as it is now: light, or in the dark scheme if `dark`.
 pub fn figure_svg(session: &Session, panel: &str, dark: bool) -> Result<Figure, Error> {
     figure_svg_captioned(session, &session.state_string(), panel, dark)
@@ -208,80 +212,26 @@ pub fn figure_svg_captioned(session: &Session, state: &str, panel: &str, dark: b
             "the stability maps are still being computed: show them and wait for the progress bar to fill",
         ));
     }
-    let width_guess = 800.0;
     // The title, from the panel as the session shows it now (log |e|, the zoom on tₙ, ρ or ln ρ/δ).
-    let mut shown = Scene::new(ViewOptions::default(), width_guess, 600.0, 1.0);
-    shown.follow_view(&session.drawn_view());
-    let title = shown.figure_title(panel.kinds());
-    let title_lines = wrap(&title, width_guess - 2.0 * MARGIN, 16.0, true);
-    let top = MARGIN + title_lines.len() as f64 * 21.0 + 6.0;
-    let (layout, width, panels_bottom) = figure_layout(panel.kinds(), top);
-    let inner = width - 2.0 * MARGIN;
-    let title_lines = wrap(&title, inner, 16.0, true);
+    let mut scene = Scene::new(ViewOptions::default(), 800.0, 600.0, 1.0);
+    scene.follow_view(&session.drawn_view());
+    let kinds = panel.kinds();
+    let (sheet, layout) = Sheet::new(kinds, scene.figure_title(kinds));
 
-    // The scene: first as the session's view lays it out (its options, the runs), then on the
-    // figure's layout, drawn again.
-    let mut scene = Scene::new(ViewOptions::default(), layout.css_width, layout.css_height, 1.0);
+    // The scene: first as the session's view lays it out (its options, the runs) on a canvas of
+    // the figure's size, then on the figure's layout, drawn again.
+    scene.resize(layout.css_width, layout.css_height, 1.0);
     scene.draw_session(session);
     scene.set_layout(layout);
     scene.draw_session(session);
 
     let mut groups = scene.legend();
-    let kinds = panel.kinds();
     if kinds.iter().any(|k| k.is_time_plot()) {
         let pair = scene.is_pair().then_some(palette::RUN_B);
         let ghost = session.ghost().map(|_| palette::GHOST_TRACE);
         groups.insert(0, curve_key(figure_curves(kinds), pair, ghost).expect("curves"));
     }
-    let key_top = panels_bottom + 8.0;
-    let key_height = key(None, &groups, MARGIN, key_top, inner);
-    let status = session.status();
     let t = session.run(0).map_or(0.0, |r| r.closed_loop().time());
-    let head = format!("flexarm at t = {} s — {}", crate::plot::format::sig_trim(t, 4), status.showing);
-    let caption = Caption::new(&head, state, inner);
-    let caption_top = key_top + key_height + 4.0;
-    let height = (caption_top + caption.height() + MARGIN).ceil();
-
-    let background = palette::BACKGROUND;
-    let mut doc = Doc::new(width, height, &title, state, background, dark);
-    for (k, line) in title_lines.iter().enumerate() {
-        let y = MARGIN + 16.0 + k as f64 * 21.0;
-        doc.text(width / 2.0, y, 16.0, "middle", 700, INK, "figure-title", line);
-    }
-    // Each panel's axes (its data area and what its edges stand for), for whoever reads the
-    // figure back: the tests, a script placing annotations.
-    // The page's entry points (at text scale 1 on the figure's layout: the layout's pixels), so
-    // that the page's module needs no second copy of them.
-    for p in scene.page_panel_info() {
-        let _ = writeln!(
-            doc.out,
-            "<g class=\"panel\" data-panel=\"{}\" data-rect=\"{} {} {} {}\" data-x-range=\"{} {}\" \
-             data-y-range=\"{} {}\" data-x-scale=\"{}\" data-y-scale=\"{}\"></g>",
-            p.id,
-            p.x,
-            p.y,
-            p.width,
-            p.height,
-            p.x_range[0],
-            p.x_range[1],
-            p.y_range[0],
-            p.y_range[1],
-            p.x_scale,
-            p.y_scale
-        );
-    }
-    doc.out.push_str("<g id=\"static\">\n");
-    doc.triangles(scene.static_vertices(), 0.4);
-    doc.out.push_str("</g>\n<g id=\"frame\">\n");
-    doc.triangles(scene.vertices(), 0.0);
-    doc.out.push_str("</g>\n<g id=\"labels\">\n");
-    for l in scene.page_labels() {
-        doc.label(&l);
-    }
-    doc.out.push_str("</g>\n<g id=\"key\">\n");
-    key(Some(&mut doc), &groups, MARGIN, key_top, inner);
-    doc.out.push_str("</g>\n<g id=\"caption\">\n");
-    caption.write(&mut doc, MARGIN, caption_top, inner);
-    doc.out.push_str("</g>\n");
-    Ok(Figure { svg: doc.finish(), width, height })
+    let head = at_time(t, &session.status().showing);
+    Ok(sheet.write(&scene, &groups, &head, state, dark))
 }

@@ -9,7 +9,7 @@ use crate::view::labels::{Label, LabelClass};
 use crate::view::painter::Vertex;
 use crate::view::text_metrics::{bold_width, text_width, LINE_HEIGHT};
 
-pub(crate) use crate::svg::escape;
+pub(crate) use crate::plot::format::escape;
 
 /// The figures' font: the widths of [`crate::view::labels`] are estimated for DejaVu Sans.
 pub const FONT: &str = "DejaVu Sans, Helvetica, Arial, sans-serif";

@@ -98,7 +98,9 @@ impl Panels {
     pub fn draw(&mut self, frame: &Frame, runs: &Runs<'_>, panel: &Panel, painter: &mut Painter) {
         match panel.kind {
             PanelKind::Arm | PanelKind::ArmB => self.arm.draw(frame, runs, panel, painter),
-            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => self.time_plots.draw(frame, runs, panel, painter),
+            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
+                self.time_plots.draw(frame, runs, panel, painter)
+            }
             PanelKind::Poles => self.pole_plot.draw(frame, runs, panel, painter),
             PanelKind::ZPlane => self.z_plane.draw(frame, runs, panel, painter),
             PanelKind::RhoCurve => self.rho_curve.draw(frame, runs, panel, painter),

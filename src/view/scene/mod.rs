@@ -194,8 +194,7 @@ impl Scene {
     /// Reserves the painter's room for this layout's largest frame and rebuilds the static layer.
     fn reserve(&mut self) {
         let frame = &self.frame;
-        let budget: usize =
-            frame.layout.panels.iter().map(|panel| self.panels.vertex_budget(frame, panel)).sum();
+        let budget: usize = frame.layout.panels.iter().map(|panel| self.panels.vertex_budget(frame, panel)).sum();
         self.painter.reserve_total(budget);
         self.rebuild_static();
         self.info_generation += 1;
