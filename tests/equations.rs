@@ -59,10 +59,10 @@ fn the_equations_carry_the_storys_numbers() {
         assert!(story.math_lag.contains(&format!("<mn>{:.2}</mn>", law.lag(delta))), "{query}: {}", story.math_lag);
         // (4.3) with α: 3α and 3α² as coefficients, α³ on w.
         let a = s.settings().a.alpha[0];
-        let sig = |v: f64| flexarm::plot::format::sig_trim(v, 4);
+        let significant = |v: f64| flexarm::plot::format::significant_trimmed(v, 4);
         for coefficient in [3.0 * a, 3.0 * a * a, a * a * a] {
             assert!(
-                story.math_constraint.contains(&format!("<mn>{}</mn>", sig(coefficient))),
+                story.math_constraint.contains(&format!("<mn>{}</mn>", significant(coefficient))),
                 "{query}: {coefficient}"
             );
         }

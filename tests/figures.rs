@@ -64,7 +64,7 @@ fn the_z_plane_shows_the_flexible_pair_outside_the_unit_circle_without_feedback(
         assert!(probe
             .lines
             .iter()
-            .any(|l| l.text.contains(&format!("|λ| = {}", flexarm::plot::format::sig(p.modulus, 4)))));
+            .any(|l| l.text.contains(&format!("|λ| = {}", flexarm::plot::format::significant(p.modulus, 4)))));
         assert!(all_finite(&scene));
     }
 }

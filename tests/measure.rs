@@ -268,7 +268,7 @@ fn the_map_tooltip_gives_rho_and_the_rate_whatever_the_switch() {
             probe.lines[1].text,
             format!("ρ = {rho:.3} per period: {}", if rho < 1.0 { "stable" } else { "unstable" })
         );
-        let rate = flexarm::plot::format::sig(rho.ln() / cell_delta, 3);
+        let rate = flexarm::plot::format::significant(rho.ln() / cell_delta, 3);
         assert_eq!(probe.lines[2].text, format!("ln ρ/δ = {rate} 1/s (per second)"), "{measure}");
         let bar = &scene.legend().last().unwrap().scale.clone().unwrap();
         assert_eq!(bar.name, if measure == "rho" { "ρ" } else { "ln ρ/δ (1/s)" });

@@ -115,7 +115,7 @@ fn the_zoom_draws_the_prediction_u_k_and_its_hold_and_the_caption_says_when() {
     let sim = s.run(0).unwrap().closed_loop();
     let next = sim.history().at(tn + 0.01 + 1e-9).unwrap().0;
     let v = next.v_next.unwrap();
-    assert!(back.contains(&flexarm::plot::format::sig(v[0], 4)), "{back} vs {v}");
+    assert!(back.contains(&flexarm::plot::format::significant(v[0], 4)), "{back} vs {v}");
     // The jump off the scale: the torque plot's note says so, the caption gives its size.
     let info = scene.panel_info();
     let torque = info.iter().find(|p| p.id == "torque").unwrap();

@@ -10,17 +10,17 @@
 pub mod energy;
 pub mod judgement;
 pub mod lag;
-pub mod map;
 pub mod resonance;
 pub mod sampled;
+pub mod stability_map;
 pub mod swing;
 pub mod windows;
 
-pub use map::{log_space, stability_map, MapGrid, MapJob, StabilityMap};
 pub use sampled::{
     analyze, describes, loop_eigenvalues, sampled_loop_matrix, spectral_radius, LinearSettings, LoopModel, Pole,
     StabilityReport,
 };
+pub use stability_map::{log_space, stability_map, MapGrid, MapJob, StabilityMap};
 pub use windows::{stable_intervals, stable_windows, StableWindows};
 
 /// The linearization and the δ → 0 limit live with the controller they describe.

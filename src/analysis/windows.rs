@@ -42,7 +42,7 @@ impl StableWindows {
 /// bisected to [`EDGE_TOLERANCE`].
 pub fn stable_windows(settings: &LinearSettings, range: [f64; 2]) -> Result<StableWindows, Error> {
     let model = LoopModel::new(settings)?;
-    let deltas = super::map::log_space(range[0], range[1], SCAN_POINTS);
+    let deltas = super::stability_map::log_space(range[0], range[1], SCAN_POINTS);
     // A cell whose linear algebra fails counts as not stable.
     let rho_at = |d: f64| -> Result<f64, Error> {
         match model.spectral_radius(d) {

@@ -1,4 +1,4 @@
-//! A link's moment (issue 23): `t=3&paused=1` in a URL, an embed or a lesson's `state:` line
+//! A link's moment: `t=3&paused=1` in a URL, an embed or a lesson's `state:` line
 //! advances the runs to t seconds flat out and holds them there, paused, with the timeline at t.
 //! The moment is read once and consumed; "Copy link to this moment" writes it back
 //! ([`Classroom::moment_query`]).
@@ -29,6 +29,6 @@ impl Classroom {
     /// newest), for "Copy link to this moment".
     pub fn moment_query(&self, session: &Session) -> String {
         let t = session.viewing().unwrap_or_else(|| session.run(0).map_or(0.0, |a| a.closed_loop().time()));
-        format!("{}&paused=1&t={}", self.state_string(session), crate::plot::format::sig_trim(t, 6))
+        format!("{}&paused=1&t={}", self.state_string(session), crate::plot::format::significant_trimmed(t, 6))
     }
 }

@@ -105,7 +105,7 @@ impl PlantParameters {
                  which needs A3² < A1·A2 − A2² = {}",
                 crate::schema::format_number(self.a1),
                 crate::schema::format_number(self.a2),
-                crate::plot::format::sig(room, 3)
+                crate::plot::format::significant(room, 3)
             );
             return Err(ConfigError::new(crate::schema::A3.name, self.a3, &reason));
         }

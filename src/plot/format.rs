@@ -44,13 +44,13 @@ pub fn number(v: f64) -> String {
 
 /// `digits` significant digits without an exponent for ordinary magnitudes (1e-3 ≤ |v| < 1e6),
 /// else in exponent notation: "2.64", "29.6", "3.34e−4". "—" for a missing value.
-pub fn sig(v: f64, digits: usize) -> String {
+pub fn significant(v: f64, digits: usize) -> String {
     if !v.is_finite() {
         return "—".into();
     }
     let a = v.abs();
     if a != 0.0 && !(1e-3..1e6).contains(&a) {
-        return sci(v, digits);
+        return scientific(v, digits);
     }
     if v == 0.0 {
         return "0".into();
@@ -61,7 +61,7 @@ pub fn sig(v: f64, digits: usize) -> String {
 }
 
 /// `digits` significant digits in exponent notation: "3.34e−4". "—" for a missing value.
-pub fn sci(v: f64, digits: usize) -> String {
+pub fn scientific(v: f64, digits: usize) -> String {
     if !v.is_finite() {
         return "—".into();
     }
@@ -94,7 +94,7 @@ pub fn rounded_summands<const N: usize>(parts: [f64; N], step: f64) -> [f64; N] 
 }
 
 /// `digits` significant digits, trailing zeros trimmed ("0.0349", "0.1", "2.09").
-pub fn sig_trim(v: f64, digits: usize) -> String {
+pub fn significant_trimmed(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {
         return number(v);
     }
@@ -179,9 +179,9 @@ pub fn log_tick(v: f64) -> String {
                 return minus(&text);
             }
         }
-        return sci(v, 3);
+        return scientific(v, 3);
     }
-    sig_trim(v, 3)
+    significant_trimmed(v, 3)
 }
 
 /// Text escaped for XML and HTML element content and attribute values.
@@ -218,12 +218,12 @@ mod tests {
         assert_eq!(number(-1.5), "−1.5");
         assert_eq!(number(2e-7), "2e−7");
         assert_eq!(number(250.0), "250");
-        assert_eq!(sig(2.639, 3), "2.64");
-        assert_eq!(sig(-29.58, 4), "−29.58");
-        assert_eq!(sig(3.34e-4, 3), "3.34e−4");
-        assert_eq!(sci(0.000334, 3), "3.34e−4");
-        assert_eq!(sig_trim(0.034912, 3), "0.0349");
-        assert_eq!(sig_trim(0.1, 3), "0.1");
+        assert_eq!(significant(2.639, 3), "2.64");
+        assert_eq!(significant(-29.58, 4), "−29.58");
+        assert_eq!(significant(3.34e-4, 3), "3.34e−4");
+        assert_eq!(scientific(0.000334, 3), "3.34e−4");
+        assert_eq!(significant_trimmed(0.034912, 3), "0.0349");
+        assert_eq!(significant_trimmed(0.1, 3), "0.1");
         assert_eq!(log_tick(0.002), "0.002");
         assert_eq!(log_tick(5.0), "5");
         assert_eq!(log_tick(1e-9), "1e−9");

@@ -1,4 +1,4 @@
-//! The data behind every figure (issue 21): the model (the arm, α, δ, k, ε, the preliminary
+//! The data behind every figure: the model (the arm, α, δ, k, ε, the preliminary
 //! feedback's gain K_pr), the arm linearized at rest (A, B, C, D), the one-period map Φ of the
 //! sampled loop with its eigenvalues, ρ and the δ → 0 pair A4, the ρ(δ) curve and both stability
 //! maps, with units and the state string.
@@ -20,7 +20,7 @@
 
 use core::fmt::{Display, Write};
 
-use super::maps::MapSide;
+use super::map_cache::MapSide;
 use super::Session;
 use crate::analysis::{stable_windows, LinearSettings, LoopModel, MapGrid, MapJob, StabilityReport, StableWindows};
 use crate::control::config::SimulationConfig;

@@ -8,10 +8,9 @@
 
 mod changes;
 pub mod controls;
-mod cycle;
 pub mod data;
 mod figure_text;
-pub mod maps;
+pub mod map_cache;
 pub mod named;
 pub mod presets;
 pub mod python;
@@ -22,6 +21,7 @@ pub mod settings;
 pub mod status;
 pub mod timeline;
 pub mod view;
+mod zoom_caption;
 
 use serde::Serialize;
 
@@ -31,7 +31,7 @@ use crate::error::{Error, ParseError};
 use crate::schema::{self, Kind, Scope, Value};
 
 pub use controls::{display, ControlValue};
-pub use maps::{MapSide, Maps};
+pub use map_cache::{MapSide, Maps};
 pub use presets::{arm, preset, ArmPreset, Preset, ARMS, PRESETS};
 pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS, HISTORY_SECONDS};
 pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source, ViewSettings};
@@ -58,7 +58,7 @@ pub struct Status {
     pub arm: String,
     /// What the page shows, in words: the preset's title, or run A's settings.
     pub showing: String,
-    pub maps: maps::MapStatus,
+    pub maps: map_cache::MapStatus,
     /// Run A's stable windows of δ (null until computed: `Session::refresh`).
     pub windows: Option<WindowsStatus>,
     /// What the faint ghost traces are ("" if there are none).
@@ -405,7 +405,7 @@ impl Session {
                     format!("{}{repeating}", if hidden { p.settings_title } else { p.title })
                 },
             ),
-            maps: maps::MapStatus {
+            maps: map_cache::MapStatus {
                 // Hidden in student mode: the maps say where ρ < 1.
                 shown: self.maps.status().shown && !hidden,
                 title: match self.settings.view.measure {

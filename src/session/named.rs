@@ -1,4 +1,4 @@
-//! Every panel the text talks about is on screen (issue 23 item 3): a lesson step, a "Try:" button
+//! Every panel the text talks about is on screen: a lesson step, a "Try:" button
 //! or a link that names a panel — turns it on, or changes what it shows — selects the tab that
 //! holds it, so a phone or a 1024-px projector, which show one tab at a time, show that panel. A
 //! `tab=` given with the change wins; where a change names several panels, the first named wins

@@ -1,4 +1,4 @@
-//! The model as a Python script (issue 21): `www/export/model_template.py` filled with a configuration's
+//! The model as a Python script: `www/export/model_template.py` filled with a configuration's
 //! numbers — the arm (and the arm the controller assumes), α, δ, k, m, the preliminary feedback's
 //! gains written out, the inner loop, the rest point and the slew — so that a student can rebuild
 //! the linearized loop in NumPy/SciPy, read how it is made, and compare its ρ and A4 with

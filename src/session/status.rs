@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::run::Run;
 use crate::analysis::judgement::judge;
 use crate::control::metrics::Verdict;
-use crate::plot::format::{minus, sci, sig};
+use crate::plot::format::{minus, scientific, significant};
 use crate::words::judgement::{judgement, JudgementText};
 
 /// The readouts under the canvas.
@@ -65,7 +65,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
     let report = run.analysis().report();
     let JudgementText { verdict, headline, detail, observed, measured, rho } =
         judgement(&judge(&m, report, run.analysis().error(), sim.config(), s.error));
-    let pair = |v: [f64; 2], unit: &str| format!("{}, {} {unit}", sci(v[0], 3), sci(v[1], 3));
+    let pair = |v: [f64; 2], unit: &str| format!("{}, {} {unit}", scientific(v[0], 3), scientific(v[1], 3));
     let readouts = Readouts {
         time: format!("{:.2} s", m.time),
         error: crate::words::settings::errors(s.error),
@@ -76,7 +76,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         } else {
             pair(m.max_error_after, "rad")
         },
-        torque: format!("{}, {} N m", sig(m.max_torque[0], 3), sig(m.max_torque[1], 3)),
+        torque: format!("{}, {} N m", significant(m.max_torque[0], 3), significant(m.max_torque[1], 3)),
         growth: match (m.verdict, m.growth_rate) {
             // The last fit before a divergence is no rate of the run's.
             (Verdict::Diverged { .. }, _) => "— (diverged)".into(),
@@ -85,7 +85,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         },
         a4: report.map_or("—".into(), |r| {
             let [re, im] = r.limit_pair[0];
-            format!("{} ± {}j 1/s", sig(re, 3), sig(im.abs(), 4))
+            format!("{} ± {}j 1/s", significant(re, 3), significant(im.abs(), 4))
         }),
     };
     RunStatus {

@@ -10,7 +10,7 @@ use super::MAX_ADVANCE_PER_CALL;
 use super::{CompareSettings, Session};
 use crate::control::{ClosedLoop, Snapshot};
 use crate::error::Error;
-use crate::plot::format::sci;
+use crate::plot::format::scientific;
 
 /// Where the session looks, for the page's scrubber.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -160,8 +160,8 @@ impl Session {
                 let e = self.shown_snapshot(0).map_or([f64::NAN; 2], |s| s.error);
                 format!(
                     "looking back at t = {t:.2} s (e1 = {}, e2 = {} rad; the run is at {now:.2} s) — Play replays from here; Continue from here, or any change, runs on from here",
-                    sci(e[0], 3),
-                    sci(e[1], 3)
+                    scientific(e[0], 3),
+                    scientific(e[1], 3)
                 )
             }
         };

@@ -14,7 +14,7 @@ pub fn stability_lines(rho: f64, delta: f64, lines: &mut Vec<TipLine>) {
         // The verdict's own judgement (a rate within the borderline band is borderline here too).
         let verdict = prediction_word(Prediction::of_rate(Measure::Rate.value(rho, delta)));
         lines.push(TipLine::toned(format!("ρ = {rho:.3} per period: {verdict}"), verdict == "stable"));
-        let rate = format::sig(Measure::Rate.value(rho, delta), 3);
+        let rate = format::significant(Measure::Rate.value(rho, delta), 3);
         lines.push(TipLine::plain(format!("ln ρ/δ = {rate} 1/s (per second)")));
     } else {
         lines.push(TipLine::plain("ρ not computed yet"));

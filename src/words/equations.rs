@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use crate::analysis::lag::LagLaw;
 use crate::analysis::StabilityReport;
-use crate::plot::format::sig_trim;
+use crate::plot::format::significant_trimmed;
 
 /// Each equation as one `<math>` element.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -85,7 +85,7 @@ fn quantity(v: &str, unit: &str) -> String {
 /// under α.
 pub fn equations(report: &StabilityReport, law: &LagLaw, alpha: [f64; 2], delta: f64) -> Equations {
     let r = &report.resonance;
-    let n = |v: f64| mn(&sig_trim(v, 4));
+    let n = |v: f64| mn(&significant_trimmed(v, 4));
     // (4.3) written out per link; one line for both where α1 = α2.
     let line = |i: &str, a: f64| {
         [
@@ -136,7 +136,7 @@ pub fn equations(report: &StabilityReport, law: &LagLaw, alpha: [f64; 2], delta:
         &[
             frac(&[mi("ln"), mi("ρ")].concat(), &mi("δ")),
             mo("="),
-            frac(&[mi("ln"), mn(&rho_text)].concat(), &quantity(&sig_trim(delta, 3), "s")),
+            frac(&[mi("ln"), mn(&rho_text)].concat(), &quantity(&significant_trimmed(delta, 3), "s")),
             mo("="),
             quantity(&fixed2(report.growth_rate), "1/s"),
         ]
@@ -149,7 +149,7 @@ pub fn equations(report: &StabilityReport, law: &LagLaw, alpha: [f64; 2], delta:
         mo("="),
         quantity(&fixed2(law.omega), "rad/s"),
         mo("×"),
-        quantity(&sig_trim(delta, 3), "s"),
+        quantity(&significant_trimmed(delta, 3), "s"),
         mo("="),
         quantity(&fixed2(law.turn(delta)), "rad"),
     ]

@@ -11,7 +11,7 @@ use crate::analysis::judgement::{
     OscillationReading, OtherSignWhy, Prediction, RhoLine, SlewReading,
 };
 use crate::control::metrics::UNSTABLE_GROWTH_RATE;
-use crate::plot::format::{grouped, sci, sig_trim};
+use crate::plot::format::{grouped, scientific, significant_trimmed};
 
 /// A judgement in words: what the page's status and the CLI's summary both say.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -111,9 +111,9 @@ pub fn caveat(c: &Caveat) -> String {
              F_c1/ε1 = {} N m/rad at rest (up to twice that after a reversal) for motions well below ε1 = {} rad — \
              the joint's K1 is {} N m/rad — and a torque of up to F_c1 = {} N m beyond; joint 2's likewise",
             grouped(spring),
-            sig_trim(eps1, 3),
+            significant_trimmed(eps1, 3),
             grouped(k1),
-            sig_trim(fc1, 3)
+            significant_trimmed(fc1, 3)
         ),
     }
 }
@@ -146,23 +146,23 @@ pub fn observation(o: &Observation) -> String {
             format!("observed: diverged at t = {at:.2} s ({}) — {agrees}", divergence_reason(*reason, *bound))
         }
         Observation::Oscillation { amplitude, period, steady_so_far, reading } => {
-            let amplitude = format!("amplitude {}, {} rad", sci(amplitude[0], 2), sci(amplitude[1], 2));
+            let amplitude = format!("amplitude {}, {} rad", scientific(amplitude[0], 2), scientific(amplitude[1], 2));
             let what = if *steady_so_far {
                 format!(
                     "observed: an oscillation of steady size so far — {amplitude}, period {} s",
-                    sig_trim(*period, 3)
+                    significant_trimmed(*period, 3)
                 )
             } else {
                 format!(
                     "observed: a bounded oscillation (limit cycle) — {amplitude}, period {} s",
-                    sig_trim(*period, 3)
+                    significant_trimmed(*period, 3)
                 )
             };
             let why = match reading {
                 OscillationReading::TooEarlyForGrowth { rate } => format!(
                     "too early to tell: ρ > 1 predicts growth e-fold every {} s, which the slew's dying transient can \
                      hide for a while",
-                    sig_trim(1.0 / rate.abs(), 2)
+                    significant_trimmed(1.0 / rate.abs(), 2)
                 ),
                 OscillationReading::Bounded => "ρ > 1 predicts growth, and the nonlinearity bounds it".to_string(),
                 OscillationReading::AsBorderline => {
@@ -171,7 +171,7 @@ pub fn observation(o: &Observation) -> String {
                 OscillationReading::TooEarlyNearRest { rate } => format!(
                     "too early to tell: near rest the loop is linear, and ρ predicts {} e-fold every {} s",
                     growth_or_decay(*rate),
-                    sig_trim(1.0 / rate.abs(), 2)
+                    significant_trimmed(1.0 / rate.abs(), 2)
                 ),
                 OscillationReading::Nonlinear(c) => format!("a nonlinear effect ρ cannot show: {}", caveat(c)),
             };
@@ -181,17 +181,17 @@ pub fn observation(o: &Observation) -> String {
             let across = across.map_or(String::new(), |g| format!(", {} 1/s from slew to slew", two_decimals(g)));
             let what = format!(
                 "observed: the errors come back about as large after every slew (up to {}, {} rad, every {} s{across})",
-                sci(amplitude[0], 2),
-                sci(amplitude[1], 2),
-                sig_trim(*period, 3)
+                scientific(amplitude[0], 2),
+                scientific(amplitude[1], 2),
+                significant_trimmed(*period, 3)
             );
             let why = match reading {
                 SlewReading::SlowerThanTheSlews { rate, period } => format!(
                     "the slowest mode dies out by e only every {} s (ln ρ/δ = {} 1/s), longer than the {} s between \
                      slews",
-                    sig_trim(1.0 / rate.abs(), 2),
+                    significant_trimmed(1.0 / rate.abs(), 2),
                     two_decimals(*rate),
-                    sig_trim(*period, 3)
+                    significant_trimmed(*period, 3)
                 ),
                 SlewReading::TransientDies => "each slew's transient dies out, as ρ < 1 predicts".into(),
                 SlewReading::AsBorderline { rate } => format!(
@@ -199,11 +199,11 @@ pub fn observation(o: &Observation) -> String {
                      again",
                     if *rate > 0.0 { "grows" } else { "decays" },
                     if *rate > 0.0 { "growing" } else { "decaying" },
-                    sig_trim(1.0 / rate.abs(), 2)
+                    significant_trimmed(1.0 / rate.abs(), 2)
                 ),
                 SlewReading::TooEarlyForGrowth { rate } => format!(
                     "too early to tell: ρ > 1 predicts growth e-fold every {} s from slew to slew",
-                    sig_trim(1.0 / rate.abs(), 2)
+                    significant_trimmed(1.0 / rate.abs(), 2)
                 ),
                 SlewReading::Caveat(c) => caveat(c),
             };
@@ -236,7 +236,7 @@ fn growth(g: f64, reading: &GrowthReading) -> String {
     let rate = format!("observed growth rate {} 1/s", two_decimals(g));
     match *reading {
         GrowthReading::Alone { error: e, caveat: c } => {
-            format!("{rate}, errors now {}, {} rad — {}", sci(e[0], 2), sci(e[1], 2), caveat(&c))
+            format!("{rate}, errors now {}, {} rad — {}", scientific(e[0], 2), scientific(e[1], 2), caveat(&c))
         }
         GrowthReading::Unpredicted => rate,
         GrowthReading::Matches { predicted } => format!("{rate} — matches ln ρ/δ = {} 1/s", two_decimals(predicted)),
@@ -277,8 +277,8 @@ fn growth(g: f64, reading: &GrowthReading) -> String {
                 OtherSignWhy::TooSlow { span, repeating } => format!(
                     "too early to see it: at that rate the errors change by e only every {} s, longer than the {} s \
                      fitted, where the {} transient still shows",
-                    sig_trim(1.0 / predicted.abs(), 2),
-                    sig_trim(span, 2),
+                    significant_trimmed(1.0 / predicted.abs(), 2),
+                    significant_trimmed(span, 2),
                     if repeating { "slews'" } else { "slew's" }
                 ),
                 OtherSignWhy::Caveat(c) => caveat(&c),
@@ -293,7 +293,7 @@ fn growth(g: f64, reading: &GrowthReading) -> String {
 
 /// Where the analysis holds, in words: "at rest at q2 = 0 rad, friction cancelled".
 pub fn scope(q2: f64) -> String {
-    let q2 = if q2.abs() < 5e-13 { "0".to_string() } else { sig_trim(q2, 3) };
+    let q2 = if q2.abs() < 5e-13 { "0".to_string() } else { significant_trimmed(q2, 3) };
     format!("at rest at q2 = {q2} rad, friction cancelled")
 }
 
@@ -317,7 +317,7 @@ pub fn rho_line(line: &RhoLine) -> String {
                         format!(
                             "≈ 1 ⇒ borderline: |ln ρ/δ| < {} 1/s, the errors would change by e only every {} s or more",
                             UNSTABLE_GROWTH_RATE,
-                            sig_trim(1.0 / UNSTABLE_GROWTH_RATE, 2)
+                            significant_trimmed(1.0 / UNSTABLE_GROWTH_RATE, 2)
                         ),
                     ),
                 };

@@ -1,7 +1,7 @@
 //! Numbers as the sentences say them: a rate with two decimals, an e-folding time, ρ with as many
 //! decimals as tell it from 1, a share in percent, a complex pair, with U+2212 for every minus.
 
-use crate::plot::format::{minus, rounded_summands, sig_trim};
+use crate::plot::format::{minus, rounded_summands, significant_trimmed};
 
 /// A rate with two decimals and a real minus sign, never "−0.00".
 pub fn two_decimals(v: f64) -> String {
@@ -14,7 +14,7 @@ pub fn two_decimals(v: f64) -> String {
 
 /// "e-fold every 0.42 s" for a rate (1/s).
 pub fn e_folding(rate: f64) -> String {
-    format!("e-fold every {} s", sig_trim(1.0 / rate.abs(), 2))
+    format!("e-fold every {} s", significant_trimmed(1.0 / rate.abs(), 2))
 }
 
 /// ρ as the verdict prints it: five decimals where it is nearly 1.
@@ -32,23 +32,23 @@ pub fn percent(v: f64) -> String {
 }
 
 /// "2.64 ± 29.58j 1/s".
-pub fn pair(re: f64, im: f64) -> String {
+pub fn complex_pair(re: f64, im: f64) -> String {
     minus(&format!("{re:.2} ± {:.2}j 1/s", im.abs()))
 }
 
 /// The eigenvalues of a real 2×2 matrix from its trace and determinant: "2.64 ± 29.58j 1/s", or
 /// "−1.00 and −5.00 1/s" where they are real.
-pub fn pair_of(trace: f64, det: f64) -> String {
+pub fn eigenvalues_2x2(trace: f64, det: f64) -> String {
     let (mean, disc) = (trace / 2.0, trace * trace / 4.0 - det);
     if disc < 0.0 {
-        pair(mean, (-disc).sqrt())
+        complex_pair(mean, (-disc).sqrt())
     } else {
         minus(&format!("{:.2} and {:.2} 1/s", mean + disc.sqrt(), mean - disc.sqrt()))
     }
 }
 
 /// "2.64 1/s" with a minus sign where negative.
-pub fn rate(v: f64) -> String {
+pub fn per_second(v: f64) -> String {
     minus(&format!("{v:.2} 1/s"))
 }
 

@@ -2,11 +2,11 @@
 //! its errors and the stable windows of δ: "no K_pr, δ = 0.01 s, α = 2 1/s", "ρ, paper Kₚᵣ",
 //! "Without preliminary feedback (α = 2 1/s) the loop is stable only for …".
 
-use crate::analysis::map::MapSide;
+use crate::analysis::stability_map::MapSide;
 use crate::analysis::StableWindows;
 use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
 use crate::plot::color::Measure;
-use crate::plot::format::{sci, sig, sig_trim};
+use crate::plot::format::{scientific, significant, significant_trimmed};
 
 /// "no K_pr", "paper K_pr", "LQ K_pr".
 pub fn feedback_short(pf: PreliminaryFeedbackChoice) -> &'static str {
@@ -19,7 +19,7 @@ pub fn feedback_short(pf: PreliminaryFeedbackChoice) -> &'static str {
 
 /// "δ = 0.05 s, α = 2 1/s" for tooltips.
 pub fn point(delta: f64, alpha: f64) -> String {
-    format!("δ = {} s, α = {} 1/s", sig(delta, 3), sig(alpha, 3))
+    format!("δ = {} s, α = {} 1/s", significant(delta, 3), significant(alpha, 3))
 }
 
 /// "ρ, no Kₚᵣ", "ρ, paper Kₚᵣ" ("rate, no Kₚᵣ" … when the maps show the rate) for the map of
@@ -49,7 +49,7 @@ pub fn with_feedback(pf: PreliminaryFeedbackChoice) -> String {
 /// The errors e1, e2: "1.23e−3, −4.56e−4 rad".
 pub fn errors(e: [f64; 2]) -> String {
     // Exponents where errors are small (comparable at a glance), plain numbers near a radian.
-    let f = |v: f64| if v.abs() >= 0.1 { sig(v, 3) } else { sci(v, 3) };
+    let f = |v: f64| if v.abs() >= 0.1 { significant(v, 3) } else { scientific(v, 3) };
     format!("{}, {} rad", f(e[0]), f(e[1]))
 }
 
@@ -58,12 +58,13 @@ pub fn errors(e: [f64; 2]) -> String {
 pub fn run(c: &SimulationConfig) -> String {
     let [a1, a2] = c.controller.alpha;
     let alpha = if a1 == a2 {
-        format!("α = {}", sig_trim(a1, 3))
+        format!("α = {}", significant_trimmed(a1, 3))
     } else {
-        format!("α = {}, {}", sig_trim(a1, 3), sig_trim(a2, 3))
+        format!("α = {}, {}", significant_trimmed(a1, 3), significant_trimmed(a2, 3))
     };
     let delta = c.controller.sampling_period;
-    let mut text = format!("{}, δ = {} s, {alpha} 1/s", feedback_short(c.preliminary_feedback), sig_trim(delta, 3));
+    let mut text =
+        format!("{}, δ = {} s, {alpha} 1/s", feedback_short(c.preliminary_feedback), significant_trimmed(delta, 3));
     let paper = SimulationConfig::default();
     if c.friction_compensation != paper.friction_compensation {
         text += &format!(", friction compensation {}", c.friction_compensation.name());
@@ -73,7 +74,7 @@ pub fn run(c: &SimulationConfig) -> String {
     }
     let (k, m) = (c.controller.horizon_steps, c.controller.eps_ratio);
     if k != paper.controller.horizon_steps || m != paper.controller.eps_ratio {
-        text += &format!(", k = {k}, m = {}", sig_trim(m, 3));
+        text += &format!(", k = {k}, m = {}", significant_trimmed(m, 3));
     }
     if c.plant != paper.plant {
         text += &format!(", arm: {}", crate::schema::arm_text(&c.plant.values()));
@@ -118,9 +119,9 @@ pub fn windows_sentence(pf: PreliminaryFeedbackChoice, alpha: [f64; 2], w: &Stab
         pf => format!("With {}", feedback_short(pf)),
     };
     let alpha = if alpha[0] == alpha[1] {
-        format!("α = {} 1/s", sig_trim(alpha[0], 3))
+        format!("α = {} 1/s", significant_trimmed(alpha[0], 3))
     } else {
-        format!("α1 = {}, α2 = {} 1/s", sig_trim(alpha[0], 3), sig_trim(alpha[1], 3))
+        format!("α1 = {}, α2 = {} 1/s", significant_trimmed(alpha[0], 3), significant_trimmed(alpha[1], 3))
     };
     format!("{who} ({alpha}) the loop is {}.", windows(w))
 }

@@ -5,11 +5,11 @@
 
 use serde::Serialize;
 
-use super::numbers::{energy_shares, pair as pair_text, pair_of, percent, rate, rho as rho_text};
+use super::numbers::{complex_pair, eigenvalues_2x2, energy_shares, per_second, percent, rho as rho_text};
 use crate::analysis::resonance::PaperFeedbackEffect;
 use crate::analysis::{Pole, StabilityReport};
 use crate::control::config::SimulationConfig;
-use crate::plot::format::{minus, sig_trim};
+use crate::plot::format::{minus, significant_trimmed};
 
 /// The numbers of the explanation, as text with units.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -142,7 +142,7 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
     format!(
         "At δ = {} s the held torque {phase}{law} — {role}. Over each period it {}{feedback}, and the arm's damping \
          takes {} out: the swing's energy changes by {}{} a period, so it {}.",
-        sig_trim(delta, 3),
+        significant_trimmed(delta, 3),
         share(held, " of the swing's energy"),
         percent(damping),
         if net > 0.0 { "+" } else { "" },
@@ -160,9 +160,9 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     let q2 = report.rest[1];
     let [a1, a2] = config.controller.alpha;
     let alpha = if a1 == a2 {
-        format!("α = {} 1/s", sig_trim(a1, 3))
+        format!("α = {} 1/s", significant_trimmed(a1, 3))
     } else {
-        format!("α1 = {}, α2 = {} 1/s", sig_trim(a1, 3), sig_trim(a2, 3))
+        format!("α1 = {}, α2 = {} 1/s", significant_trimmed(a1, 3), significant_trimmed(a2, 3))
     };
     let [open_re, open_im] = report.limit_pair_open[0];
     // With a model error the loop's δ → 0 pair is not A4 (the closed forms are for a controller
@@ -184,16 +184,20 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     let re_a4_says = if model_error {
         format!(
             "{re_a4_says} — for a controller that knew this arm; with the model error the pair goes to {}, where it {}",
-            pair_text(open_re, open_im),
+            complex_pair(open_re, open_im),
             if open_re > 0.0 { "grows" } else { "dies out" }
         )
     } else {
         re_a4_says.to_string()
     };
     let six_poles = if a1 == a2 {
-        format!("{} 1/s, all six", minus(&sig_trim(-a1, 3)))
+        format!("{} 1/s, all six", minus(&significant_trimmed(-a1, 3)))
     } else {
-        format!("{} 1/s and {} 1/s, three of each", minus(&sig_trim(-a1, 3)), minus(&sig_trim(-a2, 3)))
+        format!(
+            "{} 1/s and {} 1/s, three of each",
+            minus(&significant_trimmed(-a1, 3)),
+            minus(&significant_trimmed(-a2, 3))
+        )
     };
     let [first, second] = report.flexible_pair();
     let loop_pair = match first.map(|i| report.poles[i]) {
@@ -209,7 +213,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
                 lambda(second)
             )
         }
-        Some(Pole { continuous: Some([re, im]), .. }) => format!("s = {}", pair_text(re, im)),
+        Some(Pole { continuous: Some([re, im]), .. }) => format!("s = {}", complex_pair(re, im)),
         _ => "—".into(),
     };
     let paper = PaperFeedbackEffect::new(plant, config.controller.alpha, q2);
@@ -220,28 +224,28 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
          the left half-plane"
             .to_string()
     } else if open_re > 0.0 {
-        format!("reflects the unstable pair into the left half-plane (here {})", pair_text(-open_re, open_im))
+        format!("reflects the unstable pair into the left half-plane (here {})", complex_pair(-open_re, open_im))
     } else {
-        format!("leaves a stable pair where it is (here {})", pair_text(open_re, open_im))
+        format!("leaves a stable pair where it is (here {})", complex_pair(open_re, open_im))
     };
     let pf = config.preliminary_feedback;
     let loop_limit = match (pf == crate::control::config::PreliminaryFeedbackChoice::Off, model_error) {
         (true, false) => "A4 — the ring in the pole plot".to_string(),
         (true, true) => {
-            format!("{} — the ring in the pole plot (not A4: the model error moves it)", pair_text(open_re, open_im))
+            format!("{} — the ring in the pole plot (not A4: the model error moves it)", complex_pair(open_re, open_im))
         }
         (false, _) => {
             let [re, im] = report.limit_pair[0];
             let error = if model_error { " and the model error" } else { "" };
-            format!("A4 with K_pr{error}, {} — the diamond in the pole plot", pair_text(re, im))
+            format!("A4 with K_pr{error}, {} — the diamond in the pole plot", complex_pair(re, im))
         }
     };
     let flexible = report.flexible_pair();
     let rho_set_by = match report.poles.first() {
         Some(_) if flexible.contains(&Some(0)) => "the flexible pair".to_string(),
         Some(p) => match p.continuous {
-            Some([re, im]) if im.abs() > 1e-9 => format!("another pair, at s = {}", pair_text(re, im)),
-            Some([re, _]) => format!("another mode, at s = {}", rate(re)),
+            Some([re, im]) if im.abs() > 1e-9 => format!("another pair, at s = {}", complex_pair(re, im)),
+            Some([re, _]) => format!("another mode, at s = {}", per_second(re)),
             None => "another mode".into(),
         },
         None => "—".into(),
@@ -267,29 +271,29 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
             format!(
                 "ωδ from arccos(B_v1/(3β I_r1))/1.5 = {:.2}, where σ = 0, up to π: δ from {} to {} s",
                 law.turn(lo),
-                sig_trim(lo, 2),
-                sig_trim(hi, 3)
+                significant_trimmed(lo, 2),
+                significant_trimmed(hi, 3)
             )
         }
         None => "every small δ: here the motor's damping outweighs the feed, and no lag is needed".into(),
     };
     Story {
         alpha: alpha.clone(),
-        rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { sig_trim(q2, 3) }),
-        arm_pair: pair_text(r.arm_pair[0], r.arm_pair[1]),
+        rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { significant_trimmed(q2, 3) }),
+        arm_pair: complex_pair(r.arm_pair[0], r.arm_pair[1]),
         omega_joint: format!("{:.1} rad/s", r.omega_joint),
         omega_clamped: format!("{:.1} rad/s", r.omega_clamped),
         j_eff: format!("{:.2} kg m²", r.j_eff),
-        a4: if model_error { pair_of(r.trace, r.determinant) } else { pair_text(open_re, open_im) },
-        a4_trace: rate(r.trace),
+        a4: if model_error { eigenvalues_2x2(r.trace, r.determinant) } else { complex_pair(open_re, open_im) },
+        a4_trace: per_second(r.trace),
         a4_det: format!("{:.0} 1/s²", r.determinant),
-        re_a4: rate(r.real_part),
-        feed: rate(r.controller_feed),
-        motor_damping: rate(r.motor_damping),
+        re_a4: per_second(r.real_part),
+        feed: per_second(r.controller_feed),
+        motor_damping: per_second(r.motor_damping),
         feed_says: feed_says.into(),
         re_a4_says,
         mu: format!("{:.2}", r.mu),
-        beta: rate(r.beta),
+        beta: per_second(r.beta),
         six_poles,
         alpha2_drain: if r.mu > 1e-9 {
             format!("{:.2} α1", (1.0 + r.mu) / r.mu)
@@ -297,16 +301,16 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
             "∞ (μ = 0 at this rest point)".into()
         },
         alpha_star: format!("{:.2} 1/s", r.alpha_star),
-        delta: format!("{} s", sig_trim(delta, 3)),
+        delta: format!("{} s", significant_trimmed(delta, 3)),
         rho: rho_text(report.spectral_radius),
-        growth: rate(report.growth_rate),
+        growth: per_second(report.growth_rate),
         loop_pair,
         loop_limit,
         rho_set_by,
-        kpr_shift: rate(paper.shift),
-        kpr_shift_t1: rate(paper.shift_t1),
-        kpr_shift_t2: rate(paper.shift_t2),
-        kpr_pair: pair_text(paper.pair[0], paper.pair[1]),
+        kpr_shift: per_second(paper.shift),
+        kpr_shift_t1: per_second(paper.shift_t1),
+        kpr_shift_t2: per_second(paper.shift_t2),
+        kpr_pair: complex_pair(paper.pair[0], paper.pair[1]),
         kpr_alpha_limit: format!("{:.2} 1/s", r.paper_alpha_limit),
         lq_says,
         arm: crate::schema::arm_text(&plant.values()),
@@ -350,14 +354,14 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
             let with = if pf == crate::control::config::PreliminaryFeedbackChoice::Off {
                 String::new()
             } else {
-                format!(", and {} with its preliminary feedback", pair_text(re, im))
+                format!(", and {} with its preliminary feedback", complex_pair(re, im))
             };
             format!(
                 "The controller assumes the paper's arm, not this one: its predictor, friction observer and LQ design \
                  work on the paper's numbers. As δ → 0 the loop tends to {} without Kₚᵣ{with} — not to A4 = {}, \
                  which the formulas here give for a controller that knows this arm.",
-                pair_text(open_re, open_im),
-                pair_of(r.trace, r.determinant)
+                complex_pair(open_re, open_im),
+                eigenvalues_2x2(r.trace, r.determinant)
             )
         } else {
             String::new()

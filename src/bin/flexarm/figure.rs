@@ -80,7 +80,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
                 panel.id(),
                 figure.width,
                 figure.height,
-                flexarm::plot::format::sig_trim(session.run(0).map_or(0.0, |r| r.closed_loop().time()), 4)
+                flexarm::plot::format::significant_trimmed(session.run(0).map_or(0.0, |r| r.closed_loop().time()), 4)
             ))
         }
         None => Ok(figure.svg),

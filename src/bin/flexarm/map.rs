@@ -4,11 +4,11 @@
 use std::time::Instant;
 
 use clap::{ArgMatches, Command};
-use flexarm::analysis::map::SECONDS_PER_CELL;
+use flexarm::analysis::stability_map::SECONDS_PER_CELL;
 use flexarm::analysis::{stable_intervals, LinearSettings, MapGrid, MapJob, StabilityMap};
 use flexarm::control::Work;
 use flexarm::plot::color::Measure;
-use flexarm::plot::format::sig_trim;
+use flexarm::plot::format::significant_trimmed;
 use flexarm::schema;
 use flexarm::view::figure::maps_figure;
 use flexarm::PreliminaryFeedbackChoice;
@@ -297,8 +297,8 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         s += &format!(
             "{label:<w$} {:5.1} % of the cells stable (ρ < 1), ρ from {} to {}",
             100.0 * r.map.stable_fraction(),
-            sig_trim(lo, 3),
-            sig_trim(hi, 3),
+            significant_trimmed(lo, 3),
+            significant_trimmed(hi, 3),
             w = width + 4
         );
         if r.failed > 0 {
@@ -308,18 +308,20 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     }
     for r in &results {
         let intervals = stable_intervals(&deltas, r.map.row(row));
-        s += &format!("PF {}, α = {} 1/s: ", r.pf.name(), sig_trim(alphas[row], 3));
+        s += &format!("PF {}, α = {} 1/s: ", r.pf.name(), significant_trimmed(alphas[row], 3));
         if intervals.is_empty() {
             s += "unstable for every δ in the grid\n";
             continue;
         }
-        let list: Vec<String> =
-            intervals.iter().map(|[a, b]| format!("[{}, {}]", sig_trim(*a, 3), sig_trim(*b, 3))).collect();
+        let list: Vec<String> = intervals
+            .iter()
+            .map(|[a, b]| format!("[{}, {}]", significant_trimmed(*a, 3), significant_trimmed(*b, 3)))
+            .collect();
         s += &format!("stable for δ in {} s", list.join(", "));
         let edges: Vec<String> = [deltas[0], deltas[grid.n_delta - 1]]
             .into_iter()
             .filter(|e| intervals.iter().flatten().any(|v| v == e))
-            .map(|e| format!("{} s", sig_trim(e, 3)))
+            .map(|e| format!("{} s", significant_trimmed(e, 3)))
             .collect();
         if !edges.is_empty() {
             s += &format!(" ({} = end of the grid)", edges.join(" and "));

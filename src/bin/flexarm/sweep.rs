@@ -89,7 +89,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         point.a.config().validate().map_err(|e| lib_error(e.into()))?;
     }
     let points = (deltas.len() * alphas.len()) as f64;
-    let mut work = Work::of_units(points, analysis::map::SECONDS_PER_CELL);
+    let mut work = Work::of_units(points, analysis::stability_map::SECONDS_PER_CELL);
     if run {
         for &delta in &deltas {
             let mut point = settings;

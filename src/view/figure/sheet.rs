@@ -106,5 +106,5 @@ impl Sheet {
 
 /// A caption's head for a run at simulated time `t` (s): "flexarm at t = 4.138 s — what".
 pub fn at_time(t: f64, what: &str) -> String {
-    format!("flexarm at t = {} s — {what}", crate::plot::format::sig_trim(t, 4))
+    format!("flexarm at t = {} s — {what}", crate::plot::format::significant_trimmed(t, 4))
 }

@@ -72,40 +72,43 @@ pub fn probe_poles(scene: &PoleScene<'_>, x: f64, y: f64, reach: f64) -> Option<
     let [lr, li] = pole.lambda;
     let flips = pole.kind == PoleKind::Loop && lr < 0.0 && li.abs() <= 1e-12 * lr.abs();
     let s = if flips {
-        format!("s = {} + jπ/δ 1/s: λ real and negative", format::sig(pole.re, 3))
+        format!("s = {} + jπ/δ 1/s: λ real and negative", format::significant(pole.re, 3))
     } else if im > 1e-9 {
-        format!("s = {} ± {}j 1/s", format::sig(pole.re, 3), format::sig(im, 4))
+        format!("s = {} ± {}j 1/s", format::significant(pole.re, 3), format::significant(im, 4))
     } else {
-        format!("s = {} 1/s", format::sig(pole.re, 3))
+        format!("s = {} 1/s", format::significant(pole.re, 3))
     };
     let mut lines = vec![TipLine::plain(s)];
     if let Some(zeta) = pole.zeta {
-        lines.push(TipLine::plain(format!("damping ratio ζ = {}", format::sig(zeta, 3))));
+        lines.push(TipLine::plain(format!("damping ratio ζ = {}", format::significant(zeta, 3))));
     }
     // The damped frequency it swings at and the natural one, named apart.
     lines.push(TipLine::plain(if flips {
-        format!("it flips sign every period: a swing at the Nyquist frequency π/δ = {} rad/s", format::sig(im, 4))
+        format!(
+            "it flips sign every period: a swing at the Nyquist frequency π/δ = {} rad/s",
+            format::significant(im, 4)
+        )
     } else if im > 1e-9 {
         format!(
             "swings at Im s = {} rad/s = {} Hz (natural frequency |s| = {} rad/s)",
-            format::sig(im, 4),
-            format::sig(im / core::f64::consts::TAU, 3),
-            format::sig(pole.omega, 3)
+            format::significant(im, 4),
+            format::significant(im / core::f64::consts::TAU, 3),
+            format::significant(pole.omega, 3)
         )
     } else {
-        format!("|s| = {} 1/s (it does not swing)", format::sig(pole.omega, 3))
+        format!("|s| = {} 1/s (it does not swing)", format::significant(pole.omega, 3))
     }));
     if pole.kind == PoleKind::Loop {
         let [lr, li] = pole.lambda;
         let lambda = if li.abs() > 1e-12 {
-            format!("λ = {} ± {}j", format::sig(lr, 3), format::sig(li.abs(), 3))
+            format!("λ = {} ± {}j", format::significant(lr, 3), format::significant(li.abs(), 3))
         } else {
-            format!("λ = {}", format::sig(lr, 4))
+            format!("λ = {}", format::significant(lr, 4))
         };
         lines.push(TipLine::plain(format!(
             "{lambda}: |λ| = {}, angle {} rad per period",
-            format::sig(pole.modulus, 4),
-            format::sig(pole.angle.abs(), 3)
+            format::significant(pole.modulus, 4),
+            format::significant(pole.angle.abs(), 3)
         )));
         if pole.flexible {
             // One motion, three numbers: say which this is.
@@ -133,7 +136,7 @@ pub fn probe_poles(scene: &PoleScene<'_>, x: f64, y: f64, reach: f64) -> Option<
     if pole.aliased {
         lines.push(TipLine::plain(format!(
             "aliased: the mode itself is faster than the Nyquist frequency π/δ = {} rad/s",
-            format::sig(core::f64::consts::PI / scene.sampling_period, 3)
+            format::significant(core::f64::consts::PI / scene.sampling_period, 3)
         )));
     }
     if !pole.in_view {
@@ -147,7 +150,7 @@ pub fn probe_poles(scene: &PoleScene<'_>, x: f64, y: f64, reach: f64) -> Option<
     for q in poles.iter().filter(|q| q.kind != pole.kind && q.run == pole.run) {
         let Some((qx, qy)) = at(q) else { continue };
         if (qx - px).hypot(qy - py) <= A4_BESIDE {
-            let s = format!("{} ± {}j", format::sig(q.re, 3), format::sig(q.im.abs(), 4));
+            let s = format!("{} ± {}j", format::significant(q.re, 3), format::significant(q.im.abs(), 4));
             let line = TipLine::plain(format!("beside it: {} at s = {s} 1/s", pole_name(q.kind)));
             // Both halves of a conjugate pair can sit beside a real pole: name it once.
             if !lines.contains(&line) {

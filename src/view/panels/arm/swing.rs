@@ -74,14 +74,14 @@ pub fn swing_legend(frame: &Frame) -> Option<LegendGroup> {
         } else {
             format!("{:.0}° {}", degrees.abs(), if degrees < 0.0 { "behind" } else { "ahead" })
         };
-        format!("{} × the motor's angle, {when}", format::sig(r.norm(), 2))
+        format!("{} × the motor's angle, {when}", format::significant(r.norm(), 2))
     };
     let hz = shape.omega / core::f64::consts::TAU;
     let text = format!(
         "the arm in the flexible pair's shape, {SWING_SLOWDOWN}× slower than its {} rad/s ({} Hz) in this loop, \
              about the rest point — link 1 (q1): {}; link 2 (q2, at its joint): {}",
-        format::sig(shape.omega, 3),
-        format::sig(hz, 2),
+        format::significant(shape.omega, 3),
+        format::significant(hz, 2),
         relative(q1),
         relative(q2),
     );

@@ -111,7 +111,7 @@ impl PanelView for PolePlot {
                 if flexible_aliased(report) {
                     info.note += "; aliased: the flexible mode is faster than π/δ";
                 }
-                info.note += &format!("; dashed: π/δ = {} rad/s", format::sig(w, 3));
+                info.note += &format!("; dashed: π/δ = {} rad/s", format::significant(w, 3));
             }
         }
         let poles = self.pole_markers(frame, panel).unwrap_or_default();

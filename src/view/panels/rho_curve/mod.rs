@@ -85,9 +85,9 @@ impl PanelView for RhoCurve {
         // Both α when they differ: the curve is the loop's with α1 and α2 as set.
         let [a1, a2] = frame.runs[0].config.map_or([f64::NAN; 2], |c| c.controller.alpha);
         let alpha = if a1 == a2 {
-            format!("α = {}", format::sig_trim(a1, 3))
+            format!("α = {}", format::significant_trimmed(a1, 3))
         } else {
-            format!("α1 = {}, α2 = {}", format::sig_trim(a1, 3), format::sig_trim(a2, 3))
+            format!("α1 = {}, α2 = {}", format::significant_trimmed(a1, 3), format::significant_trimmed(a2, 3))
         };
         if let Some(omega) = turn_omega(frame.runs[0].report.as_ref()) {
             info.x2_label = format!("ωδ [rad/period]; ω = {omega:.1} rad/s; 2π = one swing");
@@ -119,7 +119,7 @@ impl PanelView for RhoCurve {
                 w.scan.iter().min_by(|a, b| (a[0] / delta).ln().abs().total_cmp(&(b[0] / delta).ln().abs())).copied()
             })
             .unwrap_or([delta, f64::NAN]);
-        let mut lines = vec![TipLine::plain(format!("δ = {} s", format::sig(delta, 3)))];
+        let mut lines = vec![TipLine::plain(format!("δ = {} s", format::significant(delta, 3)))];
         stability_lines(rho, scan_delta, &mut lines);
         // The second reading of δ: how far the joint's swing turns in a period, and how late the
         // torque acts on it (the lag law, analysis::lag).

@@ -11,7 +11,7 @@ use crate::plot::contour::{chain_segments, marching_squares};
 use crate::plot::ticks::log_ticks;
 use crate::plot::{palette, Color};
 use crate::schema::PanelKind;
-pub use crate::session::maps::MapSide;
+pub use crate::session::map_cache::MapSide;
 use crate::view::painter::{Painter, Point};
 use crate::view::rect::Rect;
 

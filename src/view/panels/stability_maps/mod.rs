@@ -188,7 +188,7 @@ impl PanelView for StabilityMaps {
                 lines.push(TipLine::plain(format!(
                     "above α = {} 1/s the paper's K_pr leaves the δ → 0 pair unstable: at this α the smallest δ fail; its \
                      shift of Re A4 is the same at every α, while the controller's feed 3α/2 grows",
-                    format::sig(limit, 3)
+                    format::significant(limit, 3)
                 )));
             }
         }

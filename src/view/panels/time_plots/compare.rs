@@ -1,6 +1,6 @@
 //! Two runs in the same error axes: when one is more than a decade larger than the other, the
 //! smaller looks flat on a shared linear scale (Fig. 5.2 beside Fig. 5.3), so the error plots turn
-//! to log |e| by themselves and say so (issue 23 item 5). A `log=1` the user chose stays as it is.
+//! to log |e| by themselves and say so. A `log=1` the user chose stays as it is.
 
 use super::drawing::max_abs;
 use crate::view::panels::contract::RunState;

@@ -208,7 +208,7 @@ impl Zoom {
         let y = self.limit(panel.kind);
         let torque = panel.kind == PanelKind::Torque;
         info.scrolls = false;
-        info.x_label = format!("t [s], δ = {} s", crate::plot::format::sig_trim(frame.cycle.period, 3));
+        info.x_label = format!("t [s], δ = {} s", crate::plot::format::significant_trimmed(frame.cycle.period, 3));
         info.y_label = if torque { "u1, u2 [N m]" } else { y_label(panel.kind) };
         info.x_range = [window.start, window.end];
         info.y_range = [-y, y];

@@ -273,7 +273,7 @@ pub fn upper_flexible(report: &StabilityReport) -> Option<[f64; 2]> {
 pub fn gap_text(z: [f64; 2]) -> String {
     let gap = z[0].hypot(z[1]) - 1.0;
     let sign = if gap > 0.0 { "+" } else { "" };
-    format!("|λ| − 1 = {sign}{}", crate::plot::format::sig(gap, 3))
+    format!("|λ| − 1 = {sign}{}", crate::plot::format::significant(gap, 3))
 }
 
 /// The radial tick from the unit circle to `z` (run A's flexible pair): the distance |λ| − 1

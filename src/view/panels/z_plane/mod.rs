@@ -69,7 +69,7 @@ impl PanelView for ZPlane {
         info.note = "eigenvalues λ; outside |λ| = 1: grows".into();
         let zoom = WHOLE_HALF / plane.view.half;
         if zoom > 1.05 {
-            info.note += &format!("; zoomed ×{}", crate::plot::format::sig_trim(zoom, 2));
+            info.note += &format!("; zoomed ×{}", crate::plot::format::significant_trimmed(zoom, 2));
         }
         let poles = self.pole_markers(frame, panel).unwrap_or_default();
         info.marks = flexible_mark(&poles, r.w, Some(gap_text));

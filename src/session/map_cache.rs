@@ -2,7 +2,7 @@
 //! current settings: which map a setting change needs (decided here, not in the page), a small
 //! cache of maps already computed, and the work spread over frames.
 
-pub use crate::analysis::map::MapSide;
+pub use crate::analysis::stability_map::MapSide;
 use crate::analysis::{LinearSettings, MapGrid, MapJob};
 use crate::control::config::PreliminaryFeedbackChoice;
 use crate::words::settings::feedback_short;

@@ -5,7 +5,7 @@
 
 use super::Session;
 use crate::control::Cycle;
-use crate::plot::format::{sci, sig, sig_trim};
+use crate::plot::format::{scientific, significant, significant_trimmed};
 
 impl Session {
     /// The zoom's caption ("" when the zoom is off).
@@ -23,13 +23,13 @@ impl Session {
         }
         let tn = cycle.instant;
         let sweep = &cycle.sweep;
-        let ms = |s: f64| format!("{} ms", sig(1e3 * s, 3));
-        let pair = |v: nalgebra::Vector2<f64>| format!("({}, {}) N m", sig(v[0], 4), sig(v[1], 3));
+        let ms = |s: f64| format!("{} ms", significant(1e3 * s, 3));
+        let pair = |v: nalgebra::Vector2<f64>| format!("({}, {}) N m", significant(v[0], 4), significant(v[1], 3));
         let mut text = format!(
             "Fig. 2.1 at tₙ = {tn:.3} s (δ = {} s): the controller measured x(tₙ) (○) and predicted k = {} steps of \
              ε = {}, τ = kε = {} ahead (dashed): at each step the torques U = (u1, u2) that keep both links on \
              their law.",
-            sig_trim(cycle.period, 3),
+            significant_trimmed(cycle.period, 3),
             cycle.horizon_steps,
             ms(sweep.step),
             ms(cycle.horizon),
@@ -39,10 +39,10 @@ impl Session {
                 " The first two, U₁ = ({}, {}) and U₂ = ({}, {}) N m, are impulsive: they put the motor where the \
                  links' law needs it, and from X₂ on nothing it predicts depends on the motor's measured angle or \
                  speed.",
-                sci(u1[0], 2),
-                sci(u1[1], 2),
-                sci(u2[0], 2),
-                sci(u2[1], 2),
+                scientific(u1[0], 2),
+                scientific(u1[1], 2),
+                scientific(u2[0], 2),
+                scientific(u2[1], 2),
             );
         }
         match (cycle.chosen_torque(), sweep.held, cycle.hold()) {
