@@ -2,11 +2,10 @@
 // schema, and wires controls, canvas, keyboard and frame loop to the session and the renderer.
 // Every decision about the physics is the session's (Rust); this file only connects.
 
-import { Page } from './flexarm.js';
 import { byId, make, messageOf, setText } from './dom.js';
 import { createErrors } from './errors.js';
 import { createStore } from './store.js';
-import { loadWasm } from './wasm.js';
+import { enableTransport, openPage } from './boot.js';
 import { buildControls } from './controls.js';
 import { createStatus } from './status.js';
 import { createOverlays } from './overlays.js';
@@ -14,7 +13,7 @@ import { createPointer } from './pointer.js';
 import { createLoop } from './loop.js';
 import { wireTryButtons } from './explain.js';
 import { wireKeys } from './keys.js';
-import { noticeLines, writeUrl } from './url.js';
+import { writeUrl } from './url.js';
 import { createAnswers } from './answers.js';
 import { createLesson } from './lesson.js';
 import { playAction } from './run.js';
@@ -26,6 +25,8 @@ import { createLegend } from './legend.js';
 import { createFocus } from './focus.js';
 import { createZoom } from './zoomz.js';
 import { createPresent } from './present.js';
+import { download, wireOutputs } from './outputs.js';
+import { createSheet, showFigure } from './sheet.js';
 
 const store = createStore();
 const errors = createErrors(store);
@@ -39,32 +40,9 @@ const START_NOTE = 'Opened paused at this moment: press Play to run on.';
 main().catch((e) => errors.report('Starting the page failed', e));
 
 async function main() {
-  performance.mark('flexarm:main-start');
-  const transport = ['play', 'step', 'reset', 'poke', 'export-csv', 'copy-command'].map(byId);
-  transport.forEach((b) => (/** @type {HTMLButtonElement} */ (b).disabled = true));
-  // The lesson is a file beside the page (the session parses it), fetched while the module loads.
-  const lessonText = fetch('lessons/paper.md')
-    .then((r) => (r.ok ? r.text() : undefined))
-    .catch(() => undefined);
-  let wasm;
-  try {
-    wasm = await loadWasm();
-  } catch (e) {
-    setText(byId('loading-text'), 'Could not load the simulation.');
-    byId('loading').querySelector('.spinner')?.remove();
-    errors.show(`Loading ./pkg/flexarm.js failed: ${messageOf(e)}. Build it with "bash scripts/serve.sh".`);
-    return;
-  }
-  // The GPU starts up (mostly waiting on the browser) while the page builds its controls.
-  performance.mark('flexarm:renderer-start');
-  const rendererReady = wasm.Renderer.create(/** @type {HTMLCanvasElement} */ (byId('canvas')));
-  rendererReady.catch(() => {}); // handled where it is awaited
-  // A teacher's lesson (`lesson_src=PATH`): fetched only from a path of this site (the session
-  // says why anything else is refused, and checks the file as it checks the built-in lesson).
-  const teacher = await fetchTeacherLesson(wasm);
-  const session = new Page(wasm, window.location.search, await lessonText, teacher);
-  performance.mark('flexarm:session-ready');
-  showNotices(session.notices());
+  const opened = await openPage(errors);
+  if (!opened) return;
+  const { wasm, session, rendererReady } = opened;
   const status = createStatus();
   const overlays = createOverlays();
   /** @type {import('../pkg/flexarm.js').Renderer | null} */
@@ -206,14 +184,7 @@ async function main() {
   byId('step').addEventListener('click', step);
   byId('reset').addEventListener('click', reset);
   byId('poke').addEventListener('click', () => change(() => session.poke()));
-  byId('export-csv').addEventListener('click', () => download('flexarm-traces.csv', guard('Export failed', () => session.csv(), null), 'text/csv'));
-  // The script's template is a file beside the page (Rust fills it in), fetched when first asked for.
-  let pythonTemplate = /** @type {Promise<string> | null} */ (null);
-  byId('export-python').addEventListener('click', async () => {
-    pythonTemplate ??= fetch('export/model_template.py').then((r) => (r.ok ? r.text() : ''), () => '');
-    const template = await pythonTemplate;
-    download('flexarm_model.py', guard('Export failed', () => session.pythonScript(template), null), 'text/x-python');
-  });
+  wireOutputs({ session, guard });
   createExport({
     session,
     canvas: /** @type {HTMLCanvasElement} */ (byId('canvas')),
@@ -223,23 +194,7 @@ async function main() {
     report: (/** @type {string} */ what, /** @type {unknown} */ e) => errors.report(what, e),
   });
   createEmbedBuilder({ session });
-  byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
-  // The page's address with this moment: it opens paused at the instant shown.
-  byId('copy-moment').addEventListener('click', () => copyCommand(`${window.location.origin}${window.location.pathname}?${session.momentQuery()}`));
-  // On a phone the controls (and the lesson) live in a sheet over the bottom of the page.
-  const sheet = byId('panel');
-  const sheetToggle = byId('sheet-toggle');
-  const phone = window.matchMedia('(max-width: 700px)');
-  const stage = /** @type {HTMLElement} */ (document.querySelector('.stage'));
-  const openSheet = (/** @type {boolean} */ open) => {
-    sheet.classList.toggle('open', open);
-    document.body.classList.toggle('sheet-open', open);
-    // The figure, shrunk by the stylesheet, goes to the top of the screen above the sheet.
-    if (open && phone.matches) requestAnimationFrame(() => stage.scrollIntoView({ block: 'start' }));
-    sheetToggle.setAttribute('aria-expanded', String(open));
-    setText(sheetToggle, open ? 'Close ▾' : document.body.classList.contains('in-lesson') ? 'The lesson, controls and verdict ▴' : 'Controls, verdict and lesson ▴');
-  };
-  sheetToggle.addEventListener('click', () => openSheet(!sheet.classList.contains('open')));
+  const sheet = createSheet();
   wireKeys({
     togglePlay,
     step,
@@ -265,7 +220,7 @@ async function main() {
     after: () => {
       store.dispatch({ type: 'play' });
       // On a phone the sheet would cover what the button changed.
-      openSheet(false);
+      sheet.open(false);
       showFigure();
     },
   });
@@ -282,7 +237,7 @@ async function main() {
   const lesson = createLesson({
     start: () => {
       lessonDo(() => session.lessonOpen(0));
-      openSheet(true);
+      sheet.open(true);
     },
     next: () => lessonDo(() => session.lessonNext()),
     back: () => lessonDo(() => session.lessonBack()),
@@ -406,7 +361,7 @@ async function main() {
     // A lesson opened from a link shows its step: on a phone, the sheet it lives in opens once.
     if (s.lesson && !lessonShown) {
       lessonShown = true;
-      openSheet(true);
+      sheet.open(true);
     }
     if (!s.lesson) lessonShown = false;
     status.render(s, performance.now());
@@ -463,7 +418,7 @@ async function main() {
     store.dispatch({ type: 'pause' });
     session.setNote('Paused because your system asks for reduced motion: press Play to run.');
   }
-  transport.forEach((b) => (/** @type {HTMLButtonElement} */ (b).disabled = false));
+  enableTransport(true);
   loop.start();
 
   // ---------------------------------------------------------------- the renderer
@@ -520,61 +475,8 @@ async function main() {
   }
 }
 
-/** Brings the figure into view if it is out of sight (narrow screens, where it does not stay
- * beside the text): what a "Try:" button or an answer changes is seen at once. */
-function showFigure() {
-  const wrap = byId('canvas-wrap');
-  const r = wrap.getBoundingClientRect();
-  if (r.bottom > 80 && r.top < window.innerHeight - 80) return;
-  const smooth = !matchMedia('(prefers-reduced-motion: reduce)').matches;
-  wrap.scrollIntoView({ block: 'start', behavior: smooth ? 'smooth' : 'auto' });
-}
-
-/** The URL's values that were not taken. @param {{ key: string, text: string }[]} notices */
-/** The bytes of the lesson file `lesson_src=` names, if it is on this site and loads. */
-async function fetchTeacherLesson(/** @type {any} */ wasm) {
-  const value = new URLSearchParams(window.location.search).get('lesson_src');
-  if (value === null) return null;
-  try {
-    const path = wasm.lessonSourcePath(value);
-    const r = await fetch(path);
-    return r.ok ? { path, bytes: new Uint8Array(await r.arrayBuffer()) } : null;
-  } catch {
-    return null; // the session's notice says why
-  }
-}
-
-function showNotices(notices) {
-  if (notices.length === 0) return;
-  byId('url-notice-list').replaceChildren(...noticeLines(notices).map((text) => make('li', { text })));
-  byId('url-notice').hidden = false;
-  byId('url-notice-dismiss').addEventListener('click', () => (byId('url-notice').hidden = true), { once: true });
-}
-
 function canvasProblem(/** @type {string} */ title, /** @type {string} */ detail) {
   byId('canvas-message').replaceChildren(make('strong', { text: title }), make('span', { text: detail }));
   byId('canvas-message').hidden = false;
   byId('canvas').hidden = true;
-}
-
-/** Offers `data` as a file. @param {string} name @param {BlobPart | null | undefined} data @param {string} type */
-function download(name, data, type) {
-  if (data == null) return;
-  const url = URL.createObjectURL(data instanceof Blob ? data : new Blob([data], { type: type.startsWith('text/') || type.includes('svg') ? `${type};charset=utf-8` : type }));
-  const a = make('a', { href: url, download: name });
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 10_000);
-}
-
-/** Shows the command line and copies it to the clipboard where the browser allows. @param {string} command */
-function copyCommand(command) {
-  const out = byId('command-line');
-  setText(out, command);
-  out.hidden = false;
-  navigator.clipboard?.writeText(command).then(
-    () => setText(out, `${command}  (copied)`),
-    () => {},
-  );
 }

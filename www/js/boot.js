@@ -1,0 +1,77 @@
+// Starting the page: the built-in lesson fetched while the simulation loads, the renderer started
+// (the GPU's start is mostly waiting on the browser, done while the page builds its controls), a
+// teacher's lesson (`lesson_src=`), the session opened from the URL, and the notice of what the
+// URL held that was not taken. The transport buttons wait for the session.
+
+import { Page } from './flexarm.js';
+import { byId, make, messageOf, setText } from './dom.js';
+import { loadWasm } from './wasm.js';
+import { noticeLines } from './url.js';
+
+/** @typedef {import('./wasm.js').Wasm} Wasm */
+/** @typedef {import('../pkg/flexarm.js').Renderer} Renderer */
+
+/** The buttons that do nothing until the session is open. */
+const TRANSPORT = ['play', 'step', 'reset', 'poke', 'export-csv', 'copy-command'];
+
+/** Enables (or disables) the buttons that need the session. @param {boolean} enabled */
+export function enableTransport(enabled) {
+  for (const id of TRANSPORT) /** @type {HTMLButtonElement} */ (byId(id)).disabled = !enabled;
+}
+
+/**
+ * Loads the simulation and opens the session for the page's URL; null when the module could not
+ * be loaded (the page says so, and how to build it).
+ * @param {{ show: (text: string) => void }} errors
+ * @returns {Promise<{ wasm: Wasm, session: Page, rendererReady: Promise<Renderer> } | null>}
+ */
+export async function openPage(errors) {
+  performance.mark('flexarm:main-start');
+  enableTransport(false);
+  // The lesson is a file beside the page (the session parses it), fetched while the module loads.
+  const lessonText = fetch('lessons/paper.md')
+    .then((r) => (r.ok ? r.text() : undefined))
+    .catch(() => undefined);
+  /** @type {Wasm} */
+  let wasm;
+  try {
+    wasm = await loadWasm();
+  } catch (e) {
+    setText(byId('loading-text'), 'Could not load the simulation.');
+    byId('loading').querySelector('.spinner')?.remove();
+    errors.show(`Loading ./pkg/flexarm.js failed: ${messageOf(e)}. Build it with "bash scripts/serve.sh".`);
+    return null;
+  }
+  // The GPU starts up (mostly waiting on the browser) while the page builds its controls.
+  performance.mark('flexarm:renderer-start');
+  const rendererReady = wasm.Renderer.create(/** @type {HTMLCanvasElement} */ (byId('canvas')));
+  rendererReady.catch(() => {}); // handled where it is awaited
+  // A teacher's lesson (`lesson_src=PATH`): fetched only from a path of this site (the session
+  // says why anything else is refused, and checks the file as it checks the built-in lesson).
+  const teacher = await fetchTeacherLesson(wasm);
+  const session = new Page(wasm, window.location.search, await lessonText, teacher);
+  performance.mark('flexarm:session-ready');
+  showNotices(session.notices());
+  return { wasm, session, rendererReady };
+}
+
+/** The bytes of the lesson file `lesson_src=` names, if it is on this site and loads. @param {Wasm} wasm */
+async function fetchTeacherLesson(wasm) {
+  const value = new URLSearchParams(window.location.search).get('lesson_src');
+  if (value === null) return null;
+  try {
+    const path = wasm.lessonSourcePath(value);
+    const r = await fetch(path);
+    return r.ok ? { path, bytes: new Uint8Array(await r.arrayBuffer()) } : null;
+  } catch {
+    return null; // the session's notice says why
+  }
+}
+
+/** The URL's values that were not taken. @param {{ key: string, text: string }[]} notices */
+function showNotices(notices) {
+  if (notices.length === 0) return;
+  byId('url-notice-list').replaceChildren(...noticeLines(notices).map((text) => make('li', { text })));
+  byId('url-notice').hidden = false;
+  byId('url-notice-dismiss').addEventListener('click', () => (byId('url-notice').hidden = true), { once: true });
+}
