@@ -6,7 +6,8 @@ import { byId, make, messageOf, setText } from './dom.js';
 import { createErrors } from './errors.js';
 import { createStore } from './store.js';
 import { enableTransport, openPage } from './boot.js';
-import { buildControls } from './controls.js';
+import { createSettings } from './settings.js';
+import { START_NOTE, createTransport } from './transport.js';
 import { createStatus } from './status.js';
 import { createOverlays } from './overlays.js';
 import { createPointer } from './pointer.js';
@@ -16,11 +17,9 @@ import { wireKeys } from './keys.js';
 import { writeUrl } from './url.js';
 import { createAnswers } from './answers.js';
 import { createLesson } from './lesson.js';
-import { playAction } from './run.js';
-import { createTimeline } from './timeline.js';
 import { createTabs } from './tabs.js';
 import { createExport } from './export.js';
-import { createEmbedBuilder, createEmbedStrip } from './embed.js';
+import { createEmbedBuilder } from './embed.js';
 import { createLegend } from './legend.js';
 import { createFocus } from './focus.js';
 import { createZoom } from './zoomz.js';
@@ -31,11 +30,6 @@ import { createSheet, showFigure } from './sheet.js';
 const store = createStore();
 const errors = createErrors(store);
 const { guard } = errors;
-
-/** The note shown when a setting changes while the run is paused. */
-const PAUSED_NOTE = 'Paused: the change takes effect at the next sampling instant (press Step or Play).';
-/** What a link to a moment (`paused=1`) opens with. */
-const START_NOTE = 'Opened paused at this moment: press Play to run on.';
 
 main().catch((e) => errors.report('Starting the page failed', e));
 
@@ -53,127 +47,35 @@ async function main() {
   /** @type {ReturnType<typeof createPresent> | null} */
   let present = null;
 
+  const loop = createLoop({
+    wasmOk: () => !store.get().dead,
+    playing: () => store.get().playing,
+    finished: () => session.isFinished() && session.status().runs.every((r) => r.finished),
+    advance: (dt) => guard('Simulation step failed', () => session.advance(dt), 0) ?? 0,
+    render,
+    animating: () => renderer?.animating() ?? false,
+    status: refreshStatus,
+    workMaps: (budget) => guard('Stability map', () => session.workMaps(budget), false) ?? false,
+    backend: () => (renderer ? renderer.backend() : null),
+  });
+
   // ---------------------------------------------------------------- changes go to the session
-  const controls = buildControls(wasm.schema(), {
-    onSet: (key, text) => change(() => session.set(key, text)),
-    onPosition: (key, f) => change(() => session.setPosition(linked(key), f)),
-    onStep: (key, steps) => change(() => session.stepValue(linked(key), steps)),
-  });
-  // The embed's strip: the controls `strip=` names, its δ and α sliders built like the page's.
-  const embedStrip = createEmbedStrip(wasm.schema(), {
-    onSet: (key, text) => change(() => session.set(key, text)),
-    onPosition: (key, f) => change(() => session.setPosition(key, f)),
-    onStep: (key, steps) => change(() => session.stepValue(key, steps)),
+  const settings = createSettings({
+    wasm, session, store, guard,
     reset: () => reset(),
+    synced: (value) => present?.sync(value),
+    changed: () => {
+      loop.touch();
+      loop.resync();
+      pointer.hide();
+      loop.scheduleMaps();
+    },
   });
-  /** With α linked, either α slider moves both. @param {string} key */
-  const linked = (key) => (store.get().linkAlpha && (key === 'alpha1' || key === 'alpha2') ? 'alpha' : key);
-
-  /** Runs a change; the controls, the URL and the picture follow the session whatever happened. */
-  function change(/** @type {() => void} */ fn) {
-    const ok = guard('Applying the settings failed', () => (fn(), true), false);
-    const now = ok && !store.get().playing ? session.status() : null;
-    if (now && now.timeline.live && now.note === '') session.setNote(PAUSED_NOTE);
-    syncControls();
-    writeUrl(session.stateString());
-    loop.touch();
-    loop.resync();
-    pointer.hide();
-    loop.scheduleMaps();
-  }
-
-  /** The controls, the intro's feedback switch and the page's mode show the session's values. */
-  function syncControls() {
-    const values = session.controls();
-    controls.sync(values);
-    embedStrip.sync(values);
-    const value = (/** @type {string} */ key) => values.find((v) => v.key === key)?.value;
-    present?.sync((key) => values.find((v) => v.key === key));
-    const full = value('mode') === 'full';
-    if (document.body.dataset.mode !== (full ? 'full' : 'intro')) document.body.dataset.mode = full ? 'full' : 'intro';
-    byId('mode-intro').setAttribute('aria-pressed', String(!full));
-    byId('mode-full').setAttribute('aria-pressed', String(full));
-    /** @type {HTMLInputElement} */ (byId('pf-toggle')).checked = value('pf') !== 'off';
-    /** @type {HTMLInputElement} */ (byId('embed-pf')).checked = value('pf') !== 'off';
-    const embed = value('embed') === '1';
-    if (document.body.dataset.embed !== String(embed)) document.body.dataset.embed = String(embed);
-    if (embed) {
-      // The whole page, for the reader who wants more: the same state, not embedded.
-      /** @type {HTMLAnchorElement} */ (byId('embed-open')).href = `${window.location.pathname}?${session.stateString().replace(/(^|&)embed=1/, '')}`;
-    }
-  }
-  byId('mode-intro').addEventListener('click', () => change(() => session.set('mode', 'intro')));
-  byId('mode-full').addEventListener('click', () => change(() => session.set('mode', 'full')));
-  for (const id of ['pf-toggle', 'embed-pf']) {
-    const box = /** @type {HTMLInputElement} */ (byId(id));
-    box.addEventListener('change', () => change(() => session.set('pf', box.checked ? 'paper' : 'off')));
-  }
-
-  const presetSelect = /** @type {HTMLSelectElement} */ (byId('preset'));
-  for (const p of wasm.presets()) presetSelect.append(make('option', { value: p.id, text: p.title }));
-  // The arm: the paper's with one part changed (arm=ID), restarting from rest.
-  const armSelect = /** @type {HTMLSelectElement} */ (byId('arm-preset'));
-  for (const a of wasm.arms()) armSelect.append(make('option', { value: a.id, text: a.title }));
-  armSelect.addEventListener('change', () => {
-    if (armSelect.value) change(() => session.readState(`arm=${armSelect.value}`));
-  });
-  presetSelect.addEventListener('change', () => {
-    if (presetSelect.value) change(() => session.applyPreset(presetSelect.value));
-    store.dispatch({ type: 'play' });
-  });
-
-  const link = /** @type {HTMLInputElement} */ (byId('link-alpha'));
-  link.addEventListener('change', () => {
-    store.dispatch({ type: 'link-alpha', value: link.checked });
-    const a1 = session.controls().find((c) => c.key === 'alpha1');
-    if (link.checked && a1) change(() => session.set('alpha', a1.value));
-  });
+  const { change } = settings;
 
   // ---------------------------------------------------------------- transport and view
-  const play = byId('play');
-  const embedPlay = byId('embed-play');
-  const presentPlay = byId('present-play');
-  /** Every run has diverged (the session says so): the button restarts them. */
-  let finished = false;
-  /** The Play buttons (the page's and the embed's) say what a press will do. */
-  const showPlay = () => {
-    const next = playAction(store.get().playing, finished);
-    for (const button of [play, embedPlay, presentPlay]) {
-      setText(button, next.text);
-      button.setAttribute('aria-pressed', String(next.pressed));
-      button.setAttribute('aria-label', next.label);
-    }
-  };
-  store.subscribe((s, prev) => {
-    if (s.playing !== prev.playing) {
-      showPlay();
-      if (s.playing && [PAUSED_NOTE, START_NOTE].includes(session.status().note)) session.setNote('');
-      loop.resync();
-      loop.touch();
-    }
-  });
-  /** Play, Pause, or — after divergence — Restart from rest, playing. */
-  const togglePlay = () => {
-    if (playAction(store.get().playing, finished).action === 'restart') {
-      reset();
-      store.dispatch({ type: 'play' });
-      return;
-    }
-    store.dispatch({ type: 'toggle-play' });
-  };
-  play.addEventListener('click', togglePlay);
-  embedPlay.addEventListener('click', togglePlay);
-  const step = () => {
-    store.dispatch({ type: 'pause' });
-    guard('Step failed', () => session.stepPeriod());
-    loop.touch();
-  };
-  const stepBack = () => {
-    store.dispatch({ type: 'pause' });
-    session.stepBack();
-    loop.touch();
-  };
-  const reset = () => change(() => session.reset());
+  const transport = createTransport({ session, store, guard, change, loop, refresh: () => refreshStatus() });
+  const { togglePlay, step, stepBack, reset, scrubTo, timeline } = transport;
   present = createPresent({
     set: (key, value) => change(() => session.set(key, value)),
     step: (key, steps) => change(() => session.stepValue(key, steps)),
@@ -181,9 +83,6 @@ async function main() {
     reset,
     textChoices: (wasm.schema().find((/** @type {any} */ p) => p.key === 'text')?.options ?? []).map((/** @type {string[]} */ [value, label]) => ({ value, label })),
   });
-  byId('step').addEventListener('click', step);
-  byId('reset').addEventListener('click', reset);
-  byId('poke').addEventListener('click', () => change(() => session.poke()));
   wireOutputs({ session, guard });
   createExport({
     session,
@@ -207,10 +106,7 @@ async function main() {
     set: (key, value) => change(() => session.set(key, value)),
     sets: (pairs) => {
       // Unequal α1, α2 are meant: unlink the sliders first.
-      if (pairs.some(([k]) => k === 'alpha1' || k === 'alpha2')) {
-        link.checked = false;
-        store.dispatch({ type: 'link-alpha', value: false });
-      }
+      if (pairs.some(([k]) => k === 'alpha1' || k === 'alpha2')) settings.unlinkAlpha();
       change(() => pairs.forEach(([k, v]) => session.set(k, v)));
     },
     map: (side, delta, alpha) => change(() => {
@@ -270,21 +166,6 @@ async function main() {
     changed: () => {
       loop.touch();
       refreshStatus();
-    },
-  });
-  /** Looks back at time t (pausing: the picture holds still there). */
-  const scrubTo = (/** @type {number} */ t) => {
-    store.dispatch({ type: 'pause' });
-    session.viewAt(t);
-    loop.touch();
-    refreshStatus();
-  };
-  const timeline = createTimeline({
-    viewAt: scrubTo,
-    stepBack,
-    continueHere: () => {
-      change(() => session.continueFromHere());
-      store.dispatch({ type: 'play' });
     },
   });
 
@@ -365,10 +246,7 @@ async function main() {
     }
     if (!s.lesson) lessonShown = false;
     status.render(s, performance.now());
-    if (finished !== s.runs.every((r) => r.finished)) {
-      finished = !finished;
-      showPlay();
-    }
+    transport.showFinished(s.runs.every((/** @type {{ finished: boolean }} */ r) => r.finished));
     status.renderLegend(s, layout?.series ?? []);
     present?.render(s.runs, layout?.series ?? []);
     lesson.render(s.lesson);
@@ -376,24 +254,12 @@ async function main() {
     timeline.render(s.timeline);
   }
 
-  const loop = createLoop({
-    wasmOk: () => !store.get().dead,
-    playing: () => store.get().playing,
-    finished: () => session.isFinished() && session.status().runs.every((r) => r.finished),
-    advance: (dt) => guard('Simulation step failed', () => session.advance(dt), 0) ?? 0,
-    render,
-    animating: () => renderer?.animating() ?? false,
-    status: refreshStatus,
-    workMaps: (budget) => guard('Stability map', () => session.workMaps(budget), false) ?? false,
-    backend: () => (renderer ? renderer.backend() : null),
-  });
-
   window.flexarmPanic = (/** @type {unknown} */ msg) => {
     store.dispatch({ type: 'crash' });
     errors.show(`The simulation crashed (Rust panic) — reload the page to start again. ${messageOf(msg)}`);
     canvasProblem('The simulation crashed.', 'See the error message above; reload the page to start again.');
     status.crashed();
-    controls.setEnabled(false);
+    settings.controls.setEnabled(false);
   };
   // For tests and the console: the live objects, and the performance figures.
   Object.assign(window, {
@@ -405,7 +271,7 @@ async function main() {
     },
   });
 
-  syncControls();
+  settings.sync();
   writeUrl(session.stateString());
   byId('loading').hidden = true;
   // A link to a moment (`paused=1&t=3`) opens paused there.
