@@ -1,12 +1,14 @@
 // Starting the page: the built-in lesson fetched while the simulation loads, the renderer started
 // (the GPU's start is mostly waiting on the browser, done while the page builds its controls), a
 // teacher's lesson (`lesson_src=`), the session opened from the URL, and the notice of what the
-// URL held that was not taken. The transport buttons wait for the session.
+// URL held that was not taken; and, once the page is wired, its start (the transport buttons wait
+// for it): paused where a link's moment or the system's wish for less motion asks.
 
 import { Page } from './flexarm.js';
 import { byId, make, messageOf, setText } from './dom.js';
 import { loadWasm } from './wasm.js';
-import { noticeLines } from './url.js';
+import { noticeLines, writeUrl } from './url.js';
+import { START_NOTE } from './transport.js';
 
 /** @typedef {import('./wasm.js').Wasm} Wasm */
 /** @typedef {import('../pkg/flexarm.js').Renderer} Renderer */
@@ -15,7 +17,7 @@ import { noticeLines } from './url.js';
 const TRANSPORT = ['play', 'step', 'reset', 'poke', 'export-csv', 'copy-command'];
 
 /** Enables (or disables) the buttons that need the session. @param {boolean} enabled */
-export function enableTransport(enabled) {
+function enableTransport(enabled) {
   for (const id of TRANSPORT) /** @type {HTMLButtonElement} */ (byId(id)).disabled = !enabled;
 }
 
@@ -53,6 +55,31 @@ export async function openPage(errors) {
   performance.mark('flexarm:session-ready');
   showNotices(session.notices());
   return { wasm, session, rendererReady };
+}
+
+/**
+ * The wired page shows the session and starts: the controls and the URL show its state, the
+ * loading screen goes, and the frame loop runs — paused where a link to a moment (`paused=1&t=3`)
+ * or the system (reduced motion) asks.
+ * @param {{ session: Page, store: ReturnType<typeof import('./store.js').createStore>, sync: () => void,
+ *   loop: { start: () => void } }} on
+ */
+export function begin({ session, store, sync, loop }) {
+  sync();
+  writeUrl(session.stateString());
+  byId('loading').hidden = true;
+  // A link to a moment (`paused=1&t=3`) opens paused there.
+  if (session.takeStartPaused()) {
+    store.dispatch({ type: 'pause' });
+    session.setNote(START_NOTE);
+  }
+  // Motion only on request where the system asks for less of it.
+  if (matchMedia('(prefers-reduced-motion: reduce)').matches) {
+    store.dispatch({ type: 'pause' });
+    session.setNote('Paused because your system asks for reduced motion: press Play to run.');
+  }
+  enableTransport(true);
+  loop.start();
 }
 
 /** The bytes of the lesson file `lesson_src=` names, if it is on this site and loads. @param {Wasm} wasm */
