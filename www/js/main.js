@@ -1,261 +1,119 @@
-// flexarm's page: loads the simulation, opens a session from the URL, builds the controls from the
-// schema, and wires controls, canvas, keyboard and frame loop to the session and the renderer.
-// Every decision about the physics is the session's (Rust); this file only connects.
+// flexarm's page: loads the simulation, opens a session from the URL, and wires the page's parts
+// (each a module with one job) to the session, the renderer, the frame loop and each other. Every
+// decision about the physics is the session's (Rust); this file only connects.
 
-import { Page } from './flexarm.js';
-import { byId, make, messageOf, setText } from './dom.js';
+import { byId } from './dom.js';
 import { createErrors } from './errors.js';
 import { createStore } from './store.js';
-import { loadWasm } from './wasm.js';
-import { buildControls } from './controls.js';
+import { begin, openPage } from './boot.js';
 import { createStatus } from './status.js';
 import { createOverlays } from './overlays.js';
-import { createPointer } from './pointer.js';
 import { createLoop } from './loop.js';
-import { wireTryButtons } from './explain.js';
-import { wireKeys } from './keys.js';
-import { noticeLines, writeUrl } from './url.js';
-import { createAnswers } from './answers.js';
-import { createLesson } from './lesson.js';
-import { playAction } from './run.js';
-import { createTimeline } from './timeline.js';
-import { createTabs } from './tabs.js';
-import { createExport } from './export.js';
-import { createEmbedBuilder, createEmbedStrip } from './embed.js';
-import { createLegend } from './legend.js';
-import { createFocus } from './focus.js';
-import { createZoom } from './zoomz.js';
+import { createSettings } from './settings.js';
+import { createTransport } from './transport.js';
 import { createPresent } from './present.js';
+import { download, wireOutputs } from './outputs.js';
+import { createExport } from './export.js';
+import { createEmbedBuilder } from './embed.js';
+import { createSheet, showFigure } from './sheet.js';
+import { wireKeys } from './keys.js';
+import { wireTryButtons } from './explain.js';
+import { createClassroom } from './classroom.js';
+import { createFigure } from './figure.js';
+import { createRefresh } from './refresh.js';
+import { installHooks } from './hooks.js';
+import { startRenderer } from './renderer.js';
+
+/** @typedef {import('./flexarm.js').Page} Page */
 
 const store = createStore();
 const errors = createErrors(store);
 const { guard } = errors;
-
-/** The note shown when a setting changes while the run is paused. */
-const PAUSED_NOTE = 'Paused: the change takes effect at the next sampling instant (press Step or Play).';
-/** What a link to a moment (`paused=1`) opens with. */
-const START_NOTE = 'Opened paused at this moment: press Play to run on.';
+/** @param {string} what @param {unknown} e */
+const report = (what, e) => errors.report(what, e);
 
 main().catch((e) => errors.report('Starting the page failed', e));
 
 async function main() {
-  performance.mark('flexarm:main-start');
-  const transport = ['play', 'step', 'reset', 'poke', 'export-csv', 'copy-command'].map(byId);
-  transport.forEach((b) => (/** @type {HTMLButtonElement} */ (b).disabled = true));
-  // The lesson is a file beside the page (the session parses it), fetched while the module loads.
-  const lessonText = fetch('lessons/paper.md')
-    .then((r) => (r.ok ? r.text() : undefined))
-    .catch(() => undefined);
-  let wasm;
-  try {
-    wasm = await loadWasm();
-  } catch (e) {
-    setText(byId('loading-text'), 'Could not load the simulation.');
-    byId('loading').querySelector('.spinner')?.remove();
-    errors.show(`Loading ./pkg/flexarm.js failed: ${messageOf(e)}. Build it with "bash scripts/serve.sh".`);
-    return;
-  }
-  // The GPU starts up (mostly waiting on the browser) while the page builds its controls.
-  performance.mark('flexarm:renderer-start');
-  const rendererReady = wasm.Renderer.create(/** @type {HTMLCanvasElement} */ (byId('canvas')));
-  rendererReady.catch(() => {}); // handled where it is awaited
-  // A teacher's lesson (`lesson_src=PATH`): fetched only from a path of this site (the session
-  // says why anything else is refused, and checks the file as it checks the built-in lesson).
-  const teacher = await fetchTeacherLesson(wasm);
-  const session = new Page(wasm, window.location.search, await lessonText, teacher);
-  performance.mark('flexarm:session-ready');
-  showNotices(session.notices());
+  const opened = await openPage(errors);
+  if (!opened) return;
+  const { wasm, session, rendererReady } = opened;
   const status = createStatus();
   const overlays = createOverlays();
-  /** @type {import('../pkg/flexarm.js').Renderer | null} */
-  let renderer = null;
-  /** @type {any} */
-  let layout = null;
-  let layoutGeneration = -1;
-  /** @type {ReturnType<typeof createPresent> | null} */
-  let present = null;
-
-  // ---------------------------------------------------------------- changes go to the session
-  const controls = buildControls(wasm.schema(), {
-    onSet: (key, text) => change(() => session.set(key, text)),
-    onPosition: (key, f) => change(() => session.setPosition(linked(key), f)),
-    onStep: (key, steps) => change(() => session.stepValue(linked(key), steps)),
+  // The frame loop; what it draws and says (`figure`, `refresh`) is built below.
+  const loop = createLoop({
+    wasmOk: () => !store.get().dead,
+    playing: () => store.get().playing,
+    finished: () => session.isFinished() && session.status().runs.every((/** @type {{ finished: boolean }} */ r) => r.finished),
+    advance: (dt) => guard('Simulation step failed', () => session.advance(dt), 0) ?? 0,
+    render: () => figure.render(),
+    animating: () => figure.renderer()?.animating() ?? false,
+    status: () => refresh(),
+    workMaps: (budget) => guard('Stability map', () => session.workMaps(budget), false) ?? false,
+    backend: () => figure.renderer()?.backend() ?? null,
   });
-  // The embed's strip: the controls `strip=` names, its δ and α sliders built like the page's.
-  const embedStrip = createEmbedStrip(wasm.schema(), {
-    onSet: (key, text) => change(() => session.set(key, text)),
-    onPosition: (key, f) => change(() => session.setPosition(key, f)),
-    onStep: (key, steps) => change(() => session.stepValue(key, steps)),
-    reset: () => reset(),
-  });
-  /** With α linked, either α slider moves both. @param {string} key */
-  const linked = (key) => (store.get().linkAlpha && (key === 'alpha1' || key === 'alpha2') ? 'alpha' : key);
+  const touch = () => loop.touch();
 
-  /** Runs a change; the controls, the URL and the picture follow the session whatever happened. */
-  function change(/** @type {() => void} */ fn) {
-    const ok = guard('Applying the settings failed', () => (fn(), true), false);
-    const now = ok && !store.get().playing ? session.status() : null;
-    if (now && now.timeline.live && now.note === '') session.setNote(PAUSED_NOTE);
-    syncControls();
-    writeUrl(session.stateString());
-    loop.touch();
-    loop.resync();
-    pointer.hide();
-    loop.scheduleMaps();
-  }
-
-  /** The controls, the intro's feedback switch and the page's mode show the session's values. */
-  function syncControls() {
-    const values = session.controls();
-    controls.sync(values);
-    embedStrip.sync(values);
-    const value = (/** @type {string} */ key) => values.find((v) => v.key === key)?.value;
-    present?.sync((key) => values.find((v) => v.key === key));
-    const full = value('mode') === 'full';
-    if (document.body.dataset.mode !== (full ? 'full' : 'intro')) document.body.dataset.mode = full ? 'full' : 'intro';
-    byId('mode-intro').setAttribute('aria-pressed', String(!full));
-    byId('mode-full').setAttribute('aria-pressed', String(full));
-    /** @type {HTMLInputElement} */ (byId('pf-toggle')).checked = value('pf') !== 'off';
-    /** @type {HTMLInputElement} */ (byId('embed-pf')).checked = value('pf') !== 'off';
-    const embed = value('embed') === '1';
-    if (document.body.dataset.embed !== String(embed)) document.body.dataset.embed = String(embed);
-    if (embed) {
-      // The whole page, for the reader who wants more: the same state, not embedded.
-      /** @type {HTMLAnchorElement} */ (byId('embed-open')).href = `${window.location.pathname}?${session.stateString().replace(/(^|&)embed=1/, '')}`;
-    }
-  }
-  byId('mode-intro').addEventListener('click', () => change(() => session.set('mode', 'intro')));
-  byId('mode-full').addEventListener('click', () => change(() => session.set('mode', 'full')));
-  for (const id of ['pf-toggle', 'embed-pf']) {
-    const box = /** @type {HTMLInputElement} */ (byId(id));
-    box.addEventListener('change', () => change(() => session.set('pf', box.checked ? 'paper' : 'off')));
-  }
-
-  const presetSelect = /** @type {HTMLSelectElement} */ (byId('preset'));
-  for (const p of wasm.presets()) presetSelect.append(make('option', { value: p.id, text: p.title }));
-  // The arm: the paper's with one part changed (arm=ID), restarting from rest.
-  const armSelect = /** @type {HTMLSelectElement} */ (byId('arm-preset'));
-  for (const a of wasm.arms()) armSelect.append(make('option', { value: a.id, text: a.title }));
-  armSelect.addEventListener('change', () => {
-    if (armSelect.value) change(() => session.readState(`arm=${armSelect.value}`));
-  });
-  presetSelect.addEventListener('change', () => {
-    if (presetSelect.value) change(() => session.applyPreset(presetSelect.value));
-    store.dispatch({ type: 'play' });
-  });
-
-  const link = /** @type {HTMLInputElement} */ (byId('link-alpha'));
-  link.addEventListener('change', () => {
-    store.dispatch({ type: 'link-alpha', value: link.checked });
-    const a1 = session.controls().find((c) => c.key === 'alpha1');
-    if (link.checked && a1) change(() => session.set('alpha', a1.value));
-  });
-
-  // ---------------------------------------------------------------- transport and view
-  const play = byId('play');
-  const embedPlay = byId('embed-play');
-  const presentPlay = byId('present-play');
-  /** Every run has diverged (the session says so): the button restarts them. */
-  let finished = false;
-  /** The Play buttons (the page's and the embed's) say what a press will do. */
-  const showPlay = () => {
-    const next = playAction(store.get().playing, finished);
-    for (const button of [play, embedPlay, presentPlay]) {
-      setText(button, next.text);
-      button.setAttribute('aria-pressed', String(next.pressed));
-      button.setAttribute('aria-label', next.label);
-    }
-  };
-  store.subscribe((s, prev) => {
-    if (s.playing !== prev.playing) {
-      showPlay();
-      if (s.playing && [PAUSED_NOTE, START_NOTE].includes(session.status().note)) session.setNote('');
-      loop.resync();
+  // Changes go to the session; the picture follows them.
+  const settings = createSettings({
+    wasm, session, store, guard,
+    reset: () => transport.reset(),
+    synced: (value) => present.sync(value),
+    changed: () => {
       loop.touch();
-    }
+      loop.resync();
+      figure.hidePointer();
+      loop.scheduleMaps();
+    },
   });
-  /** Play, Pause, or — after divergence — Restart from rest, playing. */
-  const togglePlay = () => {
-    if (playAction(store.get().playing, finished).action === 'restart') {
-      reset();
-      store.dispatch({ type: 'play' });
-      return;
-    }
-    store.dispatch({ type: 'toggle-play' });
-  };
-  play.addEventListener('click', togglePlay);
-  embedPlay.addEventListener('click', togglePlay);
-  const step = () => {
-    store.dispatch({ type: 'pause' });
-    guard('Step failed', () => session.stepPeriod());
-    loop.touch();
-  };
-  const stepBack = () => {
-    store.dispatch({ type: 'pause' });
-    session.stepBack();
-    loop.touch();
-  };
-  const reset = () => change(() => session.reset());
-  present = createPresent({
+  const { change } = settings;
+  const transport = createTransport({ session, store, guard, change, loop, refresh: () => refresh() });
+  const { togglePlay, reset } = transport;
+  const present = createPresent({
     set: (key, value) => change(() => session.set(key, value)),
     step: (key, steps) => change(() => session.stepValue(key, steps)),
     togglePlay,
     reset,
     textChoices: (wasm.schema().find((/** @type {any} */ p) => p.key === 'text')?.options ?? []).map((/** @type {string[]} */ [value, label]) => ({ value, label })),
   });
-  byId('step').addEventListener('click', step);
-  byId('reset').addEventListener('click', reset);
-  byId('poke').addEventListener('click', () => change(() => session.poke()));
-  byId('export-csv').addEventListener('click', () => download('flexarm-traces.csv', guard('Export failed', () => session.csv(), null), 'text/csv'));
-  // The script's template is a file beside the page (Rust fills it in), fetched when first asked for.
-  let pythonTemplate = /** @type {Promise<string> | null} */ (null);
-  byId('export-python').addEventListener('click', async () => {
-    pythonTemplate ??= fetch('export/model_template.py').then((r) => (r.ok ? r.text() : ''), () => '');
-    const template = await pythonTemplate;
-    download('flexarm_model.py', guard('Export failed', () => session.pythonScript(template), null), 'text/x-python');
-  });
-  createExport({
-    session,
-    canvas: /** @type {HTMLCanvasElement} */ (byId('canvas')),
-    overlay: byId('axes-overlay'),
-    renderNow: () => render(),
-    download,
-    report: (/** @type {string} */ what, /** @type {unknown} */ e) => errors.report(what, e),
-  });
+  wireOutputs({ session, guard });
+  const canvas = /** @type {HTMLCanvasElement} */ (byId('canvas'));
+  createExport({ session, canvas, overlay: byId('axes-overlay'), renderNow: () => figure.render(), download, report });
   createEmbedBuilder({ session });
-  byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
-  // The page's address with this moment: it opens paused at the instant shown.
-  byId('copy-moment').addEventListener('click', () => copyCommand(`${window.location.origin}${window.location.pathname}?${session.momentQuery()}`));
-  // On a phone the controls (and the lesson) live in a sheet over the bottom of the page.
-  const sheet = byId('panel');
-  const sheetToggle = byId('sheet-toggle');
-  const phone = window.matchMedia('(max-width: 700px)');
-  const stage = /** @type {HTMLElement} */ (document.querySelector('.stage'));
-  const openSheet = (/** @type {boolean} */ open) => {
-    sheet.classList.toggle('open', open);
-    document.body.classList.toggle('sheet-open', open);
-    // The figure, shrunk by the stylesheet, goes to the top of the screen above the sheet.
-    if (open && phone.matches) requestAnimationFrame(() => stage.scrollIntoView({ block: 'start' }));
-    sheetToggle.setAttribute('aria-expanded', String(open));
-    setText(sheetToggle, open ? 'Close ▾' : document.body.classList.contains('in-lesson') ? 'The lesson, controls and verdict ▴' : 'Controls, verdict and lesson ▴');
-  };
-  sheetToggle.addEventListener('click', () => openSheet(!sheet.classList.contains('open')));
-  wireKeys({
-    togglePlay,
-    step,
-    stepBack,
-    reset,
-    zoomKey: (ev) => zoom.key(ev, pointer.last()),
+  const sheet = createSheet();
+  wireKeys({ togglePlay, step: transport.step, stepBack: transport.stepBack, reset, zoomKey: (ev) => figure.zoomKey(ev) });
+  wireTry(session, settings, sheet);
+
+  // What the session says: the lesson, the figure, the status.
+  const { lesson, answers } = createClassroom({
+    session, store, presets: wasm.presets(), guard, report, change, refresh: () => refresh(), touch, openSheet: sheet.open, showFigure, download,
   });
+  const figure = createFigure({ session, store, overlays, guard, report, change, scrubTo: transport.scrubTo, touch });
+  const refresh = createRefresh({
+    session, guard, status, transport, present, lesson, answers, timeline: transport.timeline, layout: figure.layout, openSheet: sheet.open,
+  });
+  installHooks({ session, wasm, store, show: errors.show, status, controls: settings.controls, layout: figure.layout, figures: loop.figures });
+
+  begin({ session, store, sync: settings.sync, loop });
+  await startRenderer({ ready: rendererReady, use: figure.use, current: figure.renderer, store, guard, show: errors.show, touch });
+  loop.touch();
+  // The maps start once the first frame's work is done, so they do not delay it.
+  loop.scheduleMaps();
+}
+
+/**
+ * The explanation's "Try:" buttons: each makes its settings, plays, and shows the figure.
+ * @param {Page} session
+ * @param {ReturnType<typeof createSettings>} settings
+ * @param {ReturnType<typeof createSheet>} sheet
+ */
+function wireTry(session, { change, unlinkAlpha }, sheet) {
   wireTryButtons({
     preset: (id) => change(() => session.applyPreset(id)),
     set: (key, value) => change(() => session.set(key, value)),
     sets: (pairs) => {
       // Unequal α1, α2 are meant: unlink the sliders first.
-      if (pairs.some(([k]) => k === 'alpha1' || k === 'alpha2')) {
-        link.checked = false;
-        store.dispatch({ type: 'link-alpha', value: false });
-      }
+      if (pairs.some(([k]) => k === 'alpha1' || k === 'alpha2')) unlinkAlpha();
       change(() => pairs.forEach(([k, v]) => session.set(k, v)));
     },
     map: (side, delta, alpha) => change(() => {
@@ -265,316 +123,8 @@ async function main() {
     after: () => {
       store.dispatch({ type: 'play' });
       // On a phone the sheet would cover what the button changed.
-      openSheet(false);
+      sheet.open(false);
       showFigure();
     },
   });
-
-  // ---------------------------------------------------------------- the lesson and the timeline
-  /** A lesson action: the settings it makes, played from the start. */
-  const lessonDo = (/** @type {() => void} */ fn) => {
-    session.setWallClock(Date.now());
-    change(fn);
-    // A step may start paused at a moment (`paused=1&t=2`).
-    store.dispatch({ type: session.takeStartPaused() ? 'pause' : 'play' });
-    refreshStatus();
-  };
-  const lesson = createLesson({
-    start: () => {
-      lessonDo(() => session.lessonOpen(0));
-      openSheet(true);
-    },
-    next: () => lessonDo(() => session.lessonNext()),
-    back: () => lessonDo(() => session.lessonBack()),
-    leave: () => lessonDo(() => session.lessonLeave()),
-    open: async (file) => {
-      const bytes = new Uint8Array(await file.arrayBuffer());
-      try {
-        session.loadLesson(file.name, bytes);
-      } catch (e) {
-        errors.report('The lesson file could not be used (the lesson stays as it was)', e);
-        return;
-      }
-      lessonDo(() => {});
-    },
-    answer: (choice) => {
-      lessonDo(() => session.lessonAnswer(choice));
-      showFigure();
-    },
-    reveal: () => {
-      session.setWallClock(Date.now());
-      guard('Lesson', () => session.lessonReveal());
-      refreshStatus();
-    },
-  });
-  const answers = createAnswers({
-    session,
-    presets: wasm.presets(),
-    report: (what, e) => errors.report(what, e),
-    download,
-    changed: () => {
-      loop.touch();
-      refreshStatus();
-    },
-  });
-  /** Looks back at time t (pausing: the picture holds still there). */
-  const scrubTo = (/** @type {number} */ t) => {
-    store.dispatch({ type: 'pause' });
-    session.viewAt(t);
-    loop.touch();
-    refreshStatus();
-  };
-  const timeline = createTimeline({
-    viewAt: scrubTo,
-    stepBack,
-    continueHere: () => {
-      change(() => session.continueFromHere());
-      store.dispatch({ type: 'play' });
-    },
-  });
-
-  // ---------------------------------------------------------------- canvas
-  const tabs = createTabs({ select: (id) => change(() => session.set('tab', id)) });
-  const legend = createLegend();
-  const focus = createFocus({
-    stepOnMap: (side, d, a) => change(() => session.stepOnMap(side, d, a)),
-    enterMap: (side) => change(() => session.stepOnMap(side, 0, 0)),
-    stepDelta: (d) => change(() => session.stepValue('delta', d)),
-    probe: (x, y) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, 2), null) : null),
-    showTip: overlays.showTip,
-    hideTip: overlays.hideTip,
-    zKey: (action) => zoom.by(action),
-    attachZ: (el) => pointer.attach(el),
-  });
-  const zoom = createZoom({ session, renderer: () => renderer, layout: () => layout, guard, changed: () => (writeUrl(session.stateString()), loop.touch()) });
-  const pointer = createPointer({
-    probe: (x, y, reach) => (renderer ? guard('Pointer', () => renderer?.probe(x, y, reach), null) : null),
-    pick: (map, delta, alpha) => change(() => session.setFromMap(map, delta, alpha)),
-    pickDelta: (delta) => change(() => session.pickDelta(delta)),
-    showTip: overlays.showTip,
-    hideTip: overlays.hideTip,
-    timeAt: (x, y) => renderer?.timeAt(x, y),
-    scrubTo,
-    onZ: zoom.on,
-    zoomZ: zoom.zoomAt,
-    panZ: zoom.panBy,
-  });
-
-  /** Draws a frame; refreshes the labels when the frame's description changed. */
-  function render() {
-    if (!renderer) return false;
-    try {
-      renderer.render(session.session);
-      store.dispatch({ type: 'render-ok' });
-    } catch (e) {
-      store.dispatch({ type: 'render-failed' });
-      errors.report('Drawing failed', e);
-      if (store.get().renderFailures >= 3) {
-        renderer = null;
-        canvasProblem('Drawing stopped after repeated errors.', messageOf(e));
-      }
-      return false;
-    }
-    const generation = renderer.infoGeneration();
-    if (generation !== layoutGeneration) {
-      layout = guard('Renderer layout', () => renderer?.layout(), null);
-      layoutGeneration = generation;
-      if (layout) {
-        overlays.update(layout);
-        tabs.render(layout.tabs);
-        legend.render(layout.legend);
-        focus.update(layout);
-        zoom.update(layout);
-      }
-    }
-    overlays.scroll(renderer.windowStart(), renderer.windowEnd());
-    return true;
-  }
-
-  /** Everything the page says about the session, from one status. */
-  const figureDescription = byId('figure-description');
-  const zoomCaption = byId('zoom-caption');
-  let lessonShown = false;
-  function refreshStatus() {
-    // The clock the answers' record stamps a task with when the session sees it done.
-    session.setWallClock(Date.now());
-    const s = guard('Status', () => session.status(), null);
-    if (!s) return;
-    setText(figureDescription, s.figure);
-    zoomCaption.hidden = !s.cycle;
-    setText(zoomCaption, s.cycle);
-    // A lesson opened from a link shows its step: on a phone, the sheet it lives in opens once.
-    if (s.lesson && !lessonShown) {
-      lessonShown = true;
-      openSheet(true);
-    }
-    if (!s.lesson) lessonShown = false;
-    status.render(s, performance.now());
-    if (finished !== s.runs.every((r) => r.finished)) {
-      finished = !finished;
-      showPlay();
-    }
-    status.renderLegend(s, layout?.series ?? []);
-    present?.render(s.runs, layout?.series ?? []);
-    lesson.render(s.lesson);
-    answers.sync(s.lesson, s.hidden);
-    timeline.render(s.timeline);
-  }
-
-  const loop = createLoop({
-    wasmOk: () => !store.get().dead,
-    playing: () => store.get().playing,
-    finished: () => session.isFinished() && session.status().runs.every((r) => r.finished),
-    advance: (dt) => guard('Simulation step failed', () => session.advance(dt), 0) ?? 0,
-    render,
-    animating: () => renderer?.animating() ?? false,
-    status: refreshStatus,
-    workMaps: (budget) => guard('Stability map', () => session.workMaps(budget), false) ?? false,
-    backend: () => (renderer ? renderer.backend() : null),
-  });
-
-  window.flexarmPanic = (/** @type {unknown} */ msg) => {
-    store.dispatch({ type: 'crash' });
-    errors.show(`The simulation crashed (Rust panic) — reload the page to start again. ${messageOf(msg)}`);
-    canvasProblem('The simulation crashed.', 'See the error message above; reload the page to start again.');
-    status.crashed();
-    controls.setEnabled(false);
-  };
-  // For tests and the console: the live objects, and the performance figures.
-  Object.assign(window, {
-    flexarm: { session, wasm, store, get lastLayout() { return layout; } },
-    flexarmPerf: () => {
-      const times = session.mapTimes();
-      const last = times[times.length - 1];
-      return loop.figures({ map_times: times, map_ms: last ? last.ms : null, map_compute_ms: last ? last.compute_ms : null });
-    },
-  });
-
-  syncControls();
-  writeUrl(session.stateString());
-  byId('loading').hidden = true;
-  // A link to a moment (`paused=1&t=3`) opens paused there.
-  if (session.takeStartPaused()) {
-    store.dispatch({ type: 'pause' });
-    session.setNote(START_NOTE);
-  }
-  // Motion only on request where the system asks for less of it.
-  if (matchMedia('(prefers-reduced-motion: reduce)').matches) {
-    store.dispatch({ type: 'pause' });
-    session.setNote('Paused because your system asks for reduced motion: press Play to run.');
-  }
-  transport.forEach((b) => (/** @type {HTMLButtonElement} */ (b).disabled = false));
-  loop.start();
-
-  // ---------------------------------------------------------------- the renderer
-  try {
-    renderer = await rendererReady;
-    performance.mark('flexarm:renderer-ready');
-    const backend = renderer.backend();
-    store.dispatch({ type: 'renderer', backend });
-    const label = byId('backend');
-    setText(label, backend);
-    label.dataset.backend = backend;
-    watchSize(() => renderer);
-    // The canvas follows the system's colour scheme, as the stylesheet does.
-    const dark = matchMedia('(prefers-color-scheme: dark)');
-    const scheme = () => {
-      renderer?.setDark(dark.matches);
-      loop.touch();
-    };
-    dark.addEventListener('change', scheme);
-    scheme();
-  } catch (e) {
-    setText(byId('backend'), 'none');
-    byId('backend').dataset.backend = 'none';
-    canvasProblem('This browser cannot draw the animation (neither WebGPU nor WebGL2 works).', `${messageOf(e)} — the simulation, status and readouts still run.`);
-    errors.show(`Renderer: ${messageOf(e)}`);
-  }
-  loop.touch();
-  // The maps start once the first frame's work is done, so they do not delay it.
-  loop.scheduleMaps();
-
-  /** Keeps the renderer's size that of the canvas' box and the screen's pixel ratio. */
-  function watchSize(/** @type {() => any} */ current) {
-    const wrap = byId('canvas-wrap');
-    const size = { w: 0, h: 0 };
-    const resize = () => {
-      const r = current();
-      if (r && size.w > 0 && size.h > 0) guard('Renderer resize failed', () => r.resize(size.w, size.h, window.devicePixelRatio || 1, window.innerHeight));
-      loop.touch();
-    };
-    new ResizeObserver((entries) => {
-      for (const entry of entries) Object.assign(size, { w: Math.round(entry.contentRect.width), h: Math.round(entry.contentRect.height) });
-      resize();
-    }).observe(wrap);
-    const watchDpr = () => {
-      matchMedia(`(resolution: ${window.devicePixelRatio || 1}dppx)`).addEventListener('change', () => {
-        watchDpr();
-        resize();
-      }, { once: true });
-    };
-    watchDpr();
-    const rect = wrap.getBoundingClientRect();
-    Object.assign(size, { w: Math.round(rect.width), h: Math.round(rect.height) });
-    resize();
-  }
-}
-
-/** Brings the figure into view if it is out of sight (narrow screens, where it does not stay
- * beside the text): what a "Try:" button or an answer changes is seen at once. */
-function showFigure() {
-  const wrap = byId('canvas-wrap');
-  const r = wrap.getBoundingClientRect();
-  if (r.bottom > 80 && r.top < window.innerHeight - 80) return;
-  const smooth = !matchMedia('(prefers-reduced-motion: reduce)').matches;
-  wrap.scrollIntoView({ block: 'start', behavior: smooth ? 'smooth' : 'auto' });
-}
-
-/** The URL's values that were not taken. @param {{ key: string, text: string }[]} notices */
-/** The bytes of the lesson file `lesson_src=` names, if it is on this site and loads. */
-async function fetchTeacherLesson(/** @type {any} */ wasm) {
-  const value = new URLSearchParams(window.location.search).get('lesson_src');
-  if (value === null) return null;
-  try {
-    const path = wasm.lessonSourcePath(value);
-    const r = await fetch(path);
-    return r.ok ? { path, bytes: new Uint8Array(await r.arrayBuffer()) } : null;
-  } catch {
-    return null; // the session's notice says why
-  }
-}
-
-function showNotices(notices) {
-  if (notices.length === 0) return;
-  byId('url-notice-list').replaceChildren(...noticeLines(notices).map((text) => make('li', { text })));
-  byId('url-notice').hidden = false;
-  byId('url-notice-dismiss').addEventListener('click', () => (byId('url-notice').hidden = true), { once: true });
-}
-
-function canvasProblem(/** @type {string} */ title, /** @type {string} */ detail) {
-  byId('canvas-message').replaceChildren(make('strong', { text: title }), make('span', { text: detail }));
-  byId('canvas-message').hidden = false;
-  byId('canvas').hidden = true;
-}
-
-/** Offers `data` as a file. @param {string} name @param {BlobPart | null | undefined} data @param {string} type */
-function download(name, data, type) {
-  if (data == null) return;
-  const url = URL.createObjectURL(data instanceof Blob ? data : new Blob([data], { type: type.startsWith('text/') || type.includes('svg') ? `${type};charset=utf-8` : type }));
-  const a = make('a', { href: url, download: name });
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 10_000);
-}
-
-/** Shows the command line and copies it to the clipboard where the browser allows. @param {string} command */
-function copyCommand(command) {
-  const out = byId('command-line');
-  setText(out, command);
-  out.hidden = false;
-  navigator.clipboard?.writeText(command).then(
-    () => setText(out, `${command}  (copied)`),
-    () => {},
-  );
 }

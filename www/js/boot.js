@@ -1,0 +1,104 @@
+// Starting the page: the built-in lesson fetched while the simulation loads, the renderer started
+// (the GPU's start is mostly waiting on the browser, done while the page builds its controls), a
+// teacher's lesson (`lesson_src=`), the session opened from the URL, and the notice of what the
+// URL held that was not taken; and, once the page is wired, its start (the transport buttons wait
+// for it): paused where a link's moment or the system's wish for less motion asks.
+
+import { Page } from './flexarm.js';
+import { byId, make, messageOf, setText } from './dom.js';
+import { loadWasm } from './wasm.js';
+import { noticeLines, writeUrl } from './url.js';
+import { START_NOTE } from './transport.js';
+
+/** @typedef {import('./wasm.js').Wasm} Wasm */
+/** @typedef {import('../pkg/flexarm.js').Renderer} Renderer */
+
+/** The buttons that do nothing until the session is open. */
+const TRANSPORT = ['play', 'step', 'reset', 'poke', 'export-csv', 'copy-command'];
+
+/** Enables (or disables) the buttons that need the session. @param {boolean} enabled */
+function enableTransport(enabled) {
+  for (const id of TRANSPORT) /** @type {HTMLButtonElement} */ (byId(id)).disabled = !enabled;
+}
+
+/**
+ * Loads the simulation and opens the session for the page's URL; null when the module could not
+ * be loaded (the page says so, and how to build it).
+ * @param {{ show: (text: string) => void }} errors
+ * @returns {Promise<{ wasm: Wasm, session: Page, rendererReady: Promise<Renderer> } | null>}
+ */
+export async function openPage(errors) {
+  performance.mark('flexarm:main-start');
+  enableTransport(false);
+  // The lesson is a file beside the page (the session parses it), fetched while the module loads.
+  const lessonText = fetch('lessons/paper.md')
+    .then((r) => (r.ok ? r.text() : undefined))
+    .catch(() => undefined);
+  /** @type {Wasm} */
+  let wasm;
+  try {
+    wasm = await loadWasm();
+  } catch (e) {
+    setText(byId('loading-text'), 'Could not load the simulation.');
+    byId('loading').querySelector('.spinner')?.remove();
+    errors.show(`Loading ./pkg/flexarm.js failed: ${messageOf(e)}. Build it with "bash scripts/serve.sh".`);
+    return null;
+  }
+  // The GPU starts up (mostly waiting on the browser) while the page builds its controls.
+  performance.mark('flexarm:renderer-start');
+  const rendererReady = wasm.Renderer.create(/** @type {HTMLCanvasElement} */ (byId('canvas')));
+  rendererReady.catch(() => {}); // handled where it is awaited
+  // A teacher's lesson (`lesson_src=PATH`): fetched only from a path of this site (the session
+  // says why anything else is refused, and checks the file as it checks the built-in lesson).
+  const teacher = await fetchTeacherLesson(wasm);
+  const session = new Page(wasm, window.location.search, await lessonText, teacher);
+  performance.mark('flexarm:session-ready');
+  showNotices(session.notices());
+  return { wasm, session, rendererReady };
+}
+
+/**
+ * The wired page shows the session and starts: the controls and the URL show its state, the
+ * loading screen goes, and the frame loop runs — paused where a link to a moment (`paused=1&t=3`)
+ * or the system (reduced motion) asks.
+ * @param {{ session: Page, store: ReturnType<typeof import('./store.js').createStore>, sync: () => void,
+ *   loop: { start: () => void } }} on
+ */
+export function begin({ session, store, sync, loop }) {
+  sync();
+  writeUrl(session.stateString());
+  byId('loading').hidden = true;
+  // A link to a moment (`paused=1&t=3`) opens paused there.
+  if (session.takeStartPaused()) {
+    store.dispatch({ type: 'pause' });
+    session.setNote(START_NOTE);
+  }
+  // Motion only on request where the system asks for less of it.
+  if (matchMedia('(prefers-reduced-motion: reduce)').matches) {
+    store.dispatch({ type: 'pause' });
+    session.setNote('Paused because your system asks for reduced motion: press Play to run.');
+  }
+  enableTransport(true);
+  loop.start();
+}
+
+/** The bytes of the lesson file `lesson_src=` names, if it is on this site and loads. @param {Wasm} wasm */
+async function fetchTeacherLesson(wasm) {
+  const value = new URLSearchParams(window.location.search).get('lesson_src');
+  if (value === null) return null;
+  try {
+    const path = wasm.lessonSourcePath(value);
+    const r = await fetch(path);
+    return r.ok ? { path, bytes: new Uint8Array(await r.arrayBuffer()) } : null;
+  } catch {
+    return null; // the session's notice says why
+  }
+}
+
+/** The URL's values that were not taken. @param {{ key: string, text: string }[]} notices */
+function showNotices(notices) {
+  if (notices.length === 0) return;
+  byId('url-notice-list').replaceChildren(...noticeLines(notices).map((text) => make('li', { text })));
+  byId('url-notice').hidden = false;
+  byId('url-notice-dismiss').addEventListener('click', () => (byId('url-notice').hidden = true), { once: true });
+}
