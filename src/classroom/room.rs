@@ -131,6 +131,7 @@ impl Classroom {
     }
 
     /// Tells the session what student mode and the lesson step hide now.
+    #[inline(never)]
     pub(super) fn sync(&self, session: &mut Session) {
         let hidden = Hidden { answers: self.answers_hidden(session), windows: self.lesson_hides_windows() };
         session.set_hidden(hidden);
@@ -165,6 +166,7 @@ impl Classroom {
     }
 
     /// Adds an entry to the record, stamped with the state string and the clock.
+    #[inline(never)]
     pub(super) fn record(&mut self, session: &Session, mut entry: Entry) {
         entry.state = self.state_string(session);
         entry.time = answers::iso_time(self.wall_clock_ms.unwrap_or(f64::NAN));

@@ -44,6 +44,11 @@ impl PanelKind {
         PanelKind::MapOn,
     ];
 
+    /// Where the kind comes in the list of panels: the order of this enum.
+    pub const fn order(self) -> u8 {
+        self as u8
+    }
+
     /// The identifier the page sees in `Renderer.layout()` and in the schema's `panels`.
     pub const fn id(self) -> &'static str {
         match self {

@@ -71,6 +71,7 @@ pub struct Region {
 
 impl PanelInfo {
     /// A panel at (x, y), `width × height` CSS px, with linear axes and nothing on them yet.
+    #[inline(never)]
     pub fn new(id: &'static str, x: f64, y: f64, width: f64, height: f64) -> PanelInfo {
         PanelInfo {
             id,

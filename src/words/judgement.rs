@@ -100,6 +100,7 @@ pub fn detail(d: &Detail) -> String {
 }
 
 /// Why the simulation may not follow the linear analysis.
+#[inline(never)]
 pub fn caveat(c: &Caveat) -> String {
     match *c {
         Caveat::Nonlinear => "the analysis is linearized at rest; far from rest the arm is nonlinear".into(),

@@ -4,6 +4,7 @@
 use crate::plot::format::{minus, rounded_summands, significant_trimmed};
 
 /// A rate with two decimals and a real minus sign, never "−0.00".
+#[inline(never)]
 pub fn two_decimals(v: f64) -> String {
     if v.abs() < 0.005 {
         "0.00".into()
@@ -13,11 +14,13 @@ pub fn two_decimals(v: f64) -> String {
 }
 
 /// "e-fold every 0.42 s" for a rate (1/s).
+#[inline(never)]
 pub fn e_folding(rate: f64) -> String {
     format!("e-fold every {} s", significant_trimmed(1.0 / rate.abs(), 2))
 }
 
 /// ρ as the verdict prints it: five decimals where it is nearly 1.
+#[inline(never)]
 pub fn rho(rho: f64) -> String {
     if (rho - 1.0).abs() < 5e-4 {
         format!("{rho:.5}")
@@ -27,11 +30,13 @@ pub fn rho(rho: f64) -> String {
 }
 
 /// "1.5 %" (one decimal, U+2212 for minus).
+#[inline(never)]
 pub fn percent(v: f64) -> String {
     minus(&format!("{:.1} %", 100.0 * v))
 }
 
 /// "2.64 ± 29.58j 1/s".
+#[inline(never)]
 pub fn complex_pair(re: f64, im: f64) -> String {
     minus(&format!("{re:.2} ± {:.2}j 1/s", im.abs()))
 }
@@ -48,6 +53,7 @@ pub fn eigenvalues_2x2(trace: f64, det: f64) -> String {
 }
 
 /// "2.64 1/s" with a minus sign where negative.
+#[inline(never)]
 pub fn per_second(v: f64) -> String {
     minus(&format!("{v:.2} 1/s"))
 }

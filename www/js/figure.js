@@ -9,7 +9,7 @@ import { writeUrl } from './url.js';
 import { createTabs } from './tabs.js';
 import { createLegend } from './legend.js';
 import { createFocus } from './focus.js';
-import { createZoom } from './zoomz.js';
+import { createZoom } from './zplane_zoom.js';
 import { createPointer } from './pointer.js';
 
 /** @typedef {import('./flexarm.js').Page} Page */

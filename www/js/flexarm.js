@@ -172,6 +172,16 @@ export class Page {
     return this.#session.mapTimes();
   }
 
+  /** The time shown, s. @returns {number} */
+  time() {
+    return this.#session.time();
+  }
+
+  /** One run's state at the time shown. @param {number} run @returns {any} */
+  snapshot(run) {
+    return this.#session.snapshot(run);
+  }
+
   // -------------------------------------------------------------------------------------- exports
 
   /** @returns {string} */

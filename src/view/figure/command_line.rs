@@ -28,7 +28,7 @@ pub const ENVELOPE_ROWS: usize = 16_000;
 /// the options show: ρ or ln ρ/δ, …), and that scene laid out on it, drawn from nothing yet.
 fn sheet_and_scene(kinds: &[PanelKind], options: ViewOptions) -> (Sheet, Scene) {
     let mut scene = Scene::new(options, 800.0, 600.0, 1.0);
-    let (sheet, layout) = Sheet::new(kinds, scene.figure_title(kinds));
+    let (sheet, layout) = Sheet::new(&scene, kinds);
     scene.set_layout(layout);
     (sheet, scene)
 }

@@ -11,22 +11,10 @@ const GAP: f64 = 24.0;
 /// A figure is at least this wide (room for its key and caption), px.
 pub const MIN_WIDTH: f64 = 600.0;
 
-/// A panel's data area in a figure (w, h), px: what reads well on a slide or a printed page.
-fn data_size(kind: PanelKind) -> (f64, f64) {
-    match kind {
-        PanelKind::Arm | PanelKind::ArmB => (480.0, 440.0),
-        PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => (660.0, 200.0),
-        PanelKind::Poles => (540.0, 380.0),
-        PanelKind::ZPlane => (440.0, 440.0),
-        PanelKind::RhoCurve => (600.0, 300.0),
-        PanelKind::MapOff | PanelKind::MapOn => (440.0, 330.0),
-    }
-}
-
 /// The figure's panels below `top`: time plots stacked, anything else side by side, the whole
 /// centred in a figure at least [`MIN_WIDTH`] wide. Returns the layout (CSS px = figure px, one
 /// device pixel each), the figure's width and the panels' bottom edge (gutters included).
-pub fn figure_layout(kinds: &[PanelKind], top: f64) -> (Layout, f64, f64) {
+pub fn figure_layout(kinds: &[PanelKind], top: f64, data_size: impl Fn(PanelKind) -> (f64, f64)) -> (Layout, f64, f64) {
     let cell = |kind: PanelKind| {
         let (w, h) = data_size(kind);
         let [l, t, r, b] = gutters(kind);
@@ -80,7 +68,7 @@ mod tests {
         for kinds in
             [&[PanelKind::Error1, PanelKind::Error2][..], &[PanelKind::MapOff, PanelKind::MapOn], &[PanelKind::Arm]]
         {
-            let (layout, width, bottom) = figure_layout(kinds, 40.0);
+            let (layout, width, bottom) = figure_layout(kinds, 40.0, |k| crate::view::panels::Panels::default().figure_size(k));
             for p in &layout.panels {
                 let [l, t, r, b] = gutters(p.kind);
                 assert!(p.rect.x - l >= 0.0 && p.rect.right() + r <= width, "{p:?}");

@@ -216,7 +216,7 @@ pub fn figure_svg_captioned(session: &Session, state: &str, panel: &str, dark: b
     let mut scene = Scene::new(ViewOptions::default(), 800.0, 600.0, 1.0);
     scene.follow_view(&session.drawn_view());
     let kinds = panel.kinds();
-    let (sheet, layout) = Sheet::new(kinds, scene.figure_title(kinds));
+    let (sheet, layout) = Sheet::new(&scene, kinds);
 
     // The scene: first as the session's view lays it out (its options, the runs) on a canvas of
     // the figure's size, then on the figure's layout, drawn again.

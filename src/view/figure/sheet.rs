@@ -41,11 +41,12 @@ impl Sheet {
     /// The sheet of the panels `kinds` under `title`, and the panels' layout on it, for a scene to
     /// draw on ([`Scene::set_layout`]). The title is broken for a first guess of the width (the
     /// panels go below it), then again for the width the panels give.
-    pub fn new(kinds: &[PanelKind], title: String) -> (Sheet, Layout) {
+    pub fn new(scene: &Scene, kinds: &[PanelKind]) -> (Sheet, Layout) {
+        let title = scene.figure_title(kinds);
         let width_guess = 800.0;
         let title_lines = wrap(&title, width_guess - 2.0 * MARGIN, TITLE, true);
         let top = MARGIN + title_lines.len() as f64 * TITLE_PITCH + 6.0;
-        let (layout, width, panels_bottom) = figure_layout(kinds, top);
+        let (layout, width, panels_bottom) = figure_layout(kinds, top, |k| scene.figure_size(k));
         let title_lines = wrap(&title, width - 2.0 * MARGIN, TITLE, true);
         (Sheet { title, title_lines, width, panels_bottom }, layout)
     }

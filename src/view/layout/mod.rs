@@ -137,7 +137,7 @@ impl Layout {
             // Everything at once only where everything stays readable; else one tab at a time.
             let all = Layout::compute_all(inner, &lists, portrait, &mut panels);
             if !can_tab || smallest_side(&panels) >= MIN_READABLE_SIDE {
-                crate::sort::sort_by_key(&mut panels, |p| panel_order(p.kind));
+                crate::sort::sort_by_key(&mut panels, |p| p.kind.order());
                 return Layout {
                     css_width: w,
                     css_height: h,
@@ -169,7 +169,7 @@ impl Layout {
             (arrangement, Vec::new(), None)
         };
         // Panels in reading order: the stage first, then the plots, then the analysis panels.
-        crate::sort::sort_by_key(&mut panels, |p| panel_order(p.kind));
+        crate::sort::sort_by_key(&mut panels, |p| p.kind.order());
         Layout { css_width: w, css_height: h, device_pixel_ratio: dpr, arrangement, panels, tabs, tab }
     }
 
@@ -220,21 +220,6 @@ impl Layout {
 fn panel_in(cell: Rect, kind: PanelKind) -> Panel {
     let [l, t, r, b] = gutters(kind);
     Panel { kind, rect: cell.inset(l, t, r, b) }
-}
-
-/// Where a panel kind comes in the list of panels.
-fn panel_order(kind: PanelKind) -> u8 {
-    match kind {
-        PanelKind::Arm => 0,
-        PanelKind::ArmB => 1,
-        PanelKind::Error1 => 2,
-        PanelKind::Error2 => 3,
-        PanelKind::Torque => 4,
-        PanelKind::Poles | PanelKind::ZPlane => 5,
-        PanelKind::RhoCurve => 6,
-        PanelKind::MapOff => 7,
-        PanelKind::MapOn => 8,
-    }
 }
 
 /// The stage and the time plots alone: stacked on a narrow canvas, else side by side. Either may

@@ -67,6 +67,9 @@ pub trait PanelView {
 
     /// A figure's title for the panels `kinds` of this family ([`crate::view::figure`]).
     fn figure_title(&self, frame: &Frame, kinds: &[PanelKind]) -> String;
+
+    /// The data area of `kind` in a figure (w, h), px: what reads well on a slide or a printed page.
+    fn figure_size(&self, kind: PanelKind) -> (f64, f64);
 }
 
 /// The state of one run that a frame draws.

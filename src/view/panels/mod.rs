@@ -120,6 +120,10 @@ impl Panels {
         dispatch!(self, panel.kind, p => p.pole_markers(frame, panel))
     }
 
+    pub fn figure_size(&self, kind: PanelKind) -> (f64, f64) {
+        dispatch!(self, kind, p => p.figure_size(kind))
+    }
+
     pub fn figure_title(&self, frame: &Frame, kinds: &[PanelKind]) -> String {
         kinds.first().map_or_else(String::new, |k| dispatch!(self, *k, p => p.figure_title(frame, kinds)))
     }

@@ -60,6 +60,11 @@ impl Scene {
         self.panels.figure_title(&self.frame, kinds)
     }
 
+    /// The data area of a `kind` panel in a figure (w, h), px.
+    pub fn figure_size(&self, kind: PanelKind) -> (f64, f64) {
+        self.panels.figure_size(kind)
+    }
+
     /// Every text over the canvas, placed (see [`crate::view::labels`]).
     pub fn labels(&self) -> Vec<Label> {
         let kinds = self.frame.layout.panels.iter().map(|p| p.kind);

@@ -22,6 +22,10 @@ use crate::view::panels::contract::{Frame, PanelView, Runs};
 pub struct Arm;
 
 impl PanelView for Arm {
+    fn figure_size(&self, _kind: PanelKind) -> (f64, f64) {
+        (480.0, 440.0)
+    }
+
     fn vertex_budget(&self, _frame: &Frame, _panel: &Panel) -> usize {
         VERTEX_BUDGET
     }

@@ -57,6 +57,10 @@ impl PolePlot {
 }
 
 impl PanelView for PolePlot {
+    fn figure_size(&self, _kind: PanelKind) -> (f64, f64) {
+        (540.0, 380.0)
+    }
+
     fn vertex_budget(&self, frame: &Frame, panel: &Panel) -> usize {
         let (x_ticks, y_ticks) = tick_counts(panel.rect);
         let background = 6 * (x_ticks + y_ticks + 8) + 2 * 6 + 24 + 2 * DASHED_LINE_BUDGET;

@@ -39,6 +39,10 @@ impl RhoCurve {
 }
 
 impl PanelView for RhoCurve {
+    fn figure_size(&self, _kind: PanelKind) -> (f64, f64) {
+        (600.0, 300.0)
+    }
+
     fn vertex_budget(&self, frame: &Frame, _panel: &Panel) -> usize {
         24 + frame.run_count() * MARKER_VERTEX_BUDGET
     }

@@ -94,6 +94,10 @@ impl StabilityMaps {
 }
 
 impl PanelView for StabilityMaps {
+    fn figure_size(&self, _kind: PanelKind) -> (f64, f64) {
+        (440.0, 330.0)
+    }
+
     fn vertex_budget(&self, frame: &Frame, _panel: &Panel) -> usize {
         24 + 2 * 6 * 8 + frame.run_count() * MARKER_VERTEX_BUDGET
     }

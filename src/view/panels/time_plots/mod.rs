@@ -287,6 +287,10 @@ fn draw_predicted_slope(
 }
 
 impl PanelView for TimePlots {
+    fn figure_size(&self, _kind: PanelKind) -> (f64, f64) {
+        (660.0, 200.0)
+    }
+
     fn vertex_budget(&self, frame: &Frame, panel: &Panel) -> usize {
         let runs = frame.run_count();
         // Each run's curves, the ghost's, and a predicted slope per run.

@@ -33,6 +33,10 @@ use crate::view::tick_labels::{linear_labels, offset_labels};
 pub struct ZPlane;
 
 impl PanelView for ZPlane {
+    fn figure_size(&self, _kind: PanelKind) -> (f64, f64) {
+        (440.0, 440.0)
+    }
+
     fn vertex_budget(&self, frame: &Frame, _panel: &Panel) -> usize {
         BACKGROUND_VERTEX_BUDGET + 24 + frame.run_count() * RUN_VERTEX_BUDGET
     }

@@ -3,7 +3,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { wheelFactor } from './pointer.js';
 import { zKey } from './focus.js';
-import { zAction } from './zoomz.js';
+import { zAction } from './zplane_zoom.js';
 
 test('a wheel notch zooms by about 1.2, up in and down out, the same in lines and pixels', () => {
   const notch = wheelFactor({ deltaY: -100, deltaMode: 0 });
