@@ -60,7 +60,7 @@ export function answersJson(csv) {
 /**
  * @typedef {{ headline: string, rows: { text: string, result: string, state: string, time: string }[],
  *   count: number, lesson_hash: string }} AnswersStatus
- * @param {{ session: any, presets: { id: string, title: string, settings_title: string }[],
+ * @param {{ session: import('./flexarm.js').Page, presets: { id: string, title: string, settings_title: string }[],
  *   report: (what: string, e: unknown) => void,
  *   download: (name: string, text: string, type: string) => void, changed: () => void }} on
  */

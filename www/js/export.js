@@ -146,7 +146,7 @@ export function figureOptions(panels, selected) {
   return panels.map((p) => ({ value: p.id, text: p.label, selected: p.id === keep }));
 }
 
-/** What a data file lacks while the maps are unfinished (or hidden, and so not computed), else "". @param {any} session */
+/** What a data file lacks while the maps are unfinished (or hidden, and so not computed), else "". @param {import('./flexarm.js').Page} session */
 function mapsNote(session) {
   return session.status().maps.done ? '' : ', with the stability maps only as far as they are computed (see "omitted" in it)';
 }
@@ -232,7 +232,7 @@ function figureCanvas(canvas, scale) {
 // ---------------------------------------------------------------- the buttons
 
 /**
- * @param {{ session: any, canvas: HTMLCanvasElement, overlay: HTMLElement, renderNow: () => boolean,
+ * @param {{ session: import('./flexarm.js').Page, canvas: HTMLCanvasElement, overlay: HTMLElement, renderNow: () => boolean,
  *   download: (name: string, data: BlobPart | null | undefined, type: string) => void,
  *   report: (what: string, e: unknown) => void }} on
  */
@@ -417,7 +417,7 @@ function record(type, from, to) {
 /**
  * The Figure row: which panel (those shown, listed by Rust), SVG or PNG at 1×, 2× or 4×, light
  * or dark. The SVG is Rust's; a PNG is that SVG drawn into a canvas at the scale.
- * @param {{ session: any, download: (name: string, data: BlobPart | null | undefined, type: string) => void }} on
+ * @param {{ session: import('./flexarm.js').Page, download: (name: string, data: BlobPart | null | undefined, type: string) => void }} on
  * @param {(text: string) => void} say
  * @param {(what: string, fn: () => void | Promise<void>) => () => Promise<void>} guarded
  */

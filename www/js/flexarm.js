@@ -9,6 +9,7 @@
 /** @typedef {typeof import('../pkg/flexarm.js')} Wasm */
 /** @typedef {import('../pkg/flexarm.js').Session} RawSession */
 /** @typedef {import('../pkg/flexarm.js').Classroom} RawClassroom */
+/** @typedef {import('../pkg/flexarm.js').Renderer} RawRenderer */
 
 export class Page {
   /** @type {RawSession} */
@@ -118,6 +119,24 @@ export class Page {
   /** @param {string} which "whole" or "pair" */
   zView(which) {
     this.#change((s) => s.zView(which));
+  }
+
+  /**
+   * Zooms the z-plane by `factor` about (x, y) (CSS px of the canvas; NaN: the panel's centre);
+   * the renderer writes the view into the session's settings. False when not on the z-plane.
+   * @param {RawRenderer} renderer @param {number} x @param {number} y @param {number} factor
+   * @returns {boolean}
+   */
+  zoomZ(renderer, x, y, factor) {
+    return this.#change((s) => renderer.zoomZ(s, x, y, factor));
+  }
+
+  /**
+   * Moves the z-plane by (dx, dy) CSS px, written into the session's settings.
+   * @param {RawRenderer} renderer @param {number} dx @param {number} dy @returns {boolean}
+   */
+  panZ(renderer, dx, dy) {
+    return this.#change((s) => renderer.panZ(s, dx, dy));
   }
 
   /** @param {string} note */

@@ -12,7 +12,7 @@ export function zAction(name) {
 }
 
 /**
- * @param {{ session: any, renderer: () => any, layout: () => any,
+ * @param {{ session: import('./flexarm.js').Page, renderer: () => import('../pkg/flexarm.js').Renderer | null, layout: () => any,
  *   guard: (what: string, fn: () => any, fallback: any) => any, changed: () => void }} on
  */
 export function createZoom(on) {
@@ -30,8 +30,8 @@ export function createZoom(on) {
     const r = on.renderer();
     const p = panel();
     if (a.view) return run(() => (on.session.zView(a.view), true));
-    if (a.zoom) return run(() => r?.zoomZ(on.session, NaN, NaN, a.zoom));
-    if (a.pan && p) return run(() => r?.panZ(on.session, (-a.pan[0] * p.width) / 10, (a.pan[1] * p.height) / 10));
+    if (a.zoom) return run(() => r ? on.session.zoomZ(r, NaN, NaN, a.zoom) : false);
+    if (a.pan && p) return run(() => r ? on.session.panZ(r, (-a.pan[0] * p.width) / 10, (a.pan[1] * p.height) / 10) : false);
     return false;
   };
   for (const b of group.querySelectorAll('button')) {
@@ -45,9 +45,9 @@ export function createZoom(on) {
     /** True if (x, y) (CSS px of the canvas) is on the z-plane. @param {number} x @param {number} y */
     on: (x, y) => Boolean(on.renderer()?.zAt(x, y)),
     /** @param {number} x @param {number} y @param {number} f */
-    zoomAt: (x, y, f) => run(() => on.renderer()?.zoomZ(on.session, x, y, f)),
+    zoomAt: (x, y, f) => run(() => { const r = on.renderer(); return r ? on.session.zoomZ(r, x, y, f) : false; }),
     /** @param {number} dx @param {number} dy */
-    panBy: (dx, dy) => run(() => on.renderer()?.panZ(on.session, dx, dy)),
+    panBy: (dx, dy) => run(() => { const r = on.renderer(); return r ? on.session.panZ(r, dx, dy) : false; }),
     /** + − 0 P with the pointer at `at` over the z-plane (the arrows keep stepping time).
      * @param {KeyboardEvent} ev @param {{ x: number, y: number } | null} at */
     key: (ev, at) => {
