@@ -43,6 +43,11 @@ impl Autoscale {
         Self { settings, limit: settings.floor, low_since: None }
     }
 
+    /// Fresh scales for the time plots e1, e2 and the torques (theirs and the zoom's own).
+    pub fn time_plots() -> [Autoscale; 3] {
+        [Self::new(AutoscaleSettings::ERROR), Self::new(AutoscaleSettings::ERROR), Self::new(AutoscaleSettings::TORQUE)]
+    }
+
     /// The current half-range Y: the plot shows [−Y, Y].
     pub fn limit(&self) -> f64 {
         self.limit

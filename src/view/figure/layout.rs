@@ -68,7 +68,8 @@ mod tests {
         for kinds in
             [&[PanelKind::Error1, PanelKind::Error2][..], &[PanelKind::MapOff, PanelKind::MapOn], &[PanelKind::Arm]]
         {
-            let (layout, width, bottom) = figure_layout(kinds, 40.0, |k| crate::view::panels::Panels::default().figure_size(k));
+            let (layout, width, bottom) =
+                figure_layout(kinds, 40.0, |k| crate::view::panels::Panels::default().figure_size(k));
             for p in &layout.panels {
                 let [l, t, r, b] = gutters(p.kind);
                 assert!(p.rect.x - l >= 0.0 && p.rect.right() + r <= width, "{p:?}");

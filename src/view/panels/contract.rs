@@ -18,7 +18,8 @@ use crate::model::reference::Reference;
 use crate::schema::PanelKind;
 use crate::view::layout::{Layout, Panel};
 use crate::view::legend::LegendGroup;
-use crate::view::loop_poles::PoleInfo;
+use crate::view::loop_poles::readout::{probe_poles, PoleScene};
+use crate::view::loop_poles::{describe_poles, Placement, PoleInfo};
 use crate::view::options::ViewOptions;
 use crate::view::painter::Painter;
 use crate::view::panel_info::{PanelInfo, Probe};
@@ -190,6 +191,40 @@ impl Frame {
     /// The analyses of the runs shown.
     pub fn reports(&self) -> impl Iterator<Item = &StabilityReport> {
         self.runs[..self.run_count()].iter().filter_map(|m| m.report.as_ref())
+    }
+
+    /// Every run's loop eigenvalues as markers on a picture of them, `place` putting each (s, λ)
+    /// on it (CSS px) and saying whether it is in view: what the pole plot and the z-plane list.
+    pub fn pole_markers(&self, place: Placement<'_>) -> Vec<PoleInfo> {
+        let mut out = Vec::new();
+        for (memory, name) in self.runs.iter().zip(RUN_NAMES).take(self.run_count()) {
+            if let Some(report) = &memory.report {
+                describe_poles(report, name, place, &mut out);
+            }
+        }
+        out
+    }
+
+    /// The marker among `poles` at (x, y) on the pole picture `panel` (the z-plane's if
+    /// `z_plane`), read out for a tooltip.
+    pub fn probe_poles(
+        &self,
+        poles: &[PoleInfo],
+        panel: &Panel,
+        z_plane: bool,
+        x: f64,
+        y: f64,
+        reach: f64,
+    ) -> Option<Probe> {
+        let scene = PoleScene {
+            poles,
+            panel: panel.rect,
+            z_plane,
+            pair: self.pair,
+            hide_prediction: self.options.hide_prediction,
+            sampling_period: self.runs[0].report.as_ref().map_or(1.0, |r| r.sampling_period),
+        };
+        probe_poles(&scene, x, y, reach)
     }
 
     /// The zoom's window, if the zoom is on and has an instant to show: three sampling periods

@@ -13,13 +13,11 @@ use crate::plot::{format, palette, Ticks};
 use crate::schema::PanelKind;
 use crate::view::layout::Panel;
 use crate::view::legend::LegendGroup;
-use crate::view::loop_poles::readout::{flexible_mark, probe_poles, PoleScene};
-use crate::view::loop_poles::{
-    describe_poles, flexible_aliased, legend_group, nyquist, size, PoleInfo, PoleStyle, RE_RANGE,
-};
+use crate::view::loop_poles::readout::flexible_mark;
+use crate::view::loop_poles::{flexible_aliased, legend_group, nyquist, size, PoleInfo, PoleStyle, RE_RANGE};
 use crate::view::painter::Painter;
 use crate::view::panel_info::{PanelInfo, Probe, Region};
-use crate::view::panels::contract::{Frame, PanelView, Runs, RUN_NAMES};
+use crate::view::panels::contract::{Frame, PanelView, Runs};
 use crate::view::rect::Rect;
 use crate::view::tick_labels::linear_labels;
 
@@ -136,26 +134,12 @@ impl PanelView for PolePlot {
             let (p, off) = plot.marker(s, size::EDGE);
             (Some(p), off.is_none())
         };
-        let mut out = Vec::new();
-        for (memory, name) in frame.runs.iter().zip(RUN_NAMES).take(frame.run_count()) {
-            if let Some(report) = &memory.report {
-                describe_poles(report, name, &place, &mut out);
-            }
-        }
-        Some(out)
+        Some(frame.pole_markers(&place))
     }
 
     fn probe(&self, frame: &Frame, panel: &Panel, x: f64, y: f64, reach: f64) -> Option<Probe> {
         let poles = self.pole_markers(frame, panel)?;
-        let scene = PoleScene {
-            poles: &poles,
-            panel: panel.rect,
-            z_plane: false,
-            pair: frame.pair,
-            hide_prediction: frame.options.hide_prediction,
-            sampling_period: frame.runs[0].report.as_ref().map_or(1.0, |r| r.sampling_period),
-        };
-        probe_poles(&scene, x, y, reach)
+        frame.probe_poles(&poles, panel, false, x, y, reach)
     }
 
     fn legend(&self, frame: &Frame, kinds: &[PanelKind]) -> Vec<LegendGroup> {

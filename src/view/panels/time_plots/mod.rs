@@ -23,7 +23,7 @@ use crate::model::reference::Reference;
 use crate::plot::ticks::Decades;
 use crate::plot::{palette, Color};
 use crate::schema::PanelKind;
-use crate::view::autoscale::{Autoscale, AutoscaleSettings};
+use crate::view::autoscale::Autoscale;
 use crate::view::layout::Panel;
 use crate::view::legend::{item, Glyph, LegendGroup};
 use crate::view::painter::Painter;
@@ -49,16 +49,7 @@ pub struct TimePlots {
 
 impl Default for TimePlots {
     fn default() -> Self {
-        Self {
-            scales: [
-                Autoscale::new(AutoscaleSettings::ERROR),
-                Autoscale::new(AutoscaleSettings::ERROR),
-                Autoscale::new(AutoscaleSettings::TORQUE),
-            ],
-            zoom: Zoom::default(),
-            split: SplitBuffers::default(),
-            auto_log: false,
-        }
+        Self { scales: Autoscale::time_plots(), zoom: Zoom::default(), split: SplitBuffers::default(), auto_log: false }
     }
 }
 

@@ -12,7 +12,7 @@ use super::drawing::{draw_background, draw_frame, draw_series, max_abs, PlotFram
 use super::series::{plot_tick_counts, y_label, CURVE_WIDTH};
 use crate::plot::palette;
 use crate::schema::PanelKind;
-use crate::view::autoscale::{Autoscale, AutoscaleSettings};
+use crate::view::autoscale::Autoscale;
 use crate::view::layout::Panel;
 use crate::view::painter::Painter;
 use crate::view::panel_info::{PanelInfo, TickLabel};
@@ -56,13 +56,7 @@ pub struct Zoom {
 
 impl Default for Zoom {
     fn default() -> Self {
-        Self {
-            scales: [
-                Autoscale::new(AutoscaleSettings::ERROR),
-                Autoscale::new(AutoscaleSettings::ERROR),
-                Autoscale::new(AutoscaleSettings::TORQUE),
-            ],
-        }
+        Self { scales: Autoscale::time_plots() }
     }
 }
 

@@ -20,11 +20,11 @@ use crate::plot::palette;
 use crate::schema::PanelKind;
 use crate::view::layout::{margins, Panel};
 use crate::view::legend::LegendGroup;
-use crate::view::loop_poles::readout::{flexible_mark, probe_poles, PoleScene};
-use crate::view::loop_poles::{describe_poles, legend_group, PoleInfo, PoleStyle};
+use crate::view::loop_poles::readout::flexible_mark;
+use crate::view::loop_poles::{legend_group, PoleInfo, PoleStyle};
 use crate::view::painter::Painter;
 use crate::view::panel_info::{PanelInfo, Probe, Region, TickLabel};
-use crate::view::panels::contract::{Frame, PanelView, Runs, RUN_NAMES};
+use crate::view::panels::contract::{Frame, PanelView, Runs};
 use crate::view::text_metrics::{font, text_width, LINE_HEIGHT};
 use crate::view::tick_labels::{linear_labels, offset_labels};
 
@@ -115,26 +115,12 @@ impl PanelView for ZPlane {
             let (p, in_view) = marker_css(&plane, lambda);
             (Some(p), in_view)
         };
-        let mut out = Vec::new();
-        for (memory, name) in frame.runs.iter().zip(RUN_NAMES).take(frame.run_count()) {
-            if let Some(report) = &memory.report {
-                describe_poles(report, name, &place, &mut out);
-            }
-        }
-        Some(out)
+        Some(frame.pole_markers(&place))
     }
 
     fn probe(&self, frame: &Frame, panel: &Panel, x: f64, y: f64, reach: f64) -> Option<Probe> {
         let poles = self.pole_markers(frame, panel)?;
-        let scene = PoleScene {
-            poles: &poles,
-            panel: panel.rect,
-            z_plane: true,
-            pair: frame.pair,
-            hide_prediction: frame.options.hide_prediction,
-            sampling_period: frame.runs[0].report.as_ref().map_or(1.0, |r| r.sampling_period),
-        };
-        probe_poles(&scene, x, y, reach)
+        frame.probe_poles(&poles, panel, true, x, y, reach)
     }
 
     fn legend(&self, frame: &Frame, kinds: &[PanelKind]) -> Vec<LegendGroup> {
