@@ -130,6 +130,23 @@ pub fn closed_form_a4(plant: &PlantParameters, alpha: [f64; 2], q2: f64, gain: &
     )
 }
 
+/// The twist feedback ([`crate::control::feedback::twist_gain`]) that places the δ → 0 pair at
+/// `target` and its conjugate: (k_p, k_d) in N m/rad and N m s/rad. The twist adds
+/// −(k_p z + k_d y)/Ir1 to ẏ, so tr A4 = tr A4⁰ − k_d/Ir1 fixes k_d from 2 Re target, and then
+/// det A4, linear in k_p, fixes k_p from |target|². Any pair is reachable this way (two gains for
+/// the two coefficients of the characteristic polynomial); whether the gains are sensible is the
+/// settings' ranges' business.
+pub fn twist_placing(plant: &PlantParameters, alpha: [f64; 2], q2: f64, target: Complex<f64>) -> [f64; 2] {
+    let a = JointResonance::new(plant, alpha, q2).a4;
+    let ir1 = plant.ir1;
+    // tr = a00 + a11 − k_d/Ir1 = 2 Re λ.
+    let damping = ir1 * (a.trace() - 2.0 * target.re);
+    // det = a00 (a11 − k_d/Ir1) − a01 (a10 − k_p/Ir1) = |λ|².
+    let stiffness =
+        ir1 / a[(0, 1)] * (target.norm_sqr() - a[(0, 0)] * (a[(1, 1)] - damping / ir1) + a[(0, 1)] * a[(1, 0)]);
+    [stiffness, damping]
+}
+
 /// How far a preliminary feedback moves the pair's real part (half the change of tr A4), 1/s.
 /// For α1 = α2 it does not depend on α: ½ [K_θ̇,1/Ir1 + (A2 + A3 cos q2) K_θ̇,2/(A2 J_eff)],
 /// through its gains on θ̇ alone; with α1 ≠ α2 its T2 part changes with them.

@@ -39,6 +39,20 @@ pub fn paper_gain() -> FeedbackGain {
     ])
 }
 
+/// A feedback of the joint's twist alone on the motor torque, T1 += k_p (q1 − θ) + k_d (q̇1 − θ̇):
+/// a spring (`stiffness` k_p, N m/rad) and a damper (`damping` k_d, N m s/rad) between motor and
+/// link 1, applied by the motor. It acts on the pair A4 through its θ and θ̇ columns only
+/// ([`crate::analysis::resonance`]): Re A4 = 3β/2 − (Bv1 + k_d)/(2 Ir1).
+pub fn twist_gain(stiffness: f64, damping: f64) -> FeedbackGain {
+    let mut k = FeedbackGain::zeros();
+    // The state is (q1, q2, θ, q̇1, q̇2, θ̇, w1, w2); row 0 is T1.
+    k[(0, 0)] = stiffness;
+    k[(0, 2)] = -stiffness;
+    k[(0, 3)] = damping;
+    k[(0, 5)] = -damping;
+    k
+}
+
 /// Weights of the LQ design on the 2-state part A4.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct LqWeights {
