@@ -165,3 +165,88 @@ fn at_alpha_five_the_papers_gain_fails_and_a_designed_damper_cures_it() {
     assert!(rho(&twist_gain(0.0, 40.0)) < 1.0);
     assert!(rho(&twist_gain(0.0, 0.5 * bound)) > 1.0, "half the damping it takes is not enough");
 }
+
+/// The setting (issue 32, part 2): `pf=twist` with `twist_stiffness` and `twist_damping` through
+/// the one schema; the gains reach the loop, the state string keeps them only when they are not
+/// the defaults, the page shows their controls only under `pf=twist`, and the sentence beside
+/// the feedback's selector gives the damping the pair needs, which the numerical limit confirms
+/// on either side of it, over arms and α.
+mod setting {
+    use super::*;
+    use flexarm::session::Session;
+
+    fn session(query: &str) -> Session {
+        let (s, notices) = Session::open(query);
+        assert!(notices.is_empty(), "{query}: {notices:?}");
+        s
+    }
+
+    #[test]
+    fn the_gains_reach_the_loop_and_the_link_keeps_them() {
+        let s = session("pf=twist&twist_stiffness=120&twist_damping=40&alpha=2&delta=0.01");
+        let c = s.settings().a.config();
+        assert_eq!(resolve_gain(&c).unwrap(), twist_gain(120.0, 40.0));
+        let state = s.state_string();
+        assert!(
+            state.contains("pf=twist") && state.contains("twist_stiffness=120") && state.contains("twist_damping=40"),
+            "{state}"
+        );
+        // At their defaults the gains stay out of links, as the arm's parameters do.
+        let plain = session("pf=off").state_string();
+        assert!(!plain.contains("twist"), "{plain}");
+    }
+
+    #[test]
+    fn their_controls_show_only_under_the_twist_feedback() {
+        let shown = |q: &str| {
+            session(q)
+                .controls()
+                .into_iter()
+                .filter(|c| c.key.starts_with("twist_"))
+                .map(|c| c.shown)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(shown("pf=paper"), [false, false]);
+        assert_eq!(shown("pf=twist"), [true, true]);
+        assert_eq!(shown("pf=off&compare=1&b_pf=twist"), [true, true]);
+    }
+
+    #[test]
+    fn the_damping_the_note_asks_for_is_where_the_pair_crosses_the_axis() {
+        let mut rng = Rng(0x5eed_1234_abcd_0003);
+        let mut checked = 0;
+        for _ in 0..12 {
+            let plant = random_arm(&mut rng);
+            let alpha = rng.uniform(0.5, 6.0);
+            let needed = 3.0 * alpha * plant.ir1 - plant.bv1;
+            if needed <= 1.0 {
+                continue;
+            }
+            let arm = flexarm::schema::ARM_PARAMS
+                .iter()
+                .zip(plant.values())
+                .map(|(p, v)| format!("{}={v}", p.key))
+                .collect::<Vec<_>>()
+                .join("&");
+            let c = session(&format!("pf=twist&alpha={alpha}&{arm}")).settings().a.config();
+            let report = analyze(&c, None).unwrap();
+            let note = flexarm::words::story::story(&c, &report).kpr_note;
+            let printed = format!("{} N m s/rad", flexarm::plot::format::significant_trimmed(needed, 3));
+            assert!(note.contains(&printed), "{note} should ask for {printed}");
+            for (kd, stable) in [(needed * 1.05, true), (needed * 0.95, false)] {
+                let re = numerical(&plant, [alpha, alpha], 0.0, &twist_gain(0.0, kd)).eigenvalues[0].re;
+                assert_eq!(re < 0.0, stable, "α = {alpha}, k_d = {kd}: Re A4 = {re}");
+            }
+            checked += 1;
+        }
+        assert!(checked >= 8, "only {checked} arms needed damping");
+    }
+}
+
+#[test]
+fn the_readme_says_what_k_d_16_does() {
+    let pair = numerical(&PlantParameters::default(), [2.0, 2.0], 0.0, &twist_gain(0.0, 16.0)).eigenvalues[0];
+    let said = format!("A4 = −{:.2} ± {:.2}j", -pair.re, pair.im);
+    let readme = include_str!("../README.md");
+    assert!(readme.contains(&said), "README should say {said:?}");
+}

@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 use super::energy::{swing_energy, EnergyModel, SwingEnergy};
 use super::resonance::ResonanceReport;
 use crate::control::config::{
-    ControllerModel, ControllerParameters, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig,
+    ControllerModel, ControllerParameters, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig, TwistFeedback,
 };
 use crate::control::feedback::{resolve_gain, FeedbackGain};
 use crate::control::linear::{expm, limit_pair, linearize_at_rest, predictor_gain, LinearModel, Mat10, Mat8};
@@ -30,6 +30,8 @@ pub struct LinearSettings {
     pub rest: [f64; 2],
     pub controller: ControllerParameters,
     pub preliminary_feedback: PreliminaryFeedbackChoice,
+    /// The twist feedback's gains (`Twist`).
+    pub twist: TwistFeedback,
     pub inner_loop: InnerLoop,
     /// Operating point q2 of the LQ design, rad.
     pub lq_design_q2: f64,
@@ -45,6 +47,7 @@ impl LinearSettings {
             rest: [config.reference.end[0], q2.unwrap_or(config.reference.end[1])],
             controller: config.controller,
             preliminary_feedback: config.preliminary_feedback,
+            twist: config.twist,
             inner_loop: config.inner_loop,
             lq_design_q2: config.lq_design_q2,
             model: config.model,
@@ -70,6 +73,7 @@ impl LinearSettings {
             plant: self.plant,
             controller: self.controller,
             preliminary_feedback: self.preliminary_feedback,
+            twist: self.twist,
             inner_loop: self.inner_loop,
             lq_design_q2: self.lq_design_q2,
             model: self.model,
@@ -190,7 +194,11 @@ impl LoopModel {
         let error = self.predictor.as_ref();
         let open = limit_pair_with_model(&self.model, error, &FeedbackGain::zeros())?;
         let with_pf = limit_pair_with_model(&self.model, error, &self.gain)?;
-        let fixed = self.settings.preliminary_feedback == PreliminaryFeedbackChoice::Paper;
+        // The paper's gains and a twist damper do not change with α: their α limit means something.
+        let fixed = matches!(
+            self.settings.preliminary_feedback,
+            PreliminaryFeedbackChoice::Paper | PreliminaryFeedbackChoice::Twist
+        );
         let resonance = ResonanceReport::new(
             &self.settings.plant,
             self.settings.controller.alpha,

@@ -38,16 +38,19 @@ impl MapSide {
     pub fn for_feedback(pf: PreliminaryFeedbackChoice) -> MapSide {
         match pf {
             PreliminaryFeedbackChoice::Off => MapSide::Off,
-            PreliminaryFeedbackChoice::Paper | PreliminaryFeedbackChoice::Lq => MapSide::On,
+            PreliminaryFeedbackChoice::Paper | PreliminaryFeedbackChoice::Lq | PreliminaryFeedbackChoice::Twist => {
+                MapSide::On
+            }
         }
     }
 
     /// The preliminary feedback this side maps, given run A's: none on the left; on the right A's
-    /// own feedback if it is the LQ design, else the paper's.
+    /// own feedback if it is the LQ design or a twist damper, else the paper's.
     pub fn feedback(self, current: PreliminaryFeedbackChoice) -> PreliminaryFeedbackChoice {
         match (self, current) {
             (MapSide::Off, _) => PreliminaryFeedbackChoice::Off,
             (MapSide::On, PreliminaryFeedbackChoice::Lq) => PreliminaryFeedbackChoice::Lq,
+            (MapSide::On, PreliminaryFeedbackChoice::Twist) => PreliminaryFeedbackChoice::Twist,
             (MapSide::On, _) => PreliminaryFeedbackChoice::Paper,
         }
     }

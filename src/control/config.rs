@@ -97,6 +97,28 @@ pub enum PreliminaryFeedbackChoice {
     Paper,
     /// An LQ gain designed by this library (see [`crate::feedback`]).
     Lq,
+    /// The joint's twist alone on the motor torque, with the gains of [`TwistFeedback`].
+    Twist,
+}
+
+/// The twist feedback T1 += k_p (q1 − θ) + k_d (q̇1 − θ̇) (`pf = twist`,
+/// [`crate::control::feedback::twist_gain`]): a spring and a damper between motor and link 1,
+/// applied by the motor.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct TwistFeedback {
+    /// k_p, N m/rad.
+    pub stiffness: f64,
+    /// k_d, N m s/rad.
+    pub damping: f64,
+}
+
+impl Default for TwistFeedback {
+    /// The schema's defaults.
+    fn default() -> Self {
+        let number = |p: &schema::Param| p.number().map_or(0.0, |n| n.default);
+        Self { stiffness: number(&schema::TWIST_STIFFNESS), damping: number(&schema::TWIST_DAMPING) }
+    }
 }
 
 /// Whether the preliminary feedback acts continuously (analog inner loop) or is sampled at δ.
@@ -141,7 +163,7 @@ macro_rules! named {
 }
 
 named!(FrictionCompensation { Continuous => "continuous", Held => "held", Off => "off" });
-named!(PreliminaryFeedbackChoice { Off => "off", Paper => "paper", Lq => "lq" });
+named!(PreliminaryFeedbackChoice { Off => "off", Paper => "paper", Lq => "lq", Twist => "twist" });
 named!(InnerLoop { Continuous => "continuous", Sampled => "sampled" });
 named!(ControllerModel { Arm => "arm", Paper => "paper" });
 
@@ -153,6 +175,8 @@ pub struct SimulationConfig {
     pub reference: SlewParameters,
     pub controller: ControllerParameters,
     pub preliminary_feedback: PreliminaryFeedbackChoice,
+    /// The twist feedback's gains, used when `preliminary_feedback` is `Twist`.
+    pub twist: TwistFeedback,
     pub inner_loop: InnerLoop,
     pub friction_compensation: FrictionCompensation,
     /// Largest step of the plant integrator, s; the actual step divides δ evenly.
@@ -175,6 +199,7 @@ impl Default for SimulationConfig {
             reference: SlewParameters::default(),
             controller: ControllerParameters::default(),
             preliminary_feedback: PreliminaryFeedbackChoice::Paper,
+            twist: TwistFeedback::default(),
             inner_loop: InnerLoop::Continuous,
             friction_compensation: FrictionCompensation::Continuous,
             plant_step_max: DEFAULT_PLANT_STEP_MAX,
@@ -224,6 +249,8 @@ impl SimulationConfig {
         schema::OUTPUT_INTERVAL.check(self.output_interval)?;
         positive("divergence_bound", self.divergence_bound)?;
         finite("lq_design_q2", self.lq_design_q2)?;
+        schema::TWIST_STIFFNESS.check(self.twist.stiffness)?;
+        schema::TWIST_DAMPING.check(self.twist.damping)?;
         Ok(())
     }
 }

@@ -112,6 +112,7 @@ pub fn resolve_gain(config: &SimulationConfig) -> Result<FeedbackGain, Error> {
             let q_rest = [config.reference.end[0], config.lq_design_q2];
             Ok(design_lq(&config.model_plant(), config.controller.alpha, q_rest, &LqWeights::default())?.gain)
         }
+        PreliminaryFeedbackChoice::Twist => Ok(twist_gain(config.twist.stiffness, config.twist.damping)),
     }
 }
 

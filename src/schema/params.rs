@@ -37,6 +37,7 @@ const PF_OPTIONS: &[Choice] = &[
     Choice { value: "off", label: "off (original controller)" },
     Choice { value: "paper", label: "paper K_pr" },
     Choice { value: "lq", label: "LQ design" },
+    Choice { value: "twist", label: "twist damper (your k_p, k_d)" },
 ];
 
 /// δ, the sampling period.
@@ -99,6 +100,52 @@ pub const PF: Param = Param {
     scope: Scope::Run,
     help: "A fixed linear state feedback under the predictive controller: off (Jankowski–Van Brussel), the \
            paper's K_pr, or this program's LQ design.",
+};
+
+/// k_p of the twist feedback (`pf = twist`).
+pub const TWIST_STIFFNESS: Param = Param {
+    key: "twist_stiffness",
+    label: "Twist stiffness k_p",
+    symbol: "k_p",
+    unit: "N m/rad",
+    name: "twist_stiffness (k_p)",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: true,
+        max: 1000.0,
+        allowed: None,
+        control: [0.0, 400.0],
+        scale: Scale::Linear,
+        digits: 3,
+        integer: false,
+        default: 0.0,
+    }),
+    scope: Scope::Run,
+    help: "With pf = twist: a spring between motor and link 1, applied by the motor, T1 += k_p (q1 − θ). It moves \
+           the swing's frequency, not its damping.",
+};
+
+/// k_d of the twist feedback (`pf = twist`).
+pub const TWIST_DAMPING: Param = Param {
+    key: "twist_damping",
+    label: "Twist damping k_d",
+    symbol: "k_d",
+    unit: "N m s/rad",
+    name: "twist_damping (k_d)",
+    kind: Kind::Number(NumberSpec {
+        min: 0.0,
+        min_inclusive: true,
+        max: 1000.0,
+        allowed: None,
+        control: [0.0, 200.0],
+        scale: Scale::Linear,
+        digits: 3,
+        integer: false,
+        default: 16.0,
+    }),
+    scope: Scope::Run,
+    help: "With pf = twist: a damper between motor and link 1, applied by the motor, T1 += k_d (q̇1 − θ̇). The \
+           swing's real part is Re A4 = 3α/2 − (Bv1 + k_d)/(2 Ir1): damped for k_d > 3α Ir1 − Bv1.",
 };
 
 /// The friction compensation T = v + x̂f, eq. (4.4).
@@ -392,6 +439,8 @@ pub const PARAMS: &[&Param] = &[
     &ALPHA1,
     &ALPHA2,
     &PF,
+    &TWIST_STIFFNESS,
+    &TWIST_DAMPING,
     &FRICTION,
     &INNER,
     &REST,

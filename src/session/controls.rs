@@ -18,12 +18,12 @@ impl Session {
                     (Kind::Number(n), Value::Number(x)) => (Some(n.position(x)), display(p, x)),
                     _ => (None, v.text()),
                 };
-                Some(ControlValue { key: p.key, value: v.text(), position, text })
+                Some(ControlValue { key: p.key, value: v.text(), position, text, shown: self.settings.matters(p.key) })
             })
             .collect();
         // The embed's strip (`strip=`, a list the session reads itself): which controls it shows.
         let strip = self.settings.view.strip.text();
-        values.push(ControlValue { key: "strip", value: strip.clone(), position: None, text: strip });
+        values.push(ControlValue { key: "strip", value: strip.clone(), position: None, text: strip, shown: true });
         values
     }
 }
@@ -38,6 +38,9 @@ pub struct ControlValue {
     pub position: Option<f64>,
     /// The value with its unit, as shown beside the control ("0.0100 s", "2.00 1/s", "1.0×").
     pub text: String,
+    /// False while the setting does nothing (the twist feedback's gains under another feedback):
+    /// the page hides its control.
+    pub shown: bool,
 }
 
 /// A number with the precision of its control and its unit ("0.0100 s", "2.00 1/s", "1.0×", "12").

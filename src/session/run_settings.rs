@@ -4,7 +4,7 @@
 //! δ, α and feedback over A's.
 
 use crate::control::config::{
-    ControllerModel, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig,
+    ControllerModel, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig, TwistFeedback,
 };
 use crate::model::PlantParameters;
 use crate::schema::{self, Param, Value};
@@ -51,10 +51,14 @@ impl RestPoint {
 }
 
 /// Run settings left out of the state string while at their defaults (the rest point, the
-/// arm's parameters and the controller's model of it), so that links, CSV and SVG headers
-/// written before they existed still read the same.
+/// arm's parameters, the controller's model of it and the twist feedback's gains), so that links,
+/// CSV and SVG headers written before they existed still read the same.
 pub(super) fn quiet_at_default(key: &str) -> bool {
-    key == "rest" || key == "model" || schema::is_arm(key)
+    key == "rest"
+        || key == "model"
+        || key == schema::TWIST_STIFFNESS.key
+        || key == schema::TWIST_DAMPING.key
+        || schema::is_arm(key)
 }
 
 /// The settings of one run, keyed by the schema's run parameters.
@@ -65,6 +69,8 @@ pub struct RunSettings {
     /// α1, α2, 1/s.
     pub alpha: [f64; 2],
     pub pf: PreliminaryFeedbackChoice,
+    /// k_p, k_d of `pf = twist`.
+    pub twist: TwistFeedback,
     pub friction: FrictionCompensation,
     pub inner: InnerLoop,
     /// The slew repeats there and back (holding [`REPEAT_HOLD`] s) instead of the paper's one slew.
@@ -90,6 +96,7 @@ impl Default for RunSettings {
             delta: number(&schema::DELTA),
             alpha: [number(&schema::ALPHA1), number(&schema::ALPHA2)],
             pf: PreliminaryFeedbackChoice::from_name(choice(&schema::PF)).unwrap_or_default(),
+            twist: TwistFeedback::default(),
             friction: FrictionCompensation::from_name(choice(&schema::FRICTION)).unwrap_or_default(),
             inner: InnerLoop::from_name(choice(&schema::INNER)).unwrap_or_default(),
             repeat: schema::REPEAT.default_value().switch().unwrap_or(false),
@@ -112,6 +119,7 @@ impl RunSettings {
         c.controller.horizon_steps = self.k;
         c.controller.eps_ratio = self.eps_ratio;
         c.preliminary_feedback = self.pf;
+        c.twist = self.twist;
         c.friction_compensation = self.friction;
         c.inner_loop = self.inner;
         c.reference.repeat_hold = self.repeat.then_some(REPEAT_HOLD);
@@ -126,6 +134,7 @@ impl RunSettings {
             delta: c.controller.sampling_period,
             alpha: c.controller.alpha,
             pf: c.preliminary_feedback,
+            twist: c.twist,
             friction: c.friction_compensation,
             inner: c.inner_loop,
             repeat: c.reference.repeat_hold.is_some(),
@@ -144,6 +153,8 @@ impl RunSettings {
             "alpha" | "alpha1" => Value::Number(self.alpha[0]),
             "alpha2" => Value::Number(self.alpha[1]),
             "pf" => Value::Choice(self.pf.name()),
+            "twist_stiffness" => Value::Number(self.twist.stiffness),
+            "twist_damping" => Value::Number(self.twist.damping),
             "friction" => Value::Choice(self.friction.name()),
             "inner" => Value::Choice(self.inner.name()),
             "repeat" => Value::Switch(self.repeat),
@@ -164,6 +175,8 @@ impl RunSettings {
             ("alpha1", Value::Number(x)) => self.alpha[0] = x,
             ("alpha2", Value::Number(x)) => self.alpha[1] = x,
             ("pf", Value::Choice(s)) => self.pf = PreliminaryFeedbackChoice::from_name(s).unwrap_or(self.pf),
+            ("twist_stiffness", Value::Number(x)) => self.twist.stiffness = x,
+            ("twist_damping", Value::Number(x)) => self.twist.damping = x,
             ("friction", Value::Choice(s)) => {
                 self.friction = FrictionCompensation::from_name(s).unwrap_or(self.friction)
             }

@@ -123,6 +123,16 @@ impl Settings {
         Ok(())
     }
 
+    /// False for a setting that does nothing with the others as they are: the twist feedback's
+    /// gains while neither run uses `pf = twist`.
+    pub fn matters(&self, key: &str) -> bool {
+        if key == schema::TWIST_STIFFNESS.key || key == schema::TWIST_DAMPING.key {
+            let twist = PreliminaryFeedbackChoice::Twist;
+            return self.a.pf == twist || self.b.is_some_and(|b| b.pf == twist);
+        }
+        true
+    }
+
     fn b_mut(&mut self) -> &mut CompareSettings {
         let a = self.a;
         self.b.get_or_insert_with(|| CompareSettings::switched(&a))

@@ -8,13 +8,23 @@ use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
 use crate::plot::color::Measure;
 use crate::plot::format::{scientific, significant, significant_trimmed};
 
-/// "no K_pr", "paper K_pr", "LQ K_pr".
+/// "no K_pr", "paper K_pr", "LQ K_pr", "twist K_pr".
 pub fn feedback_short(pf: PreliminaryFeedbackChoice) -> &'static str {
     match pf {
         PreliminaryFeedbackChoice::Off => "no K_pr",
         PreliminaryFeedbackChoice::Paper => "paper K_pr",
         PreliminaryFeedbackChoice::Lq => "LQ K_pr",
+        PreliminaryFeedbackChoice::Twist => "twist K_pr",
     }
+}
+
+/// The twist feedback's gains: "k_p = 0 N m/rad, k_d = 16 N m s/rad".
+pub fn twist_gains(c: &SimulationConfig) -> String {
+    format!(
+        "k_p = {} N m/rad, k_d = {} N m s/rad",
+        significant_trimmed(c.twist.stiffness, 4),
+        significant_trimmed(c.twist.damping, 4)
+    )
 }
 
 /// "δ = 0.05 s, α = 2 1/s" for tooltips.
@@ -35,6 +45,7 @@ pub fn map_caption(side: MapSide, pf: PreliminaryFeedbackChoice, measure: Measur
         PreliminaryFeedbackChoice::Off => format!("{what}, no Kₚᵣ"),
         PreliminaryFeedbackChoice::Paper => format!("{what}, paper Kₚᵣ"),
         PreliminaryFeedbackChoice::Lq => format!("{what}, LQ Kₚᵣ"),
+        PreliminaryFeedbackChoice::Twist => format!("{what}, twist Kₚᵣ"),
     }
 }
 
@@ -65,6 +76,9 @@ pub fn run(c: &SimulationConfig) -> String {
     let delta = c.controller.sampling_period;
     let mut text =
         format!("{}, δ = {} s, {alpha} 1/s", feedback_short(c.preliminary_feedback), significant_trimmed(delta, 3));
+    if c.preliminary_feedback == PreliminaryFeedbackChoice::Twist {
+        text += &format!(", {}", twist_gains(c));
+    }
     let paper = SimulationConfig::default();
     if c.friction_compensation != paper.friction_compensation {
         text += &format!(", friction compensation {}", c.friction_compensation.name());

@@ -340,7 +340,21 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
                 (false, true) => "α differs",
                 (false, false) => "",
             };
-            if differs.is_empty() || pf != crate::control::config::PreliminaryFeedbackChoice::Paper {
+            if pf == crate::control::config::PreliminaryFeedbackChoice::Twist {
+                // Re A4 = 3β/2 − (Bv1 + k_d)/(2 Ir1): the damper needs k_d > 3β Ir1 − Bv1.
+                let needed = 2.0 * plant.ir1 * (r.controller_feed - r.motor_damping);
+                let three = if a1 == a2 { "3α" } else { "3β" };
+                format!(
+                    "Your twist damper ({}) adds −k_d/(2 Ir1) = {} to Re A4, whatever α, beside the controller's feed \
+                     {three}/2 = {} and the motor's own −Bv1/(2 Ir1) = {}: as δ → 0 the pair is damped once \
+                     k_d > {three} Ir1 − Bv1 = {} N m s/rad.",
+                    crate::words::settings::twist_gains(config),
+                    per_second(r.feedback_shift),
+                    per_second(r.controller_feed),
+                    per_second(-r.motor_damping),
+                    significant_trimmed(needed, 3)
+                )
+            } else if differs.is_empty() || pf != crate::control::config::PreliminaryFeedbackChoice::Paper {
                 String::new()
             } else {
                 format!(

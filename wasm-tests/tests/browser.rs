@@ -51,6 +51,23 @@ fn small_delta_needs_the_preliminary_feedback() {
     assert_eq!(verdict(&with), "stable");
 }
 
+/// Issue 32: at α = 5 the paper's K_pr leaves the pair fed faster than it damps it (3α/2 outruns
+/// its fixed shift), so δ = 0.01 s fails; a twist damper past 3α Ir1 − Bv1 (k_d = 40 N m s/rad)
+/// is a design that works there. Through the page's settings (`pf=twist&twist_damping=40`).
+#[wasm_bindgen_test]
+fn at_alpha_five_a_designed_twist_damper_works_where_the_papers_gain_fails() {
+    let rho = |pf: &str| {
+        spectral_radius(&format!("{}&twist_damping=40", state(0.01, 5.0, pf))).map_err(JsValue::from).unwrap()
+    };
+    assert!(rho("paper") > 1.0, "paper K_pr at α = 5: ρ = {}", rho("paper"));
+    assert!(rho("twist") < 1.0, "k_d = 40 at α = 5: ρ = {}", rho("twist"));
+    let mut session = WebSession::new(&format!("{}&twist_damping=40", state(0.01, 5.0, "twist")));
+    while session.time() < 6.0 - 1e-9 && !session.is_finished() {
+        session.advance(0.1).map_err(JsValue::from).unwrap();
+    }
+    assert_eq!(verdict(&session.metrics(0).map_err(JsValue::from).unwrap()), "stable");
+}
+
 /// Section 4: without preliminary feedback the controller works for larger δ.
 #[wasm_bindgen_test]
 fn larger_delta_is_stable_without_feedback() {

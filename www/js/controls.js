@@ -17,7 +17,7 @@ export const inputId = (key) => key.replace(/_/g, '-');
  * @typedef {{ key: string, label: string, unit: string, help: string, kind: string,
  *   scale?: string | null, control?: number[] | null, limits?: number[] | null, integer: boolean,
  *   options: string[][], default: string, allowed: string }} Param
- * @typedef {{ key: string, value: string, position?: number | null, text: string }} ControlValue
+ * @typedef {{ key: string, value: string, position?: number | null, text: string, shown?: boolean }} ControlValue
  */
 
 /** A parameter's label, its symbol's subscript set as such (B_v1 → B<sub>v1</sub>). @param {Param} p @param {string} id */
@@ -102,11 +102,11 @@ function buildField(p, slot, on, prefix) {
  * @param {{ attribute?: string, prefix?: string }} [where]
  */
 export function buildControls(schema, on, { attribute = 'data-param', prefix = '' } = {}) {
-  /** @type {Map<string, { input: HTMLElement, output: HTMLElement | null, exact: HTMLInputElement | null }>} */
+  /** @type {Map<string, { input: HTMLElement, output: HTMLElement | null, exact: HTMLInputElement | null, slot: HTMLElement }>} */
   const fields = new Map();
   for (const p of schema) {
     const slot = /** @type {HTMLElement | null} */ (document.querySelector(`[${attribute}="${p.key}"]`));
-    if (slot && !fields.has(p.key)) fields.set(p.key, buildField(p, slot, on, prefix));
+    if (slot && !fields.has(p.key)) fields.set(p.key, { ...buildField(p, slot, on, prefix), slot });
   }
   return {
     /** Shows the session's values. @param {ControlValue[]} values */
@@ -114,6 +114,8 @@ export function buildControls(schema, on, { attribute = 'data-param', prefix = '
       for (const v of values) {
         const f = fields.get(v.key);
         if (!f) continue;
+        // A setting that does nothing as the others are (the session says which) is not shown.
+        if (f.slot.hidden !== (v.shown === false)) f.slot.hidden = v.shown === false;
         const input = /** @type {HTMLInputElement} */ (f.input);
         if (input.type === 'checkbox') {
           input.checked = v.value === '1';

@@ -18,8 +18,21 @@ use crate::long_work::{self, Progress, TraceSinks};
 use crate::output::{delta_alpha_text, describe_config, linear_verdict, verdict_text};
 
 /// The run settings `simulate` takes.
-pub const KEYS: &[&str] =
-    &["delta", "alpha", "alpha1", "alpha2", "pf", "friction", "inner", "rest", "repeat", "k", "eps_ratio"];
+pub const KEYS: &[&str] = &[
+    "delta",
+    "alpha",
+    "alpha1",
+    "alpha2",
+    "pf",
+    "twist_stiffness",
+    "twist_damping",
+    "friction",
+    "inner",
+    "rest",
+    "repeat",
+    "k",
+    "eps_ratio",
+];
 
 pub fn command() -> Command {
     cli::command("simulate", "Run the closed loop from rest along the slew and summarize it")
@@ -148,6 +161,8 @@ pub fn simulation_json(
         "eps_ratio": c.controller.eps_ratio,
         "pf": c.preliminary_feedback.name(),
         "inner": c.inner_loop.name(),
+        "twist_stiffness": c.twist.stiffness,
+        "twist_damping": c.twist.damping,
         "friction": c.friction_compensation.name(),
         "repeat": settings.a.repeat,
         "preliminary_feedback": c.preliminary_feedback.name(),
