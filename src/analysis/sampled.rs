@@ -62,9 +62,11 @@ impl LinearSettings {
         s
     }
 
-    /// The same settings with another preliminary feedback.
+    /// The same settings with another preliminary feedback (the twist gains kept only where they
+    /// act, so that a map without them is one cache entry whatever they are).
     pub fn with_feedback(&self, pf: PreliminaryFeedbackChoice) -> Self {
-        Self { preliminary_feedback: pf, ..*self }
+        let twist = if pf == PreliminaryFeedbackChoice::Twist { self.twist } else { TwistFeedback::default() };
+        Self { preliminary_feedback: pf, twist, ..*self }
     }
 
     /// A configuration with these settings (defaults elsewhere), for validation and the LQ design.

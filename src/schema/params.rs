@@ -37,7 +37,7 @@ const PF_OPTIONS: &[Choice] = &[
     Choice { value: "off", label: "off (original controller)" },
     Choice { value: "paper", label: "paper K_pr" },
     Choice { value: "lq", label: "LQ design" },
-    Choice { value: "twist", label: "twist damper (your k_p, k_d)" },
+    Choice { value: "twist", label: "twist damper (your own gains)" },
 ];
 
 /// δ, the sampling period.
