@@ -52,6 +52,8 @@ fn the_exported_script_finds_flexarms_rho_and_a4() {
         "delta=0.05&pf=paper&inner=sampled",
         "delta=0.01&pf=paper&k=20&eps_ratio=14",
         "delta=0.01&pf=paper&k1=2305.2&model=paper",
+        "delta=0.01&pf=twist&alpha=5&twist_stiffness=120&twist_damping=40",
+        "delta=0.05&pf=twist&twist_damping=80&inner=sampled",
     ] {
         let (py, config, rest) = run(state, &[]);
         let report = analyze(&config, Some(rest[1])).unwrap();
