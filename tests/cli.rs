@@ -386,3 +386,23 @@ fn the_pages_command_line_and_state_string_run_the_same_settings() {
     assert_usage_error(&["simulate", "--state", "delta=oops"], &["--state", "delta", "oops"]);
     assert_usage_error(&["analyze", "--state", "bogus=1"], &["--state", "bogus"]);
 }
+
+/// Issue 32: `analyze --place RE,IM` finds the twist gains that put A4 there (read back from the
+/// analysis of the loop with them), and refuses a pair no damper in range reaches, saying why.
+#[test]
+fn analyze_places_the_pair_with_the_twist_feedback() {
+    for (alpha, target) in [("2", [-2.6, 29.6]), ("5", [-2.0, 29.0])] {
+        let place = format!("--place={},{}", target[0], target[1]);
+        let v = json_of(&["analyze", "--alpha", alpha, &place, "--json"]);
+        let pair = &v["limit_pair"][0];
+        for (got, want) in [(pair[0].as_f64().unwrap(), target[0]), (pair[1].as_f64().unwrap(), target[1])] {
+            assert!((got - want).abs() < 1e-6 * 30.0, "α = {alpha}: A4 {pair} vs {target:?}");
+        }
+        assert_eq!(v["pf"], "twist");
+        let state = v["state"].as_str().unwrap();
+        assert!(state.contains("pf=twist") && state.contains("twist_damping="), "{state}");
+    }
+    // A pair to the right of where the controller puts it needs negative damping.
+    assert_usage_error(&["analyze", "--place=8,29.6"], &["k_d", "≥ 0"]);
+    assert_usage_error(&["analyze", "--place=abc"], &["RE,IM"]);
+}

@@ -250,3 +250,10 @@ fn the_readme_says_what_k_d_16_does() {
     let readme = include_str!("../README.md");
     assert!(readme.contains(&said), "README should say {said:?}");
 }
+
+#[test]
+fn the_readme_says_what_placing_the_papers_pair_takes() {
+    let [kp, kd] = twist_placing(&PlantParameters::default(), [2.0, 2.0], 0.0, Complex::new(-2.6, 29.6));
+    let said = format!("{kp:.2} N m/rad and {kd:.2} N m s/rad");
+    assert!(include_str!("../README.md").contains(&said), "README should say {said:?}");
+}

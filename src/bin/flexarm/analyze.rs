@@ -19,12 +19,48 @@ pub fn command() -> Command {
         .args(cli::run_args(KEYS))
         .arg(cli::param_arg(&schema::Q2))
         .arg(cli::flag("json", "Print the stability report as one JSON object"))
+        .arg(cli::option(
+            "place",
+            "RE,IM",
+            "Place the δ → 0 pair A4 at RE ± IM j (1/s) with the twist feedback: finds k_p, k_d in closed form \
+             and analyzes the loop with them (pf = twist)",
+        ))
+}
+
+/// `--place RE,IM`: the twist gains that put A4 there, or why none in the settings' ranges does.
+fn placed(m: &ArgMatches, config: &mut SimulationConfig, q2: Option<f64>) -> Res<Option<[f64; 4]>> {
+    let Some(text) = m.get_one::<String>("place") else { return Ok(None) };
+    let parts: Vec<Option<f64>> = text.split(',').map(cli::parse_number).collect();
+    let [Some(re), Some(im)] = parts[..] else {
+        return Err(cli::usage_error(format!("--place {text}: give the pair as RE,IM in 1/s, e.g. --place=-2.6,29.6")));
+    };
+    let target = nalgebra::Complex::new(re, im.abs());
+    let q2 = q2.unwrap_or(config.reference.end[1]);
+    // Designed on the arm the controller assumes, as the LQ design is.
+    let [kp, kd] =
+        flexarm::analysis::resonance::twist_placing(&config.model_plant(), config.controller.alpha, q2, target);
+    for (p, v) in [(&schema::TWIST_DAMPING, kd), (&schema::TWIST_STIFFNESS, kp)] {
+        if let Err(e) = p.check(v) {
+            return Err(cli::usage_error(format!(
+                "--place {re},{im}: no twist feedback in range reaches it — it needs {} = {v:.4} {}, and {} {}",
+                p.symbol, p.unit, p.symbol, e.allowed
+            )));
+        }
+    }
+    config.preliminary_feedback = flexarm::PreliminaryFeedbackChoice::Twist;
+    config.twist = flexarm::control::config::TwistFeedback { stiffness: kp, damping: kd };
+    Ok(Some([re, im.abs(), kp, kd]))
 }
 
 pub fn run(m: &ArgMatches) -> Res<String> {
-    let settings = cli::read_settings(m, KEYS)?;
-    let config = settings.a.config();
+    let mut settings = cli::read_settings(m, KEYS)?;
+    let mut config = settings.a.config();
     let q2 = m.get_one::<String>(schema::Q2.key).map(|_| cli::number(m, &schema::Q2)).transpose()?;
+    let placement = placed(m, &mut config, q2)?;
+    if placement.is_some() {
+        settings.a.pf = config.preliminary_feedback;
+        settings.a.twist = config.twist;
+    }
     let report = analysis::analyze(&config, q2).map_err(lib_error)?;
     // The stable windows of δ for these settings (δ itself aside), over the page's δ range.
     let range = schema::DELTA.number().expect("δ is a number").control;
@@ -50,9 +86,19 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         v["model"] = json!(config.model.name());
         v["stable_windows"] =
             json!({ "range": windows.range, "windows": windows.windows, "tolerance": windows.tolerance });
+        if let Some([re, im, kp, kd]) = placement {
+            v["placement"] = json!({ "target": [re, im], "twist_stiffness": kp, "twist_damping": kd });
+        }
         return Ok(v.to_string() + "\n");
     }
-    let mut text = analysis_text(&config, &report);
+    let mut text = String::new();
+    if let Some([re, im, kp, kd]) = placement {
+        text += &format!(
+            "placing A4 at {re} ± {im}j 1/s: --pf twist --twist-stiffness {kp:.4} --twist-damping {kd:.4} \
+             (k_p in N m/rad, k_d in N m s/rad)\n"
+        );
+    }
+    text += &analysis_text(&config, &report);
     if config.has_model_error() {
         text += "(the closed form below is for a controller that knows this arm; the pairs above include the model error)\n";
     }
