@@ -17,16 +17,13 @@ fn main() {
         (0.04, 2.0, PreliminaryFeedbackChoice::Off),
         (0.005, 0.5, PreliminaryFeedbackChoice::Lq),
         (0.12, 3.0, PreliminaryFeedbackChoice::Off),
+        (0.01, 2.0, PreliminaryFeedbackChoice::Twist),
     ] {
         let mut c = SimulationConfig { preliminary_feedback: pf, ..Default::default() };
         c.controller.sampling_period = delta;
         c.controller.alpha = [alpha, alpha];
         let rho = spectral_radius(&c, None).expect("valid configuration");
-        let name = match pf {
-            PreliminaryFeedbackChoice::Off => "off",
-            PreliminaryFeedbackChoice::Paper => "paper",
-            PreliminaryFeedbackChoice::Lq => "lq",
-        };
+        let name = pf.name();
         writeln!(out, "    ({delta:?}, {alpha:?}, {name:?}, {rho:?}),").unwrap();
     }
     out.push_str("];\n");
