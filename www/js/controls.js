@@ -114,8 +114,9 @@ export function buildControls(schema, on, { attribute = 'data-param', prefix = '
       for (const v of values) {
         const f = fields.get(v.key);
         if (!f) continue;
-        // A setting that does nothing as the others are (the session says which) is not shown.
-        if (f.slot.hidden !== (v.shown === false)) f.slot.hidden = v.shown === false;
+        // A setting that does nothing as the others are (the session says which) is not shown
+        // (data-idle, apart from `hidden`, which the embed's strip uses for its own choice).
+        f.slot.toggleAttribute('data-idle', v.shown === false);
         const input = /** @type {HTMLInputElement} */ (f.input);
         if (input.type === 'checkbox') {
           input.checked = v.value === '1';
