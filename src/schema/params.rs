@@ -102,6 +102,21 @@ pub const PF: Param = Param {
            paper's K_pr, or this program's LQ design.",
 };
 
+/// A twist feedback gain: from 0 (no feedback) to 1000, the page's control over [0, `control_max`].
+const fn gain_spec(control_max: f64, default: f64) -> NumberSpec {
+    NumberSpec {
+        min: 0.0,
+        min_inclusive: true,
+        max: 1000.0,
+        allowed: None,
+        control: [0.0, control_max],
+        scale: Scale::Linear,
+        digits: 3,
+        integer: false,
+        default,
+    }
+}
+
 /// k_p of the twist feedback (`pf = twist`).
 pub const TWIST_STIFFNESS: Param = Param {
     key: "twist_stiffness",
@@ -109,17 +124,7 @@ pub const TWIST_STIFFNESS: Param = Param {
     symbol: "k_p",
     unit: "N m/rad",
     name: "twist_stiffness (k_p)",
-    kind: Kind::Number(NumberSpec {
-        min: 0.0,
-        min_inclusive: true,
-        max: 1000.0,
-        allowed: None,
-        control: [0.0, 400.0],
-        scale: Scale::Linear,
-        digits: 3,
-        integer: false,
-        default: 0.0,
-    }),
+    kind: Kind::Number(gain_spec(400.0, 0.0)),
     scope: Scope::Run,
     help: "With pf = twist: a spring between motor and link 1, applied by the motor, T1 += k_p (q1 − θ). It moves \
            the swing's frequency, not its damping.",
@@ -132,17 +137,7 @@ pub const TWIST_DAMPING: Param = Param {
     symbol: "k_d",
     unit: "N m s/rad",
     name: "twist_damping (k_d)",
-    kind: Kind::Number(NumberSpec {
-        min: 0.0,
-        min_inclusive: true,
-        max: 1000.0,
-        allowed: None,
-        control: [0.0, 200.0],
-        scale: Scale::Linear,
-        digits: 3,
-        integer: false,
-        default: 16.0,
-    }),
+    kind: Kind::Number(gain_spec(200.0, 16.0)),
     scope: Scope::Run,
     help: "With pf = twist: a damper between motor and link 1, applied by the motor, T1 += k_d (q̇1 − θ̇). The \
            swing's real part is Re A4 = 3α/2 − (Bv1 + k_d)/(2 Ir1): damped for k_d > 3α Ir1 − Bv1.",
