@@ -16,6 +16,8 @@ pub enum Error {
     Analysis(&'static str),
     /// Something asked for is not there yet (e.g. the stability maps are still being computed).
     NotReady(&'static str),
+    /// A request the physics refuses, with the reason (e.g. a pole target no feedback reaches).
+    Refused(String),
     /// The lesson's text does not follow its format (line number, 1-based, and what is wrong),
     /// or a lesson action does not apply (line 0).
     Lesson { line: usize, message: String },
@@ -31,6 +33,7 @@ impl fmt::Display for Error {
             }
             Error::Analysis(m) => write!(f, "analysis failed: {m}"),
             Error::NotReady(m) => write!(f, "{m}"),
+            Error::Refused(m) => write!(f, "{m}"),
             Error::Lesson { line: 0, message } => write!(f, "lesson: {message}"),
             Error::Lesson { line, message } => write!(f, "lesson, line {line}: {message}"),
         }

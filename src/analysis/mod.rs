@@ -7,6 +7,7 @@
 //! Architecture invariant: `analysis` reads the controller (`control`) and the arm (`model`) and
 //! is read by the session, the CLI and the figures; it never runs the nonlinear simulation.
 
+pub mod design;
 pub mod energy;
 pub mod judgement;
 pub mod lag;

@@ -321,6 +321,11 @@ impl ClosedLoop {
         Ok(())
     }
 
+    /// The plant's integration step, s (δ divided into whole steps).
+    pub fn plant_step(&self) -> f64 {
+        self.derived.plant_step
+    }
+
     /// Simulated time, s.
     pub fn time(&self) -> f64 {
         self.time

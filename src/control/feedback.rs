@@ -53,6 +53,32 @@ pub fn twist_gain(stiffness: f64, damping: f64) -> FeedbackGain {
     k
 }
 
+/// A gain split into its twist part — a spring k_p (q1 − θ) and a damper k_d (q̇1 − θ̇) on each
+/// torque — and the rest.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct TwistParts {
+    /// [k_p, k_d] of the T1 row and of the T2 row.
+    pub t1: [f64; 2],
+    pub t2: [f64; 2],
+    /// The largest |entry| of the gain minus its twist parts.
+    pub rest: f64,
+}
+
+/// The twist parts of a gain: on each row, the spring is the mean of the q1 and −θ entries and the
+/// damper that of the q̇1 and −θ̇ entries (for the paper's K_pr: T1 ≈ 102.7 (q1 − θ) + 16.5 (q̇1 − θ̇)).
+pub fn twist_parts(gain: &FeedbackGain) -> TwistParts {
+    let row = |r: usize| [0.5 * (gain[(r, 0)] - gain[(r, 2)]), 0.5 * (gain[(r, 3)] - gain[(r, 5)])];
+    let (t1, t2) = (row(0), row(1));
+    let mut rest = *gain;
+    for (r, [kp, kd]) in [(0, t1), (1, t2)] {
+        rest[(r, 0)] -= kp;
+        rest[(r, 2)] += kp;
+        rest[(r, 3)] -= kd;
+        rest[(r, 5)] += kd;
+    }
+    TwistParts { t1, t2, rest: rest.amax() }
+}
+
 /// Weights of the LQ design on the 2-state part A4.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct LqWeights {

@@ -14,6 +14,7 @@ pub mod history;
 pub mod linear;
 pub mod metrics;
 pub mod predictive;
+pub mod price;
 pub mod traces;
 pub mod work;
 
@@ -22,5 +23,6 @@ pub use config::{ControllerParameters, FrictionCompensation, InnerLoop, Prelimin
 pub use cycle::Cycle;
 pub use history::{History, LoopState};
 pub use metrics::{DivergenceReason, Metrics, Verdict};
+pub use price::{torque_price, TorqueFigures, TorquePrice};
 pub use traces::{Column, Snapshot, TraceEnvelope, Traces};
 pub use work::Work;

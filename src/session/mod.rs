@@ -9,6 +9,8 @@
 mod changes;
 pub mod controls;
 pub mod data;
+mod design;
+mod design_cache;
 mod figure_text;
 pub mod map_cache;
 pub mod named;
@@ -42,8 +44,7 @@ pub use timeline::TimelineStatus;
 /// simulation skips ahead instead of freezing the page to catch up.
 pub const MAX_ADVANCE_PER_CALL: f64 = 0.25;
 
-/// The poke: (T1, T2) in N m for this many seconds.
-pub const POKE: ([f64; 2], f64) = ([40.0, 5.0], 0.05);
+pub use crate::control::price::POKE;
 
 /// Everything the page shows about the session, in words.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -69,6 +70,8 @@ pub struct Status {
     pub figure: String,
     /// The zoom on one sampling instant in words (Fig. 2.1; "" when it is not shown).
     pub cycle: String,
+    /// Run A's preliminary feedback as a design: its pair, its price (null without one).
+    pub design: Option<crate::words::design::DesignStatus>,
     /// The explanation's live numbers for run A (null while its analysis is missing, or hidden
     /// in student mode).
     pub story: Option<crate::words::story::Story>,
@@ -120,6 +123,7 @@ pub struct Session {
     b: Option<Run>,
     maps: Maps,
     windows: WindowsCache,
+    design: design_cache::DesignCache,
     ghost: Option<Ghost>,
     note: String,
     trace_seconds: f64,
@@ -140,6 +144,7 @@ impl Session {
             b,
             maps: Maps::default(),
             windows: WindowsCache::default(),
+            design: design_cache::DesignCache::default(),
             ghost: None,
             note: String::new(),
             trace_seconds: DEFAULT_TRACE_SECONDS,
@@ -343,6 +348,7 @@ impl Session {
     /// milliseconds; call it a few times a second, not per slider event).
     pub fn refresh(&mut self) {
         let _ = self.windows();
+        self.refresh_design();
     }
 
     /// The stable windows as last computed for the current settings (None if stale or failed,
@@ -425,6 +431,7 @@ impl Session {
                 c => format!("{} The time plots are zoomed on one sampling instant. {c}", self.figure_text()),
             },
             cycle,
+            design: self.design_status(),
             story: if hidden {
                 None
             } else {

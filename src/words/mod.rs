@@ -7,6 +7,7 @@
 //! |---|---|
 //! | [`verdict`] | the simulation's verdict, its growth rate, why a run diverged |
 //! | [`judgement`] | a run's judgement: headline, ρ's prediction, what was observed and why, the analysis line |
+//! | [`design`] | the preliminary feedback as a design: its pair, its price analog and sampled, in torque, its parts |
 //! | [`story`] | the explanation's live numbers, from run A's analysis |
 //! | [`equations`] | the same numbers as MathML equations |
 //! | [`settings`] | a run's settings, its feedback, a map's caption, a point of it, the errors, the stable windows of δ |
@@ -16,6 +17,7 @@
 //!
 //! [`Verdict`]: crate::control::Verdict
 
+pub mod design;
 pub mod equations;
 pub mod judgement;
 pub mod numbers;

@@ -4,7 +4,7 @@ use clap::{ArgMatches, Command};
 use flexarm::analysis::resonance::ResonanceReport;
 use flexarm::analysis::{self, StabilityReport};
 use flexarm::schema;
-use flexarm::SimulationConfig;
+use flexarm::{words, SimulationConfig};
 use serde_json::json;
 
 use crate::cli::{self, lib_error, Failure, Res};
@@ -37,16 +37,13 @@ fn placed(m: &ArgMatches, config: &mut SimulationConfig, q2: Option<f64>) -> Res
     let target = nalgebra::Complex::new(re, im.abs());
     let q2 = q2.unwrap_or(config.reference.end[1]);
     // Designed on the arm the controller assumes, as the LQ design is.
-    let [kp, kd] =
-        flexarm::analysis::resonance::twist_placing(&config.model_plant(), config.controller.alpha, q2, target);
-    for (p, v) in [(&schema::TWIST_DAMPING, kd), (&schema::TWIST_STIFFNESS, kp)] {
-        if let Err(e) = p.check(v) {
-            return Err(cli::usage_error(format!(
-                "--place {re},{im}: no twist feedback in range reaches it — it needs {} = {v:.4} {}, and {} {}",
-                p.symbol, p.unit, p.symbol, e.allowed
-            )));
-        }
-    }
+    let [kp, kd] = flexarm::analysis::design::place_twist(&config.model_plant(), config.controller.alpha, q2, target)
+        .map_err(|u| {
+        cli::usage_error(format!(
+            "--place {re},{im}: no twist feedback reaches it — {}",
+            words::design::unplaceable(&u)
+        ))
+    })?;
     config.preliminary_feedback = flexarm::PreliminaryFeedbackChoice::Twist;
     config.twist = flexarm::control::config::TwistFeedback { stiffness: kp, damping: kd };
     Ok(Some([re, im.abs(), kp, kd]))
@@ -65,6 +62,19 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     // The stable windows of δ for these settings (δ itself aside), over the page's δ range.
     let range = schema::DELTA.number().expect("δ is a number").control;
     let windows = analysis::stable_windows(&analysis::LinearSettings::of(&config, q2), range).map_err(lib_error)?;
+    // The design's price: the windows with the feedback analog and sampled, the torque it takes.
+    let linear = analysis::LinearSettings::of(&config, q2);
+    let price = analysis::design::DigitalPrice::of(&linear, range).map_err(lib_error)?;
+    let torque = flexarm::control::torque_price(&config).map_err(lib_error)?;
+    let gain = flexarm::control::feedback::resolve_gain(&config).map_err(lib_error)?;
+    let design = words::design::status(
+        config.preliminary_feedback,
+        config.inner_loop,
+        report.limit_pair[0],
+        &price,
+        Some(&torque),
+        &flexarm::control::feedback::twist_parts(&gain),
+    );
     if m.get_flag("json") {
         // Non-finite floats (e.g. ln 0) become null in serde_json's Value.
         let mut v = serde_json::to_value(&report).map_err(|e| Failure(format!("JSON encoding failed: {e}"), 1))?;
@@ -86,6 +96,14 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         v["model"] = json!(config.model.name());
         v["stable_windows"] =
             json!({ "range": windows.range, "windows": windows.windows, "tolerance": windows.tolerance });
+        let windows_json = |w: &analysis::StableWindows| json!({ "range": w.range, "windows": w.windows });
+        v["design"] = json!({
+            "analog": windows_json(&price.analog),
+            "sampled": windows_json(&price.sampled),
+            "delta_max": { "analog": design.delta_max[0], "sampled": design.delta_max[1] },
+            "torque": torque,
+            "twist_parts": flexarm::control::feedback::twist_parts(&gain),
+        });
         if let Some([re, im, kp, kd]) = placement {
             v["placement"] = json!({ "target": [re, im], "twist_stiffness": kp, "twist_damping": kd });
         }
@@ -108,6 +126,13 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         windows.tolerance,
         flexarm::words::settings::windows(&windows)
     );
+    text += &format!(
+        "the price of the preliminary feedback ({}):\n",
+        words::settings::feedback_short(config.preliminary_feedback)
+    );
+    for line in [design.analog, design.sampled, design.torque, design.parts].iter().filter(|l| !l.is_empty()) {
+        text += &format!("  {line}\n");
+    }
     Ok(text)
 }
 

@@ -41,6 +41,7 @@ pub fn lib_error(e: Error) -> Failure {
             usage_error(format!("{e}{hint}"))
         }
         Error::InvalidDuration(_) => usage_error(format!("{e} (set with --duration)")),
+        Error::Refused(_) => usage_error(e.to_string()),
         Error::Analysis(_) | Error::Lesson { .. } | Error::NotReady(_) => Failure(e.to_string(), 1),
     }
 }

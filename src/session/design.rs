@@ -1,0 +1,100 @@
+//! Run A's preliminary feedback as a design: placing its δ → 0 pair by hand (the handle on the
+//! pole plot, the arrow keys) writes the twist gains into the settings — the one source of truth —
+//! and the design's price is computed on demand: the windows of δ analog and sampled with the
+//! status (a few milliseconds), the torque once the settings have rested for a status refresh
+//! (a simulated slew and poke, which a drag would otherwise repeat at every move).
+
+use nalgebra::Complex;
+
+use super::*;
+use crate::analysis::design::{place_twist, DigitalPrice};
+
+use crate::control::config::TwistFeedback;
+use crate::control::feedback::{resolve_gain, twist_parts};
+use crate::control::price::torque_price;
+use crate::words::design::DesignStatus;
+
+/// How far one arrow-key step moves the pair's target: Re s by this (1/s), Im s by ten times it.
+pub const TARGET_STEP: f64 = 0.5;
+
+impl Session {
+    /// Run A's design key: what the windows analog and sampled depend on.
+    fn design_key(&self) -> LinearSettings {
+        let mut key = self.linear_settings().at(0.0, self.settings.a.alpha);
+        key.inner_loop = crate::control::config::InnerLoop::Continuous;
+        key
+    }
+
+    /// Brings the design's price up to date (with the status; see the module's note).
+    pub(super) fn refresh_design(&mut self) {
+        if self.settings.a.pf == PreliminaryFeedbackChoice::Off {
+            return;
+        }
+        let key = self.design_key();
+        if self.design.price_key != Some(key) {
+            let range = schema::DELTA.number().expect("δ is a number").control;
+            let price = DigitalPrice::of(&self.linear_settings(), range).map_err(|e| e.to_string());
+            self.design.price_key = Some(key);
+            self.design.price = Some(price);
+        }
+        let config = self.settings.a.config();
+        if self.design.seen == Some(config) && self.design.torque_key != Some(config) {
+            self.design.torque = Some(torque_price(&config).map_err(|e| e.to_string()));
+            self.design.torque_key = Some(config);
+        }
+        self.design.seen = Some(config);
+    }
+
+    /// The design as the page shows it (None without preliminary feedback, while the answers are
+    /// hidden, or before the price is computed).
+    pub fn design_status(&self) -> Option<DesignStatus> {
+        if self.answers_hidden() || self.settings.a.pf == PreliminaryFeedbackChoice::Off {
+            return None;
+        }
+        let price = match (&self.design.price_key, &self.design.price) {
+            (Some(k), Some(Ok(p))) if *k == self.design_key() => p,
+            _ => return None,
+        };
+        let config = self.settings.a.config();
+        let torque = match (&self.design.torque_key, &self.design.torque) {
+            (Some(k), Some(Ok(t))) if *k == config => Some(t),
+            _ => None,
+        };
+        let report = self.a.analysis().report()?;
+        let gain = resolve_gain(&config).ok()?;
+        Some(crate::words::design::status(
+            config.preliminary_feedback,
+            config.inner_loop,
+            report.limit_pair[0],
+            price,
+            torque,
+            &twist_parts(&gain),
+        ))
+    }
+
+    /// Places run A's δ → 0 pair at `re ± j im` (1/s) with the twist feedback: the gains that put
+    /// it there (on the arm the controller assumes, as the LQ design) become run A's, with
+    /// `pf = twist`. A target no twist feedback in the gains' ranges reaches is refused with the
+    /// reason, and nothing changes.
+    pub fn place_pair(&mut self, re: f64, im: f64) -> Result<(), Error> {
+        let config = self.settings.a.config();
+        let q2 = self.linear_settings().rest[1];
+        let [stiffness, damping] =
+            place_twist(&config.model_plant(), config.controller.alpha, q2, Complex::new(re, im)).map_err(|u| {
+                Error::Refused(format!("The pair cannot go there: {}.", crate::words::design::unplaceable(&u)))
+            })?;
+        self.continue_from_here()?;
+        let mut next = self.settings;
+        next.a.pf = PreliminaryFeedbackChoice::Twist;
+        next.a.twist = TwistFeedback { stiffness, damping };
+        self.apply(next, false, "")
+    }
+
+    /// Moves the pair's target by arrow-key steps: `re_steps` of [`TARGET_STEP`] along Re s,
+    /// `im_steps` of ten times that along Im s (the keyboard's drag).
+    pub fn nudge_pair(&mut self, re_steps: i32, im_steps: i32) -> Result<(), Error> {
+        let [re, im] = self.a.analysis().report().ok_or(Error::NotReady("the analysis is not ready"))?.limit_pair[0];
+        let step = TARGET_STEP;
+        self.place_pair(re + f64::from(re_steps) * step, im.abs() + f64::from(im_steps) * 10.0 * step)
+    }
+}

@@ -1,0 +1,180 @@
+//! The cure as a design (issue 32, parts 3–4): placing the pair by hand, refusing the targets no
+//! twist feedback reaches, and the price of a design — the largest stable δ analog and sampled and
+//! the motor torque — from the product's own functions, against what the physics and the issue's
+//! independent SciPy model say.
+
+use flexarm::analysis::design::*;
+use flexarm::analysis::resonance::closed_form_a4;
+use flexarm::analysis::LinearSettings;
+use flexarm::control::config::InnerLoop;
+use flexarm::control::feedback::*;
+use flexarm::control::torque_price;
+use flexarm::session::Session;
+use flexarm::*;
+use nalgebra::Complex;
+
+fn twist_config(kd: f64) -> SimulationConfig {
+    let mut c = SimulationConfig::default();
+    c.preliminary_feedback = PreliminaryFeedbackChoice::Twist;
+    c.twist.damping = kd;
+    c
+}
+
+/// Placed targets read back from the closed form; those no gains in range reach are refused, with
+/// the physical reason: right of the open pair (a damper cannot push), slower than the spring
+/// allows, on the real axis, gains beyond their ranges.
+#[test]
+fn targets_are_placed_or_refused_for_a_reason() {
+    let plant = PlantParameters::default();
+    for alpha in [0.5, 2.0, 5.0] {
+        let a = [alpha, alpha];
+        let open_re = flexarm::analysis::resonance::JointResonance::new(&plant, a, 0.0).real_part();
+        // Pairs that gains in range make are placed back onto those gains.
+        for gains in [[123.6, 20.32], [300.0, 30.0], [0.0, 5.0], [50.0, 40.0]] {
+            let made = closed_form_a4(&plant, a, 0.0, &twist_gain(gains[0], gains[1])).complex_eigenvalues();
+            let target = if made[0].im > 0.0 { made[0] } else { made[1] };
+            let [kp, kd] = place_twist(&plant, a, 0.0, target).unwrap();
+            assert!(
+                (kp - gains[0]).abs() < 1e-6 && (kd - gains[1]).abs() < 1e-6,
+                "α = {alpha}: {gains:?} → {kp}, {kd}"
+            );
+        }
+        assert!(matches!(
+            place_twist(&plant, a, 0.0, Complex::new(open_re + 0.5, 29.0)),
+            Err(Unplaceable::NeedsNegativeDamping { re_max }) if (re_max - open_re).abs() < 1e-12
+        ));
+        // With k_p = 0 the pair at Re = −2.6 has |s| ≈ the joint's frequency; far slower needs k_p < 0.
+        match place_twist(&plant, a, 0.0, Complex::new(-2.6, 5.0)) {
+            Err(Unplaceable::NeedsNegativeStiffness { norm_min }) => {
+                let [kp, _] = place_twist(&plant, a, 0.0, Complex::new(-2.6, (norm_min.powi(2) - 6.76).sqrt() + 1e-6))
+                    .expect("the slowest pair it names is reachable");
+                assert!(kp.abs() < 1e-3, "k_p at the slowest pair: {kp}");
+            }
+            other => panic!("α = {alpha}: {other:?}"),
+        }
+        assert_eq!(place_twist(&plant, a, 0.0, Complex::new(-2.0, 0.0)), Err(Unplaceable::RealAxis));
+        assert!(matches!(
+            place_twist(&plant, a, 0.0, Complex::new(-600.0, 30.0)),
+            Err(Unplaceable::BeyondRange { value, max, .. }) if value > max
+        ));
+    }
+}
+
+/// The issue's SciPy model (linear sampled loop, α = 2, q2 = 0): the top of the lowest stable window
+/// with the damper sampled falls 0.095 → 0.084 → 0.064 → 0.042 → 0.023 s as k_d goes 5 → 160; with
+/// it analog the smallest δ work once k_d > 3α Ir1 − Bv1, and the sampled δ_max never exceeds the
+/// analog one.
+#[test]
+fn the_digital_price_is_the_papers_physics() {
+    let plant = PlantParameters::default();
+    let needed = 3.0 * 2.0 * plant.ir1 - plant.bv1;
+    let mut previous = f64::INFINITY;
+    for (kd, scipy) in [(5.0, 0.095), (16.0, 0.084), (40.0, 0.064), (80.0, 0.042), (160.0, 0.023)] {
+        let price = DigitalPrice::of(&LinearSettings::of(&twist_config(kd), None), [0.002, 0.25]).unwrap();
+        let sampled = largest_stable_delta(&price.sampled).unwrap();
+        let analog = largest_stable_delta(&price.analog).unwrap();
+        assert!((sampled / scipy - 1.0).abs() < 0.02, "k_d = {kd}: δ_max {sampled} s, SciPy {scipy} s");
+        assert!(sampled < previous && sampled <= analog + 1e-4, "k_d = {kd}: {sampled} (analog {analog})");
+        assert_eq!(small_delta_cured(&price.analog), kd > needed, "k_d = {kd}");
+        previous = sampled;
+    }
+}
+
+/// More damping, more torque: the controller answers a poke with more torque as k_d grows (over
+/// designs that are stable at δ = 0.01 s), while the slew's torque — the links' inertia following
+/// the reference — hardly changes.
+#[test]
+fn a_stiffer_damper_costs_torque_after_a_poke_not_in_the_slew() {
+    let prices: Vec<_> = [16.0, 40.0, 80.0, 160.0].map(|kd| (kd, torque_price(&twist_config(kd)).unwrap())).into();
+    for pair in prices.windows(2) {
+        let [(k0, a), (k1, b)] = [pair[0], pair[1]];
+        assert!(!a.diverged && !b.diverged);
+        assert!(
+            b.poke.rms[0] > a.poke.rms[0],
+            "RMS T1 after the poke: k_d {k0} → {}, {k1} → {}",
+            a.poke.rms[0],
+            b.poke.rms[0]
+        );
+        assert!(
+            (b.slew.rms[0] / a.slew.rms[0] - 1.0).abs() < 0.01,
+            "slew RMS T1 {} vs {}",
+            a.slew.rms[0],
+            b.slew.rms[0]
+        );
+    }
+    // An unstable design (k_d = 5 at α = 2: Re A4 > 0) answers with a growing swing: far more torque.
+    let unstable = torque_price(&twist_config(5.0)).unwrap();
+    assert!(unstable.poke.rms[0] > 2.0 * prices[0].1.poke.rms[0]);
+}
+
+/// The paper's K_pr is mostly a joint damper: its T1 row ≈ 102 (q1 − θ) + 16 (q̇1 − θ̇) (section 4's
+/// printed numbers), the rest under 1 % of the spring; a twist gain is all twist.
+#[test]
+fn the_papers_gain_decomposes_into_a_spring_and_a_damper() {
+    let p = twist_parts(&paper_gain());
+    assert!((p.t1[0] - 102.65).abs() < 0.01 && (p.t1[1] - 16.485).abs() < 0.01, "{p:?}");
+    assert!(p.rest < 0.01 * p.t1[0], "{p:?}");
+    let t = twist_parts(&twist_gain(120.0, 40.0));
+    assert_eq!((t.t1, t.t2, t.rest), ([120.0, 40.0], [0.0, 0.0], 0.0));
+}
+
+mod session {
+    use super::*;
+
+    fn open(query: &str) -> Session {
+        let (mut s, notices) = Session::open(query);
+        assert!(notices.is_empty(), "{notices:?}");
+        s.refresh();
+        s
+    }
+
+    /// The handle writes the settings (one source of truth): the link keeps the gains, the pair
+    /// reads back at the target, a refused target changes nothing and says why.
+    #[test]
+    fn placing_the_pair_writes_the_twist_gains() {
+        let mut s = open("pf=paper&alpha=2&delta=0.01");
+        s.place_pair(-2.6, 29.6).unwrap();
+        let a = s.settings().a;
+        assert_eq!(a.pf, PreliminaryFeedbackChoice::Twist);
+        // The issue's closed form: k_p ≈ 123.6, k_d ≈ 20.32.
+        assert!((a.twist.stiffness - 123.6).abs() < 0.1 && (a.twist.damping - 20.32).abs() < 0.01, "{:?}", a.twist);
+        let state = s.state_string();
+        assert!(state.contains("pf=twist") && state.contains("twist_damping=20.3"), "{state}");
+        s.refresh();
+        let d = s.design_status().expect("the design is shown under a feedback");
+        assert!((d.target[0] + 2.6).abs() < 1e-6 && (d.target[1] - 29.6).abs() < 1e-6, "{:?}", d.target);
+        assert!(d.placeable);
+
+        let before = s.settings().a;
+        let e = s.place_pair(9.0, 29.0).unwrap_err().to_string();
+        assert!(e.contains("k_d ≥ 0") && e.contains("2.64"), "{e}");
+        assert_eq!(s.settings().a, before);
+
+        // The keyboard: one step left is 0.5 1/s more damping of the pair.
+        s.nudge_pair(-1, 0).unwrap();
+        let d = s.settings().a.twist.damping;
+        assert!((d - (20.32 + 2.0 * 0.5 * PlantParameters::default().ir1)).abs() < 0.02, "{d}");
+    }
+
+    /// The price's figures agree with the windows the page shows for the run's own inner loop, and
+    /// the torque follows once the settings have rested for a refresh.
+    #[test]
+    fn the_price_agrees_with_the_windows_and_the_torque_waits_for_rest() {
+        for inner in ["continuous", "sampled"] {
+            let mut s = open(&format!("pf=twist&twist_damping=40&inner={inner}"));
+            let w = s.windows().unwrap().clone();
+            let d = s.design_status().unwrap();
+            let i = usize::from(inner == "sampled");
+            assert_eq!(d.delta_max[i], largest_stable_delta(&w));
+            assert!(d.torque.is_empty(), "the torque waits for the settings to rest");
+            s.refresh();
+            let d = s.design_status().unwrap();
+            assert!(d.torque.contains("after a poke"), "{}", d.torque);
+        }
+        assert!(open("pf=off").design_status().is_none());
+        let paper = open("pf=paper");
+        let parts = paper.design_status().unwrap().parts;
+        assert!(parts.contains("102.7") && parts.contains("16.48"), "{parts}");
+        let _ = InnerLoop::Continuous;
+    }
+}
