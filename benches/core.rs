@@ -83,6 +83,34 @@ fn main() {
         while session.maps_mut().work(&mut || clock.elapsed().as_secs_f64() * 1e3, 1e9) {}
     });
 
+    // Issue 32: dragging the pair — one placement to A4, ρ, the windows analog and sampled and
+    // δ_max (the status a pointer move asks for); the torque price once the drag rests; and the
+    // design map ρ(δ, k_d) to the end after a change of α.
+    let (mut design, _) = flexarm::session::Session::open("pf=twist&twist_damping=16&mode=full");
+    let mut re = -2.0;
+    let (place_med, place_min) = time_it(15, 5, || {
+        re = if re < -6.0 { -2.0 } else { re - 0.13 };
+        design.place_pair(re, 29.0).unwrap();
+        design.refresh();
+        black_box(design.design_status());
+    });
+    let twist = {
+        let mut c = config;
+        c.preliminary_feedback = PreliminaryFeedbackChoice::Twist;
+        c
+    };
+    let (torque_med, torque_min) = time_it(11, 3, || {
+        black_box(flexarm::control::torque_price(&twist).unwrap());
+    });
+    let mut alpha = 2.0;
+    let (design_map_med, design_map_min) = time_it(5, 1, || {
+        alpha = if alpha > 4.0 { 1.0 } else { alpha + 0.37 };
+        design.set("alpha", &alpha.to_string()).unwrap();
+        let a = flexarm::analysis::LinearSettings::of(&design.settings().a.config(), None);
+        design.maps_mut().show(&a);
+        while design.maps_mut().work(&mut || clock.elapsed().as_secs_f64() * 1e3, 1e9) {}
+    });
+
     // Issue 19: a frame of log |e| with the swing split out (δ = 0.002 s: 5000 kept instants in
     // the 10-s window, the most the page draws) against the same frame without the log view, and
     // the swing's energy over one period (once per analysis).
@@ -166,6 +194,21 @@ fn main() {
         maps_min * 1e3
     );
 
+    println!(
+        "| placing the pair (issue 32): the twist gains, ρ, A4, the windows analog and sampled, δ_max (goal: ≤ 16 ms in wasm) | {:.2} ms | {:.2} ms |",
+        place_med * 1e3,
+        place_min * 1e3
+    );
+    println!(
+        "| the design's torque price: one slew and a poke simulated (once the drag rests) | {:.2} ms | {:.2} ms |",
+        torque_med * 1e3,
+        torque_min * 1e3
+    );
+    println!(
+        "| both maps after a change of α with the twist damper: ρ(δ, α) without K_pr and the design map ρ(δ, k_d) (goal: ≤ 0.5 s in wasm) | {:.0} ms | {:.0} ms |",
+        design_map_med * 1e3,
+        design_map_min * 1e3
+    );
     println!(
         "| a frame of log |e| with the swing split out, δ = 0.002 s (5000 instants; the goal: split ≤ 1 ms) | {:.3} ms ({:+.3} ms against the linear view) | {:.3} ms |",
         log_med * 1e3,

@@ -142,7 +142,8 @@ mod session {
         assert!(state.contains("pf=twist") && state.contains("twist_damping=20.3"), "{state}");
         s.refresh();
         let d = s.design_status().expect("the design is shown under a feedback");
-        assert!((d.target[0] + 2.6).abs() < 1e-6 && (d.target[1] - 29.6).abs() < 1e-6, "{:?}", d.target);
+        // The gains are kept to four figures: the pair lands within a hundredth of the target.
+        assert!((d.target[0] + 2.6).abs() < 1e-2 && (d.target[1] - 29.6).abs() < 1e-2, "{:?}", d.target);
         assert!(d.placeable);
 
         let before = s.settings().a;
@@ -177,4 +178,78 @@ mod session {
         assert!(parts.contains("102.7") && parts.contains("16.48"), "{parts}");
         let _ = InnerLoop::Continuous;
     }
+}
+
+/// The README's design figures are the tool's: A4 and δ_max analog | sampled for each damper.
+#[test]
+fn the_readme_says_what_each_damper_does() {
+    // The README wraps its lines: compare with single spaces.
+    let readme = include_str!("../README.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    let fmt = |v: f64, digits: usize| format!("{v:.digits$}").replace('-', "−");
+    for (alpha, kd, digits) in [(2.0, 16.0, [3, 4]), (2.0, 40.0, [3, 4]), (2.0, 80.0, [3, 4]), (5.0, 40.0, [4, 4])] {
+        let mut c = twist_config(kd);
+        c.controller.alpha = [alpha, alpha];
+        let report = flexarm::analysis::analyze(&c, None).unwrap();
+        let [re, im] = report.limit_pair[0];
+        let pair = format!("{} ± {}j", fmt(re, 2), fmt(im.abs(), 2));
+        let price = DigitalPrice::of(&LinearSettings::of(&c, None), [0.002, 0.25]).unwrap();
+        let [a, s] = [&price.analog, &price.sampled].map(|w| largest_stable_delta(w).unwrap());
+        let limits = format!("{} | {} s", fmt(a, digits[0]), fmt(s, digits[1]));
+        assert!(readme.contains(&pair), "README lacks A4 = {pair} for k_d = {kd}, α = {alpha}");
+        if kd != 16.0 {
+            assert!(readme.contains(&limits), "README lacks δ_max {limits} for k_d = {kd}, α = {alpha}");
+        }
+    }
+    let rms: Vec<String> = [16.0, 40.0, 80.0, 160.0]
+        .map(|kd| format!("{:.2}", torque_price(&twist_config(kd)).unwrap().poke.rms[0]))
+        .into();
+    assert!(readme.contains(&format!("({}, {}, {}, {} N m", rms[0], rms[1], rms[2], rms[3])), "README lacks {rms:?}");
+}
+
+/// The LQ design is a design too: its weights are settings (in the link, shown only under
+/// `pf = lq`), the defaults are the paper's minimum-energy mirror of A4, and — LQ theory — more
+/// weight on the swing's state (or less on the torque) pulls the pair further left.
+#[test]
+fn the_lq_weights_are_settings_and_weight_on_the_swing_pulls_the_pair_left() {
+    let re_with = |query: &str| {
+        let (s, notices) = Session::open(query);
+        assert!(notices.is_empty(), "{query}: {notices:?}");
+        let report = flexarm::analysis::analyze(&s.settings().a.config(), None).unwrap();
+        (s, report.limit_pair[0][0], report.limit_pair_open[0][0])
+    };
+    let (s, minimum, open) = re_with("pf=lq");
+    assert!((minimum + open).abs() < 1e-6, "the minimum-energy design mirrors A4: {minimum} vs {open}");
+    assert!(!s.state_string().contains("lq_"), "defaults stay out of links: {}", s.state_string());
+    let mut last = minimum;
+    for query in [
+        "pf=lq&lq_q_twist=1000&lq_q_rate=100",
+        "pf=lq&lq_q_twist=10000&lq_q_rate=1000",
+        "pf=lq&lq_q_twist=10000&lq_q_rate=1000&lq_r=0.3",
+    ] {
+        let (s, re, _) = re_with(query);
+        assert!(re < last - 0.1, "{query}: Re A4 {re} not left of {last}");
+        assert!(s.state_string().contains("lq_q_twist=") && s.state_string().contains("pf=lq"), "{}", s.state_string());
+        last = re;
+    }
+    let (twist, _, _) = re_with("pf=twist");
+    let shown = |s: &Session, key: &str| s.controls().iter().find(|c| c.key == key).map(|c| c.shown);
+    assert_eq!(shown(&twist, "lq_r"), Some(false));
+    assert_eq!(shown(&s, "lq_r"), Some(true));
+}
+
+/// The README's LQ figures are the tool's.
+#[test]
+fn the_readme_says_what_the_lq_weights_do() {
+    let readme = include_str!("../README.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    let (s, _) = Session::open("pf=lq&lq_q_twist=10000&lq_q_rate=1000");
+    let c = s.settings().a.config();
+    let [re, im] = flexarm::analysis::analyze(&c, None).unwrap().limit_pair[0];
+    let pair = format!("{:.2} ± {:.2}j", re, im.abs()).replace('-', "−");
+    let sampled = |c: &SimulationConfig| {
+        let price = DigitalPrice::of(&LinearSettings::of(c, None), [0.002, 0.25]).unwrap();
+        format!("{:.4}", largest_stable_delta(&price.sampled).unwrap())
+    };
+    let (paper, _) = Session::open("pf=lq");
+    let text = format!("from {} to {} s", sampled(&paper.settings().a.config()), sampled(&c));
+    assert!(readme.contains(&pair) && readme.contains(&text), "README lacks {pair} or {text}");
 }

@@ -54,6 +54,7 @@ fn the_exported_script_finds_flexarms_rho_and_a4() {
         "delta=0.01&pf=paper&k1=2305.2&model=paper",
         "delta=0.01&pf=twist&alpha=5&twist_stiffness=120&twist_damping=40",
         "delta=0.05&pf=twist&twist_damping=80&inner=sampled",
+        "delta=0.02&pf=lq&lq_q_twist=10000&lq_q_rate=1000&lq_r=0.5",
     ] {
         let (py, config, rest) = run(state, &[]);
         let report = analyze(&config, Some(rest[1])).unwrap();

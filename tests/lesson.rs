@@ -62,6 +62,8 @@ fn the_whole_lesson_can_be_walked_and_back_restores_the_step_as_left() {
                 0 => play(&mut s, 3.6),
                 _ if i == step_index("Find where") => s.set("delta", "0.05").unwrap(),
                 _ if i == step_index("Compare") => s.set("compare", "1").unwrap(),
+                // The pair dragged left of the axis (the page's handle calls the same).
+                _ if i == step_index("Place the pair") => s.place_pair(-3.0, 29.0).unwrap(),
                 _ => panic!("a new task: teach this test how to do it"),
             }
             s.refresh();

@@ -101,6 +101,12 @@ pub fn small_delta_cured(windows: &StableWindows) -> bool {
     windows.windows.first().is_some_and(|w| w[0] <= windows.range[0])
 }
 
+/// The twist damping that puts the δ → 0 pair on the imaginary axis, k_d* = 3β Ir1 − Bv1 =
+/// 2 Ir1 Re A4 (A4 without feedback, `open_real_part`): more damps it.
+pub fn damping_needed(plant: &PlantParameters, open_real_part: f64) -> f64 {
+    2.0 * plant.ir1 * open_real_part
+}
+
 /// Whether a preliminary feedback choice is a design the page lets one place by hand.
 pub fn placeable(pf: PreliminaryFeedbackChoice) -> bool {
     pf == PreliminaryFeedbackChoice::Twist

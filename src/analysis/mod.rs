@@ -21,7 +21,7 @@ pub use sampled::{
     analyze, describes, loop_eigenvalues, sampled_loop_matrix, spectral_radius, LinearSettings, LoopModel, Pole,
     StabilityReport,
 };
-pub use stability_map::{log_space, stability_map, MapGrid, MapJob, StabilityMap};
+pub use stability_map::{log_space, stability_map, MapGrid, MapJob, MapRows, StabilityMap};
 pub use windows::{stable_intervals, stable_windows, StableWindows};
 
 /// The linearization and the δ → 0 limit live with the controller they describe.

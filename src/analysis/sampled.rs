@@ -12,7 +12,8 @@ use serde::{Deserialize, Serialize};
 use super::energy::{swing_energy, EnergyModel, SwingEnergy};
 use super::resonance::ResonanceReport;
 use crate::control::config::{
-    ControllerModel, ControllerParameters, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig, TwistFeedback,
+    ControllerModel, ControllerParameters, InnerLoop, LqWeights, PreliminaryFeedbackChoice, SimulationConfig,
+    TwistFeedback,
 };
 use crate::control::feedback::{resolve_gain, FeedbackGain};
 use crate::control::linear::{expm, limit_pair, linearize_at_rest, predictor_gain, LinearModel, Mat10, Mat8};
@@ -32,6 +33,8 @@ pub struct LinearSettings {
     pub preliminary_feedback: PreliminaryFeedbackChoice,
     /// The twist feedback's gains (`Twist`).
     pub twist: TwistFeedback,
+    /// The LQ design's weights (`Lq`).
+    pub lq: LqWeights,
     pub inner_loop: InnerLoop,
     /// Operating point q2 of the LQ design, rad.
     pub lq_design_q2: f64,
@@ -48,6 +51,7 @@ impl LinearSettings {
             controller: config.controller,
             preliminary_feedback: config.preliminary_feedback,
             twist: config.twist,
+            lq: config.lq,
             inner_loop: config.inner_loop,
             lq_design_q2: config.lq_design_q2,
             model: config.model,
@@ -62,11 +66,12 @@ impl LinearSettings {
         s
     }
 
-    /// The same settings with another preliminary feedback (the twist gains kept only where they
-    /// act, so that a map without them is one cache entry whatever they are).
+    /// The same settings with another preliminary feedback (the twist gains and the LQ weights
+    /// kept only where they act, so that a map without them is one cache entry whatever they are).
     pub fn with_feedback(&self, pf: PreliminaryFeedbackChoice) -> Self {
         let twist = if pf == PreliminaryFeedbackChoice::Twist { self.twist } else { TwistFeedback::default() };
-        Self { preliminary_feedback: pf, twist, ..*self }
+        let lq = if pf == PreliminaryFeedbackChoice::Lq { self.lq } else { LqWeights::default() };
+        Self { preliminary_feedback: pf, twist, lq, ..*self }
     }
 
     /// A configuration with these settings (defaults elsewhere), for validation and the LQ design.
@@ -76,6 +81,7 @@ impl LinearSettings {
             controller: self.controller,
             preliminary_feedback: self.preliminary_feedback,
             twist: self.twist,
+            lq: self.lq,
             inner_loop: self.inner_loop,
             lq_design_q2: self.lq_design_q2,
             model: self.model,

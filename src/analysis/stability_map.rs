@@ -59,6 +59,42 @@ impl MapSide {
     pub fn index(self) -> usize {
         self as usize
     }
+
+    /// What this side's rows are, given run A's feedback: with the twist damper the right map is
+    /// the design map, ρ over δ and k_d at run A's α; otherwise ρ over δ and α.
+    pub fn rows(self, current: PreliminaryFeedbackChoice) -> MapRows {
+        match (self, current) {
+            (MapSide::On, PreliminaryFeedbackChoice::Twist) => MapRows::TwistDamping,
+            _ => MapRows::Alpha,
+        }
+    }
+}
+
+/// What a map's rows vary: α1 = α2 = α, or the twist damping k_d at the settings' α (the design
+/// map: the cure region above k_d = 3α Ir1 − Bv1 and the digital limit in one picture).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MapRows {
+    #[default]
+    Alpha,
+    TwistDamping,
+}
+
+impl MapRows {
+    /// The span of the design map's k_d rows, N m s/rad: the k_d control's, from 1 (a log axis).
+    pub const TWIST_DAMPING_SPAN: [f64; 2] = [1.0, 200.0];
+
+    /// The settings of a row with value `value` (α or k_d) at the grid's first δ.
+    fn row_settings(self, settings: &LinearSettings, delta: f64, value: f64) -> LinearSettings {
+        match self {
+            MapRows::Alpha => settings.at(delta, [value, value]),
+            MapRows::TwistDamping => {
+                let mut s = settings.at(delta, settings.controller.alpha);
+                s.twist.damping = value;
+                s
+            }
+        }
+    }
 }
 
 /// Seconds to compute ρ of one cell on the development machine (measured 30 µs for the default
@@ -139,19 +175,36 @@ pub struct MapJob {
     rho: Vec<f64>,
     /// Cells whose analysis failed (ρ = NaN).
     failed: usize,
+    /// What the rows (`alphas`) vary.
+    rows: MapRows,
 }
 
 impl MapJob {
     /// A map of `settings` (its preliminary feedback, inner loop, k, m, plant; δ and α are the
     /// grid's) over the given axes. The corners are checked now, so a bad grid fails here.
     pub fn new(settings: &LinearSettings, deltas: Vec<f64>, alphas: Vec<f64>) -> Result<Self, Error> {
-        for (d, a) in [(deltas.first(), alphas.first()), (deltas.last(), alphas.last())] {
-            if let (Some(&d), Some(&a)) = (d, a) {
-                settings.at(d, [a, a]).controller.validate()?;
+        Self::with_rows(settings, deltas, alphas, MapRows::Alpha)
+    }
+
+    /// A map whose rows vary `rows` over `values` (α, or k_d at the settings' α).
+    pub fn with_rows(
+        settings: &LinearSettings,
+        deltas: Vec<f64>,
+        values: Vec<f64>,
+        rows: MapRows,
+    ) -> Result<Self, Error> {
+        for (d, v) in [(deltas.first(), values.first()), (deltas.last(), values.last())] {
+            if let (Some(&d), Some(&v)) = (d, v) {
+                rows.row_settings(settings, d, v).controller.validate()?;
             }
         }
-        let rho = Vec::with_capacity(deltas.len() * alphas.len());
-        Ok(Self { settings: *settings, deltas, alphas, rho, failed: 0 })
+        let rho = Vec::with_capacity(deltas.len() * values.len());
+        Ok(Self { settings: *settings, deltas, alphas: values, rho, failed: 0, rows })
+    }
+
+    /// What the rows vary.
+    pub fn rows(&self) -> MapRows {
+        self.rows
     }
 
     /// A job on `grid` for `settings`.
@@ -206,10 +259,10 @@ impl MapJob {
         if self.is_done() {
             return Ok(());
         }
-        let alpha = self.alphas[self.rows_done()];
+        let value = self.alphas[self.rows_done()];
         // The model of a row is built at the row's first δ (any δ of the grid would do: it only
-        // fixes α), so a key whose own δ was normalized away still validates.
-        let row_settings = self.settings.at(self.deltas[0], [alpha, alpha]);
+        // fixes the row's α or k_d), so a key whose own δ was normalized away still validates.
+        let row_settings = self.rows.row_settings(&self.settings, self.deltas[0], value);
         let before = self.rho.len();
         let row = LoopModel::new(&row_settings).and_then(|model| {
             for &delta in &self.deltas {

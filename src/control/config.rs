@@ -121,6 +121,37 @@ impl Default for TwistFeedback {
     }
 }
 
+/// The weights of the LQ design of the preliminary feedback (`pf = lq`,
+/// [`crate::control::feedback::design_lq`]): Q = diag(`twist`, `twist_rate`) on the motor's gap
+/// from the law's motor angle and its rate (the pair A4's coordinates), and R = `torque` ·
+/// diag(1, [`LQ_T2_RATIO`]) on (T1, T2). The defaults are the paper's minimum-energy design.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct LqWeights {
+    /// Q's weight on the gap z = θ − θ*, 1/(N m rad)² scaled: larger pulls the pair further.
+    pub twist: f64,
+    /// Q's weight on its rate.
+    pub twist_rate: f64,
+    /// R's weight on T1 (T2's is [`LQ_T2_RATIO`] times it): larger asks for less torque.
+    pub torque: f64,
+}
+
+/// T2's torque weight over T1's in the LQ design: 6.7 reproduces both printed rows of the paper's
+/// K_pr at q2 = 0, α = 2 to within 2.5 % (ERRATA.md says "about 6").
+pub const LQ_T2_RATIO: f64 = 6.7;
+
+impl Default for LqWeights {
+    /// The schema's defaults: Q = 1e-6 I2 (minimum energy), R = diag(1, 6.7).
+    fn default() -> Self {
+        let number = |p: &schema::Param| p.number().map_or(1.0, |n| n.default);
+        Self {
+            twist: number(&schema::LQ_TWIST_WEIGHT),
+            twist_rate: number(&schema::LQ_RATE_WEIGHT),
+            torque: number(&schema::LQ_TORQUE_WEIGHT),
+        }
+    }
+}
+
 /// Whether the preliminary feedback acts continuously (analog inner loop) or is sampled at δ.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "lowercase")]
@@ -177,6 +208,8 @@ pub struct SimulationConfig {
     pub preliminary_feedback: PreliminaryFeedbackChoice,
     /// The twist feedback's gains, used when `preliminary_feedback` is `Twist`.
     pub twist: TwistFeedback,
+    /// The LQ design's weights, used when `preliminary_feedback` is `Lq`.
+    pub lq: LqWeights,
     pub inner_loop: InnerLoop,
     pub friction_compensation: FrictionCompensation,
     /// Largest step of the plant integrator, s; the actual step divides δ evenly.
@@ -200,6 +233,7 @@ impl Default for SimulationConfig {
             controller: ControllerParameters::default(),
             preliminary_feedback: PreliminaryFeedbackChoice::Paper,
             twist: TwistFeedback::default(),
+            lq: LqWeights::default(),
             inner_loop: InnerLoop::Continuous,
             friction_compensation: FrictionCompensation::Continuous,
             plant_step_max: DEFAULT_PLANT_STEP_MAX,
@@ -251,6 +285,9 @@ impl SimulationConfig {
         finite("lq_design_q2", self.lq_design_q2)?;
         schema::TWIST_STIFFNESS.check(self.twist.stiffness)?;
         schema::TWIST_DAMPING.check(self.twist.damping)?;
+        schema::LQ_TWIST_WEIGHT.check(self.lq.twist)?;
+        schema::LQ_RATE_WEIGHT.check(self.lq.twist_rate)?;
+        schema::LQ_TORQUE_WEIGHT.check(self.lq.torque)?;
         Ok(())
     }
 }

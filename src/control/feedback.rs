@@ -12,15 +12,16 @@
 //! u = K2 x2, with x2 = Ψ x the motor coordinates measured from V*, and mapped back to the full
 //! state, K_pr = K2 Ψ.
 //!
-//! K2 is the LQ gain for ẋ2 = A4 x2 + B2 u (B2 = Ψ B) with a tiny state weight
-//! Q = 1e-6 · I2 and R = diag(1, 6.7): a minimum-energy design that reflects the unstable pair
+//! K2 is the LQ gain for ẋ2 = A4 x2 + B2 u (B2 = Ψ B), by default ([`LqWeights`], settings
+//! `lq_q_twist`, `lq_q_rate`, `lq_r`) with a tiny state weight Q = 1e-6 · I2 and R = diag(1, 6.7): a minimum-energy design that reflects the unstable pair
 //! into the left half-plane (2.639 ± 29.58j → −2.639 ± 29.58j) with the least torque, weighting
 //! T2 about 6.7 times more than T1 (ERRATA.md says "about 6"; 6.7 reproduces both printed rows of
 //! K_pr at q2 = 0, α = 2 to within 2.5 %, while 6 leaves the T2 row 11 % high).
 
 use nalgebra::{Complex, Matrix2, Matrix4, SMatrix};
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
+pub use crate::control::config::{LqWeights, LQ_T2_RATIO};
 use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
 use crate::control::linear::{limit_pair, linearize_at_rest};
 use crate::error::Error;
@@ -79,22 +80,6 @@ pub fn twist_parts(gain: &FeedbackGain) -> TwistParts {
     TwistParts { t1, t2, rest: rest.amax() }
 }
 
-/// Weights of the LQ design on the 2-state part A4.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct LqWeights {
-    /// Q = state_weight · I2 on x2 = (θ, θ̇) measured from V*.
-    pub state_weight: f64,
-    /// R = diag(input_weights) on (T1, T2).
-    pub input_weights: [f64; 2],
-}
-
-impl Default for LqWeights {
-    /// Q = 1e-6 I2 (minimum energy), R = diag(1, 6.7).
-    fn default() -> Self {
-        Self { state_weight: 1e-6, input_weights: [1.0, 6.7] }
-    }
-}
-
 /// The outcome of the LQ design.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LqDesign {
@@ -117,8 +102,8 @@ pub fn design_lq(
 ) -> Result<LqDesign, Error> {
     let model = linearize_at_rest(plant, alpha, q_rest);
     let open = limit_pair(&model, &FeedbackGain::zeros())?;
-    let q = Matrix2::identity() * weights.state_weight;
-    let [r1, r2] = weights.input_weights;
+    let q = Matrix2::new(weights.twist, 0.0, 0.0, weights.twist_rate);
+    let (r1, r2) = (weights.torque, weights.torque * LQ_T2_RATIO);
     let r = Matrix2::new(r1, 0.0, 0.0, r2);
     let p = solve_care(&open.a4, &open.b2, &q, &r)?;
     // u = K2 x2 with K2 = −R⁻¹ B2ᵀ P.
@@ -136,7 +121,7 @@ pub fn resolve_gain(config: &SimulationConfig) -> Result<FeedbackGain, Error> {
         PreliminaryFeedbackChoice::Paper => Ok(paper_gain()),
         PreliminaryFeedbackChoice::Lq => {
             let q_rest = [config.reference.end[0], config.lq_design_q2];
-            Ok(design_lq(&config.model_plant(), config.controller.alpha, q_rest, &LqWeights::default())?.gain)
+            Ok(design_lq(&config.model_plant(), config.controller.alpha, q_rest, &config.lq)?.gain)
         }
         PreliminaryFeedbackChoice::Twist => Ok(twist_gain(config.twist.stiffness, config.twist.damping)),
     }

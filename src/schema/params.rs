@@ -143,6 +143,61 @@ pub const TWIST_DAMPING: Param = Param {
            swing's real part is Re A4 = 3α/2 − (Bv1 + k_d)/(2 Ir1): damped for k_d > 3α Ir1 − Bv1.",
 };
 
+/// An LQ weight: positive, on a log scale over [`control`] (the limits a decade beyond it each way).
+const fn weight_spec(control: [f64; 2], default: f64) -> NumberSpec {
+    NumberSpec {
+        min: control[0] / 10.0,
+        min_inclusive: true,
+        max: control[1] * 10.0,
+        allowed: None,
+        control,
+        scale: Scale::Log,
+        digits: 2,
+        integer: false,
+        default,
+    }
+}
+
+/// Q's weight on the swing's coordinate of the LQ design (`pf = lq`).
+pub const LQ_TWIST_WEIGHT: Param = Param {
+    key: "lq_q_twist",
+    label: "LQ weight on the twist q_z",
+    symbol: "q_z",
+    unit: "",
+    name: "lq_q_twist (Q on the gap z)",
+    kind: Kind::Number(weight_spec([1e-6, 1e5], 1e-6)),
+    scope: Scope::Run,
+    help: "With pf = lq: the LQ design's weight on the motor's gap z from the angle the links' law needs (the \
+           pair A4's first coordinate, a twist). Larger pulls the pair further left, with more torque; the \
+           default 1e-6 is the paper's minimum-energy design, which only mirrors an unstable pair.",
+};
+
+/// Q's weight on the swing's rate.
+pub const LQ_RATE_WEIGHT: Param = Param {
+    key: "lq_q_rate",
+    label: "LQ weight on the twist rate q_y",
+    symbol: "q_y",
+    unit: "",
+    name: "lq_q_rate (Q on its rate)",
+    kind: Kind::Number(weight_spec([1e-6, 1e5], 1e-6)),
+    scope: Scope::Run,
+    help: "With pf = lq: the LQ design's weight on the motor's speed against the law's (the pair A4's second \
+           coordinate, a twist rate). Larger damps the swing harder.",
+};
+
+/// R's weight on T1 (T2's is 6.7 times it).
+pub const LQ_TORQUE_WEIGHT: Param = Param {
+    key: "lq_r",
+    label: "LQ torque weight r",
+    symbol: "r",
+    unit: "",
+    name: "lq_r (R on T1; T2 6.7×)",
+    kind: Kind::Number(weight_spec([1e-3, 1e3], 1.0)),
+    scope: Scope::Run,
+    help: "With pf = lq: the LQ design's weight on the motor torque T1 (T2's is 6.7 times it, as in the paper's \
+           gain). Only its ratio to the state weights counts: larger asks for less torque.",
+};
+
 /// The friction compensation T = v + x̂f, eq. (4.4).
 pub const FRICTION: Param = Param {
     key: "friction",
@@ -436,6 +491,9 @@ pub const PARAMS: &[&Param] = &[
     &PF,
     &TWIST_STIFFNESS,
     &TWIST_DAMPING,
+    &LQ_TWIST_WEIGHT,
+    &LQ_RATE_WEIGHT,
+    &LQ_TORQUE_WEIGHT,
     &FRICTION,
     &INNER,
     &REST,

@@ -3,6 +3,7 @@
 //! the old state does not fit the new settings: another arm, another reference).
 
 use super::*;
+use crate::analysis::MapRows;
 
 impl Session {
     /// Sets one parameter from its text (a selector's value, a number typed): within the
@@ -105,33 +106,41 @@ impl Session {
         Ok(notices)
     }
 
-    /// Runs A at a point picked on a map: (δ, α1 = α2 = α) rounded to the controls' precision and
-    /// kept within their spans, with the map's preliminary feedback (none on the left; on the
-    /// right A's own if it has one, else the paper's).
-    pub fn set_from_map(&mut self, side: MapSide, delta: f64, alpha: f64) -> Result<(), Error> {
+    /// Runs A at a point picked on a map: (δ, α1 = α2 = α) — or on the design map (δ, k_d) —
+    /// rounded to the controls' precision and kept within their spans, with the map's preliminary
+    /// feedback (none on the left; on the right A's own if it has one, else the paper's).
+    pub fn set_from_map(&mut self, side: MapSide, delta: f64, value: f64) -> Result<(), Error> {
         self.continue_from_here()?;
-        let spec = |p: &schema::Param| *p.number().expect("δ and α are numbers");
-        let (d, a) = (spec(&schema::DELTA).snap(delta), spec(&schema::ALPHA).snap(alpha));
+        let spec = |p: &schema::Param| *p.number().expect("δ, α and k_d are numbers");
         let pf = match (side, self.settings.a.pf) {
             (MapSide::Off, _) => PreliminaryFeedbackChoice::Off,
             (MapSide::On, PreliminaryFeedbackChoice::Off) => PreliminaryFeedbackChoice::Paper,
             (MapSide::On, current) => current,
         };
         let mut next = self.settings;
-        next.a.delta = d;
-        next.a.alpha = [a, a];
+        next.a.delta = spec(&schema::DELTA).snap(delta);
+        match side.rows(self.settings.a.pf) {
+            MapRows::Alpha => {
+                let a = spec(&schema::ALPHA).snap(value);
+                next.a.alpha = [a, a];
+            }
+            MapRows::TwistDamping => next.a.twist.damping = spec(&schema::TWIST_DAMPING).snap(value),
+        }
         next.a.pf = pf;
         self.apply(next, false, "")
     }
 
-    /// Moves run A's point on a map by arrow-key steps (δ across, α up), running with that map's
-    /// preliminary feedback: the keyboard's way of clicking a map.
-    pub fn step_on_map(&mut self, side: MapSide, delta_steps: i32, alpha_steps: i32) -> Result<(), Error> {
-        let spec = |p: &schema::Param| *p.number().expect("δ and α are numbers");
+    /// Moves run A's point on a map by arrow-key steps (δ across, α or k_d up), running with that
+    /// map's preliminary feedback: the keyboard's way of clicking a map.
+    pub fn step_on_map(&mut self, side: MapSide, delta_steps: i32, value_steps: i32) -> Result<(), Error> {
+        let spec = |p: &schema::Param| *p.number().expect("δ, α and k_d are numbers");
         let a = self.settings.a;
         let delta = spec(&schema::DELTA).step_from(a.delta, delta_steps);
-        let alpha = spec(&schema::ALPHA).step_from(a.alpha[0], alpha_steps);
-        self.set_from_map(side, delta, alpha)
+        let value = match side.rows(a.pf) {
+            MapRows::Alpha => spec(&schema::ALPHA).step_from(a.alpha[0], value_steps),
+            MapRows::TwistDamping => spec(&schema::TWIST_DAMPING).step_from(a.twist.damping, value_steps),
+        };
+        self.set_from_map(side, delta, value)
     }
 
     /// Runs A at a sampling period picked on ρ(δ): rounded to the δ control's precision and kept

@@ -22,7 +22,9 @@ use core::fmt::{Display, Write};
 
 use super::map_cache::MapSide;
 use super::Session;
-use crate::analysis::{stable_windows, LinearSettings, LoopModel, MapGrid, MapJob, StabilityReport, StableWindows};
+use crate::analysis::{
+    stable_windows, LinearSettings, LoopModel, MapGrid, MapJob, MapRows, StabilityReport, StableWindows,
+};
 use crate::control::config::SimulationConfig;
 use crate::control::linear::Mat10;
 use crate::error::Error;
@@ -58,7 +60,8 @@ pub const LOOP_ABOUT: &str = "Phi: the sampled loop of Fig. 2.1 over one period,
      first (re, im, abs [1]; s = ln(lambda)/delta [1/s]); loop: rho = max |lambda| (stable iff < 1), growth_rate \
      = ln(rho)/delta; limit_pair_open, limit_pair: A4, the pair the loop tends to as delta -> 0, without and with \
      K_pr; rho_curve: the rho(delta) panel; stable_windows: where rho < 1; map_off, map_on: rho on the grid \
-     map_alpha x map_delta (rows alpha, columns delta).";
+     map_alpha x map_delta (rows alpha, columns delta); with the twist damper map_on is the design map, \
+     on map_twist_damping x map_delta (rows k_d [N m s/rad] at run A's alpha).";
 
 /// Where the rows go: a CSV writer, or the CLI's JSON.
 pub trait Sink {
@@ -180,7 +183,7 @@ impl<'a> FigureData<'a> {
                 let pf = job.settings().preliminary_feedback.name();
                 let _ = write!(
                     omitted,
-                    "{sep}the map with preliminary feedback {pf}: {} of {} rows of alpha",
+                    "{sep}the map with preliminary feedback {pf}: {} of {} rows",
                     job.rows_done(),
                     job.alphas().len()
                 );
@@ -268,7 +271,11 @@ impl<'a> FigureData<'a> {
         let none: &[[f64; 2]] = &[];
         let (scan, windows) = self.windows.map_or((none, none), |w| (&w.scan[..], &w.windows[..]));
         let no_axis: &[f64] = &[];
-        let (deltas, alphas) = self.maps.first().map_or((no_axis, no_axis), |(_, job)| (job.deltas(), job.alphas()));
+        let axis_of = |rows: MapRows| {
+            self.maps.iter().find(|(_, job)| job.rows() == rows).map_or(no_axis, |(_, job)| job.alphas())
+        };
+        let deltas = self.maps.first().map_or(no_axis, |(_, job)| job.deltas());
+        let (alphas, dampings) = (axis_of(MapRows::Alpha), axis_of(MapRows::TwistDamping));
         type Pairs<'p> = (&'p str, &'p [[f64; 2]], [&'p str; 2], [&'p str; 2]);
         let tables: [Pairs; 4] = [
             ("limit_pair_open", &r.limit_pair_open, ["re", "im"], ["1/s"; 2]),
@@ -283,7 +290,9 @@ impl<'a> FigureData<'a> {
                 }
             }
         }
-        for (name, axis, unit) in [("map_delta", deltas, "s"), ("map_alpha", alphas, "1/s")] {
+        let axes =
+            [("map_delta", deltas, "s"), ("map_alpha", alphas, "1/s"), ("map_twist_damping", dampings, "N m s/rad")];
+        for (name, axis, unit) in axes {
             for (i, v) in axis.iter().enumerate() {
                 sink.row(name, i, 0, &i, &"value", *v, unit);
             }
@@ -338,8 +347,7 @@ pub fn computed_maps(config: &SimulationConfig, q2: Option<f64>) -> Result<Vec<(
     let linear = LinearSettings::of(config, q2);
     let mut maps = Vec::new();
     for side in MapSide::BOTH {
-        let settings = linear.with_feedback(side.feedback(linear.preliminary_feedback));
-        let mut job = MapJob::on_grid(&settings, &MapGrid::DEFAULT)?;
+        let mut job = super::map_cache::job_for(&linear, side, &MapGrid::DEFAULT)?;
         job.step_while(|| true)?;
         maps.push((side, job));
     }

@@ -14,6 +14,9 @@ use crate::control::feedback::{resolve_gain, twist_parts};
 use crate::control::price::torque_price;
 use crate::words::design::DesignStatus;
 
+/// Significant digits of the gains a placement writes.
+pub const GAIN_DIGITS: u32 = 4;
+
 /// How far one arrow-key step moves the pair's target: Re s by this (1/s), Im s by ten times it.
 pub const TARGET_STEP: f64 = 0.5;
 
@@ -74,7 +77,7 @@ impl Session {
 
     /// Places run A's δ → 0 pair at `re ± j im` (1/s) with the twist feedback: the gains that put
     /// it there (on the arm the controller assumes, as the LQ design) become run A's, with
-    /// `pf = twist`. A target no twist feedback in the gains' ranges reaches is refused with the
+    /// `pf = twist`, rounded to [`GAIN_DIGITS`] figures. A target no twist feedback in the gains' ranges reaches is refused with the
     /// reason, and nothing changes.
     pub fn place_pair(&mut self, re: f64, im: f64) -> Result<(), Error> {
         let config = self.settings.a.config();
@@ -86,7 +89,9 @@ impl Session {
         self.continue_from_here()?;
         let mut next = self.settings;
         next.a.pf = PreliminaryFeedbackChoice::Twist;
-        next.a.twist = TwistFeedback { stiffness, damping };
+        // Four figures, as a link and the controls show them (the pair moves by < 0.1 %).
+        let round = |v: f64| schema::round_significant(v, GAIN_DIGITS);
+        next.a.twist = TwistFeedback { stiffness: round(stiffness), damping: round(damping) };
         self.apply(next, false, "")
     }
 

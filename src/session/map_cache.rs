@@ -3,7 +3,7 @@
 //! cache of maps already computed, and the work spread over frames.
 
 pub use crate::analysis::stability_map::MapSide;
-use crate::analysis::{LinearSettings, MapGrid, MapJob};
+use crate::analysis::{log_space, LinearSettings, MapGrid, MapJob, MapRows};
 use crate::control::config::PreliminaryFeedbackChoice;
 use crate::words::settings::feedback_short;
 
@@ -43,6 +43,19 @@ impl MapEntry {
 
     pub fn feedback(&self) -> PreliminaryFeedbackChoice {
         self.key.preliminary_feedback
+    }
+}
+
+/// The job of a side's map for run A's linear settings `a` on `grid` (rows of α, or of k_d on
+/// the design map): the page's and the CLI's `data` alike.
+pub fn job_for(a: &LinearSettings, side: MapSide, grid: &MapGrid) -> Result<MapJob, crate::error::Error> {
+    let key = Maps::key(a, side);
+    match side.rows(a.preliminary_feedback) {
+        MapRows::Alpha => MapJob::on_grid(&key, grid),
+        MapRows::TwistDamping => {
+            let [lo, hi] = MapRows::TWIST_DAMPING_SPAN;
+            MapJob::with_rows(&key, grid.deltas(), log_space(lo, hi, grid.n_alpha), MapRows::TwistDamping)
+        }
     }
 }
 
@@ -100,12 +113,12 @@ impl Maps {
     /// Makes both sides show the maps of run A's linear settings `a` (starting jobs as needed).
     pub fn show(&mut self, a: &LinearSettings) {
         for side in MapSide::BOTH {
-            let key = a.at(0.0, [0.0, 0.0]).with_feedback(side.feedback(a.preliminary_feedback));
+            let key = Self::key(a, side);
             self.counter += 1;
             let index = match self.entries.iter().position(|e| e.key == key) {
                 Some(i) => i,
                 None => {
-                    let (job, failed) = match MapJob::on_grid(&key, &self.grid) {
+                    let (job, failed) = match job_for(a, side, &self.grid) {
                         Ok(job) => (job, None),
                         // An empty job that reports the problem (the map panel stays grey).
                         Err(e) => (
@@ -131,6 +144,20 @@ impl Maps {
             self.shown[side.index()] = Some(index);
         }
         self.evict();
+    }
+
+    /// The settings a side maps, the cache key: run A's with δ normalized away and the side's
+    /// feedback; α normalized away too on an α map, and k_d on the design map (its rows).
+    pub fn key(a: &LinearSettings, side: MapSide) -> LinearSettings {
+        let pf = side.feedback(a.preliminary_feedback);
+        match side.rows(a.preliminary_feedback) {
+            MapRows::Alpha => a.at(0.0, [0.0, 0.0]).with_feedback(pf),
+            MapRows::TwistDamping => {
+                let mut key = a.at(0.0, a.controller.alpha).with_feedback(pf);
+                key.twist.damping = 0.0;
+                key
+            }
+        }
     }
 
     fn evict(&mut self) {
@@ -187,14 +214,23 @@ impl Maps {
         self.pending()
     }
 
-    /// ρ at (δ, α) on a side's map: the nearest grid cell; NaN where not computed yet.
-    pub fn rho_at(&self, side: MapSide, delta: f64, alpha: f64) -> f64 {
+    /// ρ at (δ, row value: α or k_d) on a side's map: the nearest grid cell (in log scale); NaN
+    /// where not computed yet.
+    pub fn rho_at(&self, side: MapSide, delta: f64, value: f64) -> f64 {
         let Some(entry) = self.shown(side) else { return f64::NAN };
-        let g = &self.grid;
-        let frac = |v: f64, r: [f64; 2]| (v / r[0]).ln() / (r[1] / r[0]).ln();
-        let i = (frac(delta, g.delta) * (g.n_delta - 1) as f64).round().clamp(0.0, (g.n_delta - 1) as f64) as usize;
-        let j = (frac(alpha, g.alpha) * (g.n_alpha - 1) as f64).round().clamp(0.0, (g.n_alpha - 1) as f64) as usize;
-        entry.job.values().get(j * g.n_delta + i).copied().unwrap_or(f64::NAN)
+        let job = &entry.job;
+        let nearest = |axis: &[f64], v: f64| {
+            (0..axis.len()).min_by(|&i, &j| (axis[i] / v).ln().abs().total_cmp(&(axis[j] / v).ln().abs()))
+        };
+        match (nearest(job.deltas(), delta), nearest(job.alphas(), value)) {
+            (Some(i), Some(j)) => job.values().get(j * job.deltas().len() + i).copied().unwrap_or(f64::NAN),
+            _ => f64::NAN,
+        }
+    }
+
+    /// What the rows of a side's map vary (α until a map is shown).
+    pub fn rows(&self, side: MapSide) -> MapRows {
+        self.shown(side).map_or(MapRows::Alpha, |e| e.job.rows())
     }
 
     /// Start-to-done times of every map finished so far.

@@ -414,9 +414,19 @@ impl Session {
             maps: map_cache::MapStatus {
                 // Hidden in student mode: the maps say where ρ < 1.
                 shown: self.maps.status().shown && !hidden,
-                title: match self.settings.view.measure {
-                    crate::plot::color::Measure::Rho => "Stability maps ρ(δ, α)".into(),
-                    crate::plot::color::Measure::Rate => "Stability maps: ln ρ/δ over (δ, α), 1/s".into(),
+                title: {
+                    let design = self.settings.a.pf == PreliminaryFeedbackChoice::Twist;
+                    match (self.settings.view.measure, design) {
+                        (crate::plot::color::Measure::Rho, false) => "Stability maps ρ(δ, α)".into(),
+                        (crate::plot::color::Measure::Rate, false) => "Stability maps: ln ρ/δ over (δ, α), 1/s".into(),
+                        (crate::plot::color::Measure::Rho, true) => {
+                            "Stability maps ρ(δ, α) without Kₚᵣ, and the design map ρ(δ, k_d) of your damper".into()
+                        }
+                        (crate::plot::color::Measure::Rate, true) => {
+                            "Stability maps: ln ρ/δ (1/s) over (δ, α) without Kₚᵣ, and over (δ, k_d) for your damper"
+                                .into()
+                        }
+                    }
                 },
                 ..self.maps.status()
             },

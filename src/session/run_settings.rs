@@ -4,7 +4,8 @@
 //! δ, α and feedback over A's.
 
 use crate::control::config::{
-    ControllerModel, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig, TwistFeedback,
+    ControllerModel, FrictionCompensation, InnerLoop, LqWeights, PreliminaryFeedbackChoice, SimulationConfig,
+    TwistFeedback,
 };
 use crate::model::PlantParameters;
 use crate::schema::{self, Param, Value};
@@ -58,7 +59,13 @@ pub(super) fn quiet_at_default(key: &str) -> bool {
         || key == "model"
         || key == schema::TWIST_STIFFNESS.key
         || key == schema::TWIST_DAMPING.key
+        || is_lq_weight(key)
         || schema::is_arm(key)
+}
+
+/// A weight of the LQ design (`pf = lq`).
+pub(super) fn is_lq_weight(key: &str) -> bool {
+    [schema::LQ_TWIST_WEIGHT.key, schema::LQ_RATE_WEIGHT.key, schema::LQ_TORQUE_WEIGHT.key].contains(&key)
 }
 
 /// The settings of one run, keyed by the schema's run parameters.
@@ -71,6 +78,8 @@ pub struct RunSettings {
     pub pf: PreliminaryFeedbackChoice,
     /// k_p, k_d of `pf = twist`.
     pub twist: TwistFeedback,
+    /// The LQ design's weights (`pf = lq`).
+    pub lq: LqWeights,
     pub friction: FrictionCompensation,
     pub inner: InnerLoop,
     /// The slew repeats there and back (holding [`REPEAT_HOLD`] s) instead of the paper's one slew.
@@ -97,6 +106,7 @@ impl Default for RunSettings {
             alpha: [number(&schema::ALPHA1), number(&schema::ALPHA2)],
             pf: PreliminaryFeedbackChoice::from_name(choice(&schema::PF)).unwrap_or_default(),
             twist: TwistFeedback::default(),
+            lq: LqWeights::default(),
             friction: FrictionCompensation::from_name(choice(&schema::FRICTION)).unwrap_or_default(),
             inner: InnerLoop::from_name(choice(&schema::INNER)).unwrap_or_default(),
             repeat: schema::REPEAT.default_value().switch().unwrap_or(false),
@@ -120,6 +130,7 @@ impl RunSettings {
         c.controller.eps_ratio = self.eps_ratio;
         c.preliminary_feedback = self.pf;
         c.twist = self.twist;
+        c.lq = self.lq;
         c.friction_compensation = self.friction;
         c.inner_loop = self.inner;
         c.reference.repeat_hold = self.repeat.then_some(REPEAT_HOLD);
@@ -135,6 +146,7 @@ impl RunSettings {
             alpha: c.controller.alpha,
             pf: c.preliminary_feedback,
             twist: c.twist,
+            lq: c.lq,
             friction: c.friction_compensation,
             inner: c.inner_loop,
             repeat: c.reference.repeat_hold.is_some(),
@@ -155,6 +167,9 @@ impl RunSettings {
             "pf" => Value::Choice(self.pf.name()),
             "twist_stiffness" => Value::Number(self.twist.stiffness),
             "twist_damping" => Value::Number(self.twist.damping),
+            "lq_q_twist" => Value::Number(self.lq.twist),
+            "lq_q_rate" => Value::Number(self.lq.twist_rate),
+            "lq_r" => Value::Number(self.lq.torque),
             "friction" => Value::Choice(self.friction.name()),
             "inner" => Value::Choice(self.inner.name()),
             "repeat" => Value::Switch(self.repeat),
@@ -177,6 +192,9 @@ impl RunSettings {
             ("pf", Value::Choice(s)) => self.pf = PreliminaryFeedbackChoice::from_name(s).unwrap_or(self.pf),
             ("twist_stiffness", Value::Number(x)) => self.twist.stiffness = x,
             ("twist_damping", Value::Number(x)) => self.twist.damping = x,
+            ("lq_q_twist", Value::Number(x)) => self.lq.twist = x,
+            ("lq_q_rate", Value::Number(x)) => self.lq.twist_rate = x,
+            ("lq_r", Value::Number(x)) => self.lq.torque = x,
             ("friction", Value::Choice(s)) => {
                 self.friction = FrictionCompensation::from_name(s).unwrap_or(self.friction)
             }

@@ -124,11 +124,14 @@ impl Settings {
     }
 
     /// False for a setting that does nothing with the others as they are: the twist feedback's
-    /// gains while neither run uses `pf = twist`.
+    /// gains while neither run uses `pf = twist`, the LQ weights while neither uses `pf = lq`.
     pub fn matters(&self, key: &str) -> bool {
+        let used = |pf: PreliminaryFeedbackChoice| self.a.pf == pf || self.b.is_some_and(|b| b.pf == pf);
         if key == schema::TWIST_STIFFNESS.key || key == schema::TWIST_DAMPING.key {
-            let twist = PreliminaryFeedbackChoice::Twist;
-            return self.a.pf == twist || self.b.is_some_and(|b| b.pf == twist);
+            return used(PreliminaryFeedbackChoice::Twist);
+        }
+        if super::run_settings::is_lq_weight(key) {
+            return used(PreliminaryFeedbackChoice::Lq);
         }
         true
     }

@@ -213,6 +213,26 @@ impl Renderer {
         self.take_z_view(session, view)
     }
 
+    /// True when (x, y) (CSS px) is within `reach` of run A's δ → 0 pair with its preliminary
+    /// feedback on the pole plot: the handle a drag places.
+    #[wasm_bindgen(js_name = pairHandleAt)]
+    pub fn pair_handle_at(&self, x: f64, y: f64, reach: f64) -> bool {
+        self.scene.page_pair_handle_at(x, y, reach)
+    }
+
+    /// Holds the pole plot's scale while the pair is dragged (true at the press, false at the
+    /// release), so the plot does not rescale under the pointer.
+    #[wasm_bindgen(js_name = holdPolePlot)]
+    pub fn hold_pole_plot(&mut self, hold: bool) {
+        self.scene.hold_pole_plot(hold);
+    }
+
+    /// The s = [Re, Im] under (x, y) (CSS px) on the pole plot, or undefined without one.
+    #[wasm_bindgen(js_name = polePlotPoint)]
+    pub fn pole_plot_point(&self, x: f64, y: f64) -> Option<Vec<f64>> {
+        self.scene.page_pole_plot_point(x, y).map(|s| s.to_vec())
+    }
+
     /// What lies at (x, y) in CSS pixels of the canvas: the nearest pole within `reach` pixels, or
     /// the point of a map: `{kind: "pole"|"map", title, lines: [{text, tone}], x, y, map, delta,
     /// alpha}`, or null.

@@ -266,6 +266,19 @@ impl WebSession {
         self.inner.continue_from_here().map_err(js_error)
     }
 
+    /// Places run A's δ → 0 pair at re ± j im (1/s) with the twist feedback (its gains become the
+    /// settings); throws the reason where no twist feedback in range reaches it.
+    #[wasm_bindgen(js_name = placePair)]
+    pub fn place_pair(&mut self, re: f64, im: f64) -> Result<(), JsError> {
+        self.inner.place_pair(re, im).map_err(js_error)
+    }
+
+    /// Moves the pair's target by arrow-key steps (Re s across, Im s up).
+    #[wasm_bindgen(js_name = nudgePair)]
+    pub fn nudge_pair(&mut self, re_steps: i32, im_steps: i32) -> Result<(), JsError> {
+        self.inner.nudge_pair(re_steps, im_steps).map_err(js_error)
+    }
+
     /// Runs A at a sampling period picked on ρ(δ).
     #[wasm_bindgen(js_name = pickDelta)]
     pub fn pick_delta(&mut self, delta: f64) -> Result<(), JsError> {

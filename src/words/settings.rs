@@ -32,6 +32,11 @@ pub fn point(delta: f64, alpha: f64) -> String {
     format!("δ = {} s, α = {} 1/s", significant(delta, 3), significant(alpha, 3))
 }
 
+/// A point of the design map: "δ = 0.01 s, k_d = 16 N m s/rad".
+pub fn design_point(delta: f64, damping: f64) -> String {
+    format!("δ = {} s, k_d = {} N m s/rad", significant(delta, 3), significant(damping, 3))
+}
+
 /// "ρ, no Kₚᵣ", "ρ, paper Kₚᵣ" ("rate, no Kₚᵣ" … when the maps show the rate) for the map of
 /// `side` beside run A's feedback `pf`: short enough for a narrow map's title, with K_pr's
 /// subscript as the page's controls write it.
@@ -45,7 +50,7 @@ pub fn map_caption(side: MapSide, pf: PreliminaryFeedbackChoice, measure: Measur
         PreliminaryFeedbackChoice::Off => format!("{what}, no Kₚᵣ"),
         PreliminaryFeedbackChoice::Paper => format!("{what}, paper Kₚᵣ"),
         PreliminaryFeedbackChoice::Lq => format!("{what}, LQ Kₚᵣ"),
-        PreliminaryFeedbackChoice::Twist => format!("{what}, twist Kₚᵣ"),
+        PreliminaryFeedbackChoice::Twist => format!("{what} over k_d, twist Kₚᵣ"),
     }
 }
 
@@ -76,10 +81,14 @@ pub fn run(c: &SimulationConfig) -> String {
     let delta = c.controller.sampling_period;
     let mut text =
         format!("{}, δ = {} s, {alpha} 1/s", feedback_short(c.preliminary_feedback), significant_trimmed(delta, 3));
+    let paper = SimulationConfig::default();
     if c.preliminary_feedback == PreliminaryFeedbackChoice::Twist {
         text += &format!(", {}", twist_gains(c));
     }
-    let paper = SimulationConfig::default();
+    if c.preliminary_feedback == PreliminaryFeedbackChoice::Lq && c.lq != paper.lq {
+        let w = |v: f64| crate::plot::format::significant(v, 2);
+        text += &format!(", LQ weights q_z = {}, q_y = {}, r = {}", w(c.lq.twist), w(c.lq.twist_rate), w(c.lq.torque));
+    }
     if c.friction_compensation != paper.friction_compensation {
         text += &format!(", friction compensation {}", c.friction_compensation.name());
     }

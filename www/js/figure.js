@@ -27,9 +27,10 @@ export function canvasProblem(title, detail) {
 /**
  * @param {{ session: Page, store: Store, overlays: Overlays,
  *   guard: <T>(what: string, fn: () => T, fallback?: T) => T | undefined, report: (what: string, e: unknown) => void,
- *   change: (fn: () => void) => void, scrubTo: (t: number) => void, touch: () => void }} on
+ *   change: (fn: () => void) => void, scrubTo: (t: number) => void, touch: () => void,
+ *   design: ReturnType<typeof import('./design.js').createDesign> }} on
  */
-export function createFigure({ session, store, overlays, guard, report, change, scrubTo, touch }) {
+export function createFigure({ session, store, overlays, guard, report, change, scrubTo, touch, design }) {
   /** @type {Renderer | null} */
   let renderer = null;
   /** The frame's description as last read (`Renderer.layout()`). @type {any} */
@@ -60,6 +61,12 @@ export function createFigure({ session, store, overlays, guard, report, change, 
     onZ: zoom.on,
     zoomZ: zoom.zoomAt,
     panZ: zoom.panBy,
+    onHandle: (x, y, reach) => design.placeable() && Boolean(renderer?.pairHandleAt(x, y, reach)),
+    holdPoles: (hold) => renderer?.holdPolePlot(hold),
+    placeAt: (x, y) => {
+      const s = renderer?.polePlotPoint(x, y);
+      if (s) design.place(s[0], Math.abs(s[1]));
+    },
   });
 
   /** Draws a frame; refreshes the labels when the frame's description changed. */

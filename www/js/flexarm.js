@@ -116,6 +116,30 @@ export class Page {
     this.#change((s) => s.pickDelta(delta));
   }
 
+  /**
+   * Places run A's flexible pair at re ± j im (1/s) with the twist feedback: its gains become the
+   * settings. Returns "" when placed, else the session's reason (nothing changed).
+   * @param {number} re @param {number} im @returns {string}
+   */
+  placePair(re, im) {
+    return this.#refusal(() => this.#change((s) => s.placePair(re, im)));
+  }
+
+  /** Moves the pair's target by arrow-key steps; "" or why not. @param {number} reSteps @param {number} imSteps @returns {string} */
+  nudgePair(reSteps, imSteps) {
+    return this.#refusal(() => this.#change((s) => s.nudgePair(reSteps, imSteps)));
+  }
+
+  /** "" if `fn` ran, else its error's message (a refusal is an answer, not a failure). @param {() => void} fn */
+  #refusal(fn) {
+    try {
+      fn();
+      return '';
+    } catch (e) {
+      return e instanceof Error ? e.message : String(e);
+    }
+  }
+
   /** @param {string} which "whole" or "pair" */
   zView(which) {
     this.#change((s) => s.zView(which));

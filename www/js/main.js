@@ -21,6 +21,7 @@ import { wireTryButtons } from './explain.js';
 import { createClassroom } from './classroom.js';
 import { createFigure } from './figure.js';
 import { createRefresh } from './refresh.js';
+import { createDesign } from './design.js';
 import { installHooks } from './hooks.js';
 import { startRenderer } from './renderer.js';
 
@@ -88,9 +89,20 @@ async function main() {
   const { lesson, answers } = createClassroom({
     session, store, presets: wasm.presets(), guard, report, change, refresh: () => refresh(), touch, openSheet: sheet.open, showFigure, download,
   });
-  const figure = createFigure({ session, store, overlays, guard, report, change, scrubTo: transport.scrubTo, touch });
+  // The pair placed by hand: the session answers "" or why not; the status follows at once.
+  const placing = (/** @type {() => string} */ fn) => {
+    let why = '';
+    change(() => { why = fn(); });
+    refresh();
+    return why;
+  };
+  const design = createDesign({
+    place: (re, im) => placing(() => session.placePair(re, im)),
+    nudge: (re, im) => placing(() => session.nudgePair(re, im)),
+  });
+  const figure = createFigure({ session, store, overlays, guard, report, change, scrubTo: transport.scrubTo, touch, design });
   const refresh = createRefresh({
-    session, guard, status, transport, present, lesson, answers, timeline: transport.timeline, layout: figure.layout, openSheet: sheet.open,
+    session, guard, status, transport, present, lesson, answers, timeline: transport.timeline, layout: figure.layout, openSheet: sheet.open, design,
   });
   installHooks({ session, wasm, store, show: errors.show, status, controls: settings.controls, layout: figure.layout, figures: loop.figures });
 

@@ -22,11 +22,14 @@ export function wheelFactor(/** @type {{ deltaY: number, deltaMode: number }} */
  *   pickDelta: (delta: number) => void, showTip: (probe: any) => void, hideTip: () => void,
  *   timeAt: (x: number, y: number) => number | undefined, scrubTo: (t: number) => void,
  *   onZ: (x: number, y: number) => boolean, zoomZ: (x: number, y: number, factor: number) => boolean,
- *   panZ: (dx: number, dy: number) => boolean }} on
+ *   panZ: (dx: number, dy: number) => boolean, onHandle: (x: number, y: number, reach: number) => boolean,
+ *   placeAt: (x: number, y: number) => void, holdPoles: (hold: boolean) => void }} on
  */
 export function createPointer(on) {
   const canvas = byId('canvas');
   let pinned = false;
+  /** The pointer that is dragging the flexible pair on the pole plot, if any. */
+  let placing = /** @type {number | null} */ (null);
   /** The pointer that is dragging through time on an error plot, if any. */
   let scrubbing = /** @type {number | null} */ (null);
   /** Pointers pressed on the z-plane: where each is now and whether it has started dragging. */
@@ -51,6 +54,7 @@ export function createPointer(on) {
   function show(probe) {
     on.showTip(probe);
     canvas.classList.toggle('over-pole', probe.kind === 'pole');
+    canvas.classList.toggle('over-handle', last !== null && on.onHandle(last.x, last.y, REACH.mouse));
     canvas.classList.toggle('over-map', probe.kind === 'map' || probe.kind === 'rho');
   }
 
@@ -92,6 +96,20 @@ export function createPointer(on) {
     const { x, y } = at(ev);
     last = { x, y };
     if (zGesture(ev, x, y)) return;
+    // Pressing on the pair's diamond (a design one can place) picks it up; dragging places it.
+    if (ev.type === 'pointerdown' && ev.button === 0 && on.onHandle(x, y, touch ? REACH.touch : REACH.mouse)) {
+      placing = ev.pointerId;
+      on.holdPoles(true);
+      canvas.setPointerCapture(ev.pointerId);
+      hide();
+      canvas.classList.add('placing');
+      ev.preventDefault();
+      return;
+    }
+    if (placing === ev.pointerId) {
+      if (ev.type === 'pointermove') on.placeAt(x, y);
+      return;
+    }
     // Pressing on an error plot looks back at that instant; dragging moves through time.
     if (ev.type === 'pointerdown' && ev.button === 0) {
       const t = on.timeAt(x, y);
@@ -145,6 +163,11 @@ export function createPointer(on) {
 
   const endScrub = (/** @type {PointerEvent} */ ev) => {
     if (scrubbing === ev.pointerId) scrubbing = null;
+    if (placing === ev.pointerId) {
+      placing = null;
+      on.holdPoles(false);
+      canvas.classList.remove('placing');
+    }
     zPointers.delete(ev.pointerId);
   };
   /** The wheel over the z-plane zooms about the pointer (elsewhere the page scrolls). @param {WheelEvent} ev */

@@ -18,10 +18,11 @@ import { byId, setText } from './dom.js';
  *   lesson: ReturnType<typeof import('./lesson.js').createLesson>,
  *   answers: ReturnType<typeof import('./answers.js').createAnswers>,
  *   timeline: ReturnType<typeof import('./timeline.js').createTimeline>,
- *   layout: () => any, openSheet: (open: boolean) => void }} on
+ *   layout: () => any, openSheet: (open: boolean) => void,
+ *   design: ReturnType<typeof import('./design.js').createDesign> }} on
  * @returns {() => void} the refresh
  */
-export function createRefresh({ session, guard, status, transport, present, lesson, answers, timeline, layout, openSheet }) {
+export function createRefresh({ session, guard, status, transport, present, lesson, answers, timeline, layout, openSheet, design }) {
   const figureDescription = byId('figure-description');
   const zoomCaption = byId('zoom-caption');
   /** The open lesson's sheet has been opened once. */
@@ -29,7 +30,7 @@ export function createRefresh({ session, guard, status, transport, present, less
   return function refreshStatus() {
     // The clock the answers' record stamps a task with when the session sees it done.
     session.setWallClock(Date.now());
-    /** @type {Status & { figure: string, cycle: string } | null | undefined} */
+    /** @type {Status & { figure: string, cycle: string, design: import('./design.js').DesignStatus | null } | null | undefined} */
     const s = guard('Status', () => session.status(), null);
     if (!s) return;
     setText(figureDescription, s.figure);
@@ -42,6 +43,7 @@ export function createRefresh({ session, guard, status, transport, present, less
     }
     if (!s.lesson) lessonShown = false;
     status.render(s, performance.now());
+    design.render(s.design);
     transport.showFinished(s.runs.every((r) => r.finished));
     status.renderLegend(s, layout()?.series ?? []);
     present.render(s.runs, layout()?.series ?? []);

@@ -11,8 +11,21 @@ use crate::cli::{self, lib_error, Failure, Res};
 use crate::output::{describe_config, linear_verdict};
 
 /// The run settings the analysis depends on (friction compensation and the slew do not change ρ).
-pub const KEYS: &[&str] =
-    &["delta", "alpha", "alpha1", "alpha2", "pf", "twist_stiffness", "twist_damping", "inner", "k", "eps_ratio"];
+pub const KEYS: &[&str] = &[
+    "delta",
+    "alpha",
+    "alpha1",
+    "alpha2",
+    "pf",
+    "twist_stiffness",
+    "twist_damping",
+    "lq_q_twist",
+    "lq_q_rate",
+    "lq_r",
+    "inner",
+    "k",
+    "eps_ratio",
+];
 
 pub fn command() -> Command {
     cli::command("analyze", "The sampled loop linearized at rest: ρ, its eigenvalues, and the δ → 0 pair A4")
@@ -87,6 +100,9 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         v["inner"] = json!(config.inner_loop.name());
         v["twist_stiffness"] = json!(config.twist.stiffness);
         v["twist_damping"] = json!(config.twist.damping);
+        v["lq_q_twist"] = json!(config.lq.twist);
+        v["lq_q_rate"] = json!(config.lq.twist_rate);
+        v["lq_r"] = json!(config.lq.torque);
         v["preliminary_feedback"] = json!(config.preliminary_feedback.name());
         v["inner_loop"] = json!(config.inner_loop.name());
         // The whole arm under its schema keys (the text output names only what differs).

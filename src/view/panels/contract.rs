@@ -176,6 +176,9 @@ pub struct Frame {
     pub cycle: Cycle,
     /// Wall-clock seconds of the latest frame (the swing's animation).
     pub clock: f64,
+    /// The pole plot's Im s range held while the pair is dragged (its fit to the pair would
+    /// otherwise rescale the plot under the pointer); None: fitted.
+    pub pole_im_held: Option<[f64; 2]>,
 }
 
 impl Frame {

@@ -11,6 +11,7 @@
 //! layer). The analyses come with the runs (the session computes them once per change); the scene
 //! keeps a copy of the latest for its descriptions, updated only when it changes.
 
+mod handle;
 pub mod info;
 mod page;
 pub mod probe;
@@ -73,6 +74,7 @@ impl Scene {
                 cursor: None,
                 cycle: Cycle::new(),
                 clock: 0.0,
+                pole_im_held: None,
             },
             panels: Panels::default(),
             painter: Painter::new(),

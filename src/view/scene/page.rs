@@ -73,6 +73,17 @@ impl Scene {
         })
     }
 
+    /// [`Scene::pair_handle_at`] at a point of the page (CSS px).
+    pub fn page_pair_handle_at(&self, x: f64, y: f64, reach: f64) -> bool {
+        let s = self.scale;
+        self.pair_handle_at(x / s, y / s, reach / s)
+    }
+
+    /// [`Scene::pole_plot_point`] at a point of the page (CSS px).
+    pub fn page_pole_plot_point(&self, x: f64, y: f64) -> Option<[f64; 2]> {
+        self.pole_plot_point(x / self.scale, y / self.scale)
+    }
+
     /// [`Scene::time_at`] at a point of the page (CSS px).
     pub fn page_time_at(&self, x: f64, y: f64) -> Option<f64> {
         self.time_at(x / self.scale, y / self.scale)

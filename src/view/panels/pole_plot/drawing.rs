@@ -56,6 +56,13 @@ impl PoleFrame {
         self.rect.bottom() - self.rect.h * (im - self.im[0]) / (self.im[1] - self.im[0])
     }
 
+    /// The s = (Re, Im) at a pixel (not clamped): the inverse of [`Self::x`], [`Self::y`].
+    pub fn s_at(&self, x: f64, y: f64) -> [f64; 2] {
+        let re = self.re[0] + (x - self.rect.x) / self.rect.w * (self.re[1] - self.re[0]);
+        let im = self.im[0] + (self.rect.bottom() - y) / self.rect.h * (self.im[1] - self.im[0]);
+        [re, im]
+    }
+
     /// Where the marker of s goes: its pixel if inside the view (inset by `margin` pixels), else
     /// the nearest point of the inset view and the direction towards s.
     pub fn marker(&self, s: [f64; 2], margin: f64) -> (Point, Option<Point>) {

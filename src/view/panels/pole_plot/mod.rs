@@ -50,7 +50,10 @@ impl PolePlot {
     /// Its frame on `rect` (physical or CSS pixels): the Im s range fits the shown runs' flexible
     /// pairs.
     pub fn frame(frame: &Frame, rect: Rect) -> PoleFrame {
-        PoleFrame::fitting(rect, frame.reports())
+        match frame.pole_im_held {
+            Some(im) => PoleFrame { im, ..PoleFrame::fitting(rect, frame.reports()) },
+            None => PoleFrame::fitting(rect, frame.reports()),
+        }
     }
 }
 

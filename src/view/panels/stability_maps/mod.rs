@@ -9,6 +9,7 @@ use grid::{
     draw_map_marker, draw_map_static, map_ticks, side_of, LogFrame, MapSide, StabilityGrid, MARKER_VERTEX_BUDGET,
 };
 
+use crate::analysis::MapRows;
 use crate::control::config::PreliminaryFeedbackChoice;
 use crate::plot::{format, palette, Color};
 use crate::schema::PanelKind;
@@ -19,7 +20,20 @@ use crate::view::panel_info::{PanelInfo, Probe, Region, TipLine};
 use crate::view::panels::contract::{Frame, PanelView, Runs};
 use crate::view::rho_readout::stability_lines;
 use crate::view::tick_labels::log_labels;
-use crate::words::settings::{map_caption, point as point_text, with_feedback};
+use crate::words::settings::{design_point, map_caption, point as point_text, with_feedback};
+
+/// What the rows of a side's map are, given run A's feedback (α, or k_d on the design map).
+fn rows_of(frame: &Frame, side: MapSide) -> MapRows {
+    side.rows(frame.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default())
+}
+
+/// A configuration's place along a map's rows: its α, or its twist damping on the design map.
+fn row_value(config: &crate::control::config::SimulationConfig, rows: MapRows) -> f64 {
+    match rows {
+        MapRows::Alpha => config.controller.alpha[0],
+        MapRows::TwistDamping => config.twist.damping,
+    }
+}
 
 /// Least distance between log-axis labels, CSS px (x: a label's width, y: its height).
 const LOG_LABEL_SPACING: [f64; 2] = [38.0, 17.0];
@@ -115,10 +129,25 @@ impl PanelView for StabilityMaps {
         let Some(side) = side_of(panel.kind) else { return };
         let dpr = frame.layout.device_pixel_ratio;
         let map = self.log_frame(frame, panel, side);
-        // Run A's stable windows of δ at its α, on the map of its feedback.
+        let rows = rows_of(frame, side);
+        // The design map's boundary: above k_d* = 3β Ir1 − Bv1 the δ → 0 pair is damped.
+        if let (MapRows::TwistDamping, Some(config), Some(report)) =
+            (rows, &frame.runs[0].config, &frame.runs[0].report)
+        {
+            let needed = crate::analysis::design::damping_needed(&config.plant, report.resonance.real_part);
+            if needed > 0.0 {
+                let y = map.y_log(needed.ln());
+                if y >= map.rect.y && y <= map.rect.bottom() {
+                    let (a, b) = ([map.rect.x, y], [map.rect.right(), y]);
+                    painter.line(a, b, 4.0 * dpr, palette::MARKER_HALO);
+                    painter.dashed_line(a, b, 2.0 * dpr, 7.0 * dpr, 4.0 * dpr, palette::A4_FEEDBACK);
+                }
+            }
+        }
+        // Run A's stable windows of δ at its α (or k_d), on the map of its feedback.
         if let (Some(config), Some(windows)) = (&frame.runs[0].config, &frame.windows) {
             if MapSide::for_feedback(config.preliminary_feedback) == side {
-                let y = map.y_log(config.controller.alpha[0].ln());
+                let y = map.y_log(row_value(config, rows).ln());
                 if y >= map.rect.y && y <= map.rect.bottom() {
                     for [lo, hi] in &windows.windows {
                         let (x0, x1) = (map.x_log(lo.ln()), map.x_log(hi.ln()));
@@ -135,8 +164,8 @@ impl PanelView for StabilityMaps {
             let Some(config) = &frame.runs[run].config else { continue };
             let filled = MapSide::for_feedback(config.preliminary_feedback) == side;
             let color: Color = if run == 0 { palette::MAP_MARKER } else { palette::RUN_B };
-            let (delta, alpha) = (config.controller.sampling_period, config.controller.alpha[0]);
-            draw_map_marker(painter, &map, delta, alpha, filled, color, dpr);
+            let delta = config.controller.sampling_period;
+            draw_map_marker(painter, &map, delta, row_value(config, rows), filled, color, dpr);
         }
         painter.rect_outline(map.rect, dpr.max(1.0), palette::FRAME);
     }
@@ -147,8 +176,12 @@ impl PanelView for StabilityMaps {
         let side = side_of(panel.kind).unwrap_or(MapSide::Off);
         let grid = &self.grids[side.index()];
         let (x_ticks, y_ticks) = map_ticks(r, grid);
+        let rows = rows_of(frame, side);
         info.x_label = "δ [s]".into();
-        info.y_label = "α [1/s]";
+        info.y_label = match rows {
+            MapRows::Alpha => "α [1/s]",
+            MapRows::TwistDamping => "k_d [N m s/rad]",
+        };
         info.x_range = grid.delta_range();
         info.y_range = grid.alpha_range();
         info.x_labels = log_labels(&x_ticks, info.x_range, r.w, LOG_LABEL_SPACING[0]);
@@ -160,12 +193,16 @@ impl PanelView for StabilityMaps {
         let pf = frame.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
         info.note = map_caption(side, pf, frame.options.measure);
         info.region = Some(Region {
-            label: match side {
-                MapSide::Off => {
+            label: match (side, rows) {
+                (MapSide::On, MapRows::TwistDamping) => {
+                    "Design map: ρ over δ and your twist damping k_d at this α. Arrow keys move the running point: \
+                     left and right change δ, up and down k_d; Enter runs there."
+                }
+                (MapSide::Off, _) => {
                     "Stability map without K_pr. Arrow keys move the running point: left and right change δ, up and \
                      down α; Enter runs without K_pr."
                 }
-                MapSide::On => {
+                (MapSide::On, MapRows::Alpha) => {
                     "Stability map with K_pr. Arrow keys move the running point: left and right change δ, up and down \
                      α; Enter runs with K_pr."
                 }
@@ -181,13 +218,20 @@ impl PanelView for StabilityMaps {
             return None;
         }
         let (side, delta, alpha) = self.point_at(frame, x, y)?;
+        let rows = rows_of(frame, side);
         let (cell_delta, rho) = self.grids[side.index()].near(delta, alpha);
-        let mut lines = vec![TipLine::plain(point_text(delta, alpha))];
-        stability_lines(rho, cell_delta, &mut lines);
+        let spec = |p: &crate::schema::Param| *p.number().expect("δ, α and k_d are numbers");
+        let d = spec(&crate::schema::DELTA).snap(delta);
         let pf = frame.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
+        let mut lines = vec![];
+        match rows {
+            MapRows::Alpha => lines.push(TipLine::plain(point_text(delta, alpha))),
+            MapRows::TwistDamping => lines.push(TipLine::plain(design_point(delta, alpha))),
+        }
+        stability_lines(rho, cell_delta, &mut lines);
         // Where the paper's gains stop damping the resonance, the map says why it turns red.
         let limit = frame.runs[0].report.as_ref().map(|r| r.resonance.paper_alpha_limit);
-        if let (PreliminaryFeedbackChoice::Paper, Some(limit)) = (side.feedback(pf), limit) {
+        if let (PreliminaryFeedbackChoice::Paper, Some(limit), MapRows::Alpha) = (side.feedback(pf), limit, rows) {
             if alpha > limit {
                 lines.push(TipLine::plain(format!(
                     "above α = {} 1/s the paper's K_pr leaves the δ → 0 pair unstable: at this α the smallest δ fail; its \
@@ -198,13 +242,18 @@ impl PanelView for StabilityMaps {
         }
         // What a click runs: the point rounded as the controls round it (the session snaps the
         // same way), beside the map cell's ρ above.
-        let spec = |p: &crate::schema::Param| *p.number().expect("δ and α are numbers");
-        let (d, a) = (spec(&crate::schema::DELTA).snap(delta), spec(&crate::schema::ALPHA).snap(alpha));
-        lines.push(TipLine::plain(format!(
-            "click to run at δ = {} s, α = {} 1/s",
-            crate::schema::format_number(d),
-            crate::schema::format_number(a)
-        )));
+        lines.push(TipLine::plain(match rows {
+            MapRows::Alpha => format!(
+                "click to run at δ = {} s, α = {} 1/s",
+                crate::schema::format_number(d),
+                crate::schema::format_number(spec(&crate::schema::ALPHA).snap(alpha))
+            ),
+            MapRows::TwistDamping => format!(
+                "click to run at δ = {} s, k_d = {} N m s/rad",
+                crate::schema::format_number(d),
+                crate::schema::format_number(spec(&crate::schema::TWIST_DAMPING).snap(alpha))
+            ),
+        }));
         let title = with_feedback(side.feedback(pf));
         Some(Probe { kind: "map", title, lines, x, y, map: Some(side), delta: Some(delta), alpha: Some(alpha) })
     }
@@ -225,6 +274,13 @@ impl PanelView for StabilityMaps {
         ];
         if frame.pair {
             items.push(item(Glyph::Ring, palette::RUN_B, "run B's (δ, α)"));
+        }
+        if kinds.iter().any(|&k| side_of(k).is_some_and(|s| rows_of(frame, s) == MapRows::TwistDamping)) {
+            items.push(item(
+                Glyph::Dashed,
+                palette::A4_FEEDBACK,
+                "design map: k_d = 3α I_r1 − B_v1; above it every small δ works (analog, δ → 0)",
+            ));
         }
         vec![LegendGroup { title: "stability maps", items, scale: Some(map_scale(frame.options.measure)) }]
     }
