@@ -253,3 +253,56 @@ fn the_readme_says_what_the_lq_weights_do() {
     let text = format!("from {} to {} s", sampled(&paper.settings().a.config()), sampled(&c));
     assert!(readme.contains(&pair) && readme.contains(&text), "README lacks {pair} or {text}");
 }
+
+/// The damping window of the twist damper, k_d* = 3β Ir1 − Bv1 < k_d < the det A4 = 0 bound, is
+/// where the numerical δ → 0 pair is stable, over arms, α and k_p: 2 % inside each bound it is,
+/// 2 % outside it is not. The lesson and the README quote the bounds on the paper's arm.
+#[test]
+fn the_damping_window_is_where_the_numerical_pair_is_stable() {
+    use flexarm::analysis::{limit_pair, linearize_at_rest};
+    let stable = |plant: &PlantParameters, alpha: f64, kp: f64, kd: f64| {
+        let model = linearize_at_rest(plant, [alpha, alpha], [0.5 * std::f64::consts::PI, 0.0]);
+        limit_pair(&model, &twist_gain(kp, kd)).unwrap().eigenvalues.iter().all(|l| l.re < 0.0)
+    };
+    let mut seed = 7u64;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % 10_000) as f64 / 10_000.0
+    };
+    let base = PlantParameters::default();
+    for _ in 0..40 {
+        let scale = |u: f64| 3f64.powf(2.0 * u - 1.0);
+        let plant = PlantParameters { k1: base.k1 * scale(next()), ir1: base.ir1 * scale(next()), ..base };
+        let alpha = 0.5 + 4.5 * next();
+        let kp = 300.0 * next();
+        let w = DampingWindow::of(&plant, [alpha, alpha], 0.0, kp);
+        let upper = w.upper.expect("α > 0 feeds the resonance");
+        if w.lower > 0.0 {
+            assert!(!stable(&plant, alpha, kp, 0.98 * w.lower) && stable(&plant, alpha, kp, 1.02 * w.lower), "{w:?}");
+        }
+        assert!(stable(&plant, alpha, kp, 0.98 * upper) && !stable(&plant, alpha, kp, 1.02 * upper), "{w:?}");
+    }
+    let at5 = DampingWindow::of(&base, [5.0, 5.0], 0.0, 0.0);
+    let at2 = DampingWindow::of(&base, [2.0, 2.0], 0.0, 0.0);
+    assert_eq!(format!("{:.1} {:.0} {:.0}", at5.lower, at5.upper.unwrap(), at2.upper.unwrap()), "27.7 129 285");
+}
+
+/// More damping is not always more torque: the README's counter-examples, computed.
+#[test]
+fn more_damping_is_not_always_more_torque() {
+    let rms = |k1_scale: f64, alpha: f64, kd: f64| {
+        let mut c = twist_config(kd);
+        c.plant.k1 *= k1_scale;
+        c.controller.alpha = [alpha, alpha];
+        torque_price(&c).unwrap().poke.rms[0]
+    };
+    let (near_edge, inside) = (rms(1.0, 5.0, 30.0), rms(1.0, 5.0, 60.0));
+    assert!(near_edge > inside, "α = 5: k_d 30 → {near_edge}, 60 → {inside}");
+    let readme = include_str!("../README.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    let said = format!("at α = 5: {near_edge:.1} N m at k_d = 30, {inside:.1} at 60");
+    assert!(readme.contains(&said), "README lacks '{said}'");
+    let (a, b) = (rms(4.0, 5.0, 60.0), rms(4.0, 5.0, 80.0));
+    assert!(b < a, "the stiffer arm at α = 5: k_d 60 → {a}, 80 → {b}");
+}

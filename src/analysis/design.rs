@@ -101,10 +101,32 @@ pub fn small_delta_cured(windows: &StableWindows) -> bool {
     windows.windows.first().is_some_and(|w| w[0] <= windows.range[0])
 }
 
-/// The twist damping that puts the δ → 0 pair on the imaginary axis, k_d* = 3β Ir1 − Bv1 =
-/// 2 Ir1 Re A4 (A4 without feedback, `open_real_part`): more damps it.
-pub fn damping_needed(plant: &PlantParameters, open_real_part: f64) -> f64 {
-    2.0 * plant.ir1 * open_real_part
+/// The twist damping that keeps the δ → 0 pair stable for a twist stiffness k_p, N m s/rad: above
+/// k_d* = 3β Ir1 − Bv1 (tr A4 < 0: the pair damped) and, while the controller feeds the resonance
+/// (3β > 0), below the damping at which det A4 = 0 — beyond it the motor no longer swings against
+/// link 1 and a slow real mode grows. A stiffer twist spring raises that upper bound:
+/// det A4 = a00 (a11 − k_d/Ir1) − a01 (a10 − k_p/Ir1).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct DampingWindow {
+    pub lower: f64,
+    /// None where the controller drains the resonance (3β ≤ 0): no upper bound.
+    pub upper: Option<f64>,
+}
+
+impl DampingWindow {
+    pub fn of(plant: &PlantParameters, alpha: [f64; 2], q2: f64, stiffness: f64) -> Self {
+        let a = JointResonance::new(plant, alpha, q2).a4;
+        let ir1 = plant.ir1;
+        let lower = ir1 * a.trace();
+        let upper =
+            (a[(0, 0)] > 0.0).then(|| ir1 * (a[(1, 1)] - a[(0, 1)] * (a[(1, 0)] - stiffness / ir1) / a[(0, 0)]));
+        Self { lower, upper }
+    }
+
+    /// True when k_d lies in the window.
+    pub fn contains(&self, damping: f64) -> bool {
+        damping > self.lower && self.upper.is_none_or(|u| damping < u)
+    }
 }
 
 /// Whether a preliminary feedback choice is a design the page lets one place by hand.

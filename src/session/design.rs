@@ -17,7 +17,7 @@ use crate::words::design::DesignStatus;
 /// Significant digits of the gains a placement writes.
 pub const GAIN_DIGITS: u32 = 4;
 
-/// How far one arrow-key step moves the pair's target: Re s by this (1/s), Im s by ten times it.
+/// How far one arrow-key step moves the pair's target: Re s by this (1/s), Im s by twice it (rad/s).
 pub const TARGET_STEP: f64 = 0.5;
 
 impl Session {
@@ -68,7 +68,7 @@ impl Session {
         Some(crate::words::design::status(
             config.preliminary_feedback,
             config.inner_loop,
-            report.limit_pair[0],
+            report.limit_pair,
             price,
             torque,
             &twist_parts(&gain),
@@ -96,10 +96,10 @@ impl Session {
     }
 
     /// Moves the pair's target by arrow-key steps: `re_steps` of [`TARGET_STEP`] along Re s,
-    /// `im_steps` of ten times that along Im s (the keyboard's drag).
+    /// `im_steps` of twice that along Im s (the keyboard's drag).
     pub fn nudge_pair(&mut self, re_steps: i32, im_steps: i32) -> Result<(), Error> {
         let [re, im] = self.a.analysis().report().ok_or(Error::NotReady("the analysis is not ready"))?.limit_pair[0];
         let step = TARGET_STEP;
-        self.place_pair(re + f64::from(re_steps) * step, im.abs() + f64::from(im_steps) * 10.0 * step)
+        self.place_pair(re + f64::from(re_steps) * step, im.abs() + f64::from(im_steps) * 2.0 * step)
     }
 }

@@ -38,13 +38,17 @@ fn t1(f: &TorqueFigures) -> String {
     format!("peak {} N m, RMS {} N m", significant_trimmed(f.peak[0], 3), significant_trimmed(f.rms[0], 3))
 }
 
-/// The motor torque T1 a design takes: during the slew and in the swing after a poke.
-pub fn torque(price: &TorquePrice) -> String {
+/// The motor torque T1 a design takes with the run's inner loop (`inner`: "analog", "sampled"):
+/// during the slew and in the swing after a poke.
+pub fn torque(price: &TorquePrice, inner: &str) -> String {
     let (poke, duration) = POKE;
-    let diverged = if price.diverged { " — the run diverged first: these are its figures up to then" } else { "" };
+    let head = format!("Motor torque T1 (this run's {inner} inner loop) during the slew: {}", t1(&price.slew));
+    if price.diverged && price.poke.peak == [0.0; 2] {
+        return format!("{head}; the run diverged before the poke.");
+    }
+    let diverged = if price.diverged { " — the run diverged: these are its figures up to then" } else { "" };
     format!(
-        "Motor torque T1 during the slew: {}; in the {} s after a poke ({} N m for {} s): {}{diverged}.",
-        t1(&price.slew),
+        "{head}; in the {} s after a poke ({} N m for {} s): {}{diverged}.",
         significant_trimmed(SWING, 2),
         significant_trimmed(poke[0], 3),
         significant_trimmed(duration, 2),
@@ -71,8 +75,8 @@ fn inner_line(name: &str, w: &crate::analysis::StableWindows) -> String {
 pub fn parts(p: &TwistParts) -> String {
     let term = |v: f64, what: &str| format!("{} {what}", minus(&significant_trimmed(v, 4)));
     format!(
-        "Its T1 row is {} + {} + a rest of at most {} per state (T2's: {} + {} + …): mostly a spring and a damper \
-         between motor and link 1.",
+        "Its T1 row is {} + {} + a rest of at most {} (N m per rad or rad/s) per state (T2's: {} + {} + …): mostly a \
+         spring and a damper between motor and link 1.",
         term(p.t1[0], "(q1 − θ)"),
         term(p.t1[1], "(q̇1 − θ̇)"),
         significant_trimmed(p.rest, 2),
@@ -86,31 +90,43 @@ pub fn parts(p: &TwistParts) -> String {
 pub fn status(
     pf: crate::control::config::PreliminaryFeedbackChoice,
     inner: InnerLoop,
-    pair: [f64; 2],
+    pair: [[f64; 2]; 2],
     price: &DigitalPrice,
     torque_price: Option<&TorquePrice>,
     gain_parts: &TwistParts,
 ) -> DesignStatus {
-    let [re, im] = pair;
-    let says = if re < 0.0 { "damped" } else { "growing: small δ fail" };
+    let [re, im] = pair[0];
+    let [re2, _] = pair[1];
+    let says = if re.max(re2) < 0.0 { "damped" } else { "growing: small δ fail" };
+    // An overdamped pair is two real modes: name both (the slower one decides).
+    let shown = if im.abs() > 1e-9 {
+        complex_pair(re, im.abs())
+    } else {
+        minus(&format!("{:.2} and {:.2} 1/s, two real modes: no swing", re.max(re2), re.min(re2)))
+    };
     DesignStatus {
-        pair: format!("A4 with {}: {} ({says})", feedback_short(pf), complex_pair(re, im.abs())),
+        pair: format!("A4 with {}: {shown} ({says})", feedback_short(pf)),
         target: [re, im.abs()],
         placeable: crate::analysis::design::placeable(pf),
         analog: inner_line("Analog inner loop (Kₚᵣ x at every instant)", &price.analog),
         sampled: inner_line("Sampled inner loop (Kₚᵣ x held over δ, as a computer applies it)", &price.sampled),
         delta_max: [largest_stable_delta(&price.analog), largest_stable_delta(&price.sampled)],
-        inner: match inner {
-            InnerLoop::Continuous => "analog",
-            InnerLoop::Sampled => "sampled",
-        },
-        torque: torque_price.map_or_else(String::new, torque),
+        inner: inner_name(inner),
+        torque: torque_price.map_or_else(String::new, |t| torque(t, inner_name(inner))),
         // The twist feedback is its own parts; no feedback has none.
         parts: match pf {
             crate::control::config::PreliminaryFeedbackChoice::Paper
             | crate::control::config::PreliminaryFeedbackChoice::Lq => parts(gain_parts),
             _ => String::new(),
         },
+    }
+}
+
+/// "analog" or "sampled".
+fn inner_name(inner: InnerLoop) -> &'static str {
+    match inner {
+        InnerLoop::Continuous => "analog",
+        InnerLoop::Sampled => "sampled",
     }
 }
 
@@ -131,7 +147,12 @@ pub fn unplaceable(u: &Unplaceable) -> String {
             significant_trimmed(norm_min, 4)
         ),
         Unplaceable::BeyondRange { key, value, max } => {
-            format!("it would take {key} = {} (at most {})", significant_trimmed(value, 4), significant_trimmed(max, 4))
+            let (symbol, unit) = crate::schema::param(key).map_or((key, ""), |p| (p.symbol, p.unit));
+            format!(
+                "it would take {symbol} = {} {unit} (at most {} {unit})",
+                significant_trimmed(value, 4),
+                significant_trimmed(max, 4)
+            )
         }
     }
 }

@@ -341,18 +341,31 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
                 (false, false) => "",
             };
             if pf == crate::control::config::PreliminaryFeedbackChoice::Twist {
-                // Re A4 = 3β/2 − (Bv1 + k_d)/(2 Ir1): the damper needs k_d > 3β Ir1 − Bv1.
-                let needed = 2.0 * plant.ir1 * (r.controller_feed - r.motor_damping);
+                // Re A4 = 3β/2 − (Bv1 + k_d)/(2 I_r1): damped for k_d > 3β Ir1 − Bv1, and below the
+                // damping at which the motor stops swinging (det A4 = 0).
+                let window = crate::analysis::design::DampingWindow::of(
+                    plant,
+                    config.controller.alpha,
+                    q2,
+                    config.twist.stiffness,
+                );
                 let three = if a1 == a2 { "3α" } else { "3β" };
+                let upper = window.upper.map_or(String::new(), |u| {
+                    format!(
+                        " and below {} N m s/rad, beyond which the motor no longer swings and a slow real mode grows (a \
+                         stiffer twist spring k_p raises this bound)",
+                        significant_trimmed(u, 3)
+                    )
+                });
                 format!(
                     "Your twist damper ({}) adds −k_d/(2 Ir1) = {} to Re A4, whatever α, beside the controller's feed \
-                     {three}/2 = {} and the motor's own −Bv1/(2 Ir1) = {}: as δ → 0 the pair is damped once \
-                     k_d > {three} Ir1 − Bv1 = {} N m s/rad.",
+                     {three}/2 = {} and the motor's own −Bv1/(2 Ir1) = {}: as δ → 0 the pair is damped for \
+                     k_d > {three} Ir1 − Bv1 = {} N m s/rad{upper}.",
                     crate::words::settings::twist_gains(config),
                     per_second(r.feedback_shift),
                     per_second(r.controller_feed),
                     per_second(-r.motor_damping),
-                    significant_trimmed(needed, 3)
+                    significant_trimmed(window.lower, 3)
                 )
             } else if differs.is_empty() || pf != crate::control::config::PreliminaryFeedbackChoice::Paper {
                 String::new()

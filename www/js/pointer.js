@@ -37,7 +37,7 @@ export function createPointer(on) {
   /** The pointer's latest position over the figure (for the zoom keys), or null once it left. */
   let last = /** @type {{ x: number, y: number } | null} */ (null);
 
-  /** @param {PointerEvent | MouseEvent} ev */
+  /** @param {PointerEvent | MouseEvent | Touch} ev */
   const at = (ev) => {
     const r = canvas.getBoundingClientRect();
     return { x: ev.clientX - r.left, y: ev.clientY - r.top };
@@ -193,6 +193,15 @@ export function createPointer(on) {
   }
   attach(canvas);
   canvas.addEventListener('click', onClick);
+  // A finger on the pair's diamond drags it: the page must not scroll instead (a pointer event's
+  // preventDefault cannot stop that; a touchstart's can).
+  canvas.addEventListener('touchstart', (ev) => {
+    const t = ev.touches[0];
+    if (ev.touches.length === 1 && t) {
+      const { x, y } = at(t);
+      if (on.onHandle(x, y, REACH.touch)) ev.preventDefault();
+    }
+  }, { passive: false });
   document.addEventListener('pointerdown', (ev) => {
     if (pinned && ev.target !== canvas && !(ev.target instanceof Element && ev.target.closest('.panel-focus'))) hide();
   });

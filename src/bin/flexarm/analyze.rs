@@ -11,21 +11,7 @@ use crate::cli::{self, lib_error, Failure, Res};
 use crate::output::{describe_config, linear_verdict};
 
 /// The run settings the analysis depends on (friction compensation and the slew do not change ρ).
-pub const KEYS: &[&str] = &[
-    "delta",
-    "alpha",
-    "alpha1",
-    "alpha2",
-    "pf",
-    "twist_stiffness",
-    "twist_damping",
-    "lq_q_twist",
-    "lq_q_rate",
-    "lq_r",
-    "inner",
-    "k",
-    "eps_ratio",
-];
+pub const KEYS: &[&str] = &["delta", "alpha", "alpha1", "alpha2", "pf", "inner", "k", "eps_ratio"];
 
 pub fn command() -> Command {
     cli::command("analyze", "The sampled loop linearized at rest: ρ, its eigenvalues, and the δ → 0 pair A4")
@@ -83,7 +69,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let design = words::design::status(
         config.preliminary_feedback,
         config.inner_loop,
-        report.limit_pair[0],
+        report.limit_pair,
         &price,
         Some(&torque),
         &flexarm::control::feedback::twist_parts(&gain),

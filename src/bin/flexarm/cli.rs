@@ -85,8 +85,26 @@ pub fn param_arg(p: &'static Param) -> Arg {
 
 /// The flags of these run parameters, `--arm`, the arm's own and `--model` (every command that runs or
 /// analyses the loop takes them), and `--state`.
+/// The settings of the preliminary feedback's own design (the twist gains, the LQ weights): a
+/// command that takes `pf` takes them too, so a new one is added here once.
+const FEEDBACK_DESIGN: &[&str] = &["twist_stiffness", "twist_damping", "lq_q_twist", "lq_q_rate", "lq_r"];
+
+/// `keys` with the feedback's design settings after `pf`.
+fn with_design(keys: &[&str]) -> Vec<&'static str> {
+    let mut out = Vec::new();
+    for k in keys {
+        if let Some(p) = schema::param(k) {
+            out.push(p.key);
+            if p.key == schema::PF.key {
+                out.extend_from_slice(FEEDBACK_DESIGN);
+            }
+        }
+    }
+    out
+}
+
 pub fn run_args(keys: &[&str]) -> Vec<Arg> {
-    let mut args: Vec<Arg> = keys.iter().filter_map(|k| schema::param(k)).map(param_arg).collect();
+    let mut args: Vec<Arg> = with_design(keys).into_iter().filter_map(schema::param).map(param_arg).collect();
     let arms: Vec<&str> = flexarm::session::ARMS.iter().map(|a| a.id).collect();
     args.push(option(
         "arm",
@@ -113,6 +131,7 @@ pub fn run_args(keys: &[&str]) -> Vec<Arg> {
 /// The settings of a command: the CLI's defaults, then `--state`, then each flag (in the schema's
 /// order, so `--alpha` comes before `--alpha1`/`--alpha2`).
 pub fn read_settings(m: &ArgMatches, keys: &[&str]) -> Res<Settings> {
+    let keys = &with_design(keys)[..];
     let mut settings = Settings::default();
     if let Some(state) = m.get_one::<String>("state") {
         settings.read(state, Source::CommandLine).map_err(|e| usage_error(format!("--state: {}", lib_error(e).0)))?;

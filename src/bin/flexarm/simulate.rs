@@ -18,24 +18,8 @@ use crate::long_work::{self, Progress, TraceSinks};
 use crate::output::{delta_alpha_text, describe_config, linear_verdict, verdict_text};
 
 /// The run settings `simulate` takes.
-pub const KEYS: &[&str] = &[
-    "delta",
-    "alpha",
-    "alpha1",
-    "alpha2",
-    "pf",
-    "twist_stiffness",
-    "twist_damping",
-    "lq_q_twist",
-    "lq_q_rate",
-    "lq_r",
-    "friction",
-    "inner",
-    "rest",
-    "repeat",
-    "k",
-    "eps_ratio",
-];
+pub const KEYS: &[&str] =
+    &["delta", "alpha", "alpha1", "alpha2", "pf", "friction", "inner", "rest", "repeat", "k", "eps_ratio"];
 
 pub fn command() -> Command {
     cli::command("simulate", "Run the closed loop from rest along the slew and summarize it")

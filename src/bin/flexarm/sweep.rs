@@ -14,19 +14,7 @@ use flexarm::analysis::judgement::judge;
 use flexarm::words::judgement::judgement as in_words;
 
 /// The run settings `sweep` takes besides its lists of δ and α.
-pub const KEYS: &[&str] = &[
-    "pf",
-    "twist_stiffness",
-    "twist_damping",
-    "lq_q_twist",
-    "lq_q_rate",
-    "lq_r",
-    "friction",
-    "inner",
-    "repeat",
-    "k",
-    "eps_ratio",
-];
+pub const KEYS: &[&str] = &["pf", "friction", "inner", "repeat", "k", "eps_ratio"];
 
 /// Flags of other commands, and what `sweep` has instead.
 const REDIRECTS: &[(&str, &str)] = &[("alpha1", "--alpha LIST (α1 = α2)"), ("alpha2", "--alpha LIST (α1 = α2)")];

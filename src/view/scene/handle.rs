@@ -9,16 +9,16 @@ use crate::view::loop_poles::PoleKind;
 use crate::view::panels::pole_plot::PolePlot;
 
 impl Scene {
-    /// True when run A's A4-with-K_pr marker (either of the pair) is within `reach` px of (x, y)
-    /// on the s-plane pole plot (CSS px of the layout).
+    /// True when run A's A4-with-K_pr marker (either of the pair, or its chevron at the edge when
+    /// out of view) is within `reach` px of (x, y) on the s-plane pole plot (CSS px of the layout).
     pub fn pair_handle_at(&self, x: f64, y: f64, reach: f64) -> bool {
         if !self.frame.layout.panels.iter().any(|p| p.kind == PanelKind::Poles) {
             return false;
         }
         self.pole_info().iter().any(|p| {
+            // Out of view it is the chevron at the plot's edge: still the handle.
             p.run == "A"
                 && p.kind == PoleKind::A4
-                && p.in_view
                 && matches!((p.x, p.y), (Some(px), Some(py)) if (px - x).hypot(py - y) <= reach)
         })
     }

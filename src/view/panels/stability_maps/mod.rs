@@ -130,13 +130,19 @@ impl PanelView for StabilityMaps {
         let dpr = frame.layout.device_pixel_ratio;
         let map = self.log_frame(frame, panel, side);
         let rows = rows_of(frame, side);
-        // The design map's boundary: above k_d* = 3β Ir1 − Bv1 the δ → 0 pair is damped.
+        // The design map's boundaries: between k_d* = 3β Ir1 − Bv1 and the damping at which the
+        // motor stops swinging (det A4 = 0) the δ → 0 pair is damped.
         if let (MapRows::TwistDamping, Some(config), Some(report)) =
             (rows, &frame.runs[0].config, &frame.runs[0].report)
         {
-            let needed = crate::analysis::design::damping_needed(&config.plant, report.resonance.real_part);
-            if needed > 0.0 {
-                let y = map.y_log(needed.ln());
+            let window = crate::analysis::design::DampingWindow::of(
+                &config.plant,
+                config.controller.alpha,
+                report.rest[1],
+                config.twist.stiffness,
+            );
+            for bound in [Some(window.lower), window.upper].into_iter().flatten().filter(|b| *b > 0.0) {
+                let y = map.y_log(bound.ln());
                 if y >= map.rect.y && y <= map.rect.bottom() {
                     let (a, b) = ([map.rect.x, y], [map.rect.right(), y]);
                     painter.line(a, b, 4.0 * dpr, palette::MARKER_HALO);
@@ -279,7 +285,8 @@ impl PanelView for StabilityMaps {
             items.push(item(
                 Glyph::Dashed,
                 palette::A4_FEEDBACK,
-                "design map: k_d = 3α I_r1 − B_v1; above it every small δ works (analog, δ → 0)",
+                "design map: the δ → 0 pair is damped between the dashed lines, k_d = 3α I_r1 − B_v1 and where the motor \
+                 stops swinging (a slow real mode grows above it)",
             ));
         }
         vec![LegendGroup { title: "stability maps", items, scale: Some(map_scale(frame.options.measure)) }]
