@@ -14,10 +14,12 @@ use flexarm::*;
 use nalgebra::Complex;
 
 fn twist_config(kd: f64) -> SimulationConfig {
-    let mut c = SimulationConfig::default();
-    c.preliminary_feedback = PreliminaryFeedbackChoice::Twist;
-    c.twist.damping = kd;
-    c
+    let base = SimulationConfig::default();
+    SimulationConfig {
+        preliminary_feedback: PreliminaryFeedbackChoice::Twist,
+        twist: flexarm::control::config::TwistFeedback { damping: kd, ..base.twist },
+        ..base
+    }
 }
 
 /// Placed targets read back from the closed form; those no gains in range reach are refused, with
@@ -167,10 +169,14 @@ mod session {
             let d = s.design_status().unwrap();
             let i = usize::from(inner == "sampled");
             assert_eq!(d.delta_max[i], largest_stable_delta(&w));
-            assert!(d.torque.is_empty(), "the torque waits for the settings to rest");
+            assert!(d.torque.is_empty() && d.delta_max[1 - i].is_none(), "the rest waits for the settings to rest");
             s.refresh();
             let d = s.design_status().unwrap();
             assert!(d.torque.contains("after a poke"), "{}", d.torque);
+            // Both lines now, each the windows of its own inner loop.
+            let other = if inner == "sampled" { "continuous" } else { "sampled" };
+            let mut t = open(&format!("pf=twist&twist_damping=40&inner={other}"));
+            assert_eq!(d.delta_max[1 - i], largest_stable_delta(t.windows().unwrap()));
         }
         assert!(open("pf=off").design_status().is_none());
         let paper = open("pf=paper");

@@ -1,13 +1,15 @@
 //! Run A's preliminary feedback as a design: placing its δ → 0 pair by hand (the handle on the
 //! pole plot, the arrow keys) writes the twist gains into the settings — the one source of truth —
-//! and the design's price is computed on demand: the windows of δ analog and sampled with the
-//! status (a few milliseconds), the torque once the settings have rested for a status refresh
-//! (a simulated slew and poke, which a drag would otherwise repeat at every move).
+//! and the design's price is computed on demand: the windows of δ with run A's own inner loop are
+//! the session's (with the status); those with the other inner loop and the torque (a simulated
+//! slew and poke) once the settings have rested for a status refresh, which a drag would
+//! otherwise pay for at every move.
 
 use nalgebra::Complex;
 
 use super::*;
-use crate::analysis::design::{place_twist, DigitalPrice};
+use crate::analysis::design::place_twist;
+use crate::control::config::InnerLoop;
 
 use crate::control::config::TwistFeedback;
 use crate::control::feedback::{resolve_gain, twist_parts};
@@ -21,44 +23,58 @@ pub const GAIN_DIGITS: u32 = 4;
 pub const TARGET_STEP: f64 = 0.5;
 
 impl Session {
-    /// Run A's design key: what the windows analog and sampled depend on.
-    fn design_key(&self) -> LinearSettings {
+    /// The linear settings of run A with the other inner loop, δ normalized away: what the other
+    /// line of the price depends on.
+    fn other_loop(&self) -> LinearSettings {
         let mut key = self.linear_settings().at(0.0, self.settings.a.alpha);
-        key.inner_loop = crate::control::config::InnerLoop::Continuous;
+        key.inner_loop = match key.inner_loop {
+            InnerLoop::Continuous => InnerLoop::Sampled,
+            InnerLoop::Sampled => InnerLoop::Continuous,
+        };
         key
     }
 
-    /// Brings the design's price up to date (with the status; see the module's note).
+    /// Brings the design's price up to date (with the status; see the module's note): run A's own
+    /// windows are the session's; the other inner loop's and the torque follow once the settings
+    /// have stayed the same for one refresh, so that a drag pays for one scan of δ per move.
     pub(super) fn refresh_design(&mut self) {
         if self.settings.a.pf == PreliminaryFeedbackChoice::Off {
             return;
         }
-        let key = self.design_key();
-        if self.design.price_key != Some(key) {
-            let range = schema::DELTA.number().expect("δ is a number").control;
-            let price = DigitalPrice::of(&self.linear_settings(), range).map_err(|e| e.to_string());
-            self.design.price_key = Some(key);
-            self.design.price = Some(price);
-        }
         let config = self.settings.a.config();
-        if self.design.seen == Some(config) && self.design.torque_key != Some(config) {
-            self.design.torque = Some(torque_price(&config).map_err(|e| e.to_string()));
-            self.design.torque_key = Some(config);
+        if self.design.seen == Some(config) {
+            let key = self.other_loop();
+            if self.design.other_key != Some(key) {
+                let range = schema::DELTA.number().expect("δ is a number").control;
+                let mut settings = self.linear_settings();
+                settings.inner_loop = key.inner_loop;
+                self.design.other = Some(stable_windows(&settings, range).map_err(|e| e.to_string()));
+                self.design.other_key = Some(key);
+            }
+            if self.design.torque_key != Some(config) {
+                self.design.torque = Some(torque_price(&config).map_err(|e| e.to_string()));
+                self.design.torque_key = Some(config);
+            }
         }
         self.design.seen = Some(config);
     }
 
-    /// The design as the page shows it (None without preliminary feedback, while the answers are
-    /// hidden, or before the price is computed).
+    /// The design as the page shows it (None without preliminary feedback, while the answers or
+    /// the windows are hidden, or before run A's windows are computed).
     pub fn design_status(&self) -> Option<DesignStatus> {
-        if self.answers_hidden() || self.settings.a.pf == PreliminaryFeedbackChoice::Off {
+        if self.settings.a.pf == PreliminaryFeedbackChoice::Off {
             return None;
         }
-        let price = match (&self.design.price_key, &self.design.price) {
-            (Some(k), Some(Ok(p))) if *k == self.design_key() => p,
-            _ => return None,
+        let own = self.cached_windows()?;
+        let other = match (&self.design.other_key, &self.design.other) {
+            (Some(k), Some(Ok(w))) if *k == self.other_loop() => Some(w),
+            _ => None,
         };
         let config = self.settings.a.config();
+        let (analog, sampled) = match config.inner_loop {
+            InnerLoop::Continuous => (Some(own), other),
+            InnerLoop::Sampled => (other, Some(own)),
+        };
         let torque = match (&self.design.torque_key, &self.design.torque) {
             (Some(k), Some(Ok(t))) if *k == config => Some(t),
             _ => None,
@@ -69,7 +85,7 @@ impl Session {
             config.preliminary_feedback,
             config.inner_loop,
             report.limit_pair,
-            price,
+            [analog, sampled],
             torque,
             &twist_parts(&gain),
         ))

@@ -6,7 +6,8 @@ use serde::Serialize;
 
 use super::numbers::{complex_pair, per_second};
 use super::settings::{feedback_short, windows};
-use crate::analysis::design::{largest_stable_delta, small_delta_cured, DigitalPrice, Unplaceable};
+use crate::analysis::design::{largest_stable_delta, small_delta_cured, Unplaceable};
+use crate::analysis::StableWindows;
 use crate::control::config::InnerLoop;
 use crate::control::feedback::TwistParts;
 use crate::control::price::{TorqueFigures, TorquePrice, POKE, SWING};
@@ -58,7 +59,8 @@ pub fn torque(price: &TorquePrice, inner: &str) -> String {
 
 /// One inner loop's windows with its largest stable δ: "Analog inner loop (K_pr at every instant):
 /// stable only for δ < 0.2160 s — every small δ works".
-fn inner_line(name: &str, w: &crate::analysis::StableWindows) -> String {
+fn inner_line(name: &str, w: Option<&StableWindows>) -> String {
+    let Some(w) = w else { return format!("{name}: computed once the settings rest…") };
     let cure = if small_delta_cured(w) { " — every small δ works" } else { " — small δ fail" };
     let max = match largest_stable_delta(w) {
         Some(d) if d >= w.range[1] => format!("; it never fails up to {} s", w.range[1]),
@@ -86,12 +88,13 @@ pub fn parts(p: &TwistParts) -> String {
 }
 
 /// The design status from its facts: the δ → 0 pair with the feedback, the windows of both inner
-/// loops, the torque (None while computed) and the gain's parts.
+/// loops (analog, sampled; None while computed), the torque (None while computed) and the gain's
+/// parts.
 pub fn status(
     pf: crate::control::config::PreliminaryFeedbackChoice,
     inner: InnerLoop,
     pair: [[f64; 2]; 2],
-    price: &DigitalPrice,
+    windows: [Option<&StableWindows>; 2],
     torque_price: Option<&TorquePrice>,
     gain_parts: &TwistParts,
 ) -> DesignStatus {
@@ -108,9 +111,9 @@ pub fn status(
         pair: format!("A4 with {}: {shown} ({says})", feedback_short(pf)),
         target: [re, im.abs()],
         placeable: crate::analysis::design::placeable(pf),
-        analog: inner_line("Analog inner loop (Kₚᵣ x at every instant)", &price.analog),
-        sampled: inner_line("Sampled inner loop (Kₚᵣ x held over δ, as a computer applies it)", &price.sampled),
-        delta_max: [largest_stable_delta(&price.analog), largest_stable_delta(&price.sampled)],
+        analog: inner_line("Analog inner loop (Kₚᵣ x at every instant)", windows[0]),
+        sampled: inner_line("Sampled inner loop (Kₚᵣ x held over δ, as a computer applies it)", windows[1]),
+        delta_max: windows.map(|w| w.and_then(largest_stable_delta)),
         inner: inner_name(inner),
         torque: torque_price.map_or_else(String::new, |t| torque(t, inner_name(inner))),
         // The twist feedback is its own parts; no feedback has none.

@@ -70,7 +70,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         config.preliminary_feedback,
         config.inner_loop,
         report.limit_pair,
-        &price,
+        [Some(&price.analog), Some(&price.sampled)],
         Some(&torque),
         &flexarm::control::feedback::twist_parts(&gain),
     );

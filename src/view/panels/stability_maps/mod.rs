@@ -198,6 +198,11 @@ impl PanelView for StabilityMaps {
         info.y_scale = "log";
         let pf = frame.runs[0].config.map(|c| c.preliminary_feedback).unwrap_or_default();
         info.note = map_caption(side, pf, frame.options.measure);
+        // The map with K_pr depends on how it acts: say so when it is held over δ.
+        let sampled = frame.runs[0].config.is_some_and(|c| c.inner_loop == crate::control::config::InnerLoop::Sampled);
+        if side == MapSide::On && sampled {
+            info.note += ", sampled";
+        }
         info.region = Some(Region {
             label: match (side, rows) {
                 (MapSide::On, MapRows::TwistDamping) => {
