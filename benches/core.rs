@@ -195,7 +195,7 @@ fn main() {
     );
 
     println!(
-        "| placing the pair (issue 32): the twist gains, ρ, A4, the windows analog and sampled, δ_max (goal: ≤ 16 ms in wasm) | {:.2} ms | {:.2} ms |",
+        "| placing the pair (issue 32): the twist gains, ρ, A4, run A's windows of δ and δ_max (the other inner loop's wait for the drag to rest; goal: ≤ 16 ms in wasm) | {:.2} ms | {:.2} ms |",
         place_med * 1e3,
         place_min * 1e3
     );
@@ -205,7 +205,7 @@ fn main() {
         torque_min * 1e3
     );
     println!(
-        "| both maps after a change of α with the twist damper: ρ(δ, α) without K_pr and the design map ρ(δ, k_d) (goal: ≤ 0.5 s in wasm) | {:.0} ms | {:.0} ms |",
+        "| the design map ρ(δ, k_d) after a change of α (the map without K_pr, over α, is kept; goal: ≤ 0.5 s in wasm) | {:.0} ms | {:.0} ms |",
         design_map_med * 1e3,
         design_map_min * 1e3
     );

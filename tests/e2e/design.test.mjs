@@ -142,8 +142,9 @@ test('speed: a placement\'s work and the design map\'s time (figures, not assert
   await page.waitForFunction(() => window.flexarm.session.status().maps.done, null, { timeout: 60000 });
   const maps = await page.evaluate(() => window.flexarm.session.session.mapTimes());
   const design = maps.filter((m) => m.pf === 'twist').map((m) => m.ms);
-  // A pointer move's work: the placement (A4 and ρ of the new settings), the status with the
-  // windows analog and sampled and δ_max, and a frame drawn.
+  // A pointer move's work: the placement (A4 and ρ of the new settings) and the status with run A's
+  // windows and δ_max (the other inner loop's and the torque wait for the drag to rest); then the
+  // frames' script time while the pair moves (the browser's frame pacing is not the page's work).
   const ms = await page.evaluate(async () => {
     const s = window.flexarm.session;
     const times = [];
@@ -151,13 +152,13 @@ test('speed: a placement\'s work and the design map\'s time (figures, not assert
       const t0 = performance.now();
       s.placePair(-2 - 0.1 * i, 29 + 0.05 * i);
       s.status();
-      await new Promise((r) => requestAnimationFrame(r));
       times.push(performance.now() - t0);
+      await new Promise((r) => requestAnimationFrame(r));
     }
     times.sort((a, b) => a - b);
-    return { median: times[12], p90: times[22] };
+    return { median: times[12], p90: times[22], frame: window.flexarmPerf().script_ms_median };
   });
-  console.log(`# speed: placing the pair (place + status + a frame) median ${ms.median.toFixed(1)} ms, p90 ${ms.p90.toFixed(1)} ms (target ≤ 16 ms); design map ${design.map((v) => v.toFixed(0)).join(', ')} ms to done (target ≤ 500 ms)`);
+  console.log(`# speed: placing the pair (place + status) median ${ms.median.toFixed(1)} ms, p90 ${ms.p90.toFixed(1)} ms, a frame's script median ${Number(ms.frame).toFixed(1)} ms (target: both ≤ 16 ms); design map ${design.map((v) => v.toFixed(0)).join(', ')} ms to done (target ≤ 500 ms)`);
   assert.ok(design.length > 0, 'the design map finished');
   assert.deepEqual(problems, []);
   await close();
@@ -170,6 +171,8 @@ for (const [name, size] of Object.entries(SIZES)) {
     await designText(page);
     await page.waitForFunction(() => window.flexarm.session.status().maps.done, null, { timeout: 60000 });
     await page.screenshot({ path: path.join(SHOTS, `design-${name}.png`) });
+    // On a phone the price is in the sheet of controls.
+    if (await page.isVisible('#sheet-toggle')) await page.click('#sheet-toggle');
     await page.locator('#design').scrollIntoViewIfNeeded();
     await page.screenshot({ path: path.join(SHOTS, `design-${name}-price.png`) });
     assert.deepEqual(problems, []);

@@ -153,9 +153,10 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   // 0.926 MB since issue 23's presentation mode, z-plane zoom, figure per panel and embed builder
   // (+20 kB; −6 kB back from wasm-opt's flags); 0.932 MB since issue 31's house (a folder per panel
   // behind one interface, the classroom's own binding, the words layer: +6.3 kB, over that issue's
-  // "no larger" constraint, README's size row); 0.934 MB with issue 32's twist feedback (+2.1 kB): the
-  // 0.9-MB goal is not met.
-  assert.ok(gzip <= 0.934e6, `wasm gzip -9 ${gzip} bytes: over the 0.934-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
+  // "no larger" constraint, README's size row); 0.934 MB with issue 32's twist feedback (+2.1 kB);
+  // 0.944 MB with issue 32's design (+10.1 kB: the handle, the price, the design map, the LQ
+  // weights): the 0.9-MB goal is not met.
+  assert.ok(gzip <= 0.944e6, `wasm gzip -9 ${gzip} bytes: over the 0.944-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));
@@ -426,6 +427,11 @@ test('the lesson: every step sets the simulator up, every prediction is answered
         assert.equal(await page.textContent('#delta-value'), '0.0400 s', 'six steps up from 0.01 s');
       } else if (s.title.startsWith('Compare')) {
         await page.check('#compare');
+      } else if (s.title.startsWith('Place the pair')) {
+        // As a keyboard user would: the pair's handle, ← until it is left of the axis (Re A4 from
+        // +4.6 1/s at k_d = 10, α = 5, by 0.5 1/s a step).
+        await page.focus('#pair-handle');
+        for (let k = 0; k < 12; k++) await page.keyboard.press('ArrowLeft');
       }
       await page.waitForFunction(() => document.querySelector('#lesson-task-done').textContent.includes('Done'), null, { timeout: 15000 });
       if (s.title.startsWith('Find where')) assert.equal(await page.$eval('#delta-windows', (el) => el.hidden), false, 'revealed');
