@@ -27,6 +27,7 @@
 //! | [`classroom`] | the lesson, the answers, student mode, a link's moment and embeds, around a session |
 //! | [`plot`] | ticks, number format, colours, contours — shared by the canvas and the SVG figures |
 //! | [`view`] | what the page draws, as plain geometry (no GPU types), and every figure as SVG from it ([`view::figure`]) |
+//! | [`offline`] | the page as one self-contained HTML file that opens from disk, carrying its start and a teacher's lesson |
 //! | `web` | wasm32 only: the JS handle and the wgpu renderer |
 //!
 //! The core has no web types and no global state; it builds for native targets and wasm32.
@@ -37,6 +38,7 @@ pub mod control;
 pub mod error;
 pub mod lesson;
 pub mod model;
+pub mod offline;
 pub mod plot;
 pub mod schema;
 pub mod session;

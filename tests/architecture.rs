@@ -30,6 +30,7 @@ const LAYERS: &[&[&str]] = &[
     &["words"],
     &["session"],
     &["classroom"],
+    &["offline"],
     &["view"],
     &["web"],
 ];

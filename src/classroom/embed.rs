@@ -94,7 +94,7 @@ impl Classroom {
         let source = match &self.lesson_origin {
             LessonOrigin::BuiltIn => None,
             LessonOrigin::Path(path) => Some(path.clone()),
-            LessonOrigin::File(_) => {
+            LessonOrigin::File(_) | LessonOrigin::Carried(_) => {
                 return Err(Error::NotReady(
                     "a lesson opened from your disk cannot be embedded: put the file beside the page and open it with lesson_src=",
                 ))

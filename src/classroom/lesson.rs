@@ -154,6 +154,19 @@ impl Classroom {
         self.lesson.as_ref().is_some_and(|l| l.active && l.lesson.steps[l.step].hide_windows && !l.revealed(l.step))
     }
 
+    /// The lesson's step shown (0-based; None when the lesson is not open).
+    pub fn lesson_step_shown(&self) -> Option<usize> {
+        self.lesson.as_ref().filter(|l| l.active).map(|l| l.step)
+    }
+
+    /// A teacher's lesson, if one replaced the built-in lesson: its file's name (or path) and text.
+    pub fn teacher_lesson(&self) -> Option<(&str, &str)> {
+        match (&self.lesson_origin, &self.lesson_text) {
+            (LessonOrigin::BuiltIn, _) | (_, None) => None,
+            (origin, Some(text)) => Some((origin.name(), text)),
+        }
+    }
+
     /// The step shown, for the page (None when the lesson is not open).
     pub fn lesson_status(&self) -> Option<LessonStatus> {
         let l = self.lesson.as_ref().filter(|l| l.active)?;
@@ -162,10 +175,7 @@ impl Classroom {
         let revealed = l.revealed(i);
         Some(LessonStatus {
             lesson_title: l.lesson.title.clone(),
-            source: match &self.lesson_origin {
-                LessonOrigin::BuiltIn => String::new(),
-                LessonOrigin::Path(name) | LessonOrigin::File(name) => name.clone(),
-            },
+            source: self.lesson_origin.name().to_string(),
             steps: l.lesson.steps.iter().map(|s| s.title.clone()).collect(),
             index: i,
             title: s.title.clone(),
@@ -190,7 +200,8 @@ impl Classroom {
     pub(super) fn lesson_query(&self) -> Option<String> {
         let l = self.lesson.as_ref().filter(|l| l.active)?;
         match &self.lesson_origin {
-            LessonOrigin::BuiltIn => Some(format!("lesson={}", l.step + 1)),
+            // The built-in lesson, and the one an offline file carries: the page has it.
+            LessonOrigin::BuiltIn | LessonOrigin::Carried(_) => Some(format!("lesson={}", l.step + 1)),
             LessonOrigin::Path(path) => Some(format!("lesson_src={}&lesson={}", encode(path), l.step + 1)),
             // A file from the user's disk: a link cannot bring it back.
             LessonOrigin::File(_) => None,

@@ -17,4 +17,5 @@ pub mod progress;
 pub mod room;
 pub mod student;
 
-pub use room::{Classroom, ClassroomStatus, HiddenStatus};
+pub use progress::LessonOrigin;
+pub use room::{Classroom, ClassroomStatus, HiddenStatus, LessonFiles};

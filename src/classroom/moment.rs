@@ -28,7 +28,13 @@ impl Classroom {
     /// The state string with this moment: `…&paused=1&t=3.25` (the instant looked back at, or the
     /// newest), for "Copy link to this moment".
     pub fn moment_query(&self, session: &Session) -> String {
-        let t = session.viewing().unwrap_or_else(|| session.run(0).map_or(0.0, |a| a.closed_loop().time()));
-        format!("{}&paused=1&t={}", self.state_string(session), crate::plot::format::significant_trimmed(t, 6))
+        format!("{}&paused=1&t={}", self.state_string(session), moment_text(session))
     }
+}
+
+/// The instant a link to this moment names, as the link writes it (6 figures): the instant looked
+/// back at, or the newest.
+pub fn moment_text(session: &Session) -> String {
+    let t = session.viewing().unwrap_or_else(|| session.run(0).map_or(0.0, |a| a.closed_loop().time()));
+    crate::plot::format::significant_trimmed(t, 6)
 }

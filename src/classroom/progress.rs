@@ -166,4 +166,16 @@ pub enum LessonOrigin {
     Path(String),
     /// A file the user opened or dropped on the page: no link can name it.
     File(String),
+    /// The teacher's lesson an offline file carries (its file name): the file's links open it.
+    Carried(String),
+}
+
+impl LessonOrigin {
+    /// The lesson file's name or path ("" for the built-in lesson).
+    pub fn name(&self) -> &str {
+        match self {
+            LessonOrigin::BuiltIn => "",
+            LessonOrigin::Path(name) | LessonOrigin::File(name) | LessonOrigin::Carried(name) => name,
+        }
+    }
 }

@@ -28,6 +28,28 @@ pub struct ClassroomStatus {
     pub hidden: Option<HiddenStatus>,
 }
 
+/// The lessons a page opens with: the built-in one's text and, perhaps, a teacher's.
+#[derive(Clone, Debug, Default)]
+pub struct LessonFiles {
+    /// The built-in lesson's text (the page fetches it; None: the native build's).
+    pub built_in: Option<String>,
+    /// A teacher's lesson and its bytes: the file `lesson_src=PATH` names, which the page fetched
+    /// ([`LessonOrigin::Path`]), or the one an offline file carries ([`LessonOrigin::Carried`]).
+    pub teacher: Option<(LessonOrigin, Vec<u8>)>,
+    /// The page is an offline file: it can load no lesson by path but the ones it carries.
+    pub offline: bool,
+}
+
+impl LessonFiles {
+    /// What a refused `lesson_src=` falls back to.
+    fn instead(&self) -> &'static str {
+        match self.teacher {
+            Some((LessonOrigin::Carried(_), _)) => "the lesson this file carries is used instead",
+            _ => "the built-in lesson is used instead",
+        }
+    }
+}
+
 /// The lesson, the answers, student mode and the link's moment of one visit.
 #[derive(Clone, Debug, Default)]
 pub struct Classroom {
@@ -47,64 +69,58 @@ pub struct Classroom {
 
 impl Classroom {
     /// The page's session and classroom for a URL query: the session's settings from it, then
-    /// the lesson it names (`lesson=3`, or a teacher's `lesson_src=PATH` whose bytes the page
-    /// fetched: `teacher`) with the URL's other settings over the step's, then the link's moment
-    /// (`t=3&paused=1`). `lesson_text`: the built-in lesson's text (None: the native build's).
-    /// Bad values become notices.
-    pub fn open(
-        query: &str,
-        lesson_text: Option<String>,
-        teacher: Option<(String, Vec<u8>)>,
-    ) -> (Session, Classroom, Vec<Notice>) {
+    /// the lesson it names (`lesson=3`; a teacher's lesson from `files`) with the URL's other
+    /// settings over the step's, then the link's moment (`t=3&paused=1`). Bad values become
+    /// notices.
+    pub fn open(query: &str, files: LessonFiles) -> (Session, Classroom, Vec<Notice>) {
         let (mut session, mut notices) = Session::open(query);
-        let (classroom, more) = Classroom::open_on(&mut session, query, lesson_text, teacher);
+        let (classroom, more) = Classroom::open_on(&mut session, query, files);
         notices.extend(more);
         (session, classroom, notices)
     }
 
     /// [`Classroom::open`] on a session already opened from the same query (the web handle
     /// builds the two apart): what the query says of the lesson and the moment, and its notices.
-    pub fn open_on(
-        session: &mut Session,
-        query: &str,
-        lesson_text: Option<String>,
-        teacher: Option<(String, Vec<u8>)>,
-    ) -> (Classroom, Vec<Notice>) {
+    pub fn open_on(session: &mut Session, query: &str, files: LessonFiles) -> (Classroom, Vec<Notice>) {
         let mut notices = Vec::new();
-        let mut classroom = Classroom { lesson_text, ..Classroom::default() };
-        // `lesson_src=PATH`: a teacher's lesson, which the page fetched if the path is on its site.
+        let mut classroom = Classroom { lesson_text: files.built_in.clone(), ..Classroom::default() };
+        // `lesson_src=PATH`: a teacher's lesson, which the page fetched if the path is on its site
+        // (or, in an offline file, among the files it carries).
         let source = split_query(query).into_iter().rev().find(|(k, _)| k == "lesson_src").map(|(_, v)| v);
-        let teacher = match (source, teacher) {
-            (None, _) => None,
-            (Some(value), teacher) => match crate::lesson::source_path(&value) {
-                Err(e) => {
-                    notices.push(Notice {
-                        key: "lesson_src".into(),
-                        text: format!("{e} — the built-in lesson is used instead"),
-                    });
-                    None
-                }
-                Ok(path) if teacher.is_none() => {
-                    notices.push(Notice {
-                        key: "lesson_src".into(),
-                        text: format!(
-                            "lesson_src={path}: the file could not be loaded from this site (is it beside the page?) — the built-in lesson is used instead"
-                        ),
-                    });
-                    None
-                }
-                Ok(_) => teacher,
-            },
-        };
-        if let Some((path, bytes)) = teacher {
+        let fetched = matches!(files.teacher, Some((LessonOrigin::Path(_), _)));
+        if let Some(value) = source {
+            match crate::lesson::source_path(&value) {
+                Err(e) => notices.push(Notice {
+                    key: "lesson_src".into(),
+                    text: format!("{e} — {}", files.instead()),
+                }),
+                Ok(path) if !fetched => notices.push(Notice {
+                    key: "lesson_src".into(),
+                    text: if files.offline {
+                        format!(
+                            "lesson_src={path}: an offline file cannot load a lesson from a path, only the lessons it carries — drop the file on the page instead; {}",
+                            files.instead()
+                        )
+                    } else {
+                        format!(
+                            "lesson_src={path}: the file could not be loaded from this site (is it beside the page?) — {}",
+                            files.instead()
+                        )
+                    },
+                }),
+                Ok(_) => {}
+            }
+        }
+        if let Some((origin, bytes)) = files.teacher {
+            let name = origin.name().to_string();
             match checked(&bytes) {
                 Ok((text, _)) => {
                     classroom.lesson_text = Some(text);
-                    classroom.lesson_origin = LessonOrigin::Path(path);
+                    classroom.lesson_origin = origin;
                 }
                 Err(e) => notices.push(Notice {
                     key: "lesson_src".into(),
-                    text: format!("{path}: {e} — the built-in lesson is used instead"),
+                    text: format!("{name}: {e} — the built-in lesson is used instead"),
                 }),
             }
         }

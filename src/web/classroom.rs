@@ -9,7 +9,7 @@ use super::session::WebSession;
 use super::{js_error, to_js};
 use crate::classroom::answers::Record;
 use crate::classroom::progress::LessonOrigin;
-use crate::classroom::Classroom;
+use crate::classroom::{Classroom, LessonFiles};
 use crate::session::Notice;
 
 /// The session's status and the classroom's, as the page reads them.
@@ -41,11 +41,12 @@ fn change<T>(
 #[wasm_bindgen(js_class = Classroom)]
 impl WebClassroom {
     /// The classroom of a URL query (the same the session was opened from): the lesson it names
-    /// (`lesson=3`; with `lesson_src=PATH` the page fetched that file and passes its path and
-    /// bytes: a teacher's lesson, used instead of the built-in one if it reads and passes the
-    /// checks) over the session, and the link's moment (`t=3&paused=1`). `lesson_text`: the
+    /// (`lesson=3`) over the session, and the link's moment (`t=3&paused=1`). `lesson_text`: the
     /// built-in lesson the page fetched (`lessons/paper.md`; without it the lesson cannot open).
-    /// Values it could not take are in `notices()`.
+    /// A teacher's lesson, used instead of the built-in one if it reads and passes the checks, by
+    /// its path (or name) and bytes: the file `lesson_src=PATH` names, which the page fetched, or
+    /// (`teacher_carried`) the one an offline file carries. `offline`: the page is an offline
+    /// file. Values it could not take are in `notices()`.
     #[wasm_bindgen(constructor)]
     pub fn new(
         session: &mut WebSession,
@@ -53,9 +54,14 @@ impl WebClassroom {
         lesson_text: Option<String>,
         teacher_path: Option<String>,
         teacher_bytes: Option<Vec<u8>>,
+        teacher_carried: bool,
+        offline: bool,
     ) -> WebClassroom {
-        let teacher = teacher_path.zip(teacher_bytes);
-        let (inner, notices) = Classroom::open_on(session.session_mut(), query, lesson_text, teacher);
+        let teacher = teacher_path.zip(teacher_bytes).map(|(path, bytes)| {
+            (if teacher_carried { LessonOrigin::Carried(path) } else { LessonOrigin::Path(path) }, bytes)
+        });
+        let files = LessonFiles { built_in: lesson_text, teacher, offline };
+        let (inner, notices) = Classroom::open_on(session.session_mut(), query, files);
         WebClassroom { inner, notices }
     }
 
@@ -129,6 +135,21 @@ impl WebClassroom {
     #[wasm_bindgen(js_name = momentQuery)]
     pub fn moment_query(&self, session: &WebSession) -> String {
         self.inner.moment_query(session.session())
+    }
+
+    /// The offline file (UTF-8 bytes) of `bundle`'s files, their archive gzip-compressed by the
+    /// page (`compressed`), opening where the page is now: its state, the lesson step shown and a
+    /// teacher's lesson, and, if `paused`, this moment.
+    #[wasm_bindgen(js_name = offlineFile)]
+    pub fn offline_file(
+        &self,
+        session: &WebSession,
+        bundle: &super::offline::WebBundle,
+        compressed: &[u8],
+        paused: bool,
+    ) -> Result<Vec<u8>, JsError> {
+        let start = crate::offline::OfflineStart::of(&self.inner, session.session(), paused);
+        bundle.inner.html(compressed, &start).map(String::into_bytes).map_err(js_error)
     }
 
     /// An embed of the page at `page_url` as the embed builder's `choices` say (a query:

@@ -11,6 +11,7 @@ pub mod classroom;
 mod data;
 mod figure;
 mod gpu;
+pub mod offline;
 pub mod renderer;
 pub mod session;
 

@@ -8,8 +8,8 @@ use std::ops::{Deref, DerefMut};
 use flexarm::classroom::answers::Record;
 use flexarm::classroom::embed::Embed;
 use flexarm::classroom::progress::{LessonOrigin, LessonProgress, LessonStatus};
-use flexarm::classroom::Classroom;
 use flexarm::classroom::HiddenStatus;
+use flexarm::classroom::{Classroom, LessonFiles};
 use flexarm::error::Error;
 use flexarm::session::{Notice, Session, Status};
 
@@ -60,7 +60,12 @@ impl Visit {
         lesson_text: Option<String>,
         teacher: Option<(String, Vec<u8>)>,
     ) -> (Visit, Vec<Notice>) {
-        let (session, classroom, notices) = Classroom::open(query, lesson_text, teacher);
+        let files = LessonFiles {
+            built_in: lesson_text,
+            teacher: teacher.map(|(path, bytes)| (LessonOrigin::Path(path), bytes)),
+            offline: false,
+        };
+        let (session, classroom, notices) = Classroom::open(query, files);
         (Visit { session, classroom }, notices)
     }
 

@@ -98,7 +98,14 @@ export function launch({ webgpu = false } = {}) {
  * started (#backend has text).
  * @param {import('playwright-core').Browser} browser
  */
-export async function openPage(browser, base, query = '', { viewport = { width: 1280, height: 800 }, acceptDownloads = true, ...contextOptions } = {}) {
+export function openPage(browser, base, query = '', options = {}) {
+  return openUrl(browser, `${base}/${query}`, options);
+}
+
+/** openPage for a whole URL (a file:// one, for the offline file); `offline` turns the network off
+ * and counts any request that is not for the file itself, a blob or a data URL as a problem.
+ * @param {import('playwright-core').Browser} browser @param {string} url */
+export async function openUrl(browser, url, { viewport = { width: 1280, height: 800 }, acceptDownloads = true, offline = false, ...contextOptions } = {}) {
   const context = await browser.newContext({ viewport, acceptDownloads, ...contextOptions });
   const page = await context.newPage();
   const problems = [];
@@ -108,7 +115,11 @@ export async function openPage(browser, base, query = '', { viewport = { width: 
     problems.push(`dialog (${d.type()}): ${d.message()}`);
     d.dismiss().catch(() => {});
   });
-  await page.goto(`${base}/${query}`);
+  if (offline) {
+    await context.setOffline(true);
+    page.on('request', (r) => { if (!/^(file|blob|data):/u.test(r.url())) problems.push(`request while offline: ${r.url()}`); });
+  }
+  await page.goto(url);
   await page.waitForFunction(() => document.querySelector('#backend')?.textContent?.trim().length > 0, null, { timeout: 20000 });
   return { page, problems, close: () => context.close() };
 }

@@ -8,6 +8,7 @@ import { Page } from './flexarm.js';
 import { byId, make, messageOf, setText } from './dom.js';
 import { loadWasm } from './wasm.js';
 import { noticeLines, writeUrl } from './url.js';
+import { offlineFile, readFile, readText } from './files.js';
 import { START_NOTE } from './transport.js';
 
 /** @typedef {import('./wasm.js').Wasm} Wasm */
@@ -31,9 +32,7 @@ export async function openPage(errors) {
   performance.mark('flexarm:main-start');
   enableTransport(false);
   // The lesson is a file beside the page (the session parses it), fetched while the module loads.
-  const lessonText = fetch('lessons/paper.md')
-    .then((r) => (r.ok ? r.text() : undefined))
-    .catch(() => undefined);
+  const lessonText = readText('lessons/paper.md');
   /** @type {Wasm} */
   let wasm;
   try {
@@ -41,7 +40,9 @@ export async function openPage(errors) {
   } catch (e) {
     setText(byId('loading-text'), 'Could not load the simulation.');
     byId('loading').querySelector('.spinner')?.remove();
-    errors.show(`Loading ./pkg/flexarm.js failed: ${messageOf(e)}. Build it with "bash scripts/serve.sh".`);
+    errors.show(offlineFile()
+      ? `Starting the simulation failed: ${messageOf(e)}.`
+      : `Loading ./pkg/flexarm.js failed: ${messageOf(e)}. Build it with "bash scripts/serve.sh".`);
     return null;
   }
   // The GPU starts up (mostly waiting on the browser) while the page builds its controls.
@@ -49,9 +50,12 @@ export async function openPage(errors) {
   const rendererReady = wasm.Renderer.create(/** @type {HTMLCanvasElement} */ (byId('canvas')));
   rendererReady.catch(() => {}); // handled where it is awaited
   // A teacher's lesson (`lesson_src=PATH`): fetched only from a path of this site (the session
-  // says why anything else is refused, and checks the file as it checks the built-in lesson).
-  const teacher = await fetchTeacherLesson(wasm);
-  const session = new Page(wasm, window.location.search, await lessonText, teacher);
+  // says why anything else is refused, and checks the file as it checks the built-in lesson); in
+  // an offline file, from the files it carries, else the lesson the file carries.
+  const offline = offlineFile();
+  const query = startQuery(offline);
+  const teacher = (await fetchTeacherLesson(wasm, query)) ?? carriedLesson(offline);
+  const session = new Page(wasm, query, await lessonText, teacher, offline !== null);
   performance.mark('flexarm:session-ready');
   showNotices(session.notices());
   return { wasm, session, rendererReady };
@@ -82,14 +86,29 @@ export function begin({ session, store, sync, loop }) {
   loop.start();
 }
 
-/** The bytes of the lesson file `lesson_src=` names, if it is on this site and loads. @param {Wasm} wasm */
-async function fetchTeacherLesson(wasm) {
-  const value = new URLSearchParams(window.location.search).get('lesson_src');
+/**
+ * The query the page opens with: its address's, or, in an offline file whose address holds none,
+ * the start the file carries.
+ * @param {import('./files.js').Offline | null} offline
+ */
+function startQuery(offline) {
+  const own = window.location.search;
+  return offline && own.replace(/^\?/u, '') === '' ? offline.start.query : own;
+}
+
+/** The lesson an offline file carries, as the session takes a teacher's. @param {import('./files.js').Offline | null} offline */
+function carriedLesson(offline) {
+  const lesson = offline?.start.lesson;
+  return lesson ? { path: lesson.name, bytes: new TextEncoder().encode(lesson.text), carried: true } : null;
+}
+
+/** The bytes of the lesson file `lesson_src=` names, if it is on this site and loads. @param {Wasm} wasm @param {string} query */
+async function fetchTeacherLesson(wasm, query) {
+  const value = new URLSearchParams(query).get('lesson_src');
   if (value === null) return null;
   try {
     const path = wasm.lessonSourcePath(value);
-    const r = await fetch(path);
-    return r.ok ? { path, bytes: new Uint8Array(await r.arrayBuffer()) } : null;
+    return { path, bytes: await readFile(path), carried: false };
   } catch {
     return null; // the session's notice says why
   }

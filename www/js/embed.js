@@ -6,6 +6,7 @@
 
 import { byId, messageOf, setText } from './dom.js';
 import { buildControls } from './controls.js';
+import { offlineFile } from './files.js';
 
 /** The form's values are sent this long after the last change, ms (the preview reloads). */
 const SETTLE_MS = 400;
@@ -197,6 +198,10 @@ export function createEmbedBuilder(on) {
   new ResizeObserver(place).observe(builder);
 
   button.addEventListener('click', async () => {
+    if (offlineFile()) {
+      setText(byId('export-status'), 'An offline file cannot be embedded in a course page: an embed needs the page on a web server (bash scripts/serve.sh, or www/ on any host).');
+      return;
+    }
     const open = builder.hidden;
     builder.hidden = !open;
     button.setAttribute('aria-expanded', String(open));

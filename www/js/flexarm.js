@@ -19,15 +19,16 @@ export class Page {
 
   /**
    * The page for the URL's query: the session's settings from it, then the lesson it names
-   * (`lesson=3`, or a teacher's file the page fetched) and the link's moment.
+   * (`lesson=3`, or a teacher's file: fetched, or carried by an offline file) and the link's moment.
    * @param {Wasm} wasm
    * @param {string} query
    * @param {string | undefined} lessonText the built-in lesson (`lessons/paper.md`)
-   * @param {{ path: string, bytes: Uint8Array } | null | undefined} teacher a teacher's lesson file
+   * @param {{ path: string, bytes: Uint8Array, carried: boolean } | null | undefined} teacher a teacher's lesson file
+   * @param {boolean} [offline] the page is an offline file
    */
-  constructor(wasm, query, lessonText, teacher) {
+  constructor(wasm, query, lessonText, teacher, offline = false) {
     this.#session = new wasm.Session(query);
-    this.#classroom = new wasm.Classroom(this.#session, query, lessonText, teacher?.path, teacher?.bytes);
+    this.#classroom = new wasm.Classroom(this.#session, query, lessonText, teacher?.path, teacher?.bytes, teacher?.carried ?? false, offline);
   }
 
   /** The physics session, which the renderer draws. @returns {RawSession} */
@@ -275,6 +276,16 @@ export class Page {
   /** @returns {string} */
   momentQuery() {
     return this.#classroom.momentQuery(this.#session);
+  }
+
+  /**
+   * The offline file (UTF-8 bytes) of `bundle`'s files, their archive gzipped (`compressed`),
+   * opening where the page is now (and at this moment, if `paused`).
+   * @param {import('../pkg/flexarm.js').OfflineBundle} bundle @param {Uint8Array} compressed @param {boolean} paused
+   * @returns {Uint8Array}
+   */
+  offlineFile(bundle, compressed, paused) {
+    return this.#classroom.offlineFile(this.#session, bundle, compressed, paused);
   }
 
   // ------------------------------------------------------------------------------------ the lesson

@@ -22,6 +22,7 @@ import { createClassroom } from './classroom.js';
 import { createFigure } from './figure.js';
 import { createRefresh } from './refresh.js';
 import { createDesign } from './design.js';
+import { createSaveOffline } from './save_offline.js';
 import { installHooks } from './hooks.js';
 import { startRenderer } from './renderer.js';
 
@@ -81,6 +82,7 @@ async function main() {
   const canvas = /** @type {HTMLCanvasElement} */ (byId('canvas'));
   createExport({ session, canvas, overlay: byId('axes-overlay'), renderNow: () => figure.render(), download, report });
   createEmbedBuilder({ session });
+  createSaveOffline({ wasm, session, paused: () => !store.get().playing, download, report });
   const sheet = createSheet();
   wireKeys({ togglePlay, step: transport.step, stepBack: transport.stepBack, reset, zoomKey: (ev) => figure.zoomKey(ev) });
   wireTry(session, settings, sheet);

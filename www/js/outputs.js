@@ -4,6 +4,7 @@
 // and `download`, which offers data as a file.
 
 import { byId, make, setText } from './dom.js';
+import { readText } from './files.js';
 
 /** @typedef {import('./flexarm.js').Page} Page */
 
@@ -43,11 +44,12 @@ export function wireOutputs({ session, guard }) {
   /** The script's template, once asked for. @type {Promise<string> | null} */
   let pythonTemplate = null;
   byId('export-python').addEventListener('click', async () => {
-    pythonTemplate ??= fetch('export/model_template.py').then((r) => (r.ok ? r.text() : ''), () => '');
+    pythonTemplate ??= readText('export/model_template.py').then((t) => t ?? '');
     const template = await pythonTemplate;
     download('flexarm_model.py', guard('Export failed', () => session.pythonScript(template), null), 'text/x-python');
   });
   byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
   // The page's address with this moment: it opens paused at the instant shown.
-  byId('copy-moment').addEventListener('click', () => copyCommand(`${window.location.origin}${window.location.pathname}?${session.momentQuery()}`));
+  // (Resolved against the page's address: a file opened from disk has no origin to prefix.)
+  byId('copy-moment').addEventListener('click', () => copyCommand(new URL(`?${session.momentQuery()}`, window.location.href).href));
 }

@@ -1,11 +1,15 @@
 // Loading the simulation: the wasm module built by wasm-pack into ../pkg.
 
+import { offlineFile } from './files.js';
+
 /** @typedef {typeof import('../pkg/flexarm.js')} Wasm */
 
 /** The initialised module. @returns {Promise<Wasm>} */
 export async function loadWasm() {
   const mod = await import('../pkg/flexarm.js');
-  await mod.default();
+  // Served, the module fetches its .wasm beside itself; an offline file carries the bytes.
+  const carried = offlineFile()?.files.get('pkg/flexarm_bg.wasm');
+  await mod.default(carried ? { module_or_path: carried } : undefined);
   performance.mark('flexarm:wasm-ready');
   return mod;
 }

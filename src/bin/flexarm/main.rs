@@ -11,13 +11,16 @@
 //! * `flexarm data` writes the numbers behind every figure (model, A, B, C, D, Φ, eigenvalues, ρ(δ),
 //!   the maps) as JSON or one long CSV,
 //! * `flexarm figure` draws one panel of the page (arm, errors, pole plot, z-plane, ρ(δ), a map, …)
-//!   as an SVG figure with its key and the state string as its caption.
+//!   as an SVG figure with its key and the state string as its caption,
+//! * `flexarm bundle` writes the page as one HTML file that opens from disk with no server or
+//!   network, starting at a state string and carrying a teacher's lesson.
 //!
 //! The flags of the run settings come from the schema ([`flexarm::schema`]), as do their ranges
 //! and error messages. Bad input — including an output path that cannot be written — prints one
 //! `error: ...` line to stderr and exits with status 2; a failed analysis exits with status 1.
 
 mod analyze;
+mod bundle;
 mod cli;
 mod data;
 mod export_python;
@@ -51,6 +54,7 @@ fn commands() -> Vec<Command> {
         export_python::command(),
         data::command(),
         figure::command(),
+        bundle::command(),
     ]
 }
 
@@ -116,7 +120,7 @@ fn run(args: Vec<String>) -> Res<String> {
                 }
                 ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
                     Err(cli::usage_error(
-                        "no command given: use simulate, analyze, sweep, map, export-python, data, figure or help (see 'flexarm --help')",
+                        "no command given: use simulate, analyze, sweep, map, export-python, data, figure, bundle or help (see 'flexarm --help')",
                     ))
                 }
                 _ => Err(cli::usage_error(one_line(&e, command.as_deref()))),
@@ -131,12 +135,13 @@ fn run(args: Vec<String>) -> Res<String> {
         Some(("export-python", m)) => export_python::run(m),
         Some(("data", m)) => data::run(m),
         Some(("figure", m)) => figure::run(m),
+        Some(("bundle", m)) => bundle::run(m),
         Some(("help", m)) => match m.get_one::<String>("command") {
             None => Ok(overview()),
             Some(name) => match commands().into_iter().find(|c| c.get_name() == name) {
                 Some(mut c) => Ok(c.render_help().to_string()),
                 None => Err(cli::usage_error(format!(
-                    "unknown command '{name}': use simulate, analyze, sweep, map, export-python, data or figure"
+                    "unknown command '{name}': use simulate, analyze, sweep, map, export-python, data, figure or bundle"
                 ))),
             },
         },
