@@ -26,14 +26,15 @@ pub use start::{CarriedLesson, OfflineStart};
 /// The page, where the search for the files it needs starts.
 pub const ENTRY: &str = "index.html";
 
+/// The offline file's start-up script (a classic script, inlined at the end of the file's body):
+/// unpacks the archive, maps the modules, starts the page.
+pub const BOOT: &str = "js/offline.js";
+
 /// The files the page reads by path as it runs (no import names them): the simulation, the
 /// lessons (`lessons/windows.md` is `lesson_src=`'s example), the Python template and the help
-/// page.
-pub const RESOURCES: [&str; 5] =
-    ["pkg/flexarm_bg.wasm", "lessons/paper.md", "lessons/windows.md", "export/model_template.py", "help.html"];
-
-/// The offline file's start-up script: unpacks the archive, maps the modules, starts the page.
-const BOOT: &str = include_str!("../../www/js/offline.js");
+/// page; and the file's start-up script.
+pub const RESOURCES: [&str; 6] =
+    ["pkg/flexarm_bg.wasm", "lessons/paper.md", "lessons/windows.md", "export/model_template.py", "help.html", BOOT];
 
 /// The files of one offline file, gathered one by one: [`Bundle::next_wanted`] names the next file
 /// the bundle needs, [`Bundle::add`] gives it (and learns what it imports).
@@ -86,7 +87,13 @@ impl Bundle {
         let text = |bytes: &[u8]| {
             String::from_utf8(bytes.to_vec()).map_err(|_| Error::Refused(format!("{path} is not UTF-8 text")))
         };
-        let (bytes, needs) = if path.ends_with(".js") {
+        let (bytes, needs) = if path == BOOT {
+            let boot = text(&bytes)?;
+            if boot.contains("</script") {
+                return Err(Error::Refused(format!("{path} contains \"</script\", which would end its inlined copy")));
+            }
+            (bytes, Vec::new())
+        } else if path.ends_with(".js") {
             let (rewritten, imports) = source::rewrite_imports(path, &text(&bytes)?)?;
             (rewritten.into_bytes(), imports)
         } else if path.ends_with(".html") {
@@ -123,23 +130,21 @@ impl Bundle {
         }
     }
 
-    /// The archive of the files the page reads as it runs (uncompressed; the host compresses it
-    /// with gzip): every file but the page and the stylesheets, which the file holds inlined —
-    /// the help page with its own styles inlined.
+    /// The archive of the files (uncompressed; the host compresses it with gzip): every file the
+    /// bundle gathered — the page and its styles too, which the file also holds inlined, so that
+    /// an offline file can make another — with the help page's styles inlined (it is shown from
+    /// a blob URL).
     pub fn archive(&self) -> Result<Vec<u8>, Error> {
         self.complete()?;
         // Other pages (the help) with their styles inlined.
         let mut pages = Vec::new();
         for (path, _) in self.files.iter().filter(|(p, _)| p != ENTRY && p.ends_with(".html")) {
-            pages.push(source::inline_styles(path, self.text(path).unwrap_or(""), |p| self.text(p))?);
+            pages.push(source::inline_styles(path, self.text(path).unwrap_or(""), &|p| self.text(p))?);
         }
         let mut pages = pages.iter();
         let mut entries: Vec<(&str, &[u8])> = Vec::new();
         for (path, bytes) in &self.files {
-            if path == ENTRY || path.ends_with(".css") {
-                continue;
-            }
-            let page = if path.ends_with(".html") { pages.next().map(String::as_bytes) } else { None };
+            let page = if path != ENTRY && path.ends_with(".html") { pages.next().map(String::as_bytes) } else { None };
             entries.push((path, page.unwrap_or(bytes)));
         }
         let header = format!(
@@ -166,7 +171,8 @@ impl Bundle {
     pub fn html(&self, compressed: &[u8], start: &OfflineStart) -> Result<String, Error> {
         self.complete()?;
         let page = self.text(ENTRY).ok_or(Error::NotReady("the offline file needs the page first"))?;
-        let mut page = source::inline_styles(ENTRY, page, |p| self.text(p))?;
+        let boot = self.text(BOOT).ok_or(Error::NotReady("the offline file needs its start-up script"))?;
+        let mut page = source::inline_styles(ENTRY, page, &|p| self.text(p))?;
         let scripts = source::module_scripts(ENTRY, &page)?;
         let [((s, e), main)] = scripts.as_slice() else {
             return Err(Error::Refused(format!("{ENTRY} must start the page with exactly one module script")));
@@ -179,7 +185,7 @@ impl Bundle {
         let tail = format!(
             "<script id=\"flexarm-start\" type=\"application/json\">{}</script>\n\
              <script id=\"flexarm-files\" type=\"application/octet-stream\" data-main=\"{}{main}\">{}</script>\n\
-             <script>\n{BOOT}</script>\n",
+             <script>\n{boot}</script>\n",
             start.to_json(),
             source::MODULE_PREFIX,
             start::base64(compressed),
@@ -195,7 +201,7 @@ impl Bundle {
 pub fn size_text(file_bytes: usize, compressed_bytes: usize) -> String {
     let mb = |b: usize| crate::plot::format::significant_trimmed(b as f64 / 1e6, 3);
     format!(
-        "One HTML file of {} MB that opens from disk with no server or network: the page, its modules, the simulation and the lessons, gzip-compressed and base64-encoded ({}× the {} MB the served page loads, gzip).",
+        "One HTML file of {} MB that opens from disk with no server or network: the page, its modules, the simulation and the lessons, gzip-compressed and base64-encoded ({}× their {} MB as gzip, about what the served page loads).",
         mb(file_bytes),
         crate::plot::format::significant_trimmed(file_bytes as f64 / compressed_bytes.max(1) as f64, 3),
         mb(compressed_bytes)
@@ -207,7 +213,8 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_start_up_script_cannot_end_its_own_script_tag() {
-        assert!(!BOOT.contains("</script"));
+    fn a_start_up_script_that_would_end_its_own_script_tag_is_refused() {
+        let mut b = Bundle::new();
+        assert!(b.add(BOOT, b"x = '</script>';".to_vec()).is_err());
     }
 }

@@ -43,7 +43,8 @@ fn ends_with_word(text: &str, word: &str) -> bool {
 }
 
 /// A module with its relative imports (static, re-exports and `import()`) rewritten to
-/// `@flexarm/PATH`, and the page-relative paths it imports, in order of appearance. Specifiers in
+/// `@flexarm/PATH`, and the page-relative paths it imports, in order of appearance (imports
+/// rewritten before, by an offline file that makes another, are named and left as they are). Specifiers in
 /// comments (a JSDoc `import('./x.js').T`) are rewritten too: harmless there, and they name
 /// modules the page has anyway.
 pub fn rewrite_imports(path: &str, text: &str) -> Result<(String, Vec<String>), Error> {
@@ -58,6 +59,11 @@ pub fn rewrite_imports(path: &str, text: &str) -> Result<(String, Vec<String>), 
         let relative = body.starts_with("./") || body.starts_with("../");
         let end = body.find([quote, '\n']).filter(|&e| body.as_bytes()[e] as char == quote);
         match end {
+            // Already rewritten (a module carried by an offline file, which makes another): named.
+            Some(len) if body.starts_with(MODULE_PREFIX) && follows_import(&text[..open]) => {
+                imports.push(body[MODULE_PREFIX.len()..len].to_string());
+                at = open + len + 2;
+            }
             Some(len) if relative && follows_import(&text[..open]) => {
                 let target = resolve(path, &body[..len])?;
                 out.push_str(&text[copied..=open]);
@@ -113,7 +119,7 @@ pub fn stylesheets(page: &str, html: &str) -> Result<Vec<String>, Error> {
 
 /// The page with each stylesheet link replaced by a `<style>` of that file (`css` gives its text)
 /// and its `modulepreload` and `preload` links dropped (from disk they would only fail).
-pub fn inline_styles<'a>(page: &str, html: &str, css: impl Fn(&str) -> Option<&'a str>) -> Result<String, Error> {
+pub fn inline_styles<'a>(page: &str, html: &str, css: &dyn Fn(&str) -> Option<&'a str>) -> Result<String, Error> {
     let mut out = String::with_capacity(html.len() * 2);
     let mut copied = 0;
     for (s, e) in link_tags(html) {
@@ -204,13 +210,13 @@ mod tests {
         let html = "<head>\n  <link rel=\"icon\" href=\"data:,\">\n  <link rel=\"stylesheet\" href=\"style.css\">\n  \
                     <link rel=\"modulepreload\" href=\"js/main.js\">\n  <script type=\"module\" src=\"js/main.js\"></script>\n</head>";
         assert_eq!(stylesheets("index.html", html).unwrap(), ["style.css"]);
-        let out = inline_styles("index.html", html, |p| (p == "style.css").then_some("body { color: red }")).unwrap();
+        let out = inline_styles("index.html", html, &|p| (p == "style.css").then_some("body { color: red }")).unwrap();
         assert!(out.contains("<style>/* style.css */\nbody { color: red }</style>"));
         assert!(out.contains("<link rel=\"icon\" href=\"data:,\">"));
         assert!(!out.contains("modulepreload"));
         let scripts = module_scripts("index.html", &out).unwrap();
         assert_eq!(scripts.len(), 1);
         assert_eq!(scripts[0].1, "js/main.js");
-        assert!(inline_styles("index.html", html, |_| None).is_err());
+        assert!(inline_styles("index.html", html, &|_| None).is_err());
     }
 }

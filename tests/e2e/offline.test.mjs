@@ -136,7 +136,7 @@ test('"Save for offline" on the served page: its size beside the button, and the
     await page.waitForFunction(() => /MB/.test(document.querySelector('#offline-size')?.textContent ?? ''), null, { timeout: 30000 });
     const said = await page.textContent('#offline-size');
     console.log(`# beside the button: ${said}`);
-    const ratio = Number(said.match(/\(([\d.]+)× the/)?.[1]);
+    const ratio = Number(said.match(/\(([\d.]+)× their/)?.[1]);
     assert.ok(ratio > 1 && ratio <= 1.5, said);
     const { name, bytes } = await clickForDownload(page, '#save-offline');
     assert.equal(name, 'flexarm-offline.html');
@@ -150,6 +150,9 @@ test('"Save for offline" on the served page: its size beside the button, and the
     assert.match(await opened.page.textContent('#offline-start'), /paused at t = 2 s/);
     assert.equal(await opened.page.evaluate(() => window.flexarm.session.time()), 2);
     await opened.page.screenshot({ path: path.join(shots, 'offline-saved-laptop.png') });
+    // An offline file makes offline files too, from the files it carries.
+    const again = await clickForDownload(opened.page, '#save-offline');
+    assert.ok(Math.abs(again.bytes.length - bytes.length) < 0.02 * bytes.length, `${again.bytes.length} against ${bytes.length}`);
     assert.deepEqual(opened.problems, []);
     await opened.close();
   } finally {

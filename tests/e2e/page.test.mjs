@@ -155,8 +155,10 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   // behind one interface, the classroom's own binding, the words layer: +6.3 kB, over that issue's
   // "no larger" constraint, README's size row); 0.934 MB with issue 32's twist feedback (+2.1 kB);
   // 0.944 MB with issue 32's design (+10.1 kB: the handle, the price, the design map, the LQ
-  // weights): the 0.9-MB goal is not met.
-  assert.ok(gzip <= 0.944e6, `wasm gzip -9 ${gzip} bytes: over the 0.944-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
+  // weights); 0.958 MB with issue 33's offline file (+14.0 kB: gathering the page's files,
+  // rewriting its imports, the archive and the file's layout, its start in words): the 0.9-MB
+  // goal is not met.
+  assert.ok(gzip <= 0.958e6, `wasm gzip -9 ${gzip} bytes: over the 0.958-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));
