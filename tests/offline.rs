@@ -307,3 +307,15 @@ fn an_offline_file_makes_another_from_the_files_it_carries() {
     let first: BTreeSet<String> = first.into_iter().map(|(p, _)| p).filter(|p| p != "help.css").collect();
     assert_eq!(second, first);
 }
+
+#[test]
+fn the_start_in_words_names_the_figure_and_student_mode_set_by_the_lesson() {
+    let hidden = HOMEWORK.replacen("\n\n", "\n\nanswers: hidden\n\n", 1);
+    let start = OfflineStart::new("preset=fig5.3", Some(("hw.md".into(), hidden.into_bytes()))).unwrap();
+    let words = start.describe();
+    assert!(words.starts_with("Fig. 5.3: δ = 0.01 s without preliminary feedback"), "{words}");
+    assert!(words.contains("step 1") && words.ends_with("student mode"), "{words}");
+    // Without it, and without answers=hidden, no student mode is claimed.
+    let start = OfflineStart::new("preset=fig5.3", Some(("hw.md".into(), HOMEWORK.as_bytes().to_vec()))).unwrap();
+    assert!(!start.describe().contains("student mode"));
+}

@@ -10,7 +10,7 @@ use crate::classroom::Classroom;
 use crate::error::Error;
 use crate::plot::format::significant_trimmed;
 use crate::session::query::split_query;
-use crate::session::{Session, Settings, Source};
+use crate::session::{Session, Settings, Source, PRESETS};
 
 /// A teacher's lesson an offline file carries.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -90,7 +90,13 @@ impl OfflineStart {
         let mut settings = Settings::page_start();
         // Checked when the start was made; a value a later version would not take is skipped.
         let _ = settings.read(&self.query, Source::Page);
-        let mut parts = vec![crate::words::settings::run(&settings.a.config())];
+        // A paper's figure by its name (its settings only: no verdict, student mode may be on).
+        let run = match PRESETS.iter().find(|p| settings.matches(p)) {
+            Some(p) if settings.a.repeat => format!("{}, the slew repeating", p.settings_title),
+            Some(p) => p.settings_title.to_string(),
+            None => crate::words::settings::run(&settings.a.config()),
+        };
+        let mut parts = vec![run];
         if settings.b.is_some() {
             parts.push("comparing two runs".into());
         }
@@ -99,8 +105,10 @@ impl OfflineStart {
         if settings.start.paused {
             parts.push(format!("paused at t = {} s", significant_trimmed(settings.start.time, 4)));
         }
-        let title = match &self.lesson {
-            Some(l) => crate::lesson::parse(&l.text).map_or_else(|_| l.name.clone(), |p| format!("“{}”", p.title)),
+        let carried = self.lesson.as_ref().map(|l| (l, crate::lesson::parse(&l.text).ok()));
+        let title = match &carried {
+            Some((_, Some(parsed))) => format!("“{}”", parsed.title),
+            Some((l, None)) => l.name.clone(),
             None => "the built-in lesson".into(),
         };
         match value("lesson") {
@@ -108,7 +116,9 @@ impl OfflineStart {
             None if self.lesson.is_some() => parts.push(format!("carries {title}")),
             None => {}
         }
-        if settings.view.answers_hidden {
+        // Student mode: set by the state (`answers=hidden`) or by the lesson (`answers: hidden`).
+        let by_lesson = matches!(&carried, Some((_, Some(parsed))) if parsed.answers_hidden);
+        if settings.view.answers_hidden || by_lesson {
             parts.push("student mode".into());
         }
         parts.join("; ")

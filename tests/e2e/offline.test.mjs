@@ -112,6 +112,14 @@ test('a teacher\'s file: their lesson and student mode travel, and WebGPU draws 
   // Student mode hides the verdict until the answer.
   await page.waitForFunction(() => /Student mode/.test(document.body.textContent ?? ''), null, { timeout: 10000 });
   await page.screenshot({ path: path.join(shots, 'offline-homework-phone.png') });
+  // "Show me" makes the step's settings, and the address keeps them: a reload loses nothing.
+  await page.click('#lesson-next');
+  await page.waitForFunction(() => /Find a stable δ/.test(document.querySelector('#lesson-title')?.textContent ?? ''));
+  await page.click('#lesson-reveal');
+  await page.waitForFunction(() => /delta=0\.05/.test(location.search), null, { timeout: 10000 });
+  await page.reload();
+  await page.waitForFunction(() => /Find a stable δ/.test(document.querySelector('#lesson-title')?.textContent ?? ''), null, { timeout: 20000 });
+  assert.equal(await page.evaluate(() => window.flexarm.session.controls().find((/** @type {any} */ c) => c.key === 'delta')?.value), '0.05');
   assert.deepEqual(problems, []);
   await close();
 

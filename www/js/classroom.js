@@ -47,9 +47,10 @@ export function createClassroom({ session, store, presets, guard, report, change
       lessonDo(() => session.lessonAnswer(choice));
       showFigure();
     },
+    // "Show me": the step's settings, which the controls and the address follow like any change.
     reveal: () => {
       session.setWallClock(Date.now());
-      guard('Lesson', () => session.lessonReveal());
+      change(() => session.lessonReveal());
       refresh();
     },
   });

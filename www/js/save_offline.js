@@ -53,7 +53,8 @@ export function createSaveOffline({ wasm, session, paused, download, report }) {
   new IntersectionObserver((entries, observer) => {
     if (!entries.some((e) => e.isIntersecting)) return;
     observer.disconnect();
-    prepare().then((p) => setText(status, sizeText(p, fileOf(p))), () => {});
+    setText(status, 'Save for offline: measuring the file (the page makes it once)…');
+    prepare().then((p) => setText(status, sizeText(p, fileOf(p))), () => setText(status, ''));
   }).observe(button);
 
   button.addEventListener('click', async () => {

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use clap::{ArgMatches, Command};
 use flexarm::offline::{self, Bundle, OfflineStart};
 
-use crate::cli::{self, lib_error, option, usage_error, Res};
+use crate::cli::{self, option, usage_error, Res};
 
 /// The built page, where it is in this repository.
 const WWW: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/www");
@@ -67,8 +67,9 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         }
     };
     let state = m.get_one::<String>("state").map_or("", String::as_str);
-    let start =
-        OfflineStart::new(state, lesson).map_err(|e| usage_error(format!("--state/--lesson: {}", lib_error(e).0)))?;
+    // The state alone first, so that a mistake is named with its flag (a lesson's names its file).
+    OfflineStart::new(state, None).map_err(|e| usage_error(format!("--state: {e}")))?;
+    let start = OfflineStart::new(state, lesson).map_err(|e| usage_error(e.to_string()))?;
 
     let mut bundle = Bundle::new();
     while let Some(path) = bundle.next_wanted().map(str::to_string) {

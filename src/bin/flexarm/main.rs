@@ -100,7 +100,15 @@ fn one_line(e: &clap::Error, command: Option<&str>) -> String {
         Some(c) => format!("see 'flexarm {c} --help'"),
         None => "see 'flexarm --help'".into(),
     };
-    format!("{} ({see})", parts.join("; "))
+    // A line that ends in ':' introduces the next ("not provided: --out <FILE>"), not a new clause.
+    let mut text = String::new();
+    for part in &parts {
+        if !text.is_empty() {
+            text.push_str(if text.ends_with(':') { " " } else { "; " });
+        }
+        text.push_str(part);
+    }
+    format!("{text} ({see})")
 }
 
 fn run(args: Vec<String>) -> Res<String> {
