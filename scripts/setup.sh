@@ -56,6 +56,16 @@ ensure_browser() {
     fi
 }
 
+# Debian's firefox-esr (tests only): the offline file is also opened in Firefox, over its own
+# Marionette protocol (tests/e2e/firefox.mjs) — no driver or browser is downloaded.
+ensure_firefox() {
+    if ! command -v firefox-esr >/dev/null 2>&1; then
+        step "installing Debian's firefox-esr"
+        as_root apt-get update -qq
+        as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq firefox-esr >/dev/null
+    fi
+}
+
 ensure_node() {
     if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
         step "installing Node.js and npm (Debian)"

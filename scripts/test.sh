@@ -30,6 +30,7 @@ step "type-checking the page's modules against the wasm-bindgen declarations (ts
 tests/e2e/node_modules/.bin/tsc -p www/jsconfig.json
 tests/e2e/node_modules/.bin/tsc -p www/jsconfig.strict.json
 
+ensure_firefox
 step "the offline file (flexarm bundle → target/offline/flexarm-offline.html), which the end-to-end tests open from disk"
 cargo run --locked --quiet --bin flexarm -- bundle --out target/offline/flexarm-offline.html
 
