@@ -228,7 +228,8 @@ fn a_teachers_lesson_and_the_python_script_in_the_page() {
     let homework = include_bytes!("../../www/lessons/windows.md").to_vec();
     let query = "lesson_src=lessons/windows.md&lesson=2";
     let mut session = WebSession::new(query);
-    let classroom = WebClassroom::new(&mut session, query, None, Some("lessons/windows.md".into()), Some(homework));
+    let classroom =
+        WebClassroom::new(&mut session, query, None, Some("lessons/windows.md".into()), Some(homework), false, false);
     assert_eq!(js_sys::Array::from(&session.notices().map_err(JsValue::from).unwrap()).length(), 0);
     assert_eq!(js_sys::Array::from(&classroom.notices().map_err(JsValue::from).unwrap()).length(), 0);
     let state = classroom.state_string(&session);
@@ -254,7 +255,7 @@ fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
     let teacher = || (Some("lessons/windows.md".to_string()), Some(homework.clone()));
     let mut session = WebSession::new(query);
     let (path, bytes) = teacher();
-    let mut classroom = WebClassroom::new(&mut session, query, None, path, bytes);
+    let mut classroom = WebClassroom::new(&mut session, query, None, path, bytes, false, false);
     let status = session.status().map_err(JsValue::from).unwrap();
     let runs = js_sys::Array::from(&get(&status, "runs"));
     assert_eq!(verdict(&runs.get(0)), "hidden");
@@ -272,16 +273,67 @@ fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
 
     let mut again = WebSession::new(query);
     let (path, bytes) = teacher();
-    let mut reloaded = WebClassroom::new(&mut again, query, None, path, bytes);
+    let mut reloaded = WebClassroom::new(&mut again, query, None, path, bytes, false, false);
     reloaded.restore_answers(&mut again, &csv).map_err(JsValue::from).unwrap();
     assert_eq!(reloaded.answers_csv(), csv);
     let mut other_session = WebSession::new("lesson=1");
-    let mut other = WebClassroom::new(&mut other_session, "lesson=1", Some(flexarm_lesson()), None, None);
+    let mut other = WebClassroom::new(&mut other_session, "lesson=1", Some(flexarm_lesson()), None, None, false, false);
     let e = other.restore_answers(&mut other_session, &csv).map_err(error_message).unwrap_err();
     assert!(e.contains("another text of the lesson"), "{e}");
     reloaded.act(&mut again, "show", 0).map_err(JsValue::from).unwrap();
     let all = reloaded.status(&mut again).map_err(JsValue::from).unwrap();
     assert!(get(&get(&all, "classroom"), "hidden").is_null());
+}
+
+/// The offline file through the wasm binding: the lesson it carries opens at the step its start
+/// names, in student mode, and its links name the step, not a path; the file the classroom
+/// writes from a bundle holds that start and the lesson; a lesson by path is refused offline.
+#[wasm_bindgen_test]
+fn an_offline_file_carries_its_lesson_step_moment_and_student_mode() {
+    let homework = include_str!("../../www/lessons/windows.md");
+    let query = "lesson=2&answers=hidden";
+    let mut session = WebSession::new(query);
+    let classroom = WebClassroom::new(
+        &mut session,
+        query,
+        None,
+        Some("windows.md".into()),
+        Some(homework.as_bytes().to_vec()),
+        true,
+        true,
+    );
+    let state = classroom.state_string(&session);
+    assert!(state.contains("lesson=2") && state.contains("answers=hidden") && !state.contains("lesson_src"), "{state}");
+    // A bundle of stand-in files: the file holds the start and the lesson.
+    let mut bundle = flexarm::web::offline::WebBundle::new();
+    while let Some(path) = bundle.next_wanted() {
+        let bytes: &[u8] = match path.as_str() {
+            "index.html" => {
+                b"<html><head><script type=\"module\" src=\"js/main.js\"></script></head><body></body></html>"
+            }
+            _ => b"",
+        };
+        bundle.add(&path, bytes.to_vec()).map_err(JsValue::from).unwrap();
+    }
+    let file = classroom.offline_file(&session, &bundle, &[31, 139], true).map_err(JsValue::from).unwrap();
+    let html = String::from_utf8(file).unwrap();
+    for part in
+        ["lesson=2", "answers=hidden", "paused=1", "\"name\":\"windows.md\"", "data-main=\"@flexarm/js/main.js\""]
+    {
+        assert!(html.contains(part), "{part} is not in the file");
+    }
+    let words = flexarm::web::offline::WebBundle::describe(query, Some("windows.md".into()), Some(homework.into()));
+    assert!(words.contains("step 2") && words.contains("student mode"), "{words}");
+    // Offline, a lesson by path cannot load: said in one notice.
+    let mut other = WebSession::new("lesson_src=lessons/mine.md");
+    let refused = WebClassroom::new(&mut other, "lesson_src=lessons/mine.md", None, None, None, false, true);
+    let notices = js_sys::Array::from(&refused.notices().map_err(JsValue::from).unwrap());
+    assert_eq!(notices.length(), 1);
+    assert!(js_sys::JSON::stringify(&notices.get(0))
+        .unwrap()
+        .as_string()
+        .unwrap()
+        .contains("an offline file cannot load"));
 }
 
 fn flexarm_lesson() -> String {
