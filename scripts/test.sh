@@ -32,6 +32,7 @@ tests/e2e/node_modules/.bin/tsc -p www/jsconfig.strict.json
 
 ensure_firefox
 step "the offline file (flexarm bundle → target/offline/flexarm-offline.html), which the end-to-end tests open from disk"
+mkdir -p target/offline
 cargo run --locked --quiet --bin flexarm -- bundle --out target/offline/flexarm-offline.html
 
 step "end-to-end tests of the page (Playwright + Chromium)"
