@@ -41,8 +41,9 @@ async function survives(query, { ignored, shot, embed = false }) {
         lines: items.map((li) => li.textContent),
         // Anything but plain text inside the notice's items would be injected markup.
         markup: items.reduce((n, li) => n + li.children.length, 0),
-        // Elements a payload would create; the page itself has none of them and one script.
-        injected: document.querySelectorAll('img, iframe, object, embed, script:not([src]), [onerror], [onload]').length,
+        // Elements a payload would create; the page itself has none of them but its module script
+        // and its own inline one (#opened-from-disk: what a page opened from disk says).
+        injected: document.querySelectorAll('img, iframe, object, embed, script:not([src]):not(#opened-from-disk), [onerror], [onload]').length,
         scrollWidth: document.documentElement.scrollWidth,
         width: innerWidth,
         search: location.search,
