@@ -109,6 +109,64 @@ pub fn alpha_star(plant: &PlantParameters) -> f64 {
     plant.bv1 / (3.0 * plant.ir1)
 }
 
+/// Where the δ → 0 pair stops being stable as α = α1 = α2 grows from 0, under a fixed preliminary
+/// feedback `gain` (zeros for none). For α1 = α2 the pair is A4(α) = [[3α, 1], [−(c + 6α²), −b]]
+/// with b = (Bv1 − K_θ̇,1)/Ir1 − λ K_θ̇,2 and c = K1/Ir1 + K1/J_eff − K_θ,1/Ir1 − λ K_θ,2
+/// ([`closed_form_a4`]), so
+///
+/// ```text
+/// tr A4 = 3α − b            (zero at α = b/3: α* for no feedback)
+/// det A4 = 6α² − 3bα + c    (zero at α = (3b ± √(9b² − 24c))/12 where 9b² ≥ 24c)
+/// ```
+///
+/// The pair is stable exactly where tr A4 < 0 and det A4 > 0. Where det A4 has real roots the
+/// smaller one lies below b/3, so a heavily damped motor (b² ≥ 8c/3) loses the pair to det first:
+/// the pair is then two real eigenvalues and one of them crosses zero (the motor no longer
+/// swings, and a slow real mode grows) before tr A4 reaches zero.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct AlphaBound {
+    /// α where tr A4 = 0, 1/s (α* = Bv1/(3 Ir1) without feedback; may be ≤ 0).
+    pub trace_zero: f64,
+    /// The smaller α ≥ 0 where det A4 = 0, 1/s, if det A4 has a real root there.
+    pub det_zero: Option<f64>,
+}
+
+impl AlphaBound {
+    /// The bound of the pair under `gain` at rest at `q2`.
+    pub fn new(plant: &PlantParameters, q2: f64, gain: &FeedbackGain) -> Self {
+        // The matrix at α = 0 gives b and c; the α terms are the closed form's own.
+        let a = closed_form_a4(plant, [0.0, 0.0], q2, gain);
+        let (b, c) = (-a[(1, 1)], -a[(1, 0)]);
+        let disc = 9.0 * b * b - 24.0 * c;
+        let det_zero = if c <= 0.0 {
+            // det A4 ≤ 0 already at α = 0: a real eigenvalue is ≥ 0 for every α.
+            Some(0.0)
+        } else if disc >= 0.0 && b > 0.0 {
+            Some((3.0 * b - disc.sqrt()) / 12.0)
+        } else {
+            None
+        };
+        Self { trace_zero: b / 3.0, det_zero }
+    }
+
+    /// The pair is stable for 0 ≤ α < this, 1/s (0 where it is unstable already at α = 0).
+    pub fn stable_below(&self) -> f64 {
+        self.det_zero.map_or(self.trace_zero, |d| d.min(self.trace_zero)).max(0.0)
+    }
+
+    /// Whether det A4 = 0 comes first (the pair turns real and a real eigenvalue crosses zero),
+    /// rather than tr A4 = 0 (a swing that starts to grow).
+    pub fn lost_to_det(&self) -> bool {
+        self.det_zero.is_some_and(|d| d < self.trace_zero)
+    }
+}
+
+/// Whether a 2×2 real matrix with this trace and determinant has a complex pair (a swing):
+/// tr² < 4 det.
+pub fn swings(trace: f64, det: f64) -> bool {
+    trace * trace < 4.0 * det
+}
+
 /// A4 in closed form with the preliminary feedback `gain` acting continuously (u = K x + v):
 /// the pair of [`JointResonance`] plus what K's columns for θ and θ̇ add.
 pub fn closed_form_a4(plant: &PlantParameters, alpha: [f64; 2], q2: f64, gain: &FeedbackGain) -> Matrix2<f64> {
@@ -227,6 +285,13 @@ pub struct ResonanceReport {
     pub arm_pair: [f64; 2],
     /// α* = Bv1/(3 Ir1), 1/s.
     pub alpha_star: f64,
+    /// Where the pair without preliminary feedback stops being stable as α = α1 = α2 grows.
+    pub open_bound: AlphaBound,
+    /// The same under the loop's fixed preliminary feedback (None without one, or where the gain
+    /// changes with α).
+    pub feedback_bound: Option<AlphaBound>,
+    /// The same under the paper's K_pr, whatever the loop's own feedback.
+    pub paper_bound: AlphaBound,
     /// What the loop's preliminary feedback adds to Re A4, 1/s (0 without one).
     pub feedback_shift: f64,
     /// For a fixed gain (the paper's), the largest α = α1 = α2 it keeps the pair stable at, 1/s.
@@ -257,13 +322,14 @@ impl ResonanceReport {
             omega_clamped: r.omega_clamped,
             arm_pair: [own.re, own.im],
             alpha_star: alpha_star(plant),
+            open_bound: AlphaBound::new(plant, q2, &FeedbackGain::zeros()),
+            feedback_bound: damps.then(|| AlphaBound::new(plant, q2, gain)),
+            paper_bound: AlphaBound::new(plant, q2, &crate::control::feedback::paper_gain()),
             feedback_shift: shift,
-            feedback_alpha_limit: damps.then(|| alpha_limit(plant, shift)),
+            // Where det A4 reaches zero first (a heavily damped motor) the trace's limit is too high.
+            feedback_alpha_limit: damps.then(|| AlphaBound::new(plant, q2, gain).stable_below()),
             // The limit is for α1 = α2, where the shift does not depend on α.
-            paper_alpha_limit: alpha_limit(
-                plant,
-                feedback_shift(plant, [1.0, 1.0], q2, &crate::control::feedback::paper_gain()),
-            ),
+            paper_alpha_limit: AlphaBound::new(plant, q2, &crate::control::feedback::paper_gain()).stable_below(),
         }
     }
 }

@@ -84,8 +84,13 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
             (_, g) => minus(&crate::words::verdict::growth(g, m.errors_at_floor)),
         },
         a4: report.map_or("—".into(), |r| {
-            let [re, im] = r.limit_pair[0];
-            format!("{} ± {}j 1/s", significant(re, 3), significant(im.abs(), 4))
+            let [[re, im], [re2, im2]] = r.limit_pair;
+            if im == 0.0 && im2 == 0.0 {
+                // Two real eigenvalues (a motor damped past its swing): never "± 0j".
+                format!("{} and {} 1/s", significant(re.max(re2), 3), significant(re.min(re2), 3))
+            } else {
+                format!("{} ± {}j 1/s", significant(re, 3), significant(im.abs(), 4))
+            }
         }),
     };
     RunStatus {

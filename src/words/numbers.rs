@@ -41,6 +41,21 @@ pub fn complex_pair(re: f64, im: f64) -> String {
     minus(&format!("{re:.2} ± {:.2}j 1/s", im.abs()))
 }
 
+/// Two eigenvalues of a real matrix, each [re, im] (a conjugate pair or two real ones), with
+/// `decimals` decimals: "2.6391 ± 29.5823j 1/s", or "0.0765 and -143.6381 1/s (two real
+/// eigenvalues)" where both are real — never a real pair written as "± 0.0000j". ASCII minus, as
+/// the command line's tables print; the page's sentences wrap it in [`minus`].
+pub fn eigen_pair(pair: [[f64; 2]; 2], decimals: usize) -> String {
+    let [[r0, i0], [r1, i1]] = pair;
+    let scale = r0.abs().max(r1.abs()).max(1.0);
+    if i0.abs() <= 1e-12 * scale && i1.abs() <= 1e-12 * scale {
+        let (hi, lo) = if r0 >= r1 { (r0, r1) } else { (r1, r0) };
+        format!("{hi:.decimals$} and {lo:.decimals$} 1/s (two real eigenvalues)")
+    } else {
+        format!("{r0:.decimals$} ± {:.decimals$}j 1/s", i0.abs())
+    }
+}
+
 /// The eigenvalues of a real 2×2 matrix from its trace and determinant: "2.64 ± 29.58j 1/s", or
 /// "−1.00 and −5.00 1/s" where they are real.
 pub fn eigenvalues_2x2(trace: f64, det: f64) -> String {

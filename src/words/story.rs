@@ -175,10 +175,25 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     } else {
         "the controller neither feeds nor drains the resonance"
     };
-    let re_a4_says = if r.real_part > 0.0 {
-        "Re A4 > 0: in the limit the pair grows"
+    // Re A4 is a growth rate only while the pair swings; two real eigenvalues are decided by the
+    // larger one (det A4 < 0 puts one in the right half-plane whatever the trace).
+    let re_a4_says = if !crate::analysis::resonance::swings(r.trace, r.determinant) {
+        let larger = r.real_part + (r.trace * r.trace / 4.0 - r.determinant).max(0.0).sqrt();
+        if larger > 0.0 {
+            minus(&format!(
+                "A4 is two real eigenvalues here, the larger {:.2} 1/s > 0: the motor no longer swings, and in the \
+                 limit a slow real mode grows (Re A4 is only their mean)",
+                larger
+            ))
+        } else {
+            "A4 is two real eigenvalues here, both < 0: the motor no longer swings, and in the limit it settles \
+             (Re A4 is only their mean)"
+                .into()
+        }
+    } else if r.real_part > 0.0 {
+        "Re A4 > 0: in the limit the pair grows".into()
     } else {
-        "Re A4 < 0: in the limit the pair dies out"
+        "Re A4 < 0: in the limit the pair dies out".to_string()
     };
     // With a model error A4 is what a controller that knew the arm would leave: say so.
     let re_a4_says = if model_error {
@@ -188,7 +203,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
             if open_re > 0.0 { "grows" } else { "dies out" }
         )
     } else {
-        re_a4_says.to_string()
+        re_a4_says
     };
     let six_poles = if a1 == a2 {
         format!("{} 1/s, all six", minus(&significant_trimmed(-a1, 3)))
@@ -284,7 +299,11 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         omega_joint: format!("{:.1} rad/s", r.omega_joint),
         omega_clamped: format!("{:.1} rad/s", r.omega_clamped),
         j_eff: format!("{:.2} kg m²", r.j_eff),
-        a4: if model_error { eigenvalues_2x2(r.trace, r.determinant) } else { complex_pair(open_re, open_im) },
+        a4: if model_error {
+            eigenvalues_2x2(r.trace, r.determinant)
+        } else {
+            minus(&super::numbers::eigen_pair(report.limit_pair_open, 2))
+        },
         a4_trace: per_second(r.trace),
         a4_det: format!("{:.0} 1/s²", r.determinant),
         re_a4: per_second(r.real_part),

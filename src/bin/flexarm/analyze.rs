@@ -1,8 +1,9 @@
 //! `flexarm analyze`: the sampled loop linearized at rest — ρ, the eigenvalues, the δ → 0 pair A4.
 
 use clap::{ArgMatches, Command};
-use flexarm::analysis::resonance::ResonanceReport;
+use flexarm::analysis::resonance::{swings, ResonanceReport};
 use flexarm::analysis::{self, StabilityReport};
+use flexarm::plot::format::minus;
 use flexarm::schema;
 use flexarm::{words, SimulationConfig};
 use serde_json::json;
@@ -122,7 +123,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     if config.has_model_error() {
         text += "(the closed form below is for a controller that knows this arm; the pairs above include the model error)\n";
     }
-    text += &resonance_text(&report.resonance);
+    text += &resonance_text(&report.resonance, &config);
     text += &format!(
         "stable windows of δ at these α (edges within {:.0e} s): {}\n",
         windows.tolerance,
@@ -169,7 +170,7 @@ fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
             None => "  (λ = 0: no continuous equivalent)\n".into(),
         };
     }
-    let pair = |p: [[f64; 2]; 2]| format!("{:.4} ± {:.4}j 1/s", p[0][0], p[0][1].abs());
+    let pair = |p: [[f64; 2]; 2]| flexarm::words::numbers::eigen_pair(p, 4);
     // With a model error the limit pair is no longer A4 (the controller's model is not the arm).
     let name = if c.has_model_error() { "pair (with the model error)" } else { "pair A4" };
     s += &format!("δ → 0 {name} without preliminary feedback: {}\n", pair(r.limit_pair_open));
@@ -186,7 +187,7 @@ fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
 
 /// The joint's resonance in closed form at the rest point, from the report (see
 /// `flexarm::analysis::resonance`).
-fn resonance_text(r: &ResonanceReport) -> String {
+fn resonance_text(r: &ResonanceReport, config: &SimulationConfig) -> String {
     let a = r.a4;
     let mut s =
         "the joint's resonance in closed form (δ → 0; z = θ − θ*, the gap to the motor angle the links' law needs):\n"
@@ -201,19 +202,46 @@ fn resonance_text(r: &ResonanceReport) -> String {
          det {:.3} 1/s²\n",
         a[0][0], a[0][1], a[1][0], a[1][1], r.trace, r.determinant
     );
-    s += &format!(
-        "  Re A4 = 3β/2 − Bv1/(2 Ir1) = {:.4} − {:.4} = {:.4} 1/s, with β = α1 + μ (α1 − α2) = {:.4} 1/s (μ = {:.4})\n",
-        r.controller_feed, r.motor_damping, r.real_part, r.beta, r.mu
-    );
-    s += &format!(
-        "  the arm alone (no torque, friction cancelled): {:.4} ± {:.4}j 1/s\n",
-        r.arm_pair[0],
-        r.arm_pair[1].abs()
-    );
-    s += &format!(
-        "  α* = Bv1/(3 Ir1) = {:.4} 1/s: below it (α1 = α2) the pair is stable without preliminary feedback\n",
-        r.alpha_star
-    );
+    // Re A4 is the pair's growth rate only while the pair swings (tr² < 4 det); two real
+    // eigenvalues have tr/2 as their mean and the larger one decides.
+    let parts =
+        format!("3β/2 − Bv1/(2 Ir1) = {:.4} − {:.4} = {:.4} 1/s", r.controller_feed, r.motor_damping, r.real_part);
+    let beta = format!("β = α1 + μ (α1 − α2) = {:.4} 1/s (μ = {:.4})", r.beta, r.mu);
+    s += &if swings(r.trace, r.determinant) {
+        format!("  Re A4 = {parts}, with {beta}\n")
+    } else {
+        let root = (r.trace * r.trace / 4.0 - r.determinant).sqrt();
+        minus(&format!(
+            "  A4 has two real eigenvalues here (tr² ≥ 4 det: the motor no longer swings), {:.4} and {:.4} 1/s: \
+             {parts} is their mean, not a growth rate; with {beta}\n",
+            r.real_part + root,
+            r.real_part - root
+        ))
+    };
+    s += &if r.arm_pair[1] != 0.0 {
+        format!(
+            "  the arm alone (no torque, friction cancelled): {:.4} ± {:.4}j 1/s\n",
+            r.arm_pair[0],
+            r.arm_pair[1].abs()
+        )
+    } else {
+        "  the arm alone (no torque, friction cancelled) does not swing: its motor is damped past the swing\n".into()
+    };
+    let b = r.open_bound;
+    s += &if b.lost_to_det() {
+        let at = b.det_zero.unwrap_or(0.0);
+        format!(
+            "  α* = Bv1/(3 Ir1) = {:.4} 1/s, where tr A4 = 0; but det A4 = 6α² − 3α Bv1/Ir1 + K1/Ir1 + K1/J_eff reaches 0 \
+             first, at α = {at:.4} 1/s: without preliminary feedback the pair (α1 = α2) is stable only for α < {at:.4} 1/s \
+             (above it a real eigenvalue is positive: a slow real mode grows)\n",
+            r.alpha_star
+        )
+    } else {
+        format!(
+            "  α* = Bv1/(3 Ir1) = {:.4} 1/s: below it (α1 = α2) the pair is stable without preliminary feedback\n",
+            r.alpha_star
+        )
+    };
     if r.feedback_shift != 0.0 {
         s +=
             &format!("  the preliminary feedback shifts Re A4 by {:.4} 1/s (through its gains on θ̇)", r.feedback_shift);
@@ -221,6 +249,26 @@ fn resonance_text(r: &ResonanceReport) -> String {
             Some(limit) => format!(", whatever α1 = α2: the pair stays stable for α < {limit:.3} 1/s\n"),
             None => "\n".into(),
         };
+        // The paper's gains are fixed (designed for the paper's arm at α = 2): where this arm and α
+        // leave the pair unstable with them, say so and why.
+        let [a1, a2] = config.controller.alpha;
+        if let (Some(limit), true) = (r.feedback_alpha_limit, a1 == a2) {
+            if a1 >= limit {
+                s += &format!(
+                    "  so at α = {} 1/s it does not damp the pair on this arm: the feed 3α/2 − Bv1/(2 Ir1) = {} 1/s \
+                     outweighs the shift's {} 1/s, and small δ fail{}\n",
+                    flexarm::plot::format::significant_trimmed(a1, 3),
+                    minus(&format!("{:.4}", r.real_part)),
+                    minus(&format!("{:.4}", r.feedback_shift)),
+                    if config.preliminary_feedback == flexarm::control::config::PreliminaryFeedbackChoice::Paper {
+                        " (the paper's gains are fixed, designed for the paper's arm at α = 2 1/s; --pf lq is redone for \
+                         each arm and α)"
+                    } else {
+                        ""
+                    }
+                );
+            }
+        }
     }
     s
 }

@@ -1,0 +1,92 @@
+//! Issue 34, items 3 and 6: the pair A4 is not always a swing, and the paper's fixed K_pr does not
+//! damp it on every arm. Where the motor is damped past its swing, A4 is two real eigenvalues (det
+//! A4 can even turn negative: a slow real mode grows though tr A4 < 0), and where a heavier motor
+//! takes the gains' damping shift down (it scales with 1/Ir1), 3α/2 outweighs it. Checked against
+//! the numerical δ → 0 limit of the linearized loop, which knows nothing of the closed forms.
+
+use flexarm::analysis::resonance::*;
+use flexarm::analysis::*;
+use flexarm::control::feedback::*;
+use flexarm::*;
+use std::f64::consts::PI;
+use std::process::Command;
+
+fn numerical(plant: &PlantParameters, alpha: f64, gain: &FeedbackGain) -> LimitPair {
+    limit_pair(&linearize_at_rest(plant, [alpha, alpha], [0.5 * PI, 0.0]), gain).unwrap()
+}
+
+/// The larger real part of the numerical limit pair: the pair is stable where it is < 0.
+fn growth(plant: &PlantParameters, alpha: f64, gain: &FeedbackGain) -> f64 {
+    let e = numerical(plant, alpha, gain).eigenvalues;
+    e[0].re.max(e[1].re)
+}
+
+fn analyze(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_flexarm")).arg("analyze").args(args).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// The α below which the pair is stable is where tr A4 or det A4 first reaches zero, whichever is
+/// first — on a lightly damped motor α* = Bv1/(3 Ir1), on a heavily damped one the det root.
+#[test]
+fn the_pair_is_stable_exactly_below_its_alpha_bound_on_light_and_heavy_damping() {
+    let paper = PlantParameters::default();
+    let arms = [
+        paper,
+        PlantParameters { bv1: 290.0, ..paper },
+        PlantParameters { bv1: 120.0, ..paper },
+        PlantParameters { bv1: 400.0, ir1: 4.0, ..paper },
+        PlantParameters { k1: paper.k1 / 4.0, bv1: 60.0, ..paper },
+    ];
+    let mut by_det = 0;
+    for plant in arms {
+        for gain in [FeedbackGain::zeros(), paper_gain()] {
+            let b = AlphaBound::new(&plant, 0.0, &gain);
+            let edge = b.stable_below();
+            assert!(edge > 0.0, "{plant:?}");
+            assert!(growth(&plant, 0.97 * edge, &gain) < 0.0, "{plant:?}: stable just below {edge}");
+            assert!(growth(&plant, 1.03 * edge, &gain) > 0.0, "{plant:?}: unstable just above {edge}");
+            by_det += usize::from(b.lost_to_det());
+        }
+    }
+    // The heavily damped motors lose the pair to det A4 first: α* alone would be wrong there.
+    assert!(by_det >= 3, "{by_det}");
+    // α* is the trace's bound without feedback.
+    assert!((AlphaBound::new(&paper, 0.0, &FeedbackGain::zeros()).trace_zero - alpha_star(&paper)).abs() < 1e-12);
+}
+
+#[test]
+fn analyze_prints_a_real_pair_as_two_real_eigenvalues_and_the_true_alpha_bound() {
+    let text = analyze(&["--bv1", "290", "--pf", "off"]);
+    assert!(!text.contains("± 0.0000j"), "{text}");
+    let plant = PlantParameters { bv1: 290.0, ..PlantParameters::default() };
+    let n = numerical(&plant, 2.0, &FeedbackGain::zeros()).eigenvalues;
+    assert!(n[0].im == 0.0 && n[1].im == 0.0, "a real pair: {n:?}");
+    let (hi, lo) = (n[0].re.max(n[1].re), n[0].re.min(n[1].re));
+    assert!(text.contains(&format!("{hi:.4} and {lo:.4} 1/s (two real eigenvalues)")), "{text}");
+    // The trace formula is a mean there, not a growth rate, and α* is not where it turns unstable.
+    assert!(!text.contains("Re A4 = 3β/2"), "{text}");
+    assert!(text.contains("is their mean, not a growth rate"), "{text}");
+    assert!(!text.contains("below it (α1 = α2) the pair is stable"), "{text}");
+    let edge = AlphaBound::new(&plant, 0.0, &FeedbackGain::zeros()).stable_below();
+    assert!(edge < 2.0 && growth(&plant, 2.0, &FeedbackGain::zeros()) > 0.0);
+    assert!(text.contains(&format!("stable only for α < {edge:.4} 1/s")), "{text}");
+    // The paper's arm keeps its swing and its α*.
+    let text = analyze(&["--pf", "off"]);
+    assert!(text.contains("Re A4 = 3β/2 − Bv1/(2 Ir1)") && text.contains("below it (α1 = α2) the pair is stable"));
+}
+
+/// Item 6: the heavier motor (I_r1 × 4) quarters what the paper's gains add to the motor's
+/// damping through T1; at α = 2 the feed 3α/2 outweighs it and small δ fail — analyze says so.
+#[test]
+fn analyze_says_where_the_papers_gains_stop_working_on_the_heavier_motor() {
+    let heavier = PlantParameters { ir1: 4.0 * PlantParameters::default().ir1, ..PlantParameters::default() };
+    assert!(growth(&heavier, 2.0, &paper_gain()) > 0.0, "the paper's K_pr leaves the pair unstable");
+    let text = analyze(&["--arm", "heavier", "--delta", "0.01"]);
+    assert!(text.contains("at α = 2 1/s it does not damp the pair on this arm"), "{text}");
+    assert!(text.contains("redone for each arm and α"), "{text}");
+    // Where the gains do damp the pair, nothing of the kind is said.
+    assert!(growth(&PlantParameters::default(), 2.0, &paper_gain()) < 0.0);
+    assert!(!analyze(&["--delta", "0.01"]).contains("does not damp the pair"));
+}
