@@ -153,3 +153,28 @@ fn small_alpha_and_the_papers_gains_at_large_alpha_are_as_printed() {
         &format!("sampled at δ: {}", flexarm::words::settings::windows(s.windows().unwrap())),
     );
 }
+
+/// Issue 34 item 6: where the paper's fixed gains stop working when the controller knows the arm.
+#[test]
+fn the_papers_gains_on_the_heavier_motor_are_as_printed() {
+    use flexarm::analysis::resonance::{closed_form_a4, feedback_shift, AlphaBound};
+    use flexarm::control::feedback::paper_gain;
+    let p = PlantParameters { ir1: 4.0 * PlantParameters::default().ir1, ..PlantParameters::default() };
+    let heading = "(not in the paper) the paper's K_pr on the heavier motor";
+    let text = row(heading);
+    let row = heading;
+    assert_says(row, &fixed(feedback_shift(&p, [2.0, 2.0], 0.0, &paper_gain()), 3));
+    assert_says(row, &format!("only for α < {:.3} 1/s", AlphaBound::new(&p, 0.0, &paper_gain()).stable_below()));
+    let pair = closed_form_a4(&p, [2.0, 2.0], 0.0, &paper_gain()).complex_eigenvalues();
+    let upper = if pair[0].im > 0.0 { pair[0] } else { pair[1] };
+    assert_says(row, &format!("A4 with K_pr is {:.2} ± {:.2}j", upper.re, upper.im));
+    for (pf, state) in [("paper", "A4 with K_pr"), ("lq", "the LQ design")] {
+        let (s, _) = Session::open(&format!("delta=0.01&arm=heavier&pf={pf}"));
+        let rho = s.run(0).unwrap().analysis().report().unwrap().spectral_radius;
+        let said = format!("ρ(0.01 s) = {rho:.4}");
+        assert_says(row, &said);
+        assert!(text.find(state).unwrap() < text.find(&said).unwrap(), "{state} before {said}");
+        assert_eq!(rho > 1.0, pf == "paper");
+    }
+}
+

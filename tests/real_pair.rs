@@ -90,3 +90,30 @@ fn analyze_says_where_the_papers_gains_stop_working_on_the_heavier_motor() {
     assert!(growth(&PlantParameters::default(), 2.0, &paper_gain()) < 0.0);
     assert!(!analyze(&["--delta", "0.01"]).contains("does not damp the pair"));
 }
+
+/// Item 14: "In short" says where "every small δ" holds with the paper's K_pr, for the arm and α
+/// shown — not the paper's arm at α = 2 everywhere.
+#[test]
+fn the_pages_cure_sentence_holds_on_the_arm_and_alpha_shown() {
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/www/index.html")).unwrap();
+    assert!(page.contains(r#"<span data-live="kpr_cure">"#), "In short's cure is live");
+    let cure = |state: &str| {
+        let (s, notices) = flexarm::session::Session::open(state);
+        assert!(notices.is_empty(), "{notices:?}");
+        s.status().story.unwrap().kpr_cure
+    };
+    let paper = PlantParameters::default();
+    for (state, plant, alpha) in [
+        ("pf=paper", paper, 2.0),
+        ("alpha=5&pf=paper", paper, 5.0),
+        ("arm=heavier&pf=paper", PlantParameters { ir1: 4.0 * paper.ir1, ..paper }, 2.0),
+        ("alpha=1&arm=heavier", PlantParameters { ir1: 4.0 * paper.ir1, ..paper }, 1.0),
+    ] {
+        let text = cure(state);
+        let works = growth(&plant, alpha, &paper_gain()) < 0.0;
+        assert_eq!(text.contains("then every small δ works"), works, "{state}: {text}");
+        assert_eq!(text.contains("small δ still fail"), !works, "{state}: {text}");
+        let edge = AlphaBound::new(&plant, 0.0, &paper_gain()).stable_below();
+        assert!(text.contains(&format!("{edge:.2} 1/s")), "{state}: the bound for this arm: {text}");
+    }
+}

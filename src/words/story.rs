@@ -68,6 +68,9 @@ pub struct Story {
     pub lq_says: String,
     /// Whether the paper's K_pr makes every small δ work at these α: what the pair it makes says.
     pub kpr_works: String,
+    /// The cure in one sentence for "In short", true on the arm and α shown: where the paper's
+    /// K_pr makes every small δ work (α below its bound on this arm), or why it does not here.
+    pub kpr_cure: String,
     /// The arm, only what differs from the paper's: "the paper's arm", "K1 = 4610.4 N m/rad (paper: 1152.6)".
     pub arm: String,
     /// The motor damping that makes Re A4 < 0 with no preliminary feedback, B_v1 > 3β I_r1
@@ -437,10 +440,38 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         math_lag: equations.lag,
         math_energy: equations.energy,
         energy: report.swing_energy.map_or(String::new(), |e| energy_text(&e, law.lag(delta), delta)),
+        kpr_cure: kpr_cure(&paper, r, a1 == a2, &alpha),
         kpr_works: if paper.pair[0] < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()
         } else {
             format!("not here: at {alpha} that pair is in the right half-plane, and the smallest δ fail")
         },
+    }
+}
+
+/// "In short"'s cure, from what the paper's K_pr does to the pair on this arm at these α (the
+/// pair it makes, and for α1 = α2 the largest α it keeps stable): "every small δ" only where the
+/// pair it leaves dies out as δ → 0.
+fn kpr_cure(
+    paper: &PaperFeedbackEffect,
+    r: &crate::analysis::resonance::ResonanceReport,
+    equal: bool,
+    alpha: &str,
+) -> String {
+    let limit = format!("{:.2} 1/s", r.paper_alpha_limit);
+    let pair = complex_pair(paper.pair[0], paper.pair[1]);
+    if paper.pair[0] < 0.0 {
+        let range = if equal { format!(" — on this arm for every α below {limit}") } else { String::new() };
+        format!(
+            "A preliminary feedback Kₚᵣ damps the ringing first (the paper's gains move the pair to {pair} \
+             at {alpha}); then every small δ works{range}."
+        )
+    } else {
+        let range = if equal { format!(" only for α below {limit} on this arm") } else { String::new() };
+        format!(
+            "A preliminary feedback Kₚᵣ damps the ringing first — the paper's gains do so{range}: at \
+             {alpha} they leave the pair at {pair}, the controller's feed 3α/2 outweighs their damping, and small δ \
+             still fail (the LQ design, redone for the arm and α, damps it)."
+        )
     }
 }
