@@ -104,6 +104,37 @@ pub struct Metrics {
     pub verdict: Verdict,
 }
 
+/// A link's tracking error is large beyond this fraction of its travel in the slew: stable or not,
+/// a loop that misses the course by a tenth of the way does not do the job (the paper's stable
+/// runs stay below a thousandth).
+pub const LARGE_ERROR_FRACTION: f64 = 0.1;
+
+/// A run's largest tracking error where it is large against the slew it follows.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LargeError {
+    /// The link, 0 or 1.
+    pub link: usize,
+    /// max |e_i| over the run, rad.
+    pub error: f64,
+    /// |q_df − q_d0| of that link, rad.
+    pub travel: f64,
+}
+
+impl Metrics {
+    /// The link whose largest error is the greatest share of its travel, if that share exceeds
+    /// [`LARGE_ERROR_FRACTION`] (a link that does not move is not judged by it).
+    pub fn large_error(&self, slew: &crate::model::params::SlewParameters) -> Option<LargeError> {
+        (0..2)
+            .filter_map(|i| {
+                let travel = (slew.end[i] - slew.start[i]).abs();
+                let error = self.max_error_slew[i].max(self.max_error_after[i]);
+                (travel > 0.0 && error.is_finite()).then_some(LargeError { link: i, error, travel })
+            })
+            .filter(|l| l.error > LARGE_ERROR_FRACTION * l.travel)
+            .max_by(|a, b| (a.error / a.travel).total_cmp(&(b.error / b.travel)))
+    }
+}
+
 /// One window of the error envelope: its end time, max(|e1|, |e2|) in it, and the rest phase it
 /// belongs to (windows with motion in them are not kept).
 #[derive(Clone, Copy, Debug, PartialEq)]
