@@ -116,4 +116,9 @@ fn analyze_says_rho_against_one_the_way_the_verdict_goes() {
         assert!((shown - e_fold).abs() <= 0.05 * e_fold, "{line}: 1/|ln ρ/δ| = {digits} s");
         assert!(!text.contains("⇒ linearly stable"), "{text}");
     }
+    // The README quotes the line as `analyze --pf off` prints it.
+    let text = flexarm(&["analyze", "--pf", "off"]);
+    let line = text.lines().find(|l| l.starts_with("verdict: ")).unwrap();
+    let readme = include_str!("../README.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(readme.contains(&format!("`--pf off`: `{line}`")), "README should quote {line:?}");
 }
