@@ -28,8 +28,8 @@ fn main() {
         .expect("the paper's loop runs");
         let show = |v: Option<f64>| v.map_or("n/a".to_string(), |m| format!("{m:.1} MiB"));
         println!(
-            "memory: {duration:>7} s run ({rows} trace rows, verdict {}): peak {} (before any run {}), {:.2} s",
-            metrics.verdict.label(),
+            "memory: {duration:>7} s run ({rows} trace rows, the simulation: {}): peak {} (before any run {}), {:.2} s",
+            flexarm::words::verdict::verdict_short(&metrics.verdict),
             show(peak_mib()),
             show(before),
             started.elapsed().as_secs_f64()

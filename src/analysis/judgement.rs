@@ -27,6 +27,20 @@ pub enum Prediction {
 }
 
 impl Prediction {
+    /// ρ's prediction for a loop and its rate ln ρ/δ, where the analysis gave finite numbers: the
+    /// one rule every command and the page judge ρ by (a rate within the borderline band is
+    /// borderline whichever side of 1 ρ is).
+    pub fn of_report(report: &StabilityReport) -> Option<(Prediction, f64)> {
+        let (rho, rate) = (report.spectral_radius, report.growth_rate);
+        (rho.is_finite() && rate.is_finite()).then(|| (Prediction::of_rate(rate), rate))
+    }
+
+    /// The prediction for ρ per sampling period δ (s): by its rate ln ρ/δ.
+    pub fn of_rho(rho: f64, delta: f64) -> Option<Prediction> {
+        let rate = rho.ln() / delta;
+        (rho.is_finite() && rate.is_finite()).then(|| Prediction::of_rate(rate))
+    }
+
     /// The prediction for a growth rate ln ρ/δ (1/s).
     pub fn of_rate(rate: f64) -> Prediction {
         if rate > UNSTABLE_GROWTH_RATE {
@@ -228,6 +242,17 @@ impl Headline {
     }
 }
 
+impl From<Prediction> for Headline {
+    /// ρ's prediction as the headline says it where nothing the simulation saw overrides it.
+    fn from(p: Prediction) -> Headline {
+        match p {
+            Prediction::Stable => Headline::Stable,
+            Prediction::Borderline => Headline::Borderline,
+            Prediction::Unstable => Headline::Unstable,
+        }
+    }
+}
+
 /// The prediction under the headline.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Detail {
@@ -259,6 +284,14 @@ pub struct Judgement {
     pub detail: Detail,
     pub observation: Observation,
     pub rho: RhoLine,
+}
+
+/// The judgement of the linear analysis alone (no run: `analyze`, `sweep` without `--simulate`):
+/// ρ's prediction as the headline, and the sentence under it — the headline and detail [`judge`]
+/// gives a run where nothing the simulation saw overrides ρ. None where ρ is not finite.
+pub fn judge_analysis(report: &StabilityReport) -> Option<(Headline, Detail)> {
+    let (prediction, rate) = Prediction::of_report(report)?;
+    Some((prediction.into(), Detail::Prediction { rho: report.spectral_radius, rate, prediction }))
 }
 
 /// Whether a limit cycle the simulation sees can stand against ρ: always where ρ does not describe
@@ -367,8 +400,8 @@ pub fn judge(
     config: &SimulationConfig,
     error: [f64; 2],
 ) -> Judgement {
-    let predicted = report.map(|r| (r.spectral_radius, r.growth_rate)).filter(|(r, g)| r.is_finite() && g.is_finite());
-    let prediction = predicted.map(|(_, rate)| (Prediction::of_rate(rate), rate));
+    let prediction = report.and_then(Prediction::of_report);
+    let predicted = report.zip(prediction).map(|(r, (_, rate))| (r.spectral_radius, rate));
     let observation = observe(m, prediction, config, error);
     let measured = observation.measured();
     let applies = describes(config);
@@ -383,9 +416,7 @@ pub fn judge(
     let headline = match (m.verdict, judged) {
         (Verdict::Diverged { .. }, _) => Headline::Diverged,
         (Verdict::BoundedOscillation { .. }, _) if credible_cycle(m, applies) => Headline::BoundedOscillation,
-        (_, Some(Prediction::Unstable)) => Headline::Unstable,
-        (_, Some(Prediction::Stable)) => Headline::Stable,
-        (_, Some(Prediction::Borderline)) => Headline::Borderline,
+        (_, Some(p)) => p.into(),
         // Without an analysis that holds, only the simulation can say, once it has seen enough: a
         // growth that has carried the errors far from rest, or a decay that has brought them near
         // it. Near rest the friction's hunting can grow for a while and then settle into a cycle.

@@ -167,25 +167,35 @@ pub fn swings(trace: f64, det: f64) -> bool {
     trace * trace < 4.0 * det
 }
 
-/// A4 in closed form with the preliminary feedback `gain` acting continuously (u = K x + v):
-/// the pair of [`JointResonance`] plus what K's columns for θ and θ̇ add.
-pub fn closed_form_a4(plant: &PlantParameters, alpha: [f64; 2], q2: f64, gain: &FeedbackGain) -> Matrix2<f64> {
+/// B4: how the torques enter the pair, in (ż, ẏ) per N m of (T1, T2) (its columns): T1 adds
+/// T1/Ir1 to ẏ; T2 changes both link accelerations (c = M⁻¹ [0; T2]), and so θ*'s rate (κ, zero
+/// for α1 = α2) and link 1's acceleration in θ*'s second derivative (λ):
+///
+/// ```text
+/// B4 = [[0, κ], [1/Ir1, λ]],  κ = 3 M11 M12 (α2 − α1)/(A2 J_eff K1),
+///                            λ = M12/(A2 J_eff) − 6 M11 M12 (α2² − α1²)/(A2 J_eff K1)
+/// ```
+///
+/// A feedback ΔT = K (z, y) on the pair's coordinates (K's columns for θ and θ̇) makes the pair
+/// A4 + B4 K ([`closed_form_a4`]): the input matrix a design targeting the pair needs.
+pub fn input_matrix(plant: &PlantParameters, alpha: [f64; 2], q2: f64) -> Matrix2<f64> {
     let p = plant;
     let m = Mass::at(p, q2);
     let [a1, a2] = alpha;
-    let base = JointResonance::new(plant, alpha, q2).a4;
-    // ΔT = K_θ z + K_θ̇ y. T2 changes both link accelerations (c = M⁻¹ [0; ΔT2]): through θ*'s
-    // rate (κ, zero for α1 = α2) and through link 1's acceleration in θ*'s second derivative (λ).
     let det = p.a2 * m.j_eff;
     let kappa = 3.0 * m.m11 * m.m12 * (a2 - a1) / (det * p.k1);
     let lambda = m.m12 / det - 6.0 * m.m11 * m.m12 * (a2 * a2 - a1 * a1) / (det * p.k1);
-    let (k_theta, k_rate) = ([gain[(0, 2)], gain[(1, 2)]], [gain[(0, 5)], gain[(1, 5)]]);
-    base + Matrix2::new(
-        kappa * k_theta[1],
-        kappa * k_rate[1],
-        k_theta[0] / p.ir1 + lambda * k_theta[1],
-        k_rate[0] / p.ir1 + lambda * k_rate[1],
-    )
+    Matrix2::new(0.0, kappa, 1.0 / p.ir1, lambda)
+}
+
+/// A4 in closed form with the preliminary feedback `gain` acting continuously (u = K x + v):
+/// the pair of [`JointResonance`] plus B4 ([`input_matrix`]) times K's columns for θ and θ̇ (the
+/// predictor cancels the rest on V*).
+pub fn closed_form_a4(plant: &PlantParameters, alpha: [f64; 2], q2: f64, gain: &FeedbackGain) -> Matrix2<f64> {
+    let base = JointResonance::new(plant, alpha, q2).a4;
+    // ΔT = K_θ z + K_θ̇ y: the rows are T1 and T2.
+    let on_pair = Matrix2::new(gain[(0, 2)], gain[(0, 5)], gain[(1, 2)], gain[(1, 5)]);
+    base + input_matrix(plant, alpha, q2) * on_pair
 }
 
 /// The twist feedback ([`crate::control::feedback::twist_gain`]) that places the δ → 0 pair at
@@ -233,6 +243,10 @@ pub fn arm_pair(plant: &PlantParameters, q2: f64) -> [Complex<f64>; 2] {
     [top, top.conj()]
 }
 
+fn rows(m: &Matrix2<f64>) -> [[f64; 2]; 2] {
+    [[m[(0, 0)], m[(0, 1)]], [m[(1, 0)], m[(1, 1)]]]
+}
+
 fn ordered(ev: nalgebra::Vector2<Complex<f64>>) -> [Complex<f64>; 2] {
     if ev[0].im >= ev[1].im {
         [ev[0], ev[1]]
@@ -271,6 +285,10 @@ pub struct ResonanceReport {
     pub beta: f64,
     /// A4 without preliminary feedback in (z, y), rows.
     pub a4: [[f64; 2]; 2],
+    /// A4 with the loop's preliminary feedback acting continuously, in (z, y), rows.
+    pub a4_with_feedback: [[f64; 2]; 2],
+    /// B4, how the torques (T1, T2: the columns) enter (ż, ẏ), rows ([`input_matrix`]).
+    pub a4_input: [[f64; 2]; 2],
     /// tr A4, 1/s; det A4, 1/s².
     pub trace: f64,
     pub determinant: f64,
@@ -312,7 +330,9 @@ impl ResonanceReport {
             j_eff: r.j_eff,
             mu: r.mu,
             beta: r.beta,
-            a4: [[r.a4[(0, 0)], r.a4[(0, 1)]], [r.a4[(1, 0)], r.a4[(1, 1)]]],
+            a4: rows(&r.a4),
+            a4_with_feedback: rows(&closed_form_a4(plant, alpha, q2, gain)),
+            a4_input: rows(&input_matrix(plant, alpha, q2)),
             trace: r.trace(),
             determinant: r.determinant(),
             real_part: r.real_part(),

@@ -67,19 +67,6 @@ pub enum Verdict {
     Diverged { at: f64, reason: DivergenceReason },
 }
 
-impl Verdict {
-    /// "stable", "unstable", "bounded oscillation" or "diverged": the one name the CLI, the JSON
-    /// and the page use (an identifier; the verdict in words is [`crate::words::verdict`]).
-    pub fn label(&self) -> &'static str {
-        match self {
-            Verdict::Stable | Verdict::SlewLocked { .. } => "stable",
-            Verdict::Unstable { .. } => "unstable",
-            Verdict::BoundedOscillation { .. } => "bounded oscillation",
-            Verdict::Diverged { .. } => "diverged",
-        }
-    }
-}
-
 /// Summary figures of a run.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Metrics {

@@ -99,6 +99,7 @@ pub fn spectral_radius(state: &str) -> Result<f64, JsError> {
 #[derive(Serialize)]
 struct MetricsView {
     time: f64,
+    /// The run's judgement, the status's word ("stable", "borderline", "diverged", …).
     verdict: &'static str,
     growth_rate: Option<f64>,
     diverged_at: Option<f64>,
@@ -349,14 +350,16 @@ impl WebSession {
     /// A run's metrics: `{time, verdict, growth_rate, diverged_at, max_error_slew,
     /// max_error_after, rms_error, max_torque}`.
     pub fn metrics(&self, run: usize) -> Result<JsValue, JsError> {
-        let m = self.run(run)?.closed_loop().metrics();
+        let r = self.run(run)?;
+        let m = r.closed_loop().metrics();
         let diverged_at = match m.verdict {
             Verdict::Diverged { at, .. } => Some(at),
             _ => None,
         };
         to_js(&MetricsView {
             time: m.time,
-            verdict: m.verdict.label(),
+            // The run's judgement, as its status says it (not the simulation's verdict alone).
+            verdict: crate::session::run_status(if run == 0 { "A" } else { "B" }, r).verdict,
             growth_rate: m.growth_rate,
             diverged_at,
             max_error_slew: m.max_error_slew,

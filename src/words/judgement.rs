@@ -28,6 +28,36 @@ pub struct JudgementText {
     pub rho: String,
 }
 
+impl JudgementText {
+    /// The verdict in one line, as the CLI prints it: "Unstable: ρ = 1.0239 > 1 — …".
+    pub fn line(&self) -> String {
+        format!("{}: {}", self.headline, self.detail)
+    }
+}
+
+/// The linear analysis's judgement alone in words (no run): what [`JudgementText`] says of a run
+/// where nothing the simulation saw overrides ρ.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct VerdictText {
+    /// The verdict's one name: "stable", "borderline" or "unstable".
+    pub verdict: &'static str,
+    /// The verdict as the headline says it.
+    pub headline: &'static str,
+    pub detail: String,
+}
+
+impl VerdictText {
+    /// The verdict in one line: "Unstable: ρ = 1.0239 > 1 — …".
+    pub fn line(&self) -> String {
+        format!("{}: {}", self.headline, self.detail)
+    }
+}
+
+/// The linear analysis's judgement in words ([`crate::analysis::judgement::judge_analysis`]).
+pub fn verdict(h: Headline, d: &Detail) -> VerdictText {
+    VerdictText { verdict: h.id(), headline: headline(h), detail: detail(d) }
+}
+
 /// The judgement in words.
 pub fn judgement(j: &Judgement) -> JudgementText {
     JudgementText {
@@ -57,11 +87,7 @@ pub fn headline(h: Headline) -> &'static str {
 /// What ρ predicts, in one word: "stable", "borderline", "unstable" (the verdict's own words, so
 /// a tooltip and the status never judge one ρ differently).
 pub fn prediction_word(p: Prediction) -> &'static str {
-    match p {
-        Prediction::Stable => "stable",
-        Prediction::Borderline => "borderline",
-        Prediction::Unstable => "unstable",
-    }
+    Headline::from(p).id()
 }
 
 /// The sentence under the headline: "ρ = 1.0239 > 1 — in the long run the errors grow e-fold

@@ -1,6 +1,7 @@
 //! The simulation's own verdict in words ([`Verdict`] is a value: stable, unstable, a limit
-//! cycle, errors locked to the slews, diverged), its growth rate, and why a run diverged — one
-//! wording, for the CLI's summary and table and the page's observation alike.
+//! cycle, errors locked to the slews, diverged), its growth rate, and why a run diverged. The
+//! judgement a run is given — ρ's, unless the simulation saw more — is
+//! [`crate::words::judgement`]'s; this is what the simulation alone measured.
 
 use crate::control::metrics::{DivergenceReason, Verdict};
 
@@ -15,25 +16,8 @@ pub fn divergence_reason(reason: DivergenceReason, bound: f64) -> String {
     }
 }
 
-/// The verdict in a sentence, e.g. "unstable (errors grow at 2.273 1/s)"; `bound` is the
-/// divergence bound, rad.
-pub fn verdict(v: &Verdict, bound: f64) -> String {
-    match *v {
-        Verdict::Stable => "stable".into(),
-        Verdict::Unstable { growth_rate } => format!("unstable (errors grow at {growth_rate:.3} 1/s)"),
-        Verdict::BoundedOscillation { amplitude, period } => format!(
-            "bounded oscillation (a limit cycle: amplitude {:.2e}, {:.2e} rad, period {period:.2} s)",
-            amplitude[0], amplitude[1]
-        ),
-        Verdict::SlewLocked { amplitude, period } => format!(
-            "stable (the errors come back with every slew, no larger: up to {:.2e}, {:.2e} rad, every {period:.2} s)",
-            amplitude[0], amplitude[1]
-        ),
-        Verdict::Diverged { at, reason } => format!("diverged at t = {at:.3} s ({})", divergence_reason(reason, bound)),
-    }
-}
-
-/// The verdict in a table cell: "unstable (2.27 1/s)", "limit cycle (7.8 s)", "diverged at 1.23 s".
+/// The simulation's own verdict in a table cell (a benchmark's line): "unstable (2.27 1/s)",
+/// "bounded oscillation (7.80 s)", "diverged at 1.23 s".
 pub fn verdict_short(v: &Verdict) -> String {
     match *v {
         Verdict::Stable => "stable".into(),

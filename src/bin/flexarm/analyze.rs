@@ -9,7 +9,8 @@ use flexarm::{words, SimulationConfig};
 use serde_json::json;
 
 use crate::cli::{self, lib_error, Failure, Res};
-use crate::output::{describe_config, linear_verdict};
+use crate::output::{describe_config, settings_json};
+use flexarm::analysis::judgement::judge_analysis;
 
 /// The run settings the analysis depends on (friction compensation and the slew do not change ρ).
 pub const KEYS: &[&str] = &["delta", "alpha", "alpha1", "alpha2", "pf", "inner", "k", "eps_ratio"];
@@ -75,28 +76,25 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         Some(&torque),
         &flexarm::control::feedback::twist_parts(&gain),
     );
+    // The verdict every command and the page give these settings, in the same words.
+    let (headline, detail) = judge_analysis(&report)
+        .ok_or_else(|| Failure(format!("the linear analysis gave ρ = {}, not a number", report.spectral_radius), 2))?;
+    let verdict = words::judgement::verdict(headline, &detail);
     if m.get_flag("json") {
         // Non-finite floats (e.g. ln 0) become null in serde_json's Value.
         let mut v = serde_json::to_value(&report).map_err(|e| Failure(format!("JSON encoding failed: {e}"), 1))?;
+        // The settings under the schema's keys (δ is `delta`, not the report's field name).
+        let object = v.as_object_mut().ok_or_else(|| Failure("JSON encoding failed: not an object".into(), 1))?;
+        object.remove("sampling_period");
+        // The rest point is the setting `rest` elsewhere; here it is q2 (the analysis does not depend on q1).
+        object.remove("rest");
+        // Not the friction, the slew's repetition or the run's rest point: ρ does not depend on them.
+        object.extend(settings_json(&settings.a, |key| !matches!(key, "friction" | "repeat" | "rest")));
+        v[schema::Q2.key] = json!(report.rest[1]);
         v["state"] = json!(settings.run_query());
-        v["verdict"] = json!(linear_verdict(report.spectral_radius));
-        v["alpha"] = json!(config.controller.alpha);
-        v["k"] = json!(config.controller.horizon_steps);
-        v["eps_ratio"] = json!(config.controller.eps_ratio);
-        v["pf"] = json!(config.preliminary_feedback.name());
-        v["inner"] = json!(config.inner_loop.name());
-        v["twist_stiffness"] = json!(config.twist.stiffness);
-        v["twist_damping"] = json!(config.twist.damping);
-        v["lq_q_twist"] = json!(config.lq.twist);
-        v["lq_q_rate"] = json!(config.lq.twist_rate);
-        v["lq_r"] = json!(config.lq.torque);
-        v["preliminary_feedback"] = json!(config.preliminary_feedback.name());
-        v["inner_loop"] = json!(config.inner_loop.name());
-        // The whole arm under its schema keys (the text output names only what differs).
-        let arm: serde_json::Map<String, serde_json::Value> =
-            schema::ARM_PARAMS.iter().zip(config.plant.values()).map(|(p, x)| (p.key.to_string(), json!(x))).collect();
-        v["arm"] = serde_json::Value::Object(arm);
-        v["model"] = json!(config.model.name());
+        v["verdict"] = json!(verdict.verdict);
+        v["headline"] = json!(verdict.headline);
+        v["detail"] = json!(verdict.detail);
         v["stable_windows"] =
             json!({ "range": windows.range, "windows": windows.windows, "tolerance": windows.tolerance });
         let windows_json = |w: &analysis::StableWindows| json!({ "range": w.range, "windows": w.windows });
@@ -119,7 +117,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
              (k_p in N m/rad, k_d in N m s/rad)\n"
         );
     }
-    text += &analysis_text(&config, &report);
+    text += &analysis_text(&config, &report, &verdict.line());
     if config.has_model_error() {
         text += "(the closed form below is for a controller that knows this arm; the pairs above include the model error)\n";
     }
@@ -139,7 +137,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     Ok(text)
 }
 
-fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
+fn analysis_text(c: &SimulationConfig, r: &StabilityReport, verdict: &str) -> String {
     let mut s = format!(
         "flexarm analyze: sampled loop linearized at rest at q1 = {:.4} rad, q2 = {:.4} rad, friction cancelled\n\
          configuration\n{}",
@@ -148,10 +146,8 @@ fn analysis_text(c: &SimulationConfig, r: &StabilityReport) -> String {
         describe_config(c)
     );
     s += &format!(
-        "spectral radius ρ = {:.6} → {} (ρ < 1 ⇒ linearly stable)\ngrowth rate ln ρ/δ = {:.4} 1/s\n",
-        r.spectral_radius,
-        linear_verdict(r.spectral_radius),
-        r.growth_rate
+        "verdict: {verdict}\nspectral radius ρ = {:.6}, growth rate ln ρ/δ = {:.4} 1/s\n",
+        r.spectral_radius, r.growth_rate
     );
     s += "eigenvalues of the one-period map (s = ln λ/δ, ζ = −Re s/|s|):\n";
     s += &format!(
@@ -201,6 +197,12 @@ fn resonance_text(r: &ResonanceReport, config: &SimulationConfig) -> String {
         "  A4 = [[3β, 1], [−(K1/Ir1 + K1/J_eff + 6γ), −Bv1/Ir1]] = [[{:.4}, {:.0}], [{:.3}, {:.4}]]: trace {:.4} 1/s, \
          det {:.3} 1/s²\n",
         a[0][0], a[0][1], a[1][0], a[1][1], r.trace, r.determinant
+    );
+    let input = r.a4_input;
+    s += &format!(
+        "  how the torques enter (ż, ẏ): B4 = [[0, κ], [1/Ir1, λ]] = [[{:.0}, {:.4e}], [{:.4}, {:.4e}]] per N m of (T1, T2); \
+         a feedback ΔT = K (z, y) makes the pair A4 + B4 K\n",
+        input[0][0], input[0][1], input[1][0], input[1][1]
     );
     // Re A4 is the pair's growth rate only while the pair swings (tr² < 4 det); two real
     // eigenvalues have tr/2 as their mean and the larger one decides.

@@ -4,6 +4,7 @@
 use std::time::Instant;
 
 use clap::{ArgMatches, Command};
+use flexarm::analysis::judgement::Prediction;
 use flexarm::analysis::stability_map::SECONDS_PER_CELL;
 use flexarm::analysis::{stable_intervals, LinearSettings, MapGrid, MapJob, StabilityMap};
 use flexarm::control::Work;
@@ -11,11 +12,13 @@ use flexarm::plot::color::Measure;
 use flexarm::plot::format::significant_trimmed;
 use flexarm::schema;
 use flexarm::view::figure::maps_figure;
+use flexarm::words::judgement::prediction_word;
 use flexarm::PreliminaryFeedbackChoice;
 use serde_json::{json, Value};
 
 use crate::cli::{self, lib_error, parse_number, usage_error, write_file, Failure, Res};
 use crate::long_work::{self, Progress};
+use crate::output::settings_json;
 
 /// The run settings a map takes besides its grid.
 pub const KEYS: &[&str] = &["inner", "k", "eps_ratio"];
@@ -78,7 +81,7 @@ pub fn command() -> Command {
     .arg(cli::option(
         "csv",
         "FILE",
-        "Write ρ to FILE, one row per PF and cell: preliminary_feedback,delta [s],alpha [1/s],rho,stable",
+        "Write ρ to FILE, one row per PF and cell: pf,delta [s],alpha [1/s],rho,verdict (stable, borderline or unstable)",
     ))
     .arg(cli::option(
         "svg",
@@ -225,12 +228,14 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let state = settings.run_query();
     let mut written = Vec::new();
     if let Some(path) = text("csv") {
-        let mut out = String::from("preliminary_feedback,delta [s],alpha [1/s],rho,stable\n");
+        let mut out = String::from("pf,delta [s],alpha [1/s],rho,verdict\n");
         for r in &results {
             for (i, alpha) in alphas.iter().enumerate() {
                 for (j, delta) in deltas.iter().enumerate() {
                     let rho = r.map.at(i, j);
-                    out += &format!("{},{delta},{alpha},{rho},{}\n", r.pf.name(), rho < 1.0);
+                    // ρ's verdict by the rule every command and the page use (borderline by the rate).
+                    let verdict = Prediction::of_rho(rho, *delta).map_or("", prediction_word);
+                    out += &format!("{},{delta},{alpha},{rho},{verdict}\n", r.pf.name());
                 }
             }
         }
@@ -258,11 +263,14 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         let mut out = serde_json::Map::new();
         for r in &results {
             let mut v = serde_json::to_value(&r.map).map_err(|e| Failure(format!("JSON encoding failed: {e}"), 1))?;
-            v["preliminary_feedback"] = json!(r.pf.name());
+            // The settings ρ depends on under the schema's keys (the grid varies δ and α, each map
+            // its own K_pr; the rest does not change ρ).
+            let object = v.as_object_mut().ok_or_else(|| Failure("JSON encoding failed: not an object".into(), 1))?;
+            object.extend(settings_json(&settings.a, |key| {
+                !matches!(key, "delta" | "alpha1" | "alpha2" | "pf" | "friction" | "repeat" | "rest")
+            }));
+            v["pf"] = json!(r.pf.name());
             v["state"] = json!(state);
-            v["inner_loop"] = json!(config.inner_loop.name());
-            v["k"] = json!(config.controller.horizon_steps);
-            v["eps_ratio"] = json!(config.controller.eps_ratio);
             v["stable_fraction"] = json!(r.map.stable_fraction());
             v["summary_alpha"] = json!(alphas[row]);
             v["stable_delta_intervals"] = json!(stable_intervals(&deltas, r.map.row(row)));

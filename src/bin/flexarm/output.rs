@@ -1,20 +1,35 @@
-//! Words and numbers the commands share: the configuration line, the verdicts.
+//! Words and numbers the commands share: the configuration line, the settings in JSON.
 
-use flexarm::control::Verdict;
+use flexarm::schema::{self, Scope, Value as Setting};
+use flexarm::session::RunSettings;
 use flexarm::SimulationConfig;
+use serde_json::{json, Map, Value};
 
-/// The verdict in words, e.g. "unstable (errors grow at 2.273 1/s)".
-pub fn verdict_text(verdict: Verdict, bound: f64) -> String {
-    flexarm::words::verdict::verdict(&verdict, bound)
-}
-
-/// "stable" for ρ < 1, else "unstable".
-pub fn linear_verdict(rho: f64) -> &'static str {
-    if rho < 1.0 {
-        "stable"
-    } else {
-        "unstable"
+/// A run's settings as every command's JSON writes them: each under its schema key, once, in the
+/// schema's order — α as `alpha1` and `alpha2` (the key `alpha` sets both and would repeat them),
+/// the arm's parameters in an object `arm` — with `keep` choosing which (a map, for one, varies δ
+/// and α itself).
+pub fn settings_json(s: &RunSettings, keep: impl Fn(&str) -> bool) -> Map<String, Value> {
+    let mut out = Map::new();
+    let mut arm = Map::new();
+    for p in schema::PARAMS.iter().filter(|p| p.scope == Scope::Run && p.key != schema::ALPHA.key && keep(p.key)) {
+        let Some(v) = s.get(p.key) else { continue };
+        let v = match v {
+            Setting::Number(x) if p.number().is_some_and(|n| n.integer) => json!(x as i64),
+            Setting::Number(x) => json!(x),
+            Setting::Choice(c) => json!(c),
+            Setting::Switch(b) => json!(b),
+        };
+        if schema::is_arm(p.key) {
+            arm.insert(p.key.to_string(), v);
+        } else {
+            out.insert(p.key.to_string(), v);
+        }
     }
+    if !arm.is_empty() {
+        out.insert("arm".into(), Value::Object(arm));
+    }
+    out
 }
 
 /// The configuration lines shared by the text outputs.

@@ -15,7 +15,7 @@ use std::io::{BufWriter, Write};
 
 use crate::cli::{self, lib_error, write_file, Res};
 use crate::long_work::{self, Progress, TraceSinks};
-use crate::output::{delta_alpha_text, describe_config, linear_verdict, verdict_text};
+use crate::output::{delta_alpha_text, describe_config, settings_json};
 
 /// The run settings `simulate` takes.
 pub const KEYS: &[&str] =
@@ -96,7 +96,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
             "{}, PF {} — {}",
             delta_alpha_text(&config),
             config.preliminary_feedback.name(),
-            verdict_text(metrics.verdict, config.divergence_bound)
+            linear.judgement.verdict
         );
         let figure = figure::errors_figure(&envelope.traces(), &config, &about, &state);
         write_file("--svg", path, &figure.svg)?;
@@ -118,8 +118,8 @@ pub struct Linear {
     pub judgement: Judgement,
 }
 
-/// The run as one JSON object: the settings under their schema keys (and the long names of
-/// earlier versions), the state string, the metrics and ρ.
+/// The run as one JSON object: the settings under their schema keys, the state string, the
+/// metrics, ρ and the verdict.
 pub fn simulation_json(
     settings: &Settings,
     c: &SimulationConfig,
@@ -139,25 +139,11 @@ pub fn simulation_json(
         Verdict::SlewLocked { amplitude, period } => (Some(amplitude), Some(period)),
         _ => (None, None),
     };
-    json!({
+    // The settings under the schema's keys, once each; then what the run and ρ say.
+    let mut v = Value::Object(settings_json(&settings.a, |_| true));
+    let result = json!({
         "state": settings.run_query(),
-        "delta": c.controller.sampling_period,
-        "alpha1": c.controller.alpha[0],
-        "alpha2": c.controller.alpha[1],
-        "k": c.controller.horizon_steps,
-        "eps_ratio": c.controller.eps_ratio,
-        "pf": c.preliminary_feedback.name(),
-        "inner": c.inner_loop.name(),
-        "twist_stiffness": c.twist.stiffness,
-        "twist_damping": c.twist.damping,
-        "lq_q_twist": c.lq.twist,
-        "lq_q_rate": c.lq.twist_rate,
-        "lq_r": c.lq.torque,
-        "friction": c.friction_compensation.name(),
-        "repeat": settings.a.repeat,
-        "preliminary_feedback": c.preliminary_feedback.name(),
-        "inner_loop": c.inner_loop.name(),
-        "friction_compensation": c.friction_compensation.name(),
+        "output_interval": c.output_interval,
         "duration": duration,
         "simulated_time": m.time,
         "verdict": linear.judgement.verdict,
@@ -178,29 +164,23 @@ pub fn simulation_json(
         "slew_response_period": slew_period,
         "max_torque": m.max_torque,
         "spectral_radius": linear.rho,
-        "analysis_rest_q2": linear.q2,
+        "q2": linear.q2,
         "analysis_describes_run": linear.describes,
-    })
+    });
+    if let (Value::Object(v), Value::Object(result)) = (&mut v, result) {
+        v.extend(result);
+    }
+    v
 }
 
 fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, linear: &Linear) -> String {
     let j = &linear.judgement;
-    let verdict = format!("{}: {}", j.headline, j.detail);
     let pair = |v: [f64; 2], unit: &str| format!("{:.3e}, {:.3e} {unit}", v[0], v[1]);
     let growth = growth_text(m.growth_rate, m.errors_at_floor);
-    let scope = format!("at rest at q2 = {:.4} rad, friction cancelled", linear.q2);
-    let rho = linear.rho.map_or("n/a (analysis failed)".into(), |r| match linear.describes {
-        true => format!("{r:.6} → linearly {} ({scope}; ρ < 1 ⇒ linearly stable)", linear_verdict(r)),
-        false => format!(
-            "{r:.6} ({scope}: does not describe this run, whose friction compensation is {}; the verdict is the \
-             simulation's)",
-            c.friction_compensation.name()
-        ),
-    });
     let slew = if c.reference.repeat_hold.is_some() { "the repeating slew" } else { "the 1-s slew" };
     let mut s = format!("flexarm simulate: {duration} s of {slew}\nconfiguration\n{}", describe_config(c));
     s += &format!("result (simulated {:.3} s)\n", m.time);
-    s += &format!("  verdict                     {verdict}\n");
+    s += &format!("  verdict                     {}\n", j.line());
     // What the simulation saw, in the words that go with the verdict (its own label alone could
     // read as a second verdict: "a limit cycle" while the transient hides a growth ρ predicts).
     s += &format!("  simulation                  {}\n", j.observed);
@@ -209,6 +189,8 @@ fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, linear: &Li
     s += &format!("  RMS e1, e2                  {}\n", pair(m.rms_error, "rad"));
     s += &format!("  growth rate                 {growth}\n");
     s += &format!("  max |T1|, |T2|              {:.3}, {:.3} N m\n", m.max_torque[0], m.max_torque[1]);
-    s += &format!("  spectral radius ρ           {rho}\n");
+    // The analysis line in the page's words (the same judgement as the verdict's).
+    let rho = linear.rho.map_or("n/a (the analysis failed)".into(), |r| format!("{r:.6}"));
+    s += &format!("  spectral radius ρ           {rho}\n  {}\n", j.rho);
     s
 }

@@ -8,10 +8,10 @@ use serde_json::{json, Value};
 
 use crate::cli::{self, lib_error, parse_number, usage_error, Res};
 use crate::long_work::{self, Progress, TraceSinks};
-use crate::output::linear_verdict;
+use crate::output::settings_json;
 use crate::simulate::{simulation_json, Linear};
-use flexarm::analysis::judgement::judge;
-use flexarm::words::judgement::judgement as in_words;
+use flexarm::analysis::judgement::{judge, Prediction};
+use flexarm::words::judgement::{judgement as in_words, prediction_word};
 
 /// The run settings `sweep` takes besides its lists of δ and α.
 pub const KEYS: &[&str] = &["pf", "friction", "inner", "repeat", "k", "eps_ratio"];
@@ -102,7 +102,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let mut quiet = Progress::new("sweep", Work::NONE);
     let mut done = 0.0;
     let mut rows = Vec::new();
-    let mut text = format!("{:>10} {:>8} {:>12} {:>9}", "δ [s]", "α [1/s]", "ρ", "linear");
+    let mut text = format!("{:>10} {:>8} {:>12} {:>10}", "δ [s]", "α [1/s]", "ρ", "linear");
     if run {
         text += &format!("  {:>28}  {:>21}  {:>21}", "simulation", "max |e| slew [rad]", "max |e| after [rad]");
     }
@@ -114,11 +114,13 @@ pub fn run(m: &ArgMatches) -> Res<String> {
             point.a.alpha = [alpha, alpha];
             let c = point.a.config();
             let rho = analysis::spectral_radius(&c, None).map_err(lib_error)?;
-            let mut row = json!({
-                "delta": delta, "alpha": alpha, "spectral_radius": rho, "verdict": linear_verdict(rho),
-                "state": point.run_query(),
-            });
-            text += &format!("{delta:>10.5} {alpha:>8.3} {rho:>12.6} {:>9}", linear_verdict(rho));
+            // ρ's verdict by the rule every command and the page use (borderline by the rate).
+            let linear = Prediction::of_rho(rho, delta).map_or("—", prediction_word);
+            let mut row = Value::Object(settings_json(&point.a, |_| true));
+            row["spectral_radius"] = json!(rho);
+            row["verdict"] = json!(linear);
+            row["state"] = json!(point.run_query());
+            text += &format!("{delta:>10.5} {alpha:>8.3} {rho:>12.6} {linear:>10}");
             if run {
                 let sinks = TraceSinks { csv: None, envelope: None };
                 let (m, _) = long_work::run(&c, duration, sinks, &mut quiet)?;
