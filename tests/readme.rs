@@ -177,4 +177,3 @@ fn the_papers_gains_on_the_heavier_motor_are_as_printed() {
         assert_eq!(rho > 1.0, pf == "paper");
     }
 }
-
