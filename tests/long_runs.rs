@@ -73,7 +73,6 @@ fn held_friction_with_a_repeating_slew_is_bounded_at_every_length() {
         let Verdict::SlewLocked { amplitude, period } = m.verdict else {
             panic!("{duration} s: expected the slews' response, got {:?}", m.verdict);
         };
-        assert_eq!(m.verdict.label(), "stable");
         assert!(amplitude.iter().all(|a| *a > 1e-4 && *a < 0.5), "{duration} s: amplitude {amplitude:?}");
         assert!((period - 2.5).abs() < 0.1, "{duration} s: a rest phase every {period} s (slew 1 s, hold 1.5 s)");
         let g = m.growth_rate.expect("the envelope's rate");

@@ -284,6 +284,9 @@ pub struct Judgement {
     pub detail: Detail,
     pub observation: Observation,
     pub rho: RhoLine,
+    /// Under a headline that is not a failure (stable, borderline, bounded, too early), a
+    /// tracking error large against the slew: stable is not the same as useful.
+    pub large_error: Option<crate::control::metrics::LargeError>,
 }
 
 /// The judgement of the linear analysis alone (no run: `analyze`, `sweep` without `--simulate`):
@@ -443,5 +446,7 @@ pub fn judge(
         None => RhoLine::Missing,
         Some(r) => RhoLine::Analysis { q2: r.rest[1], rho: r.spectral_radius, rate: r.growth_rate, describes: applies },
     };
-    Judgement { headline, detail, observation, rho }
+    let failed = matches!(headline, Headline::Unstable | Headline::Diverged);
+    let large_error = if failed { None } else { m.large_error(&config.reference) };
+    Judgement { headline, detail, observation, rho, large_error }
 }

@@ -63,7 +63,7 @@ pub fn judgement(j: &Judgement) -> JudgementText {
     JudgementText {
         verdict: j.headline.id(),
         headline: headline(j.headline),
-        detail: detail(&j.detail),
+        detail: detail(&j.detail) + &j.large_error.map_or(String::new(), |l| large_error(&l)),
         observed: observation(&j.observation),
         measured: j.observation.measured(),
         rho: rho_line(&j.rho),
@@ -123,6 +123,19 @@ pub fn detail(d: &Detail) -> String {
         }
         Detail::AnalysisFailed(why) => format!("the linear analysis failed: {why}"),
     }
+}
+
+/// What a verdict that is no failure adds when the tracking error is large against the slew:
+/// "; but the tracking error reaches 0.66 rad on link 1, 42 % of its 1.57-rad travel — stable,
+/// not on course".
+pub fn large_error(l: &crate::control::metrics::LargeError) -> String {
+    format!(
+        "; but the tracking error reaches {} rad on link {}, {:.0} % of its {}-rad travel — not on course",
+        significant_trimmed(l.error, 2),
+        l.link + 1,
+        100.0 * l.error / l.travel,
+        significant_trimmed(l.travel, 3)
+    )
 }
 
 /// Why the simulation may not follow the linear analysis.
