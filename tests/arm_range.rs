@@ -173,15 +173,18 @@ fn every_all_corner_arm_that_validates_gives_the_delta_to_zero_limit() {
                 worst = [worst[0].max(gaps.pair), worst[1].max(gaps.rho)];
                 checked += 1;
             }
+            // The mass matrix, or a motion too fast to simulate (PlantParameters::FASTEST_RATE_MAX).
             Err(e) => {
-                assert!(e.to_string().contains("positive definite"), "{plant:?}: {e}");
+                let e = e.to_string();
+                assert!(e.contains("positive definite") || e.contains("too fast for this arm"), "{plant:?}: {e}");
+                assert!(e.contains("positive definite") || plant.fastest_rate() > PlantParameters::FASTEST_RATE_MAX);
                 refused += 1;
             }
         }
     }
     println!(
         "{checked} all-corner arms checked against the limit, {fast} too fast for it (finite only), {refused} refused \
-         by the mass matrix; worst gaps {:.2e} of the pole tolerance, {:.2e} in ρ",
+         (mass matrix, too fast); worst gaps {:.2e} of the pole tolerance, {:.2e} in ρ",
         worst[0], worst[1]
     );
     assert!(checked >= 16, "{checked}");
@@ -230,8 +233,8 @@ fn a_light_motor_under_the_papers_feedback_is_simulated_with_a_step_its_inner_lo
     }
 }
 
-/// Outside the range the command line refuses the value: status 2, one line naming the setting
-/// and its range (before: `--k1 1e-12` printed ρ = 70571 with status 0, `--ir1 1e-300` panicked,
+/// Outside the range (or too fast together) the command line refuses the value: status 2, one
+/// line naming the setting and its range (before: `--k1 1e-12` printed ρ = 70571 with status 0, `--ir1 1e-300` panicked,
 /// `--k1 1e-300` never ended).
 #[test]
 fn an_arm_outside_the_range_is_one_line_with_status_2() {
@@ -241,10 +244,15 @@ fn an_arm_outside_the_range_is_one_line_with_status_2() {
         ("--ir1", "1e-300", "0.001939 to 1939 kg m²"),
         ("--a2", "1e-6", "0.000247 to 247 kg m²"),
         ("--a1", "5000", "0.004984 to 4984 kg m²"),
+        // Each within its range, together too fast: the motor's damping over its inertia.
+        ("--bv1", "1400", "at most 30000 1/s"),
     ] {
         for command in ["analyze", "simulate"] {
+            // A light motor beside each value (one within its range), so that B_v1 = 1400 is too fast.
+            let motor: &[&str] = if flag == "--ir1" { &[] } else { &["--ir1", "0.002"] };
             let out = Command::new(env!("CARGO_BIN_EXE_flexarm"))
                 .args([command, flag, value, "--pf", "off"])
+                .args(motor)
                 .output()
                 .expect("the flexarm binary runs");
             let err = String::from_utf8_lossy(&out.stderr);

@@ -11,9 +11,10 @@
 //! 10¹⁶ at 1e-12 N m/rad, and beyond any float near 1e-300). A lighter part or a stiffer spring
 //! makes the arm's fastest motion faster, and the simulation's step follows it (see
 //! `Plant::fastest_rate` and `control::linear::inner_loop_rate`): each decade costs about three
-//! times the steps per simulated second. Whether the three link inertias make a mass matrix that
-//! is positive definite for every q2 is a check across parameters
-//! (`PlantParameters::validate`), refused with a one-line reason.
+//! times the steps per simulated second. Two checks across parameters
+//! (`PlantParameters::validate`), each refused with a one-line reason: the three link inertias
+//! make a mass matrix positive definite for every q2, and the arm's fastest motion is at most
+//! `PlantParameters::FASTEST_RATE_MAX` (every arm with one setting at an end of its range is).
 
 use super::{Choice, Kind, NumberSpec, Param, Scale, Scope};
 
