@@ -25,11 +25,9 @@ use std::process::Command;
 const SMALL_DELTA: f64 = 1e-5;
 
 fn config(plant: PlantParameters, alpha: f64, delta: f64, pf: PreliminaryFeedbackChoice) -> SimulationConfig {
-    let mut c = SimulationConfig::default();
-    c.plant = plant;
+    let mut c = SimulationConfig { plant, preliminary_feedback: pf, ..SimulationConfig::default() };
     c.controller.alpha = [alpha; 2];
     c.controller.sampling_period = delta;
-    c.preliminary_feedback = pf;
     c
 }
 
