@@ -8,7 +8,7 @@
 //! coupling A3 from 0 to ten times (the mass matrix bounds it anyway); the presliding lengths
 //! above 0 (Dahl's update is exact for any length). Beyond the stiffness's lower limit the link
 //! barely feels the motor: the torque the controller asks grows as 1/K1 (10⁴ N m at a thousandth,
-//! 10¹⁶ at 1e-12 N m/rad, and beyond any float near 1e-300). A lighter part or a stiffer spring
+//! 10¹⁶ at 1e-12 N m/rad, 10³⁰⁴ at 1e-300, the edge of a float). A lighter part or a stiffer spring
 //! makes the arm's fastest motion faster, and the simulation's step follows it (see
 //! `Plant::fastest_rate` and `control::linear::inner_loop_rate`): each decade costs about three
 //! times the steps per simulated second. Two checks across parameters
