@@ -72,8 +72,12 @@ fn horizon_must_lie_between_one_and_two_sampling_periods() {
 
 #[test]
 fn plant_parameters_are_checked() {
-    expect_config_error(with(|c| c.plant.k1 = 0.0), "K1", "> 0");
-    expect_config_error(with(|c| c.plant.ir1 = -1.0), "I_r1", "> 0");
+    // A thousandth to a thousand times the paper's inertias and stiffness (tests/arm_range.rs).
+    for bad in [0.0, 1e-12, 1e-300, 2e6] {
+        expect_config_error(with(|c| c.plant.k1 = bad), "K1", "from 1.1526 to 1152600 N m/rad");
+    }
+    expect_config_error(with(|c| c.plant.ir1 = -1.0), "I_r1", "from 0.001939 to 1939 kg m²");
+    expect_config_error(with(|c| c.plant.ir1 = 1e-300), "I_r1", "from 0.001939 to 1939 kg m²");
     expect_config_error(with(|c| c.plant.bv1 = -0.1), "B_v1", "≥ 0");
     expect_config_error(with(|c| c.plant.fc2 = f64::NAN), "F_c2", "finite");
     expect_config_error(with(|c| c.plant.eps1 = 0.0), "ε1", "> 0");

@@ -34,6 +34,8 @@ use crate::model::PlantParameters;
 /// least [`SUBSTEPS_PER_RADIAN`] per radian the arm's fastest motion turns.
 const MIN_SUBSTEPS: usize = 48;
 const SUBSTEPS_PER_RADIAN: f64 = 16.0;
+/// At most this many (an even number, as Simpson's rule needs).
+const MAX_SUBSTEPS: usize = 4096;
 
 /// The flexible pair's energy over one sampling period, each as a fraction of its energy at t_n.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -88,7 +90,9 @@ pub fn swing_energy(model: &EnergyModel<'_>, delta: f64, mode: &SwingMode) -> Re
     let a = if held_feedback { arm.a } else { arm.with_feedback(gain) };
     // √‖A‖ bounds the fastest frequency of a mass–spring system (‖A‖ ≥ K/m).
     let fastest = a.amax().sqrt();
-    let substeps = MIN_SUBSTEPS.max(2 * (SUBSTEPS_PER_RADIAN * fastest * delta / 2.0).ceil() as usize).min(4096);
+    // Capped in floating point before the cast: an arm's rate times δ can exceed any integer.
+    let half = (SUBSTEPS_PER_RADIAN * fastest * delta / 2.0).ceil().min((MAX_SUBSTEPS / 2) as f64);
+    let substeps = MIN_SUBSTEPS.max(2 * half as usize);
     let h = delta / substeps as f64;
     aug.fixed_view_mut::<8, 8>(0, 0).copy_from(&(a * h));
     aug.fixed_view_mut::<8, 2>(0, 8).copy_from(&(arm.b * h));

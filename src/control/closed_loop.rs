@@ -18,6 +18,7 @@ use nalgebra::Vector2;
 use super::config::{FrictionCompensation, InnerLoop, SimulationConfig};
 use super::feedback::{resolve_gain, FeedbackGain};
 use super::history::{History, LoopState};
+use super::linear::inner_loop_rate;
 use super::metrics::{DivergenceReason, ErrorStats, Metrics};
 use super::predictive::{controller_vector, Predictor, StateVector, Sweep};
 use super::traces::{Snapshot, Traces};
@@ -87,7 +88,8 @@ impl Derived {
     fn new(config: &SimulationConfig) -> Result<Self, Error> {
         config.validate()?;
         let delta = config.controller.sampling_period;
-        let steps_per_period = (delta / config.plant_step()).ceil().max(1.0) as usize;
+        let gain = resolve_gain(config)?;
+        let steps_per_period = (delta / plant_step(config, &gain)).ceil().max(1.0) as usize;
         let plant_step = delta / steps_per_period as f64;
         let output_every = (config.output_interval / plant_step).round().max(1.0) as usize;
         Ok(Self {
@@ -95,12 +97,24 @@ impl Derived {
             reference: Reference::new(config.reference),
             model: config.model_plant(),
             predictor: Predictor::new(&config.model_plant(), &config.controller),
-            gain: resolve_gain(config)?,
+            gain,
             plant_step,
             steps_per_period,
             output_every,
         })
     }
+}
+
+/// The plant integrator's largest step, s, for `config` with its preliminary feedback `gain`:
+/// `plant_step_max`, or less where RK4 would not follow the fastest motion at that step
+/// (ω h ≤ 0.3) — the arm's (resonance, damping), and with the feedback acting continuously the
+/// inner loop's ([`inner_loop_rate`]); a feedback held over δ adds none.
+pub fn plant_step(config: &SimulationConfig, gain: &FeedbackGain) -> f64 {
+    let rate = match config.inner_loop {
+        InnerLoop::Continuous => inner_loop_rate(&config.plant, config.controller.alpha, gain),
+        InnerLoop::Sampled => config.plant.fastest_rate(),
+    };
+    config.plant_step_max.min(0.3 / rate)
 }
 
 /// The closed loop of Fig. 2.1 as a value that can be stepped or run to the end.

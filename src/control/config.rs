@@ -252,12 +252,6 @@ pub const DEFAULT_PLANT_STEP_MAX: f64 = 1e-3;
 pub const DEFAULT_DIVERGENCE_BOUND: f64 = core::f64::consts::PI;
 
 impl SimulationConfig {
-    /// The plant integrator's largest step, s: `plant_step_max`, or less for an arm whose fastest
-    /// motion (resonance, damping) RK4 would not follow at that step (ω h ≤ 0.3).
-    pub fn plant_step(&self) -> f64 {
-        self.plant_step_max.min(0.3 / self.plant.fastest_rate())
-    }
-
     /// The arm the controller assumes: the plant itself, or the paper's (`model = paper`).
     pub fn model_plant(&self) -> PlantParameters {
         match self.model {

@@ -157,6 +157,31 @@ pub fn predictor_gain(
     Ok(sweep.fixed_view::<2, 8>(8, 0).into_owned())
 }
 
+/// The fastest rate of the arm with the preliminary feedback u = K x + v acting continuously,
+/// 1/s: the largest |λ| of A + BK linearized at rest, over the postures from stretched to folded
+/// (the mass matrix depends on cos q2 alone), and at least the arm's own
+/// [`PlantParameters::fastest_rate`]. The plant's integrator must follow it, not only the arm's:
+/// the paper's K_pr puts a damper of 16.5 N m s/rad on the motor, 8.5 1/s on the paper's motor
+/// but 8500 1/s on one a thousand times lighter, where a step sized for the arm alone (h = 0.3/770 s)
+/// made RK4 itself unstable and the run "diverged" at t = 0.01 s with ρ = 0.98.
+pub fn inner_loop_rate(plant: &PlantParameters, alpha: [f64; 2], gain: &FeedbackGain) -> f64 {
+    let mut rate = plant.fastest_rate();
+    if gain.iter().all(|k| *k == 0.0) {
+        return rate;
+    }
+    for i in 0..=20 {
+        let c: f64 = -1.0 + 0.1 * i as f64;
+        let model = linearize_at_rest(plant, alpha, [0.0, c.clamp(-1.0, 1.0).acos()]);
+        // Padded into the 10×10 size whose eigen-solver the page's module already has.
+        let mut m = Mat10::zeros();
+        m.fixed_view_mut::<8, 8>(0, 0).copy_from(&model.with_feedback(gain));
+        for l in m.complex_eigenvalues().iter() {
+            rate = rate.max(l.norm());
+        }
+    }
+    rate
+}
+
 /// The δ → 0 limit of the predictive controller and the pair it has no gain on.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LimitPair {

@@ -42,7 +42,9 @@ impl Work {
     pub fn of_run(config: &SimulationConfig, duration: f64) -> Work {
         let delta = config.controller.sampling_period;
         let periods = (duration / delta).ceil().max(0.0);
-        let steps_per_period = (delta / config.plant_step()).ceil().max(1.0);
+        // The step the run will take (a gain that cannot be designed fails the run itself).
+        let gain = super::feedback::resolve_gain(config).unwrap_or_default();
+        let steps_per_period = (delta / super::closed_loop::plant_step(config, &gain)).ceil().max(1.0);
         let plant_steps = periods * steps_per_period;
         let per_period = SECONDS_PER_PERIOD + config.controller.horizon_steps as f64 * SECONDS_PER_PREDICTION_STEP;
         Work {

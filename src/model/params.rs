@@ -91,9 +91,10 @@ impl PlantParameters {
         true
     }
 
-    /// Each value within its schema limits, then the one condition across them: the mass matrix
+    /// Each value within its schema limits, then the conditions across them: the mass matrix
     /// M2 = [[A1 + 2 A3 c, A2 + A3 c], [A2 + A3 c, A2]] (c = cos q2) has determinant
-    /// A1 A2 − A2² − A3² c², which must stay positive for every q2.
+    /// A1 A2 − A2² − A3² c², which must stay positive for every q2; and the arm's fastest motion
+    /// at most [`Self::FASTEST_RATE_MAX`].
     pub fn validate(&self) -> Result<(), ConfigError> {
         for (p, v) in crate::schema::ARM_PARAMS.iter().zip(self.values()) {
             p.check(v)?;
@@ -109,23 +110,58 @@ impl PlantParameters {
             );
             return Err(ConfigError::new(crate::schema::A3.name, self.a3, &reason));
         }
-        Ok(())
+        self.check_fastest_rate()
     }
 
     /// The largest rate of the arm's mechanics, 1/s: the joint's resonance
     /// √(K1 (1/I_r1 + 1/J_eff)) at its stiffest posture, the motor's damping B_v1/I_r1 and
     /// joint 2's B_v2 (M⁻¹)₂₂, whichever is largest (the simulation's step follows it).
     pub fn fastest_rate(&self) -> f64 {
-        let mut rate = self.bv1 / self.ir1;
+        self.rates().into_iter().fold(0.0, f64::max)
+    }
+
+    /// The three rates of [`Self::fastest_rate`], 1/s: [resonance, motor damping, joint-2 damping].
+    fn rates(&self) -> [f64; 3] {
+        let mut rates = [0.0, self.bv1 / self.ir1, 0.0];
         for i in 0..=20 {
             let c = -1.0 + 0.1 * i as f64;
             let det = self.a1 * self.a2 - self.a2 * self.a2 - self.a3 * self.a3 * c * c;
             // The links as one body seen from the spring: J_eff = det / A2 (link 2 free to follow).
             let j_eff = det / self.a2;
             let m22_inv = (self.a1 + 2.0 * self.a3 * c) / det;
-            rate = rate.max((self.k1 * (1.0 / self.ir1 + 1.0 / j_eff)).sqrt()).max(self.bv2 * m22_inv);
+            rates[0] = f64::max(rates[0], (self.k1 * (1.0 / self.ir1 + 1.0 / j_eff)).sqrt());
+            rates[2] = f64::max(rates[2], self.bv2 * m22_inv);
         }
-        rate
+        rates
+    }
+
+    /// The fastest motion an arm may have, 1/s: the
+    /// simulation's step follows it ([`Self::fastest_rate`]), so beyond this an arm's run of a
+    /// few seconds takes millions of steps (the torque price's 4 s took 10 s at 7e5 1/s, a motor
+    /// damped 1400 N m s/rad over 0.0019 kg m²). Every arm with one setting at an end of its range
+    /// is below it (the fastest, the lightest motor on the stiffest joint: 2.4e4 1/s).
+    pub const FASTEST_RATE_MAX: f64 = 3e4;
+
+    /// The check across parameters after the mass matrix's: the arm's fastest motion at most
+    /// [`Self::FASTEST_RATE_MAX`], refused naming the setting whose rate it is.
+    fn check_fastest_rate(&self) -> Result<(), ConfigError> {
+        let rates = self.rates();
+        let (i, rate) = rates.iter().enumerate().fold((0, 0.0), |(j, r), (i, &x)| if x > r { (i, x) } else { (j, r) });
+        if rate <= Self::FASTEST_RATE_MAX {
+            return Ok(());
+        }
+        let (param, what) = [
+            (&crate::schema::K1, "the joint's resonance √(K1 (1/I_r1 + 1/J_eff))"),
+            (&crate::schema::BV1, "the motor's damping B_v1/I_r1"),
+            (&crate::schema::BV2, "joint 2's damping B_v2 (M⁻¹)₂₂"),
+        ][i];
+        let reason = format!(
+            "too fast for this arm: {what} is {} 1/s, at most {} 1/s (the simulation's step follows the arm's fastest \
+             motion; a faster arm takes millions of steps per simulated second)",
+            crate::plot::format::significant(rate, 3),
+            crate::plot::format::significant(Self::FASTEST_RATE_MAX, 3)
+        );
+        Err(ConfigError::new(param.name, self.get(param.key).unwrap_or(f64::NAN), &reason))
     }
 }
 

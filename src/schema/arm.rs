@@ -2,28 +2,33 @@
 //! each means physically, the paper's value as the default, the slider's span (at least a tenth
 //! to ten times the paper's value; damping and friction from 0) and the hard limits with why.
 //!
-//! Limits common to all: a mass, an inertia, a spring or a presliding length must be positive;
-//! damping and friction may vanish. The upper limits keep the arm within a thousand times the
-//! paper's (ten for the coupling A3, which the mass matrix bounds anyway): the simulation's step
-//! follows the arm's fastest motion (see `Plant::fastest_rate`), and a stiffer, lighter arm
-//! costs proportionally more steps per simulated second. Whether the three link inertias make a
-//! mass matrix that is positive definite for every q2 is a check across parameters
-//! (`PlantParameters::validate`), refused with a one-line reason.
+//! The limits: an inertia and the stiffness from a thousandth to a thousand times the paper's
+//! value (the range over which `tests/arm_range.rs` checks every result against the δ → 0 limit
+//! in closed form); damping and friction from 0 (they may vanish) to a thousand times; the
+//! coupling A3 from 0 to ten times (the mass matrix bounds it anyway); the presliding lengths
+//! above 0 (Dahl's update is exact for any length). Beyond the stiffness's lower limit the link
+//! barely feels the motor: the torque the controller asks grows as 1/K1 (10⁴ N m at a thousandth,
+//! 10¹⁶ at 1e-12 N m/rad, 10³⁰⁴ at 1e-300, the edge of a float). A lighter part or a stiffer spring
+//! makes the arm's fastest motion faster, and the simulation's step follows it (see
+//! `Plant::fastest_rate` and `control::linear::inner_loop_rate`): each decade costs about three
+//! times the steps per simulated second. Two checks across parameters
+//! (`PlantParameters::validate`), each refused with a one-line reason: the three link inertias
+//! make a mass matrix positive definite for every q2, and the arm's fastest motion is at most
+//! `PlantParameters::FASTEST_RATE_MAX` (every arm with one setting at an end of its range is).
 
 use super::{Choice, Kind, NumberSpec, Param, Scale, Scope};
 
-/// A number of the arm: positive (`min_inclusive` false at 0) or from 0, paper's value `default`.
+/// A number of the arm from `min` (inclusive), the paper's value `default`.
 const fn spec(
     default: f64,
     control: [f64; 2],
     scale: Scale,
-    max: f64,
-    from_zero: bool,
+    [min, max]: [f64; 2],
     allowed: &'static str,
 ) -> NumberSpec {
     NumberSpec {
-        min: 0.0,
-        min_inclusive: from_zero,
+        min,
+        min_inclusive: true,
         max,
         allowed: Some(allowed),
         control,
@@ -32,6 +37,11 @@ const fn spec(
         integer: false,
         default,
     }
+}
+
+/// A number of the arm above 0 (exclusive), the paper's value `default`.
+const fn positive(default: f64, control: [f64; 2], scale: Scale, max: f64, allowed: &'static str) -> NumberSpec {
+    NumberSpec { min_inclusive: false, ..spec(default, control, scale, [0.0, max], allowed) }
 }
 
 const fn arm(
@@ -46,8 +56,17 @@ const fn arm(
     Param { key, label, symbol, unit, name, kind: Kind::Number(spec), scope: Scope::Run, help }
 }
 
-const INERTIA: &str = "must be > 0 (an inertia) and at most a thousand times the paper's value";
-const STIFFNESS: &str = "must be > 0 (a spring) and at most a thousand times the paper's value";
+/// Why an inertia stops at a thousandth and a thousand times the paper's value.
+macro_rules! inertia {
+    ($range:literal) => {
+        concat!(
+            "must be from ",
+            $range,
+            " kg m² (an inertia, a thousandth to a thousand times the paper's value: a lighter part moves faster, and \
+             the simulation's step follows the fastest motion)"
+        )
+    };
+}
 const DAMPING: &str = "must be ≥ 0 (damping takes energy out) and at most a thousand times the paper's value";
 const COULOMB: &str = "must be ≥ 0 (a friction level) and at most a thousand times the paper's value";
 const LENGTH: &str = "must be > 0 (the friction's presliding length) and at most 0.1 rad";
@@ -59,7 +78,7 @@ pub const A1: Param = arm(
     "A1",
     "kg m²",
     "a1 (A1)",
-    spec(4.984, [0.4, 50.0], Scale::Log, 4984.0, false, INERTIA),
+    spec(4.984, [0.4, 50.0], Scale::Log, [4.984e-3, 4984.0], inertia!("0.004984 to 4984")),
     "Inertia of both links about joint 1 (with link 2 folded back: A1 + 2 A3 cos q2 is the whole term).",
 );
 
@@ -70,7 +89,7 @@ pub const A2: Param = arm(
     "A2",
     "kg m²",
     "a2 (A2)",
-    spec(0.247, [0.024, 2.5], Scale::Log, 247.0, false, INERTIA),
+    spec(0.247, [0.024, 2.5], Scale::Log, [2.47e-4, 247.0], inertia!("0.000247 to 247")),
     "Inertia of link 2 about its own joint.",
 );
 
@@ -85,8 +104,7 @@ pub const A3: Param = arm(
         0.328,
         [0.0, 3.28],
         Scale::Linear,
-        3.28,
-        true,
+        [0.0, 3.28],
         "must be ≥ 0 and at most ten times the paper's value, and A3² < A1·A2 − A2² (the mass matrix positive definite)",
     ),
     "How strongly the links push on each other (A3 cos q2 in the mass matrix): 0 decouples them.",
@@ -99,7 +117,7 @@ pub const IR1: Param = arm(
     "I_r1",
     "kg m²",
     "ir1 (I_r1)",
-    spec(1.939, [0.19, 20.0], Scale::Log, 1939.0, false, INERTIA),
+    spec(1.939, [0.19, 20.0], Scale::Log, [1.939e-3, 1939.0], inertia!("0.001939 to 1939")),
     "Inertia of the motor (its rotor and gear) on the motor side of the spring.",
 );
 
@@ -110,7 +128,7 @@ pub const BV1: Param = arm(
     "B_v1",
     "N m s/rad",
     "bv1 (B_v1)",
-    spec(1.40, [0.0, 50.0], Scale::Linear, 1400.0, true, DAMPING),
+    spec(1.40, [0.0, 50.0], Scale::Linear, [0.0, 1400.0], DAMPING),
     "Viscous damping of the motor: a torque against its speed. Re A4 = 3α/2 − B_v1/(2 I_r1): enough of it damps \
      the swing with no preliminary feedback.",
 );
@@ -122,7 +140,7 @@ pub const BV2: Param = arm(
     "B_v2",
     "N m s/rad",
     "bv2 (B_v2)",
-    spec(0.20, [0.0, 2.0], Scale::Linear, 200.0, true, DAMPING),
+    spec(0.20, [0.0, 2.0], Scale::Linear, [0.0, 200.0], DAMPING),
     "Viscous damping of joint 2.",
 );
 
@@ -133,7 +151,7 @@ pub const FC1: Param = arm(
     "F_c1",
     "N m",
     "fc1 (F_c1)",
-    spec(4.82, [0.0, 50.0], Scale::Linear, 4820.0, true, COULOMB),
+    spec(4.82, [0.0, 50.0], Scale::Linear, [0.0, 4820.0], COULOMB),
     "Coulomb level of the motor's Dahl friction: the torque it takes to keep the motor sliding.",
 );
 
@@ -144,7 +162,7 @@ pub const FC2: Param = arm(
     "F_c2",
     "N m",
     "fc2 (F_c2)",
-    spec(1.15, [0.0, 12.0], Scale::Linear, 1150.0, true, COULOMB),
+    spec(1.15, [0.0, 12.0], Scale::Linear, [0.0, 1150.0], COULOMB),
     "Coulomb level of joint 2's Dahl friction.",
 );
 
@@ -155,7 +173,7 @@ pub const EPS1: Param = arm(
     "ε1",
     "rad",
     "eps1 (ε1)",
-    spec(1e-4, [1e-5, 1e-3], Scale::Log, 0.1, false, LENGTH),
+    positive(1e-4, [1e-5, 1e-3], Scale::Log, 0.1, LENGTH),
     "How far the motor turns before its friction reaches the Coulomb level (Dahl's presliding).",
 );
 
@@ -166,7 +184,7 @@ pub const EPS2: Param = arm(
     "ε2",
     "rad",
     "eps2 (ε2)",
-    spec(1e-4, [1e-5, 1e-3], Scale::Log, 0.1, false, LENGTH),
+    positive(1e-4, [1e-5, 1e-3], Scale::Log, 0.1, LENGTH),
     "How far joint 2 turns before its friction reaches the Coulomb level.",
 );
 
@@ -177,7 +195,15 @@ pub const K1: Param = arm(
     "K1",
     "N m/rad",
     "k1 (K1)",
-    spec(1152.6, [115.0, 12000.0], Scale::Log, 1.1526e6, false, STIFFNESS),
+    spec(
+        1152.6,
+        [115.0, 12000.0],
+        Scale::Log,
+        [1.1526, 1.1526e6],
+        "must be from 1.1526 to 1152600 N m/rad (a spring, a thousandth to a thousand times the paper's value: a softer \
+         one barely moves the link, the motor torque asked grows as 1/K1, 10⁴ N m at the lower end; a stiffer one \
+         makes the simulation's step follow its resonance)",
+    ),
     "Stiffness of the spring between the motor and link 1 (the flexible joint).",
 );
 
