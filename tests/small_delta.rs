@@ -6,8 +6,10 @@
 use flexarm::analysis::judgement::{judge, Headline, Prediction};
 use flexarm::analysis::{analyze, spectral_radius};
 use flexarm::control::predictive::{Predictor, StateVector};
+use flexarm::control::DivergenceReason;
 use flexarm::model::reference::Reference;
 use flexarm::schema::DELTA_SPEC;
+use flexarm::words::judgement::judgement as in_words;
 use flexarm::*;
 use nalgebra::Vector2;
 
@@ -110,4 +112,25 @@ fn runs_at_small_delta_complete_with_tiny_errors_and_the_verdict_rho_gives() {
         assert!(pair[0].1 < pair[1].1, "with K_pr: max |e| {:?} at δ {:?}", pair[0], pair[1]);
     }
     assert!(spectral_radius(&config(DELTA_SPEC.min, PreliminaryFeedbackChoice::Paper), None).unwrap() < 1.0);
+}
+
+/// A run the predictor's solver stops (forced here: the verdict a Newton failure leaves) is said
+/// to be a numerical failure of the solver at that instant, with the errors it stopped at — never
+/// blamed on the arm's nonlinearity or called a divergence.
+#[test]
+fn a_solver_failure_is_worded_as_numerical_not_as_the_arms_dynamics() {
+    let c = config(0.01, PreliminaryFeedbackChoice::Paper);
+    let mut m = simulate(&c, 0.5).unwrap().metrics;
+    m.verdict = Verdict::Diverged { at: 0.5, reason: DivergenceReason::NewtonFailure };
+    let analysis = analyze(&c, None).unwrap();
+    let judgement = judge(&m, Some(&analysis), None, &c, m.error);
+    assert_eq!(judgement.headline, Headline::SolverFailed);
+    let words = in_words(&judgement);
+    let all = format!("{} {} {}", words.headline, words.detail, words.observed);
+    assert!(all.contains("numerical failure"), "{all}");
+    assert!(all.contains("t = 0.50 s"), "{all}");
+    for wrong in ["nonlinear", "diverged", "Diverged"] {
+        assert!(!all.contains(wrong), "'{wrong}' in: {all}");
+    }
+    assert_eq!(words.verdict, "solver failed");
 }

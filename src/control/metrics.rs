@@ -68,13 +68,15 @@ pub enum Verdict {
 }
 
 impl Verdict {
-    /// "stable", "unstable", "bounded oscillation" or "diverged": the one name the CLI, the JSON
+    /// "stable", "unstable", "bounded oscillation", "diverged" or "solver failed" (the predictor's
+    /// Newton iteration stopped the run: nothing diverged): the one name the CLI, the JSON
     /// and the page use (an identifier; the verdict in words is [`crate::words::verdict`]).
     pub fn label(&self) -> &'static str {
         match self {
             Verdict::Stable | Verdict::SlewLocked { .. } => "stable",
             Verdict::Unstable { .. } => "unstable",
             Verdict::BoundedOscillation { .. } => "bounded oscillation",
+            Verdict::Diverged { reason: DivergenceReason::NewtonFailure, .. } => "solver failed",
             Verdict::Diverged { .. } => "diverged",
         }
     }

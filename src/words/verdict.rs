@@ -11,8 +11,14 @@ pub fn divergence_reason(reason: DivergenceReason, bound: f64) -> String {
         DivergenceReason::ErrorBound if bound == core::f64::consts::PI => "a tracking error passed π rad".into(),
         DivergenceReason::ErrorBound => format!("a tracking error passed {bound:.4} rad"),
         DivergenceReason::NonFinite => "the state became non-finite (NaN or infinite)".into(),
-        DivergenceReason::NewtonFailure => "the predictor's Newton iteration failed".into(),
+        DivergenceReason::NewtonFailure => solver_failure().into(),
     }
+}
+
+/// A run the predictor's Newton iteration stopped, in words: what failed, and that it is a
+/// numerical failure, not the arm's.
+pub fn solver_failure() -> &'static str {
+    "the predictor's Newton iteration did not converge — a numerical failure of the solver, not the arm's dynamics"
 }
 
 /// The verdict in a sentence, e.g. "unstable (errors grow at 2.273 1/s)"; `bound` is the
@@ -29,6 +35,9 @@ pub fn verdict(v: &Verdict, bound: f64) -> String {
             "stable (the errors come back with every slew, no larger: up to {:.2e}, {:.2e} rad, every {period:.2} s)",
             amplitude[0], amplitude[1]
         ),
+        Verdict::Diverged { at, reason: DivergenceReason::NewtonFailure } => {
+            format!("stopped at t = {at:.3} s ({})", solver_failure())
+        }
         Verdict::Diverged { at, reason } => format!("diverged at t = {at:.3} s ({})", divergence_reason(reason, bound)),
     }
 }
@@ -40,6 +49,7 @@ pub fn verdict_short(v: &Verdict) -> String {
         Verdict::Unstable { growth_rate } => format!("unstable ({growth_rate:.2} 1/s)"),
         Verdict::BoundedOscillation { period, .. } => format!("bounded oscillation ({period:.2} s)"),
         Verdict::SlewLocked { period, .. } => format!("stable (repeats every {period:.2} s)"),
+        Verdict::Diverged { at, reason: DivergenceReason::NewtonFailure } => format!("solver failed at {at:.2} s"),
         Verdict::Diverged { at, .. } => format!("diverged at {at:.2} s"),
     }
 }
