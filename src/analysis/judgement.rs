@@ -171,6 +171,13 @@ pub enum OtherSignWhy {
 /// What the simulation has observed, and how it stands against ρ.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Observation {
+    /// The run stopped at `at` s because the predictor's Newton iteration did not converge: a
+    /// numerical failure of the solver, which says nothing of the arm's dynamics or of ρ; the
+    /// errors were `error` (rad) then.
+    SolverFailed {
+        at: f64,
+        error: [f64; 2],
+    },
     /// Diverged at `at` s; `bound`: the error bound it passed (rad), if that was the reason.
     Diverged {
         at: f64,
@@ -221,6 +228,8 @@ pub enum Headline {
     Unstable,
     Borderline,
     Diverged,
+    /// The predictor's solver failed (a numerical failure): the run stopped, nothing diverged.
+    SolverFailed,
     BoundedOscillation,
     Bounded,
     TooEarly,
@@ -228,13 +237,15 @@ pub enum Headline {
 
 impl Headline {
     /// The verdict's one name, shared by the page's status, the CLI and the JSON: "stable",
-    /// "unstable", "borderline", "diverged", "bounded oscillation", "bounded", "too early to tell".
+    /// "unstable", "borderline", "diverged", "solver failed", "bounded oscillation", "bounded",
+    /// "too early to tell".
     pub fn id(self) -> &'static str {
         match self {
             Headline::Stable => "stable",
             Headline::Unstable => "unstable",
             Headline::Borderline => "borderline",
             Headline::Diverged => "diverged",
+            Headline::SolverFailed => "solver failed",
             Headline::BoundedOscillation => "bounded oscillation",
             Headline::Bounded => "bounded",
             Headline::TooEarly => "too early to tell",
@@ -321,6 +332,9 @@ fn observe(
     let repeating = config.reference.repeat_hold.is_some();
     let alone = !applies;
     let caveat = Caveat::of(config);
+    if let Verdict::Diverged { at, reason: DivergenceReason::NewtonFailure } = m.verdict {
+        return Observation::SolverFailed { at, error };
+    }
     if let Verdict::Diverged { at, reason } = m.verdict {
         let reading = match prediction {
             Some((Prediction::Unstable, _)) => DivergenceReading::AsPredicted,
@@ -417,6 +431,7 @@ pub fn judge(
     // cycle (named as the CLI and the JSON name it).
     let judged = prediction.filter(|_| applies).map(|p| p.0);
     let headline = match (m.verdict, judged) {
+        (Verdict::Diverged { reason: DivergenceReason::NewtonFailure, .. }, _) => Headline::SolverFailed,
         (Verdict::Diverged { .. }, _) => Headline::Diverged,
         (Verdict::BoundedOscillation { .. }, _) if credible_cycle(m, applies) => Headline::BoundedOscillation,
         (_, Some(p)) => p.into(),
@@ -433,6 +448,8 @@ pub fn judge(
     // Under a headline the simulation decided against ρ, ρ's sentence is the prediction.
     let overridden = match m.verdict {
         Verdict::BoundedOscillation { .. } => credible_cycle(m, applies),
+        // A solver failure overrides every headline: ρ's is only what it predicts.
+        Verdict::Diverged { reason: DivergenceReason::NewtonFailure, .. } => true,
         Verdict::Diverged { .. } => !matches!(judged, Some(Prediction::Unstable)),
         _ => false,
     };

@@ -27,6 +27,19 @@
 //! nearly linear, so two or three iterations reach machine precision. Each Newton system is solved
 //! by back-substitution along the Jacobian's sparsity ([`solve_structured`]) instead of a dense LU.
 //!
+//! # Small ε
+//! U⁺ is found from the spring's stretch θ⁺ − q1⁺ through two divisions by ε (the index 3), so the
+//! Jacobian's condition grows like 1/(ω ε)², ω = √(K1/Ir1): a rounding of the residual's rows by
+//! u·|terms| moves T1 by ≈ u·|terms| Ir1/(K1 ε²). Two things keep Newton converging down to the
+//! smallest δ the schema accepts:
+//! - it iterates on the step's change y = (Δq̇, U⁺), Δq̇ = q̇⁺ − q̇, and forms the acceleration
+//!   Δq̇/ε, the stretch (θ − q1) + ε (θ̇⁺ − q̇1⁺) and the error (q − q_d) + ε q̇⁺ from the small
+//!   changes: from q⁺ and q̇⁺ rounded to their ulp the residual is a staircase in z with steps of
+//!   ulp(q)/ε, which Newton cannot descend (so every δ below ≈ 1.5e-4 s stopped, issue 34);
+//! - it accepts a stalled update within a few times the rounding floor of the step (the change of
+//!   z the residual's rounding makes through J⁻¹, [`Predictor::solve_step`]), not only below the
+//!   fixed relative [`NEWTON_STALL_TOLERANCE`], which the floor passes near δ = 1e-5 s.
+//!
 //! # Preliminary feedback
 //! With u = K_pr X + V the paper integrates f(X) + G(X)(K_pr X + V) and designs V. The
 //! backward-Euler equations in (X, V) are those in (X, U) under the affine change U = K_pr X + V,
@@ -64,6 +77,9 @@ pub const NEWTON_TOLERANCE: f64 = 1e-9;
 /// An update that stops shrinking quadratically below this relative size is at the rounding
 /// floor (torques are resolved to ≈ Ir1 · 1e-13/ε N m) and is accepted.
 pub const NEWTON_STALL_TOLERANCE: f64 = 1e-6;
+/// A stalled update is also accepted within this many times the step's rounding floor (see
+/// "Small ε" in the module docs): below it the residual's rounding, not the iterate, decides.
+pub const NEWTON_FLOOR_MARGIN: f64 = 4.0;
 
 /// Why a prediction failed.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -211,34 +227,58 @@ impl Predictor {
 
     /// Solves one backward-Euler step for z = (q̇⁺, U⁺) by Newton from `guess`; returns z and the
     /// number of iterations, or `None` if Newton fails (a vanishing pivot, a non-finite iterate,
-    /// or no convergence in [`NEWTON_MAX_ITERATIONS`]).
+    /// or no convergence in [`NEWTON_MAX_ITERATIONS`]). Newton runs in y = (Δq̇, U⁺) (the same
+    /// iterates: an affine change of unknowns) and stops when every update is below
+    /// [`NEWTON_TOLERANCE`] relative to 1 + |z_i|, or when it has stopped shrinking quadratically
+    /// and each update is below [`NEWTON_STALL_TOLERANCE`] (relative) or [`NEWTON_FLOOR_MARGIN`]
+    /// times the step's rounding floor.
     pub fn solve_step(
         &self,
         x: &StateVector,
         r: &ReferenceSample,
         guess: &StepUnknowns,
     ) -> Option<(StepUnknowns, usize)> {
-        let mut z = *guess;
+        let mut y = *guess;
+        for i in 0..3 {
+            y[i] -= x[3 + i];
+        }
         let mut previous = f64::INFINITY;
         for iteration in 1..=NEWTON_MAX_ITERATIONS {
-            let (residual, jacobian) = self.residual_and_jacobian(x, r, &z);
-            let dz = solve_structured(&jacobian, &residual)?;
-            z -= dz;
-            if !z.iter().all(|v| v.is_finite()) {
+            let (residual, jacobian) = self.step_equations(x, r, &y);
+            let dy = solve_structured(&jacobian, &residual)?;
+            y -= dy;
+            if !y.iter().all(|v| v.is_finite()) {
                 return None;
             }
-            let update = dz.iter().zip(z.iter()).map(|(d, v)| d.abs() / (1.0 + v.abs())).fold(0.0, f64::max);
-            // Converged, or stalled at the rounding floor (no more quadratic decrease).
-            let stalled = iteration > 1 && update <= NEWTON_STALL_TOLERANCE && update > 0.25 * previous;
-            if update <= NEWTON_TOLERANCE || stalled {
+            let z = self.step_unknowns(x, &y);
+            let update = dy.iter().zip(z.iter()).map(|(d, v)| d.abs() / (1.0 + v.abs())).fold(0.0, f64::max);
+            if update <= NEWTON_TOLERANCE {
                 return Some((z, iteration));
+            }
+            // Stalled (no more quadratic decrease) at the rounding floor: more iterations only
+            // chase the residual's rounding.
+            if iteration > 1 && update > 0.25 * previous {
+                let floor = rounding_floor(&jacobian, &self.row_rounding(x, r, &y));
+                let at_floor = (0..5).all(|i| {
+                    dy[i].abs() <= NEWTON_STALL_TOLERANCE * (1.0 + z[i].abs())
+                        || dy[i].abs() <= NEWTON_FLOOR_MARGIN * floor[i]
+                });
+                if at_floor {
+                    return Some((z, iteration));
+                }
             }
             previous = update;
         }
         None
     }
 
-    /// X⁺ from X and the step's solution z: q⁺ = q + ε q̇⁺, w⁺ = w + ε α³ (q⁺ − q_d).
+    /// z = (q̇⁺, U⁺) from y = (Δq̇, U⁺).
+    fn step_unknowns(&self, x: &StateVector, y: &StepUnknowns) -> StepUnknowns {
+        StepUnknowns::new(x[3] + y[0], x[4] + y[1], x[5] + y[2], y[3], y[4])
+    }
+
+    /// X⁺ from X and the step's solution z: q⁺ = q + ε q̇⁺, w⁺ = w + ε α³ (q⁺ − q_d), the w⁺ the
+    /// step's constraint row solved with.
     pub fn advance_state(&self, x: &StateVector, r: &ReferenceSample, z: &StepUnknowns) -> StateVector {
         let e = self.eps;
         let mut next = StateVector::zeros();
@@ -247,7 +287,10 @@ impl Predictor {
             next[3 + i] = z[i];
         }
         for i in 0..2 {
-            next[6 + i] = x[6 + i] + e * self.alpha[i].powi(3) * (next[i] - r.q[i]);
+            let a = self.alpha[i];
+            // q⁺ − q_d as the residual forms it (see `step_point`).
+            let error = ((x[i] - r.q[i]) + e * x[3 + i]) + e * (z[i] - x[3 + i]);
+            next[6 + i] = x[6 + i] + e * a * a * a * error;
         }
         next
     }
@@ -264,25 +307,56 @@ impl Predictor {
         r: &ReferenceSample,
         z: &StepUnknowns,
     ) -> (StepUnknowns, StepJacobian) {
-        let e = self.eps;
-        let q = Vector3::new(x[0], x[1], x[2]);
-        let v = Vector3::new(x[3], x[4], x[5]);
-        let v_next = Vector3::new(z[0], z[1], z[2]);
-        let u = Vector2::new(z[3], z[4]);
-        let q_next = q + v_next * e;
-        let acc = (v_next - v) / e;
+        let y = StepUnknowns::new(z[0] - x[3], z[1] - x[4], z[2] - x[5], z[3], z[4]);
+        self.step_equations(x, r, &y)
+    }
 
-        let m = self.plant.mass_matrix(q_next[1]);
-        let dyn_res = m * acc - self.plant.forces(&q_next, &v_next, &Vector2::zeros(), &u);
+    /// The quantities of one step at y = (Δq̇, U⁺). Every one that is small in a step (the
+    /// acceleration, the stretch, the errors) is formed from the small changes, never as the
+    /// difference of two rounded large ones (see "Small ε").
+    fn step_point(&self, x: &StateVector, r: &ReferenceSample, y: &StepUnknowns) -> StepPoint {
+        let e = self.eps;
+        let v = Vector3::new(x[3], x[4], x[5]);
+        let dv = Vector3::new(y[0], y[1], y[2]);
+        let v_next = v + dv;
+        let mut error = Vector2::zeros();
+        let mut rate_error = Vector2::zeros();
+        let mut w_next = Vector2::zeros();
+        for i in 0..2 {
+            // q⁺ − q_d and q̇⁺ − q̇_d from the step's change.
+            error[i] = ((x[i] - r.q[i]) + e * v[i]) + e * dv[i];
+            rate_error[i] = (v[i] - r.qdot[i]) + dv[i];
+            w_next[i] = x[6 + i] + e * self.alpha[i] * self.alpha[i] * self.alpha[i] * error[i];
+        }
+        StepPoint {
+            q_next: Vector3::new(x[0], x[1], x[2]) + v_next * e,
+            v_next,
+            acc: dv / e,
+            // θ⁺ − q1⁺ = (θ − q1) + ε ((θ̇ − q̇1) + (Δθ̇ − Δq̇1)).
+            stretch: (x[2] - x[0]) + e * ((v[2] - v[0]) + (dv[2] - dv[0])),
+            torque: Vector2::new(y[3], y[4]),
+            error,
+            rate_error,
+            w_next,
+        }
+    }
+
+    /// The residual and its Jacobian ∂R/∂y (= ∂R/∂z) at y = (Δq̇, U⁺).
+    fn step_equations(&self, x: &StateVector, r: &ReferenceSample, y: &StepUnknowns) -> (StepUnknowns, StepJacobian) {
+        let e = self.eps;
+        let p = self.step_point(x, r, y);
+        let m = self.plant.mass_matrix(p.q_next[1]);
+        let dyn_res =
+            m * p.acc - self.plant.forces_stretched(p.q_next[1], p.stretch, &p.v_next, &Vector2::zeros(), &p.torque);
 
         let mut res = StepUnknowns::zeros();
         let mut jac = StepJacobian::zeros();
         res.fixed_rows_mut::<3>(0).copy_from(&dyn_res);
 
         // ∂R_dyn/∂q̇⁺ = M/ε + ε (∂M/∂q2 · acc) e2ᵀ − ε ∂r/∂q − ∂r/∂q̇.
-        let (dr_dq, dr_dv) = self.plant.force_jacobians(&q_next, &v_next);
+        let (dr_dq, dr_dv) = self.plant.force_jacobians(&p.q_next, &p.v_next);
         let mut d_dyn = m / e - dr_dq * e - dr_dv;
-        let dm_acc = self.plant.mass_matrix_dq2(q_next[1]) * acc;
+        let dm_acc = self.plant.mass_matrix_dq2(p.q_next[1]) * p.acc;
         for row in 0..3 {
             d_dyn[(row, 1)] += e * dm_acc[row];
         }
@@ -291,13 +365,59 @@ impl Predictor {
 
         for i in 0..2 {
             let a = self.alpha[i];
-            let err = q_next[i] - r.q[i];
-            let w_next = x[6 + i] + e * a * a * a * err;
-            res[3 + i] = (acc[i] - r.qddot[i]) + 3.0 * a * (v_next[i] - r.qdot[i]) + 3.0 * a * a * err + w_next;
+            res[3 + i] = (p.acc[i] - r.qddot[i]) + 3.0 * a * p.rate_error[i] + 3.0 * a * a * p.error[i] + p.w_next[i];
             jac[(3 + i, i)] = 1.0 / e + 3.0 * a + 3.0 * a * a * e + a * a * a * e * e;
         }
         (res, jac)
     }
+
+    /// The rounding of each row of the residual at y: the unit roundoff times the sum of its
+    /// terms' magnitudes (computed only when Newton stalls).
+    fn row_rounding(&self, x: &StateVector, r: &ReferenceSample, y: &StepUnknowns) -> StepUnknowns {
+        let p = self.step_point(x, r, y);
+        let m = self.plant.mass_matrix(p.q_next[1]);
+        let size = m.abs() * p.acc.abs() + self.plant.force_magnitudes(p.q_next[1], p.stretch, &p.v_next, &p.torque);
+        let mut rounding = StepUnknowns::zeros();
+        rounding.fixed_rows_mut::<3>(0).copy_from(&(size * f64::EPSILON));
+        for i in 0..2 {
+            let a = self.alpha[i];
+            let size = p.acc[i].abs()
+                + r.qddot[i].abs()
+                + 3.0 * a * (x[3 + i].abs() + r.qdot[i].abs() + y[i].abs())
+                + 3.0 * a * a * (x[i].abs() + r.q[i].abs() + self.eps * p.v_next[i].abs())
+                + p.w_next[i].abs();
+            rounding[3 + i] = size * f64::EPSILON;
+        }
+        rounding
+    }
+}
+
+/// One backward-Euler step's quantities at an iterate (see [`Predictor::step_point`]).
+struct StepPoint {
+    q_next: Vector3<f64>,
+    v_next: Vector3<f64>,
+    /// (q̇⁺ − q̇)/ε.
+    acc: Vector3<f64>,
+    /// θ⁺ − q1⁺.
+    stretch: f64,
+    torque: Vector2<f64>,
+    /// q⁺ − q_d.
+    error: Vector2<f64>,
+    /// q̇⁺ − q̇_d.
+    rate_error: Vector2<f64>,
+    w_next: Vector2<f64>,
+}
+
+/// The rounding floor of one step's unknowns: how far the rows' `rounding` can move z
+/// through J⁻¹, bounded by the structured back-substitution of [`solve_structured`] in magnitudes
+/// (no cancellation assumed). The pivots are nonzero where this is called.
+fn rounding_floor(j: &StepJacobian, rounding: &StepUnknowns) -> StepUnknowns {
+    let dv1 = rounding[3] / j[(3, 0)].abs();
+    let dv2 = rounding[4] / j[(4, 1)].abs();
+    let dtheta = (rounding[0] + j[(0, 0)].abs() * dv1 + j[(0, 1)].abs() * dv2) / j[(0, 2)].abs();
+    let dt2 = j[(1, 0)].abs() * dv1 + j[(1, 1)].abs() * dv2 + j[(1, 2)].abs() * dtheta + rounding[1];
+    let dt1 = j[(2, 0)].abs() * dv1 + j[(2, 1)].abs() * dv2 + j[(2, 2)].abs() * dtheta + rounding[2];
+    StepUnknowns::new(dv1, dv2, dtheta, dt1, dt2)
 }
 
 /// Solves J dz = R for the Jacobian of one step by back-substitution along its sparsity:

@@ -85,13 +85,41 @@ impl Plant {
         friction: &Vector2<f64>,
         torque: &Vector2<f64>,
     ) -> Vector3<f64> {
+        self.forces_stretched(q[1], q[2] - q[0], qdot, friction, torque)
+    }
+
+    /// [`Plant::forces`] from q2 and the joint's stretch θ − q1, given apart: the predictor forms
+    /// the stretch of a step from the previous one and the step's small change, free of the
+    /// rounding of the absolute angles (which, divided by ε², would swamp its torques).
+    #[inline]
+    pub fn forces_stretched(
+        &self,
+        q2: f64,
+        stretch: f64,
+        qdot: &Vector3<f64>,
+        friction: &Vector2<f64>,
+        torque: &Vector2<f64>,
+    ) -> Vector3<f64> {
         let p = &self.params;
-        let s2 = q[1].sin();
-        let stretch = q[2] - q[0];
+        let s2 = q2.sin();
         Vector3::new(
             p.a3 * qdot[1] * (2.0 * qdot[0] + qdot[1]) * s2 + p.k1 * stretch,
             -p.bv2 * qdot[1] - friction[1] - p.a3 * qdot[0] * qdot[0] * s2 + torque[1],
             -p.bv1 * qdot[2] - friction[0] + torque[0] - p.k1 * stretch,
+        )
+    }
+
+    /// The size of each row of [`Plant::forces_stretched`] (friction-free): the sum of its terms'
+    /// magnitudes, the scale of its rounding error (Newton's floor in the predictor).
+    #[inline]
+    pub fn force_magnitudes(&self, q2: f64, stretch: f64, qdot: &Vector3<f64>, torque: &Vector2<f64>) -> Vector3<f64> {
+        let p = &self.params;
+        let s2 = q2.sin().abs();
+        let spring = (p.k1 * stretch).abs();
+        Vector3::new(
+            (p.a3 * qdot[1] * (2.0 * qdot[0] + qdot[1])).abs() * s2 + spring,
+            (p.bv2 * qdot[1]).abs() + p.a3 * qdot[0] * qdot[0] * s2 + torque[1].abs(),
+            (p.bv1 * qdot[2]).abs() + torque[0].abs() + spring,
         )
     }
 

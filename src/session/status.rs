@@ -31,10 +31,10 @@ pub struct RunStatus {
     /// "A" or "B".
     pub run: &'static str,
     /// "stable", "unstable", "borderline" (from ρ), or what the run has shown beyond it:
-    /// "diverged", "bounded oscillation".
+    /// "diverged", "bounded oscillation", "solver failed" (a numerical failure stopped it).
     pub verdict: &'static str,
     /// The verdict as the headline says it: "Unstable", "Stable", "Borderline", "Diverged",
-    /// "Bounded oscillation".
+    /// "Bounded oscillation", "Solver failed".
     pub headline: &'static str,
     /// The prediction in a sentence: "ρ = 1.0239 > 1 — in the long run the errors grow e-fold every
     /// 0.42 s".

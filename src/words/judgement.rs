@@ -5,7 +5,7 @@
 use serde::Serialize;
 
 use super::numbers::{e_folding, two_decimals};
-use super::verdict::divergence_reason;
+use super::verdict::{divergence_reason, solver_failure};
 use crate::analysis::judgement::{
     Caveat, Detail, DivergenceReading, FloorReading, GrowthReading, Headline, Judgement, Observation,
     OscillationReading, OtherSignWhy, Prediction, RhoLine, SlewReading,
@@ -70,14 +70,15 @@ pub fn judgement(j: &Judgement) -> JudgementText {
     }
 }
 
-/// The verdict as the headline says it: "Unstable", "Stable", "Borderline", "Diverged",
-/// "Bounded oscillation", "Bounded", "Too early to tell".
+/// The verdict as the headline says it: "Unstable", "Stable", "Borderline", "Diverged", "Solver
+/// failed", "Bounded oscillation", "Bounded", "Too early to tell".
 pub fn headline(h: Headline) -> &'static str {
     match h {
         Headline::Stable => "Stable",
         Headline::Unstable => "Unstable",
         Headline::Borderline => "Borderline",
         Headline::Diverged => "Diverged",
+        Headline::SolverFailed => "Solver failed",
         Headline::BoundedOscillation => "Bounded oscillation",
         Headline::Bounded => "Bounded",
         Headline::TooEarly => "Too early to tell",
@@ -170,6 +171,13 @@ fn growth_or_decay(rate: f64) -> &'static str {
 /// What the simulation observed, against ρ.
 pub fn observation(o: &Observation) -> String {
     match o {
+        // What happened, and that it is the solver's, not the arm's: no reading against ρ.
+        Observation::SolverFailed { at, error } => format!(
+            "observed: the run stopped at t = {at:.2} s with the errors at {}, {} rad: {}",
+            scientific(error[0], 2),
+            scientific(error[1], 2),
+            solver_failure()
+        ),
         Observation::Diverged { at, reason, bound, reading } => {
             let agrees = match reading {
                 DivergenceReading::AsPredicted => "as ρ > 1 predicted".to_string(),

@@ -12,8 +12,14 @@ pub fn divergence_reason(reason: DivergenceReason, bound: f64) -> String {
         DivergenceReason::ErrorBound if bound == core::f64::consts::PI => "a tracking error passed π rad".into(),
         DivergenceReason::ErrorBound => format!("a tracking error passed {bound:.4} rad"),
         DivergenceReason::NonFinite => "the state became non-finite (NaN or infinite)".into(),
-        DivergenceReason::NewtonFailure => "the predictor's Newton iteration failed".into(),
+        DivergenceReason::NewtonFailure => solver_failure().into(),
     }
+}
+
+/// A run the predictor's Newton iteration stopped, in words: what failed, and that it is a
+/// numerical failure, not the arm's.
+pub fn solver_failure() -> &'static str {
+    "the predictor's Newton iteration did not converge — a numerical failure of the solver, not the arm's dynamics"
 }
 
 /// The simulation's own verdict in a table cell (a benchmark's line): "unstable (2.27 1/s)",
@@ -24,6 +30,7 @@ pub fn verdict_short(v: &Verdict) -> String {
         Verdict::Unstable { growth_rate } => format!("unstable ({growth_rate:.2} 1/s)"),
         Verdict::BoundedOscillation { period, .. } => format!("bounded oscillation ({period:.2} s)"),
         Verdict::SlewLocked { period, .. } => format!("stable (repeats every {period:.2} s)"),
+        Verdict::Diverged { at, reason: DivergenceReason::NewtonFailure } => format!("solver failed at {at:.2} s"),
         Verdict::Diverged { at, .. } => format!("diverged at {at:.2} s"),
     }
 }
