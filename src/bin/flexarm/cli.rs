@@ -199,10 +199,9 @@ pub fn read_settings_of(m: &ArgMatches, keys: &[&str], uses_page_keys: bool) -> 
             notices.iter().map(|n| n.key.as_str()).filter(|k| !(uses_page_keys && page_key_drawn(k))).collect();
         if !ignored.is_empty() {
             eprintln!(
-                "note: --state: {} {} the page's own (how it plays, what it shows, run B): this command ignores {}",
-                ignored.join(", "),
-                if ignored.len() == 1 { "is" } else { "are" },
-                if ignored.len() == 1 { "it" } else { "them" }
+                "note: --state: this command ignores {} (the page's own: how it plays, what it shows, run B, its \
+                 lesson)",
+                ignored.join(", ")
             );
         }
     }
