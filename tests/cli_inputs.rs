@@ -204,6 +204,16 @@ fn a_list_may_start_with_a_minus_sign_and_is_refused_by_the_range() {
     assert!(err.contains("α1") && err.contains("must be > 0") && err.contains("--alpha"), "{err}");
     let err = refusal(&["sweep", "--delta", "-0.01:0.1:3", "--alpha", "2"], &[]);
     assert!(err.contains("δ") && err.contains("--delta"), "{err}");
+    // So do the other pairs: a range, a mark, a pole to place.
+    for (args, flag) in
+        [(&["map", "--delta-range", "-0.01:0.1"][..], "--delta-range"), (&["map", "--mark", "-0.01:2"][..], "--mark")]
+    {
+        let err = refusal(args, &[]);
+        assert!(err.contains(flag) && !err.contains("unexpected argument"), "{err}");
+    }
+    // A4 at −2.6 ± 29.6j: a pole in the left half-plane is written with a minus sign.
+    let out = flexarm(&["analyze", "--place", "-2.6,29.6"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
 }
 
 #[test]

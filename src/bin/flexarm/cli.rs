@@ -255,9 +255,18 @@ pub fn flag(name: &'static str, help: &'static str) -> Arg {
     Arg::new(name).long(name).help(help).action(ArgAction::SetTrue)
 }
 
-/// An option with a value.
+/// An option with a value. A list or a pair (`LIST`, `A:B`, `RE,IM`) may start with a minus sign
+/// (`--alpha -1,2`): it is read as the value, and its numbers are then checked against their
+/// ranges, rather than taken for an unknown flag.
 pub fn option(name: &'static str, value: &'static str, help: impl Into<String>) -> Arg {
-    Arg::new(name).long(name).value_name(value).help(help.into()).allow_negative_numbers(true).action(ArgAction::Set)
+    let listed = value == "LIST" || value.contains([':', ',']);
+    Arg::new(name)
+        .long(name)
+        .value_name(value)
+        .help(help.into())
+        .allow_negative_numbers(true)
+        .allow_hyphen_values(listed)
+        .action(ArgAction::Set)
 }
 
 /// A subcommand with the common settings.

@@ -28,15 +28,9 @@ pub fn command() -> Command {
                 "Sampling periods, s: a comma list 0.005,0.01,0.02 or START:STOP:N (N points, logarithmically spaced \
              when both ends are > 0)",
             )
-            .long("delta")
-            // A list may start with a minus sign: its values are then refused by the schema's range.
-            .allow_hyphen_values(true),
+            .long("delta"),
         )
-        .arg(
-            cli::option("alpha_list", "LIST", "Values of α = α1 = α2, 1/s, same syntax")
-                .long("alpha")
-                .allow_hyphen_values(true),
-        )
+        .arg(cli::option("alpha_list", "LIST", "Values of α = α1 = α2, 1/s, same syntax").long("alpha"))
         .args(cli::run_args(KEYS))
         .arg(cli::flag("simulate", "Also run each point for --duration s"))
         .arg(cli::param_arg(&schema::DURATION))
