@@ -94,19 +94,20 @@ build_wasm() {
     echo "wasm build with wasm-opt: $((SECONDS - started)) s; $(wc -c < www/pkg/flexarm_bg.wasm) bytes"
 }
 
-# A Python with NumPy and SciPy from PyPI, in a virtual environment of the repository's (for the
-# exported Python scripts' test and the Python baseline of the benchmarks). Sets FLEXARM_PYTHON.
+# A Python with NumPy, SciPy and Matplotlib from PyPI, in a virtual environment of the repository's
+# (for the exported Python scripts' test, its plot saved without a display, and the Python baseline
+# of the benchmarks). Sets FLEXARM_PYTHON.
 ensure_python_env() {
     local venv="${FLEXARM_PY_VENV:-target/py-bench-venv}"
-    if ! { [ -x "$venv/bin/python" ] && "$venv/bin/python" -c 'import numpy, scipy' >/dev/null 2>&1; }; then
-        step "making a Python virtual environment with numpy and scipy from PyPI in $venv"
+    if ! { [ -x "$venv/bin/python" ] && "$venv/bin/python" -c 'import numpy, scipy, matplotlib' >/dev/null 2>&1; }; then
+        step "making a Python virtual environment with numpy, scipy and matplotlib from PyPI in $venv"
         if ! command -v python3 >/dev/null 2>&1; then
             as_root apt-get update -qq
             as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3 python3-venv >/dev/null
         fi
         mkdir -p "$(dirname "$venv")"
         python3 -m venv "$venv"
-        "$venv/bin/python" -m pip install --quiet --disable-pip-version-check numpy scipy
+        "$venv/bin/python" -m pip install --quiet --disable-pip-version-check numpy scipy matplotlib
     fi
     export FLEXARM_PYTHON="$PWD/$venv/bin/python"
 }

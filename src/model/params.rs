@@ -99,16 +99,27 @@ impl PlantParameters {
         for (p, v) in crate::schema::ARM_PARAMS.iter().zip(self.values()) {
             p.check(v)?;
         }
+        self.check_mass_matrix(&crate::schema::A3)
+    }
+
+    /// The check across A1, A2 and A3 (the mass matrix positive definite for every q2), its
+    /// failure reported as a mistake in `p`, one of the three: the one the user changed, so that
+    /// a bad A1 is not blamed on A3. The reason names all three.
+    pub fn check_mass_matrix(&self, p: &crate::schema::Param) -> Result<(), ConfigError> {
         let room = self.a1 * self.a2 - self.a2 * self.a2;
         if self.a3 * self.a3 >= room {
+            let g = |v: f64| crate::plot::format::significant(v, 3);
             let reason = format!(
-                "too large for A1 = {} and A2 = {} kg m²: the mass matrix must be positive definite for every q2, \
-                 which needs A3² < A1·A2 − A2² = {}",
+                "must keep the mass matrix positive definite for every q2, which needs A3² < A1·A2 − A2²; with A1 = {}, \
+                 A2 = {} and A3 = {} kg m² it is {} ≥ {}",
                 crate::schema::format_number(self.a1),
                 crate::schema::format_number(self.a2),
-                crate::plot::format::significant(room, 3)
+                crate::schema::format_number(self.a3),
+                g(self.a3 * self.a3),
+                g(room)
             );
-            return Err(ConfigError::new(crate::schema::A3.name, self.a3, &reason));
+            let value = self.get(p.key).unwrap_or(self.a3);
+            return Err(ConfigError::new(p.name, value, &reason));
         }
         self.check_fastest_rate()
     }

@@ -413,7 +413,10 @@ pub const START_TIME: Param = Param {
         min: 0.0,
         min_inclusive: true,
         max: 120.0,
-        allowed: Some("must be from 0 to 120 s"),
+        allowed: Some(
+            "must be from 0 to 120 s: the run is replayed from rest up to that moment before anything is shown, and \
+             a link or a figure should not keep its reader waiting longer",
+        ),
         control: [0.0, 120.0],
         scale: Scale::Linear,
         digits: 3,

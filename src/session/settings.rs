@@ -64,7 +64,7 @@ pub struct Notice {
 
 /// Where a state string comes from: the page checks numbers against its controls' spans and skips
 /// bad values with a notice; the command line checks the hard limits, refuses bad values and
-/// ignores the page's own keys; a lesson step is checked like the page and refused like the
+/// sets the page's own keys aside with a notice; a lesson step is checked like the page and refused like the
 /// command line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Source {
@@ -167,11 +167,15 @@ impl Settings {
 
     /// Reads a state string over `self`. The page ([`Source::Page`]) is lenient: a bad value is
     /// skipped with a [`Notice`]; the command line is strict: the first bad value is the error.
-    /// `preset=ID` is applied first, `alpha` before `alpha1`/`alpha2`; run B's keys count only
-    /// with `compare=1`; the command line ignores the page's own keys (speed, comparison).
+    /// One rule everywhere: every key is a setting of the state string, given once, with a value
+    /// its parameter accepts. `preset=ID` is applied first, `alpha` before `alpha1`/`alpha2`; run
+    /// B's keys count only with `compare=1`; the command line checks the page's own keys (speed,
+    /// the view, the comparison, a moment) and sets them aside, each with a notice.
     pub fn read(&mut self, state: &str, source: Source) -> Result<Vec<Notice>, Error> {
         let pairs = split_query(state);
         let mut notices = Vec::new();
+        // The page's own keys the command line checked and set aside.
+        let mut set_aside = Vec::new();
         let mut fail = |key: &str, e: Error| -> Result<(), Error> {
             match source {
                 Source::CommandLine | Source::Lesson => Err(e),
@@ -181,7 +185,7 @@ impl Settings {
                 }
             }
         };
-        if let Some((_, id)) = pairs.iter().find(|(k, _)| k == "preset") {
+        if let Some((_, id)) = pairs.iter().rev().find(|(k, _)| k == "preset") {
             match preset(id) {
                 Some(p) => self.apply_preset(p)?,
                 None => fail("preset", preset_error(id))?,
@@ -206,6 +210,14 @@ impl Settings {
             }
         }
         let compare = pairs.iter().rev().find(|(k, _)| k == "compare").map(|(_, v)| v.as_str());
+        // One value per key, as one flag per option on the command line: a second is refused
+        // there; a link (which a hand may have edited) keeps the last, as it always has, and says so.
+        for (i, (key, text)) in pairs.iter().enumerate() {
+            let earlier: Vec<&str> = pairs[..i].iter().filter(|(k, _)| k == key).map(|(_, v)| v.as_str()).collect();
+            if earlier.len() == 1 {
+                fail(key, repeated(key, earlier[0], text, source))?;
+            }
+        }
         let mut listed = false;
         for (key, _) in &pairs {
             // `lesson` is the session's (which step of the lesson is open), not a setting.
@@ -217,24 +229,29 @@ impl Settings {
                 let e = if listed { unknown_again(key) } else { unknown(key) };
                 listed = true;
                 fail(key, e)?;
+            } else if source == Source::CommandLine && matches!(key.as_str(), "lesson" | "lesson_src") {
+                set_aside.push(ignored(key));
             }
+        }
+        if source == Source::CommandLine {
+            set_aside
+                .extend(["views", "strip"].into_iter().filter(|k| pairs.iter().any(|(key, _)| key == k)).map(ignored));
         }
         for p in schema::PARAMS {
             // The last occurrence of a key wins, as in URLSearchParams.get of a rewritten URL.
             let Some((_, text)) = pairs.iter().rev().find(|(k, _)| k == p.key) else { continue };
             let page_only = matches!(p.scope, Scope::Page | Scope::Compare);
             if source == Source::CommandLine && page_only {
+                // Checked like any value (a bad one is a mistake wherever it is), then set aside
+                // with a notice: the command line plays nothing and shows no view.
+                match p.parse(text, false) {
+                    Ok(_) => set_aside.push(ignored(p.key)),
+                    Err(e) => fail(p.key, e)?,
+                }
                 continue;
             }
             if p.scope == Scope::Cli {
-                fail(
-                    p.key,
-                    Error::Parse(ParseError {
-                        key: p.key.into(),
-                        text: text.clone(),
-                        expected: format!("no {} in a state string: use {}", p.key, p.flag()),
-                    }),
-                )?;
+                fail(p.key, cli_only(p.key, text))?;
                 continue;
             }
             if p.scope == Scope::Compare && !matches!(compare, Some("1" | "true" | "on" | "yes")) {
@@ -262,6 +279,7 @@ impl Settings {
                 fail(p.key, e)?;
             }
         }
+        notices.extend(set_aside);
         Ok(notices)
     }
 
@@ -364,10 +382,34 @@ fn run_pairs(a: &RunSettings, changed_only: bool) -> Vec<(&'static str, String)>
     out
 }
 
+/// The notice of a page's own key that the command line reads, checks and sets aside.
+fn ignored(key: &str) -> Notice {
+    Notice { key: key.to_string(), text: format!("{key} is the page's own (how it plays and what it shows): ignored") }
+}
+
+/// A key given a second time: refused by the command line and a lesson; a link keeps the last.
+fn repeated(key: &str, first: &str, again: &str, source: Source) -> Error {
+    let taken = if source == Source::Page { "the last one is taken" } else { "give it once" };
+    Error::Refused(format!("{key} is given twice in the state string ('{first}', then '{again}'): {taken}"))
+}
+
+/// A command-line option (`duration`, `output_interval`, `q2`) in a state string, which holds the
+/// page's settings only: the flag sets it.
+fn cli_only(key: &str, text: &str) -> Error {
+    Error::Parse(ParseError {
+        key: key.into(),
+        text: text.into(),
+        expected: "a setting of the state string, which holds the page's settings only: this one is the command \
+                   line's"
+            .into(),
+    })
+}
+
 /// A key that names no setting ("invalid setting = 'bogus': expected a known setting: …"): the
-/// key is what was given, so it is quoted like any other value (and shortened by the page).
+/// key is what was given, so it is quoted like any other value (and shortened by the page). The
+/// command line's own options are not among them.
 fn unknown(key: &str) -> Error {
-    let known: Vec<&str> = schema::PARAMS.iter().map(|p| p.key).collect();
+    let known: Vec<&str> = schema::PARAMS.iter().filter(|p| p.scope != Scope::Cli).map(|p| p.key).collect();
     Error::Parse(ParseError {
         key: "setting".into(),
         text: key.into(),
@@ -456,9 +498,10 @@ mod tests {
         assert!(notices[0].text.contains("positive definite"), "{}", notices[0].text);
         assert_eq!((s.a.delta, s.a.plant.k1, s.a.plant.a3), (0.05, 4610.4, 0.328));
         assert!(Settings::default().read("delta=5", Source::CommandLine).unwrap().is_empty(), "inside the limits");
-        // The page's own keys mean nothing to the CLI.
+        // The page's own keys mean nothing to the CLI: checked, set aside, and said.
         let mut c = Settings::default();
-        assert!(c.read("speed=2&compare=1&b_pf=off", Source::CommandLine).unwrap().is_empty());
+        let notices = c.read("speed=2&compare=1&b_pf=off", Source::CommandLine).unwrap();
+        assert_eq!(notices.iter().map(|n| n.key.as_str()).collect::<Vec<_>>(), ["speed", "compare", "b_pf"]);
         assert_eq!(c, Settings::default());
     }
 

@@ -10,13 +10,17 @@ eqs. (2.3)-(2.4), (4.2)-(4.3)), the one-period map of the sampled loop (the torq
 from x(t_n) is held from t_n + delta to t_n + 2 delta, Fig. 2.1), its eigenvalues and spectral
 radius rho (stable iff rho < 1), and the pair A4 the controller leaves as delta -> 0 (section 3).
 With --simulate it also runs the nonlinear arm under the predictive controller (the friction
-taken as cancelled by the observer of eq. (4.4)) and plots the errors if matplotlib is installed.
+taken as cancelled by the observer of eq. (4.4)) and plots the errors if matplotlib is installed:
+in a window where there is a display, else saved to flexarm_errors.png (and said where);
+--plot FILE.png saves the plot to FILE (any format matplotlib writes, by its extension) and
+implies --simulate.
 
 The last line it prints is one JSON object: spectral_radius, limit_pair, eigenvalues, ...
 """
 import argparse
 import json
 import math
+import os
 
 import numpy as np
 from scipy.linalg import expm
@@ -267,11 +271,21 @@ def simulate(duration):
     return np.array(times), np.array(errors)
 
 
+# Where the plot goes without a display or --plot; matplotlib's backends that only write files.
+DEFAULT_PLOT = "flexarm_errors.png"
+NON_INTERACTIVE = ("agg", "cairo", "pdf", "pgf", "ps", "svg", "template")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--simulate", action="store_true", help="run the nonlinear closed loop too")
     parser.add_argument("--duration", type=float, default=5.0, help="simulated seconds (with --simulate)")
+    parser.add_argument("--plot", metavar="FILE.png",
+                        help="save the errors' plot to FILE (implies --simulate; default: a window if there is "
+                             f"a display, else {DEFAULT_PLOT})")
     args = parser.parse_args()
+    if args.plot:
+        args.simulate = True
 
     arm_lin = linearize(ARM, ALPHA, REST)
     model_lin = linearize(MODEL, ALPHA, REST)
@@ -304,6 +318,7 @@ def main():
         result["simulated_seconds"] = float(times[-1]) if len(times) else 0.0
         result["max_error"] = [float(v) for v in np.max(np.abs(errors), axis=0)] if len(times) else None
         try:
+            import matplotlib
             import matplotlib.pyplot as plt
         except ImportError:
             print("(matplotlib is not installed: no plot)")
@@ -313,8 +328,17 @@ def main():
                 ax.plot(times, errors[:, i])
                 ax.set_ylabel(f"e{i + 1} [rad]")
             axes[1].set_xlabel("t [s]")
-            axes[0].set_title(f"flexarm: {{STATE}}")
-            plt.show()
+            axes[0].set_title("flexarm: {{STATE}}", fontsize=7)
+            # Without a display matplotlib falls back to a backend that draws only into files
+            # (Agg): plt.show() would then show nothing, so the plot is saved and said where.
+            shown = not args.plot and matplotlib.get_backend().lower() not in NON_INTERACTIVE
+            if shown:
+                plt.show()
+            else:
+                path = args.plot or DEFAULT_PLOT
+                fig.savefig(path, dpi=150, bbox_inches="tight")
+                print(f"saved the plot of the errors to {os.path.abspath(path)}")
+                result["plot"] = os.path.abspath(path)
     print(json.dumps(result))
 
 

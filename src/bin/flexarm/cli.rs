@@ -2,9 +2,13 @@
 //! unit, range and default as help; values are read by the schema, so the CLI, the page and the
 //! URL accept and refuse the same things with the same words.
 
+use std::sync::OnceLock;
+
+use clap::parser::ValueSource;
 use clap::{Arg, ArgAction, ArgMatches, Command};
 use flexarm::error::Error;
 use flexarm::schema::{self, Kind, Param};
+use flexarm::session::query::split_query;
 use flexarm::session::{Settings, Source};
 
 /// A failure to report: the message (without `error: `) and the exit status.
@@ -23,24 +27,49 @@ pub fn usage_error(msg: impl Into<String>) -> Failure {
     Failure(msg.into(), 2)
 }
 
-/// A library error: the user's input (status 2), naming the flag that sets the parameter; a failed
-/// analysis is a failure of the run (status 1).
-pub fn lib_error(e: Error) -> Failure {
-    let flag = |p: &Param| match p.key {
-        "eps_ratio" => " (set with --eps-ratio and --k)".to_string(),
-        "alpha1" | "alpha2" => format!(" (set with {} or --alpha)", p.flag()),
-        _ => format!(" (set with {})", p.flag()),
+/// The visible long flags of the command being run, so that a hint names only flags it has.
+static FLAGS: OnceLock<Vec<String>> = OnceLock::new();
+
+/// Remembers the flags of the command about to run (called once, before it runs).
+pub fn set_command(c: &Command) {
+    let flags = c.get_arguments().filter(|a| !a.is_hide_set()).filter_map(|a| a.get_long()).map(|l| format!("--{l}"));
+    let _ = FLAGS.set(flags.collect());
+}
+
+/// True if the command being run has `flag` (every flag before one is known).
+pub fn has_flag(flag: &str) -> bool {
+    FLAGS.get().is_none_or(|flags| flags.iter().any(|f| f == flag))
+}
+
+/// " (set with --X)": the flags of the command being run that set parameter `key`, or nothing
+/// when it has none.
+fn hint(key: &str) -> String {
+    let (flags, join): (Vec<String>, &str) = match key {
+        "eps_ratio" => (vec!["--eps-ratio".into(), "--k".into()], " and "),
+        "alpha1" | "alpha2" => (vec![format!("--{}", key), "--alpha".into()], " or "),
+        // A moment of the page is the figure's --time.
+        "t" => (vec!["--time".into()], ""),
+        "duration" => (vec!["--duration".into(), "--time".into()], " or "),
+        _ => (vec![format!("--{}", key.replace('_', "-"))], ""),
     };
+    let flags: Vec<String> = flags.into_iter().filter(|f| has_flag(f)).collect();
+    if flags.is_empty() {
+        String::new()
+    } else {
+        format!(" (set with {})", flags.join(join))
+    }
+}
+
+/// A library error: the user's input (status 2), naming the flag that sets the parameter (if this
+/// command has one); a failed analysis is a failure of the run (status 1).
+pub fn lib_error(e: Error) -> Failure {
     match &e {
         Error::Config(c) => {
-            let hint = schema::PARAMS.iter().find(|p| p.name == c.parameter).map(|p| flag(p)).unwrap_or_default();
-            usage_error(format!("{e}{hint}"))
+            let key = schema::PARAMS.iter().find(|p| p.name == c.parameter).map_or("", |p| p.key);
+            usage_error(format!("{e}{}", hint(key)))
         }
-        Error::Parse(p) => {
-            let hint = schema::param(&p.key).map(flag).unwrap_or_default();
-            usage_error(format!("{e}{hint}"))
-        }
-        Error::InvalidDuration(_) => usage_error(format!("{e} (set with --duration)")),
+        Error::Parse(p) => usage_error(format!("{e}{}", hint(&p.key))),
+        Error::InvalidDuration(_) => usage_error(format!("{e}{}", hint("duration"))),
         Error::Refused(_) => usage_error(e.to_string()),
         Error::Analysis(_) | Error::Lesson { .. } | Error::NotReady(_) => Failure(e.to_string(), 1),
     }
@@ -58,7 +87,27 @@ fn value_name(p: &Param) -> String {
     }
 }
 
-/// The help line of a parameter: label, unit, range, default.
+/// The short help line of a parameter (`-h`): label, unit, range, default.
+fn short_help(p: &Param) -> String {
+    let default = match p.default_value() {
+        schema::Value::Switch(false) => String::new(),
+        v => format!("; default {}", v.text()),
+    };
+    let unit = if p.unit.is_empty() { String::new() } else { format!(", {}", p.unit) };
+    let range = match &p.kind {
+        Kind::Number(n) if n.min_inclusive => {
+            format!(" ({}–{}{default})", schema::format_number(n.min), schema::format_number(n.max))
+        }
+        Kind::Number(n) => {
+            format!(" (> {}, ≤ {}{default})", schema::format_number(n.min), schema::format_number(n.max))
+        }
+        Kind::Choice { .. } => format!(" ({}{default})", p.allowed(false)),
+        Kind::Switch { .. } => String::new(),
+    };
+    format!("{}{unit}{range}", p.label)
+}
+
+/// The help of a parameter (`--help`): label, unit, range in words, default, what it does.
 fn help(p: &Param) -> String {
     let default = match p.default_value() {
         schema::Value::Switch(false) => String::new(),
@@ -76,7 +125,7 @@ fn help(p: &Param) -> String {
 /// A flag for a schema parameter.
 pub fn param_arg(p: &'static Param) -> Arg {
     let long = p.flag().trim_start_matches("--").to_string();
-    let arg = Arg::new(p.key).long(long).help(help(p));
+    let arg = Arg::new(p.key).long(long).help(short_help(p)).long_help(help(p));
     match p.kind {
         Kind::Switch { .. } => arg.action(ArgAction::SetTrue),
         _ => arg.value_name(value_name(p)).allow_negative_numbers(true).action(ArgAction::Set),
@@ -131,10 +180,30 @@ pub fn run_args(keys: &[&str]) -> Vec<Arg> {
 /// The settings of a command: the CLI's defaults, then `--state`, then each flag (in the schema's
 /// order, so `--alpha` comes before `--alpha1`/`--alpha2`).
 pub fn read_settings(m: &ArgMatches, keys: &[&str]) -> Res<Settings> {
+    read_settings_of(m, keys, false)
+}
+
+/// [`read_settings`] for a command that draws the page (`figure`): the page's own keys in
+/// `--state` are its to read, not ignored.
+pub fn read_settings_of(m: &ArgMatches, keys: &[&str], uses_page_keys: bool) -> Res<Settings> {
     let keys = &with_design(keys)[..];
     let mut settings = Settings::default();
-    if let Some(state) = m.get_one::<String>("state") {
-        settings.read(state, Source::CommandLine).map_err(|e| usage_error(format!("--state: {}", lib_error(e).0)))?;
+    let state = m.get_one::<String>("state").map_or("", String::as_str);
+    if !state.is_empty() {
+        let notices = settings
+            .read(state, Source::CommandLine)
+            .map_err(|e| usage_error(format!("--state: {}", lib_error(e).0)))?;
+        // What the command sets aside is said, not silently dropped (`figure` reads the view's
+        // keys itself).
+        let ignored: Vec<&str> =
+            notices.iter().map(|n| n.key.as_str()).filter(|k| !(uses_page_keys && page_key_drawn(k))).collect();
+        if !ignored.is_empty() {
+            eprintln!(
+                "note: --state: this command ignores {} (the page's own: how it plays, what it shows, run B, its \
+                 lesson)",
+                ignored.join(", ")
+            );
+        }
     }
     if let Some(id) = m.get_one::<String>("arm") {
         settings.set_arm(id).map_err(lib_error)?;
@@ -150,8 +219,22 @@ pub fn read_settings(m: &ArgMatches, keys: &[&str]) -> Res<Settings> {
             settings.set_text(p.key, &text, Source::CommandLine).map_err(lib_error)?;
         }
     }
+    // The one check across A1, A2, A3 blames what the user gave (flags first, then the state
+    // string), not A3 whatever was changed.
+    let given = |key: &&str| {
+        m.value_source(key) == Some(ValueSource::CommandLine) || split_query(state).iter().any(|(k, _)| k == key)
+    };
+    let arm_keys = [&schema::A1, &schema::A2, &schema::A3];
+    let flagged = arm_keys.iter().find(|p| m.value_source(p.key) == Some(ValueSource::CommandLine));
+    let blamed = flagged.or_else(|| arm_keys.iter().find(|p| given(&p.key))).copied().unwrap_or(&schema::A3);
+    settings.a.plant.check_mass_matrix(blamed).map_err(|e| lib_error(e.into()))?;
     settings.a.config().validate().map_err(|e| lib_error(e.into()))?;
     Ok(settings)
+}
+
+/// A page key that `figure` draws from (the view, run B, a moment), rather than ignores.
+fn page_key_drawn(key: &str) -> bool {
+    key != schema::SPEED.key && !matches!(key, "lesson" | "lesson_src")
 }
 
 /// A number of a CLI-only schema parameter (duration, output interval, q2), or its default.
@@ -172,9 +255,18 @@ pub fn flag(name: &'static str, help: &'static str) -> Arg {
     Arg::new(name).long(name).help(help).action(ArgAction::SetTrue)
 }
 
-/// An option with a value.
+/// An option with a value. A list or a pair (`LIST`, `A:B`, `RE,IM`) may start with a minus sign
+/// (`--alpha -1,2`): it is read as the value, and its numbers are then checked against their
+/// ranges, rather than taken for an unknown flag.
 pub fn option(name: &'static str, value: &'static str, help: impl Into<String>) -> Arg {
-    Arg::new(name).long(name).value_name(value).help(help.into()).allow_negative_numbers(true).action(ArgAction::Set)
+    let listed = value == "LIST" || value.contains([':', ',']);
+    Arg::new(name)
+        .long(name)
+        .value_name(value)
+        .help(help.into())
+        .allow_negative_numbers(true)
+        .allow_hyphen_values(listed)
+        .action(ArgAction::Set)
 }
 
 /// A subcommand with the common settings.

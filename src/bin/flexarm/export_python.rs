@@ -13,7 +13,8 @@ pub fn command() -> Command {
     cli::command(
         "export-python",
         "The model as a Python script (NumPy, SciPy): the linearized loop for these settings, ρ, its eigenvalues \
-         and A4; run it with --simulate for the nonlinear loop too",
+         and A4; run it with --simulate for the nonlinear loop too (and --plot FILE.png to save its plot; without a \
+         display it is saved to flexarm_errors.png)",
     )
     .args(cli::run_args(KEYS))
     .arg(cli::param_arg(&schema::Q2))

@@ -4,10 +4,13 @@
 //! with its title, axes, key and the state string as its caption.
 
 use clap::{ArgMatches, Command};
+use flexarm::control::Work;
+use flexarm::schema;
 use flexarm::session::{Session, Source};
 use flexarm::view::figure::{figure_svg, FigurePanel};
 
 use crate::cli::{self, lib_error, usage_error, write_file, Res};
+use crate::long_work;
 use crate::simulate::KEYS;
 
 /// Seconds run when neither `--time` nor the state's `t=` says.
@@ -31,8 +34,13 @@ pub fn command() -> Command {
     .arg(cli::option(
         "time",
         "S",
-        format!("Run the session to t = S seconds first (default: the state's t=, else {DEFAULT_TIME} s)"),
+        format!(
+            "Run the session to t = S seconds first, as a link's moment t= does: {} (default: the state's t=, else \
+             {DEFAULT_TIME} s)",
+            schema::START_TIME.number().map_or(String::new(), |n| n.allowed_text(schema::START_TIME.unit))
+        ),
     ))
+    .arg(long_work::force_arg())
     .arg(cli::flag("dark", "Draw on a dark background (the page's dark scheme) instead of the light one"))
     .args(cli::redirects(REDIRECTS))
 }
@@ -41,7 +49,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     cli::check_redirects(m, "figure", REDIRECTS)?;
     let name = m.get_one::<String>("panel").map(String::as_str).unwrap_or("");
     let panel = FigurePanel::parse(name).map_err(|e| usage_error(format!("--panel: {e}")))?;
-    let mut settings = cli::read_settings(m, KEYS)?;
+    let mut settings = cli::read_settings_of(m, KEYS, true)?;
     // The page's own keys, which other commands ignore, say what the figure shows (plane=z,
     // log=1, predict=1, measure=rate, compare=1 and run B) and when (t=): read as strictly.
     if let Some(state) = m.get_one::<String>("state") {
@@ -51,15 +59,25 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         settings.b = page.b;
         settings.start = page.start;
     }
+    // --time is the page's moment t=, with its limit and the reason for it.
     let time = match m.get_one::<String>("time") {
-        Some(text) => cli::parse_number(text)
-            .filter(|t| *t >= 0.0)
-            .ok_or_else(|| usage_error(format!("invalid --time = '{text}': expected seconds ≥ 0")))?,
+        Some(text) => schema::START_TIME.parse(text, false).map_err(lib_error)?.number().unwrap_or(DEFAULT_TIME),
         None if settings.start.time > 0.0 => settings.start.time,
         None => DEFAULT_TIME,
     };
+    let runs = if settings.b.is_some() { 2.0 } else { 1.0 };
+    let work = Work::of_run(&settings.a.config(), time).times(runs);
+    long_work::check(m, "running to this moment", work, "choose an earlier --time or a longer --delta")?;
     let mut session = Session::new(settings).map_err(lib_error)?;
-    session.run_to(time).map_err(lib_error)?;
+    // In steps, so that a run of more than a few seconds shows its progress on stderr.
+    let mut progress = long_work::Progress::new("figure", work);
+    const STEPS: u32 = 50;
+    for i in 1..=STEPS {
+        let fraction = f64::from(i) / f64::from(STEPS);
+        session.run_to(time * fraction).map_err(lib_error)?;
+        progress.update(fraction);
+    }
+    progress.finish();
     // ρ(δ) and the marks on the maps need the stable windows; the maps, every row.
     session.refresh();
     if panel.kinds().iter().any(|k| k.is_map()) && !session.answers_hidden() {

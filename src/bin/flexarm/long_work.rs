@@ -28,19 +28,26 @@ pub fn force_arg() -> Arg {
 /// a faster machine may allow more, a test harness less.
 pub const LIMIT_VARIABLE: &str = "FLEXARM_WORK_LIMIT";
 
-/// The work limit in force, s.
-fn limit() -> f64 {
-    std::env::var(LIMIT_VARIABLE)
-        .ok()
-        .and_then(|v| cli::parse_number(&v))
-        .filter(|v| *v > 0.0)
-        .unwrap_or(WORK_LIMIT_SECONDS)
+/// The work limit in force, s: [`LIMIT_VARIABLE`] if set (empty counts as unset), else
+/// [`WORK_LIMIT_SECONDS`]. A value that is not a number of seconds > 0 is refused, not ignored
+/// (by every command, before it starts: a bad setting is said where it is made).
+pub fn limit() -> Res<f64> {
+    match std::env::var(LIMIT_VARIABLE) {
+        Ok(text) if !text.trim().is_empty() => cli::parse_number(&text).filter(|v| *v > 0.0).ok_or_else(|| {
+            usage_error(format!(
+                "invalid {LIMIT_VARIABLE} = '{}': expected the work limit in seconds, a number > 0 (unset, it is {})",
+                text.chars().map(|c| if c.is_control() { ' ' } else { c }).collect::<String>(),
+                duration_text(WORK_LIMIT_SECONDS)
+            ))
+        }),
+        _ => Ok(WORK_LIMIT_SECONDS),
+    }
 }
 
 /// Refuses `work` over the limit unless `--force` was given (status 2, with the estimate and
 /// what to change).
 pub fn check(m: &ArgMatches, what: &str, work: Work, shorter: &str) -> Res<()> {
-    let limit = limit();
+    let limit = limit()?;
     if work.is_over(limit) && !m.get_flag("force") {
         return Err(usage_error(format!(
             "{what} would take too long: {} (the limit is {}, set by {LIMIT_VARIABLE}); {shorter}, or add --force \

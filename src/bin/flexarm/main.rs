@@ -43,7 +43,8 @@ const ABOUT: &str =
 
 const AFTER: &str = "ρ is the spectral radius of the one-period map linearized at rest with the friction cancelled: \
                      ρ < 1 ⇒ that rest point is stable for small motions (errors behave like ρⁿ over many periods).\n\
-                     'flexarm COMMAND --help' describes one command.";
+                     'flexarm help COMMAND' or 'flexarm COMMAND --help' describes one command with all its flags \
+                     ('-h' in short); 'flexarm help all' describes every command.";
 
 fn commands() -> Vec<Command> {
     vec![
@@ -61,24 +62,30 @@ fn commands() -> Vec<Command> {
 fn root() -> Command {
     Command::new("flexarm")
         .about(ABOUT)
-        .disable_version_flag(true)
+        .version(env!("CARGO_PKG_VERSION"))
         .disable_help_subcommand(true)
         .subcommand_required(true)
         .subcommands(commands())
         .subcommand(
             Command::new("help")
-                .about("Print this overview, or one command's help")
-                .arg(clap::Arg::new("command").value_name("COMMAND").action(clap::ArgAction::Set)),
+                .about("Print this overview, one command's help with all its flags, or 'all' of them")
+                .arg(clap::Arg::new("command").value_name("COMMAND|all").action(clap::ArgAction::Set)),
         )
+        .after_help(AFTER)
 }
 
-/// The overview: every command with all its flags (one place to read them all).
+/// The short overview (`flexarm --help`): the commands, one line each, and where to read more.
 fn overview() -> String {
+    root().render_help().to_string()
+}
+
+/// Every command with all its flags (`flexarm help all`: one place to read them all).
+fn reference() -> String {
     let mut s = format!("{ABOUT}\n\n");
     for mut c in commands() {
         let name = c.get_name().to_string();
         s += &format!("──── flexarm {name} ────\n");
-        s += &c.render_help().to_string();
+        s += &c.render_long_help().to_string();
         s += "\n";
     }
     s += AFTER;
@@ -120,7 +127,8 @@ fn run(args: Vec<String>) -> Res<String> {
             return match e.kind() {
                 // `flexarm --help` is the overview of every command; `flexarm map --help` map's own.
                 ErrorKind::DisplayHelp if command.is_none() => Ok(overview()),
-                ErrorKind::DisplayHelp => Ok(e.render().to_string()),
+                // `-h` the flags in short, `--help` with what each does (clap's help and long help).
+                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => Ok(e.render().to_string()),
                 ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
                     if args.iter().any(|a| a == "-h" || a == "--help") =>
                 {
@@ -135,6 +143,10 @@ fn run(args: Vec<String>) -> Res<String> {
             };
         }
     };
+    if let Some(c) = matches.subcommand_name().and_then(|name| commands().into_iter().find(|c| c.get_name() == name)) {
+        cli::set_command(&c);
+        long_work::limit()?;
+    }
     match matches.subcommand() {
         Some(("simulate", m)) => simulate::run(m),
         Some(("analyze", m)) => analyze::run(m),
@@ -146,10 +158,13 @@ fn run(args: Vec<String>) -> Res<String> {
         Some(("bundle", m)) => bundle::run(m),
         Some(("help", m)) => match m.get_one::<String>("command") {
             None => Ok(overview()),
+            Some(all) if all == "all" => Ok(reference()),
             Some(name) => match commands().into_iter().find(|c| c.get_name() == name) {
-                Some(mut c) => Ok(c.render_help().to_string()),
+                // Exactly what `flexarm COMMAND --help` prints.
+                Some(c) => run(vec![c.get_name().to_string(), "--help".into()]),
                 None => Err(cli::usage_error(format!(
-                    "unknown command '{name}': use simulate, analyze, sweep, map, export-python, data, figure or bundle"
+                    "unknown command '{name}': use simulate, analyze, sweep, map, export-python, data, figure, bundle \
+                     or all"
                 ))),
             },
         },
