@@ -85,7 +85,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         },
         a4: report.map_or("—".into(), |r| {
             let [re, im] = r.limit_pair[0];
-            format!("{} ± {}j 1/s", significant(re, 3), significant(im.abs(), 4))
+            format!("{} ± {}j 1/s {}", significant(re, 3), significant(im.abs(), 4), limit_is(sim.config()))
         }),
     };
     RunStatus {
@@ -102,6 +102,17 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         growth_rate: report.map(|r| r.growth_rate),
         readouts,
         settings: crate::words::settings::run(&run.settings().config()),
+    }
+}
+
+/// What the flexible pair's δ → 0 limit is for `config`: A4 (with its K_pr) when the controller
+/// knows the arm; under a model error the loop's limit, which the closed forms of A4 do not give.
+fn limit_is(config: &crate::control::SimulationConfig) -> &'static str {
+    use crate::control::config::PreliminaryFeedbackChoice::Off;
+    match (config.has_model_error(), config.preliminary_feedback == Off) {
+        (true, _) => "(the loop's limit, not A4: the controller assumes the paper's arm)",
+        (false, true) => "(A4)",
+        (false, false) => "(A4 with Kₚᵣ)",
     }
 }
 

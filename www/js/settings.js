@@ -14,7 +14,8 @@ import { PAUSED_NOTE } from './transport.js';
 /** @typedef {import('./controls.js').ControlValue} ControlValue */
 /** @typedef {ReturnType<typeof import('./store.js').createStore>} Store */
 
-/** The key a slider's change goes to: with α linked, either α slider moves both (pure).
+/** The key a control's change goes to (its slider, its box, its steps): with α linked, either α
+ * moves both (pure).
  * @param {string} key @param {boolean} linkAlpha */
 export function linkedKey(key, linkAlpha) {
   return linkAlpha && (key === 'alpha1' || key === 'alpha2') ? 'alpha' : key;
@@ -33,7 +34,8 @@ export function wholePageLink(pathname, state) {
  */
 export function createSettings({ wasm, session, store, guard, reset, synced, changed }) {
   const controls = buildControls(wasm.schema(), {
-    onSet: (key, text) => change(() => session.set(key, text)),
+    // One path for the slider and its exact box: with α linked, either moves both.
+    onSet: (key, text) => change(() => session.set(linked(key), text)),
     onPosition: (key, f) => change(() => session.setPosition(linked(key), f)),
     onStep: (key, steps) => change(() => session.stepValue(linked(key), steps)),
   });
