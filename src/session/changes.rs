@@ -172,7 +172,7 @@ impl Session {
         }
         // Another arm's errors are another experiment on another scale: drawn under the new run
         // they were an off-scale comb of grey strokes. The ghost compares runs of one arm.
-        if next.a.config().plant != self.settings.a.config().plant {
+        if next.a.plant != self.settings.a.plant {
             self.forget_ghost();
         }
         let a_restarted = self.a.change(next.a, restart)?;

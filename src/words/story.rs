@@ -122,14 +122,11 @@ pub fn phase_words(lag: f64) -> String {
     if lag.abs() < 0.5 {
         "is in phase with the motor's velocity".into()
     } else if rounded.abs() >= 180.0 {
-        "is in antiphase with the motor's velocity (half a turn behind)".into()
+        "is in antiphase with the motor's velocity".into()
     } else if lag > 0.0 {
         format!("lags the motor's velocity by {rounded:.0}°")
-    } else if lag > -90.0 {
-        format!("runs {:.0}° ahead of the motor's velocity", -rounded)
     } else {
-        // A lag past half a turn is nearer said as ahead; both are the same phase.
-        format!("lags the motor's velocity by {:.0}°, that is, runs {:.0}° ahead of it", 360.0 + rounded, -rounded)
+        format!("runs {:.0}° ahead of the motor's velocity", -rounded)
     }
 }
 
@@ -150,16 +147,18 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
         if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
     let law = {
         let l = signed(law_lag.to_degrees());
-        let side = if l >= 0.0 { "behind" } else { "ahead" };
         // Two numbers, two meanings: the lag computed over one period, and the law's estimate.
-        if l.abs() < 0.5 {
-            " (computed over one period; the lag law estimates φ = 1.5 ωδ, whole turns dropped, at 0°)".to_string()
+        let side = if l.abs() < 0.5 {
+            ""
+        } else if l >= 0.0 {
+            " behind"
         } else {
-            format!(
-                " (computed over one period; the lag law estimates φ = 1.5 ωδ, whole turns dropped, at {:.0}° {side})",
-                l.abs()
-            )
-        }
+            " ahead"
+        };
+        format!(
+            " (computed over one period; the lag law estimates φ = 1.5 ωδ, whole turns dropped, at {:.0}°{side})",
+            l.abs()
+        )
     };
     let share = |v: f64, whose: &str| {
         if v >= 0.0 {
@@ -314,7 +313,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { significant_trimmed(q2, 3) }),
         arm_pair: complex_pair(r.arm_pair[0], r.arm_pair[1]),
         omega_joint: frequency(r.omega_joint),
-        omega_arm: format!("{} for the arm alone", frequency(r.omega_joint)),
+        omega_arm: frequency(r.omega_joint) + " for the arm alone",
         omega_clamped: format!("{:.1} rad/s", r.omega_clamped),
         j_eff: format!("{:.2} kg m²", r.j_eff),
         a4: if model_error { eigenvalues_2x2(r.trace, r.determinant) } else { complex_pair(open_re, open_im) },
@@ -428,10 +427,10 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         },
         omega_a4: frequency(law.omega),
         omega_loop: match first.and_then(|i| report.poles[i].continuous) {
-            Some([_, im]) if im.abs() > 0.0 => {
+            Some([_, im]) if im != 0.0 => {
                 format!("{}, the loop's own pair at δ = {} s", frequency(im.abs()), significant_trimmed(delta, 3))
             }
-            _ => format!("no oscillating pair at δ = {} s (two real eigenvalues)", significant_trimmed(delta, 3)),
+            _ => "none: the loop's pair is real at this δ".into(),
         },
         turn: format!("{:.2} rad ({:.3} of a turn)", law.turn(delta), law.turn(delta) / (2.0 * pi)),
         lag: {
