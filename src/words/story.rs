@@ -24,7 +24,7 @@ pub struct Story {
     pub omega_joint: String,
     /// The arm's own ringing, named as such for the explanation's short form: "29.40 rad/s
     /// (4.68 Hz) for the arm alone". The controller moves it a little (A4, [`Story::omega_a4`]),
-    /// the sampled loop a little more ([`Story::omega_loop`]): three frequencies, each named.
+    /// the sampled loop a little more ([`Story::loop_pair`]): three frequencies, each named.
     pub omega_arm: String,
     pub omega_clamped: String,
     /// J_eff: "4.30 kg m²".
@@ -88,9 +88,6 @@ pub struct Story {
     /// Hz, how far the swing turns per period (ωδ) and by the time the torque acts (1.5 ωδ),
     /// the growth the law predicts, and its window of δ.
     pub omega_a4: String,
-    /// The loop's own flexible pair at this δ, |Im s|: "29.12 rad/s (4.63 Hz), the loop's pair
-    /// at δ = 0.01 s", or why it has none.
-    pub omega_loop: String,
     pub turn: String,
     pub lag: String,
     pub lag_growth: String,
@@ -123,10 +120,10 @@ pub fn phase_words(lag: f64) -> String {
         "is in phase with the motor's velocity".into()
     } else if rounded.abs() >= 180.0 {
         "is in antiphase with the motor's velocity".into()
-    } else if lag > 0.0 {
-        format!("lags the motor's velocity by {rounded:.0}°")
     } else {
-        format!("runs {:.0}° ahead of the motor's velocity", -rounded)
+        let (verb, tail) =
+            if lag > 0.0 { ("lags the motor's velocity by ", "") } else { ("runs ", " ahead of the motor's velocity") };
+        format!("{verb}{:.0}°{tail}", rounded.abs())
     }
 }
 
@@ -426,12 +423,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
             String::new()
         },
         omega_a4: frequency(law.omega),
-        omega_loop: match first.and_then(|i| report.poles[i].continuous) {
-            Some([_, im]) if im != 0.0 => {
-                format!("{}, the loop's own pair at δ = {} s", frequency(im.abs()), significant_trimmed(delta, 3))
-            }
-            _ => "none: the loop's pair is real at this δ".into(),
-        },
+
         turn: format!("{:.2} rad ({:.3} of a turn)", law.turn(delta), law.turn(delta) / (2.0 * pi)),
         lag: {
             // Past a whole turn, say where in the turn it is: that decides push or brake.

@@ -43,6 +43,7 @@ test('after an arm change the previous run is no ghost on the new arm\'s scale',
   await page.click('#reset');
   await page.waitForFunction(() => !document.getElementById('ghost-caption').hidden, null, { timeout: 5000 });
   await page.waitForFunction(() => parseFloat(window.flexarm.session.status().runs[0].readouts.time) > 2, null, { timeout: 20000 });
+  await page.click('#arm-details > summary');
   await page.selectOption('#arm-preset', 'stiffer');
   await page.waitForTimeout(500);
   assert.equal(await page.evaluate(() => window.flexarm.session.status().ghost), '');
