@@ -24,6 +24,10 @@ test('typing α1 with "Link α1 = α2" ticked sets both, as the slider does', { 
   await page.waitForFunction(() => /α = 3 1\/s/u.test(document.getElementById('showing')?.textContent ?? ''), null, { timeout: 10000 });
   assert.deepEqual(problems, []);
   await close();
+  // Opened with unequal α, the box is not ticked.
+  const apart = await openPage(env.browser, env.server.base, '?mode=full&alpha1=5&alpha2=2');
+  assert.equal(await apart.page.isChecked('#link-alpha'), false);
+  await apart.close();
 });
 
 test('the Showing line names a model error; the A4 row says what its value is', { timeout: 60000 }, async () => {

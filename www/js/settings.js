@@ -71,6 +71,12 @@ export function createSettings({ wasm, session, store, guard, reset, synced, cha
     if (document.body.dataset.mode !== (full ? 'full' : 'intro')) document.body.dataset.mode = full ? 'full' : 'intro';
     byId('mode-intro').setAttribute('aria-pressed', String(!full));
     byId('mode-full').setAttribute('aria-pressed', String(full));
+    // Unequal α1 and α2 (a link, a lesson step, a preset) are not linked: the box says so.
+    const link = /** @type {HTMLInputElement} */ (byId('link-alpha'));
+    if (link.checked && value('alpha1') !== value('alpha2')) {
+      link.checked = false;
+      store.dispatch({ type: 'link-alpha', value: false });
+    }
     /** @type {HTMLInputElement} */ (byId('pf-toggle')).checked = value('pf') !== 'off';
     /** @type {HTMLInputElement} */ (byId('embed-pf')).checked = value('pf') !== 'off';
     const embed = value('embed') === '1';
