@@ -133,6 +133,15 @@ pub fn validate(lesson: &Lesson) -> Result<(), Error> {
                 next.read(text, Source::Lesson).map_err(|e| at(what, &e))?;
             }
         }
+        // A goal of time alone is met by waiting: the step must start paused (`paused=1`), so that
+        // only the student's Play meets it — a task counts as the student's only if they did it.
+        if step.goal.as_ref().is_some_and(|g| g.verdict.is_none() && g.settings.is_empty()) && !settings.start.paused {
+            return Err(at(
+                "goal",
+                &"time alone is met by waiting: start the step paused (paused=1 in its state), so that the \
+                  student's Play does it",
+            ));
+        }
         for (key, value) in step.goal.iter().flat_map(|g| g.settings.iter()) {
             let p = schema::param(key).ok_or_else(|| {
                 at(

@@ -22,10 +22,18 @@ pub const DELTA_SPEC: NumberSpec = NumberSpec {
 
 /// The numbers of α1, α2 (also the default map range).
 pub const ALPHA_SPEC: NumberSpec = NumberSpec {
-    min: 0.0,
-    min_inclusive: false,
+    // Below 1e-3 1/s the law lets an error linger e-fold over more than 1000 s, beyond any run,
+    // and the loop's triple eigenvalue e^{−αδ} sits closer to 1 than an eigen-solver resolves a
+    // triple root (≈ 1e-5): ρ against 1 means nothing there (from 1e-7 1/s the search for the
+    // stable windows flips on rounding alone).
+    min: 1e-3,
+    min_inclusive: true,
     max: 1000.0,
-    allowed: None,
+    allowed: Some(
+        "must be from 0.001 to 1000 1/s (below 0.001 1/s an error would take over 1000 s to shrink e-fold, \
+         longer than any run, and the loop's triple eigenvalue at −α is closer to 1 than its computation can \
+         resolve)",
+    ),
     control: [0.1, 5.0],
     scale: Scale::Log,
     digits: 3,

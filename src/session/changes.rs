@@ -170,6 +170,11 @@ impl Session {
         if restart || self.a.closed_loop().is_finished() || (next.b.is_some() && !was_comparing) {
             self.keep_ghost();
         }
+        // Another arm's errors are another experiment on another scale: drawn under the new run
+        // they were an off-scale comb of grey strokes. The ghost compares runs of one arm.
+        if next.a.plant != self.settings.a.plant {
+            self.forget_ghost();
+        }
         let a_restarted = self.a.change(next.a, restart)?;
         let mut notes = Vec::new();
         match (next.b, self.b.as_mut()) {

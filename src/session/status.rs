@@ -85,12 +85,13 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         },
         a4: report.map_or("—".into(), |r| {
             let [[re, im], [re2, im2]] = r.limit_pair;
-            if im == 0.0 && im2 == 0.0 {
+            let pair = if im == 0.0 && im2 == 0.0 {
                 // Two real eigenvalues (a motor damped past its swing): never "± 0j".
                 format!("{} and {} 1/s", significant(re.max(re2), 3), significant(re.min(re2), 3))
             } else {
                 format!("{} ± {}j 1/s", significant(re, 3), significant(im.abs(), 4))
-            }
+            };
+            format!("{pair} {}", limit_is(sim.config()))
         }),
     };
     RunStatus {
@@ -107,6 +108,17 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         growth_rate: report.map(|r| r.growth_rate),
         readouts,
         settings: crate::words::settings::run(&run.settings().config()),
+    }
+}
+
+/// What the flexible pair's δ → 0 limit is for `config`: A4 (with its K_pr) when the controller
+/// knows the arm; under a model error the loop's limit, which the closed forms of A4 do not give.
+fn limit_is(config: &crate::control::SimulationConfig) -> &'static str {
+    use crate::control::config::PreliminaryFeedbackChoice::Off;
+    match (config.has_model_error(), config.preliminary_feedback == Off) {
+        (true, _) => "(the loop's limit, not A4: the controller assumes the paper's arm)",
+        (false, true) => "(A4)",
+        (false, false) => "(A4 with Kₚᵣ)",
     }
 }
 

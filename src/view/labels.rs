@@ -242,13 +242,16 @@ fn ticks(kind: &PanelKind, p: &PanelInfo, out: &mut Vec<Label>) {
     for t in &p.y_labels {
         let f = fraction(t.value, p.y_range, p.y_scale == "log");
         let y = p.y + p.height - f * p.height;
+        // A tick at the top edge hangs below it: centred on it, it would touch the y axis's title
+        // just above and be left out (the maps' top α had no label).
+        let top = f >= 1.0 - 1e-9;
         out.push(Label {
             panel: p.id,
             class: LabelClass::Tick,
             text: t.text.clone(),
             x: p.x - TICK_GAP,
             y,
-            align: [1.0, 0.5],
+            align: [1.0, if top { 0.0 } else { 0.5 }],
             size: font::TICK,
             time: None,
             width: 0.0,

@@ -102,6 +102,9 @@ pub fn run(c: &SimulationConfig) -> String {
     if c.plant != paper.plant {
         text += &format!(", arm: {}", crate::schema::arm_text(&c.plant.values()));
     }
+    if c.has_model_error() {
+        text += ", the controller assumes the paper's arm (a model error)";
+    }
     if c.reference.repeat_hold.is_some() {
         text += ", slew repeating";
     }

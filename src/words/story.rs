@@ -20,8 +20,12 @@ pub struct Story {
     pub rest: String,
     /// The arm's own pair, no controller, the friction cancelled: "−0.29 ± 29.36j 1/s".
     pub arm_pair: String,
-    /// √(K1 (1/Ir1 + 1/J_eff)) and √(K1/Ir1): "29.4 rad/s", "24.4 rad/s".
+    /// √(K1 (1/Ir1 + 1/J_eff)) and √(K1/Ir1): "29.40 rad/s (4.68 Hz)", "24.4 rad/s".
     pub omega_joint: String,
+    /// The arm's own ringing, named as such for the explanation's short form: "29.40 rad/s
+    /// (4.68 Hz) for the arm alone". The controller moves it a little (A4, [`Story::omega_a4`]),
+    /// the sampled loop a little more ([`Story::loop_pair`]): three frequencies, each named.
+    pub omega_arm: String,
     pub omega_clamped: String,
     /// J_eff: "4.30 kg m²".
     pub j_eff: String,
@@ -105,6 +109,27 @@ pub struct Story {
     pub math_energy: String,
 }
 
+/// A frequency as every sentence of the story writes it: "29.40 rad/s (4.68 Hz)".
+fn frequency(omega: f64) -> String {
+    format!("{omega:.2} rad/s ({:.2} Hz)", omega / (2.0 * core::f64::consts::PI))
+}
+
+/// Where the held torque is against the motor's velocity, its lag in degrees in (−180°, 180°]:
+/// "is in phase with …" within half a degree (a phase that rounds to 0° is neither ahead nor
+/// behind), "lags … by 21°", "runs 21° ahead of …".
+pub fn phase_words(lag: f64) -> String {
+    let rounded = lag.round();
+    if lag.abs() < 0.5 {
+        "is in phase with the motor's velocity".into()
+    } else if rounded.abs() >= 180.0 {
+        "is in antiphase with the motor's velocity".into()
+    } else {
+        let (verb, tail) =
+            if lag > 0.0 { ("lags the motor's velocity by ", "") } else { ("runs ", " ahead of the motor's velocity") };
+        format!("{verb}{:.0}°{tail}", rounded.abs())
+    }
+}
+
 /// The swing's energy over one period at δ, in words (`law_lag`: the lag law's φ, for comparison).
 fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f64) -> String {
     // Both the computed lag and the law's φ in (−180°, 180°]: behind (lags) or ahead.
@@ -117,20 +142,23 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
         }
     };
     let lag = signed(e.lag.to_degrees());
-    let phase = if lag >= 0.0 {
-        format!("lags the motor's velocity by {lag:.0}°")
-    } else if lag > -90.0 {
-        format!("runs {:.0}° ahead of the motor's velocity", -lag)
-    } else {
-        // A lag past half a turn is nearer said as ahead; both are the same phase.
-        format!("lags the motor's velocity by {:.0}°, that is, runs {:.0}° ahead of it", 360.0 + lag, -lag)
-    };
+    let phase = phase_words(lag);
     let role =
         if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
     let law = {
         let l = signed(law_lag.to_degrees());
-        let side = if l >= 0.0 { "behind" } else { "ahead" };
-        format!(" (the law's φ = 1.5 ωδ, whole turns dropped: {:.0}° {side})", l.abs())
+        // Two numbers, two meanings: the lag computed over one period, and the law's estimate.
+        let side = if l.abs() < 0.5 {
+            ""
+        } else if l >= 0.0 {
+            " behind"
+        } else {
+            " ahead"
+        };
+        format!(
+            " (computed over one period; the lag law estimates φ = 1.5 ωδ, whole turns dropped, at {:.0}°{side})",
+            l.abs()
+        )
     };
     let share = |v: f64, whose: &str| {
         if v >= 0.0 {
@@ -299,7 +327,8 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         alpha: alpha.clone(),
         rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { significant_trimmed(q2, 3) }),
         arm_pair: complex_pair(r.arm_pair[0], r.arm_pair[1]),
-        omega_joint: format!("{:.1} rad/s", r.omega_joint),
+        omega_joint: frequency(r.omega_joint),
+        omega_arm: frequency(r.omega_joint) + " for the arm alone",
         omega_clamped: format!("{:.1} rad/s", r.omega_clamped),
         j_eff: format!("{:.2} kg m²", r.j_eff),
         a4: if model_error {
@@ -415,7 +444,8 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         } else {
             String::new()
         },
-        omega_a4: format!("{:.2} rad/s ({:.2} Hz)", law.omega, law.omega / (2.0 * pi)),
+        omega_a4: frequency(law.omega),
+
         turn: format!("{:.2} rad ({:.3} of a turn)", law.turn(delta), law.turn(delta) / (2.0 * pi)),
         lag: {
             // Past a whole turn, say where in the turn it is: that decides push or brake.
@@ -444,7 +474,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         kpr_works: if paper.pair[0] < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()
         } else {
-            format!("not here: at {alpha} that pair is in the right half-plane, and the smallest δ fail")
+            format!("still the smallest δ fail here: at {alpha} the pair it makes is in the right half-plane")
         },
     }
 }

@@ -14,7 +14,8 @@ import { PAUSED_NOTE } from './transport.js';
 /** @typedef {import('./controls.js').ControlValue} ControlValue */
 /** @typedef {ReturnType<typeof import('./store.js').createStore>} Store */
 
-/** The key a slider's change goes to: with α linked, either α slider moves both (pure).
+/** The key a control's change goes to (its slider, its box, its steps): with α linked, either α
+ * moves both (pure).
  * @param {string} key @param {boolean} linkAlpha */
 export function linkedKey(key, linkAlpha) {
   return linkAlpha && (key === 'alpha1' || key === 'alpha2') ? 'alpha' : key;
@@ -33,7 +34,8 @@ export function wholePageLink(pathname, state) {
  */
 export function createSettings({ wasm, session, store, guard, reset, synced, changed }) {
   const controls = buildControls(wasm.schema(), {
-    onSet: (key, text) => change(() => session.set(key, text)),
+    // One path for the slider and its exact box: with α linked, either moves both.
+    onSet: (key, text) => change(() => session.set(linked(key), text)),
     onPosition: (key, f) => change(() => session.setPosition(linked(key), f)),
     onStep: (key, steps) => change(() => session.stepValue(linked(key), steps)),
   });
@@ -69,6 +71,12 @@ export function createSettings({ wasm, session, store, guard, reset, synced, cha
     if (document.body.dataset.mode !== (full ? 'full' : 'intro')) document.body.dataset.mode = full ? 'full' : 'intro';
     byId('mode-intro').setAttribute('aria-pressed', String(!full));
     byId('mode-full').setAttribute('aria-pressed', String(full));
+    // Unequal α1 and α2 (a link, a lesson step, a preset) are not linked: the box says so.
+    const link = /** @type {HTMLInputElement} */ (byId('link-alpha'));
+    if (link.checked && value('alpha1') !== value('alpha2')) {
+      link.checked = false;
+      store.dispatch({ type: 'link-alpha', value: false });
+    }
     /** @type {HTMLInputElement} */ (byId('pf-toggle')).checked = value('pf') !== 'off';
     /** @type {HTMLInputElement} */ (byId('embed-pf')).checked = value('pf') !== 'off';
     const embed = value('embed') === '1';

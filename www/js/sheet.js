@@ -34,7 +34,12 @@ export function createSheet() {
 export function showFigure() {
   const wrap = byId('canvas-wrap');
   const r = wrap.getBoundingClientRect();
-  if (r.bottom > 80 && r.top < window.innerHeight - 80) return;
+  // On a phone the verdict strip stays over the top of the screen: the figure goes below it, not
+  // under it (it hid the top of e1).
+  const strip = byId('verdict-strip');
+  const over = getComputedStyle(strip).position === 'sticky' ? strip.getBoundingClientRect().height + 6 : 0;
+  const seen = over > 0 ? r.top >= over - 1 : r.bottom > 80;
+  if (seen && r.top < window.innerHeight - 80) return;
   const smooth = !matchMedia('(prefers-reduced-motion: reduce)').matches;
-  wrap.scrollIntoView({ block: 'start', behavior: smooth ? 'smooth' : 'auto' });
+  window.scrollBy({ top: r.top - over, behavior: smooth ? 'smooth' : 'auto' });
 }

@@ -86,12 +86,13 @@ impl PanelView for RhoCurve {
         info.x_ticks = x_ticks;
         info.y_ticks = y_ticks;
         info.x_scale = "log";
-        // Both α when they differ: the curve is the loop's with α1 and α2 as set.
+        // Both α when they differ (α1, α2): the curve is the loop's with α1 and α2 as set.
         let [a1, a2] = frame.runs[0].config.map_or([f64::NAN; 2], |c| c.controller.alpha);
         let alpha = if a1 == a2 {
             format!("α = {}", format::significant_trimmed(a1, 3))
         } else {
-            format!("α1 = {}, α2 = {}", format::significant_trimmed(a1, 3), format::significant_trimmed(a2, 3))
+            // As the settings write them ("α = 5, 2 1/s"): "α1 = 5, α2 = 2" did not fit a small panel.
+            format!("α = {}, {}", format::significant_trimmed(a1, 3), format::significant_trimmed(a2, 3))
         };
         if let Some(omega) = turn_omega(frame.runs[0].report.as_ref()) {
             info.x2_label = format!("ωδ [rad/period]; ω = {omega:.1} rad/s; 2π = one swing");
