@@ -201,7 +201,7 @@ fn the_work_limits_variable_is_checked() {
 #[test]
 fn a_list_may_start_with_a_minus_sign_and_is_refused_by_the_range() {
     let err = refusal(&["sweep", "--delta", "0.01", "--alpha", "-1,2"], &[]);
-    assert!(err.contains("α1") && err.contains("must be > 0") && err.contains("--alpha"), "{err}");
+    assert!(err.contains("α1") && err.contains("must be from 0.001") && err.contains("--alpha"), "{err}");
     let err = refusal(&["sweep", "--delta", "-0.01:0.1:3", "--alpha", "2"], &[]);
     assert!(err.contains("δ") && err.contains("--delta"), "{err}");
     // So do the other pairs: a range, a mark, a pole to place.

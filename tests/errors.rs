@@ -39,8 +39,8 @@ fn sampling_period_must_be_positive_and_finite() {
 
 #[test]
 fn alphas_must_be_positive() {
-    expect_config_error(with(|c| c.controller.alpha = [0.0, 2.0]), "alpha1", "> 0");
-    expect_config_error(with(|c| c.controller.alpha = [2.0, -1.0]), "alpha2", "> 0");
+    expect_config_error(with(|c| c.controller.alpha = [0.0, 2.0]), "alpha1", "from 0.001");
+    expect_config_error(with(|c| c.controller.alpha = [2.0, -1.0]), "alpha2", "from 0.001");
     expect_config_error(with(|c| c.controller.alpha = [f64::NAN, 2.0]), "alpha1", "finite");
 }
 

@@ -20,7 +20,8 @@ fn simulate(args: &[&str]) -> serde_json::Value {
 fn worst_share(run: &serde_json::Value) -> (usize, f64, f64) {
     let travel = [0.5 * PI, 1.5 * PI];
     let err = |i: usize| run["max_error_slew"][i].as_f64().unwrap().max(run["max_error_after"][i].as_f64().unwrap());
-    let (i, e) = (0..2).map(|i| (i, err(i))).max_by(|a, b| (a.1 / travel[a.0]).total_cmp(&(b.1 / travel[b.0]))).unwrap();
+    let (i, e) =
+        (0..2).map(|i| (i, err(i))).max_by(|a, b| (a.1 / travel[a.0]).total_cmp(&(b.1 / travel[b.0]))).unwrap();
     (i, e, e / travel[i])
 }
 

@@ -117,6 +117,24 @@ fn spectral_radius_matches_the_native_core() {
     }
 }
 
+/// Issue 34: the page judges ρ as the CLI does — one rule, one wording: the wasm session's
+/// verdict, headline and detail equal the native session's (which tests/one_judgement.rs holds
+/// against `analyze`, `simulate` and `sweep`), borderline band included.
+#[wasm_bindgen_test]
+fn the_page_judges_rho_in_the_clis_words() {
+    let mut borderline = 0;
+    for &(state, verdict_word, headline, detail) in NATIVE_JUDGEMENT {
+        let session = WebSession::new(state);
+        let status = session.status().map_err(JsValue::from).unwrap();
+        let run = js_sys::Array::from(&get(&status, "runs")).get(0);
+        assert_eq!(verdict(&run), verdict_word, "{state}");
+        assert_eq!(get(&run, "headline").as_string().unwrap_or_default(), headline, "{state}");
+        assert_eq!(get(&run, "detail").as_string().unwrap_or_default(), detail, "{state}");
+        borderline += usize::from(verdict_word == "borderline");
+    }
+    assert!(borderline >= 1, "a state inside the borderline band is checked");
+}
+
 fn error_message(e: wasm_bindgen::JsError) -> String {
     let v = JsValue::from(e);
     let err = v.dyn_ref::<js_sys::Error>().expect("a JS Error object");
