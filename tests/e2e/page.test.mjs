@@ -156,9 +156,12 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   // "no larger" constraint, README's size row); 0.934 MB with issue 32's twist feedback (+2.1 kB);
   // 0.944 MB with issue 32's design (+10.1 kB: the handle, the price, the design map, the LQ
   // weights); 0.958 MB with issue 33's offline file (+14.0 kB: gathering the page's files,
-  // rewriting its imports, the archive and the file's layout, its start in words): the 0.9-MB
-  // goal is not met.
-  assert.ok(gzip <= 0.958e6, `wasm gzip -9 ${gzip} bytes: over the 0.958-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
+  // rewriting its imports, the archive and the file's layout, its start in words); 0.965 MB with
+  // issue 34's one judgement and sane inputs (+7.4 kB: the balanced eigen-solver, the predictor's
+  // small-ε Newton and its rounding floor, the inner loop's rate for the plant's step, the α
+  // bound through det A4, the words for a real pair, a solver failure and a large error, the
+  // named frequencies and phases): the 0.9-MB goal is not met.
+  assert.ok(gzip <= 0.965e6, `wasm gzip -9 ${gzip} bytes: over the 0.965-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));
