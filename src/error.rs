@@ -105,7 +105,10 @@ impl fmt::Display for ParseError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         // Control characters in user text would garble a one-line message.
         let text: String = self.text.chars().map(|c| if c.is_control() { ' ' } else { c }).collect();
-        write!(f, "invalid {} = '{}': expected {}", self.key, text, self.expected)
+        // A range stated as a rule ("must be from …") reads as it is; a kind of value ("a number")
+        // after "expected".
+        let lead = if self.expected.starts_with("must ") { "" } else { "expected " };
+        write!(f, "invalid {} = '{}': {lead}{}", self.key, text, self.expected)
     }
 }
 

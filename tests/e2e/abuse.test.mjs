@@ -100,9 +100,10 @@ test('huge, tiny, negative, NaN and infinite numbers', { timeout: 60000 }, async
     { ignored: ['delta', 'alpha', 'alpha1', 'k', 'eps_ratio', 'speed', 'window'] });
 });
 
-test('empty values, bare keys and repeated keys (the last one counts)', { timeout: 60000 }, async () => {
+test('empty values, bare keys and repeated keys (the last one counts, and the page says so)', { timeout: 60000 }, async () => {
   await survives('?delta=&pf=&alpha&=&&&=x&k=', { ignored: ['delta', 'pf', 'alpha', 'k'] });
-  // Repeated: the last value of a key is the one read (bad earlier ones are not); a bad last one is a notice.
+  // Repeated: the last value of a key is the one read (bad earlier ones are not), each repeat is
+  // a notice saying so (issue 34: one rule, said), and a bad last one is a notice too.
   const { page: p2, problems, close } = await openPage(env.browser, env.server.base, '?delta=abc&delta=0.05&pf=maybe&pf=off&alpha=2&alpha=2000');
   try {
     assert.deepEqual(problems, []);
@@ -110,8 +111,11 @@ test('empty values, bare keys and repeated keys (the last one counts)', { timeou
     assert.equal(url.get('delta'), '0.05');
     assert.equal(url.get('pf'), 'off');
     const lines = await p2.$$eval('#url-notice-list > li', (li) => li.map((l) => l.textContent));
-    assert.equal(lines.length, 1, lines.join('\n'));
-    assert.match(lines[0], /invalid alpha = '2000'/);
+    assert.equal(lines.length, 4, lines.join('\n'));
+    for (const key of ['delta', 'pf', 'alpha']) {
+      assert.ok(lines.some((l) => l.includes(`${key} is given twice`) && l.includes('the last one is taken')), lines.join('\n'));
+    }
+    assert.ok(lines.some((l) => /invalid alpha = '2000': must be from/.test(l)), lines.join('\n'));
   } finally {
     await close();
   }
