@@ -117,3 +117,18 @@ fn the_pages_cure_sentence_holds_on_the_arm_and_alpha_shown() {
         assert!(text.contains(&format!("{edge:.2} 1/s")), "{state}: the bound for this arm: {text}");
     }
 }
+
+/// Item 3 on the page: where the motor is damped past its swing, no number the explanation
+/// quotes writes a real pair as "± 0.00j" (the loop's pair, A4, what K_pr and the LQ design make).
+#[test]
+fn the_page_never_writes_a_real_pair_as_a_complex_one() {
+    for state in ["bv1=290&pf=off", "bv1=290&pf=paper", "bv1=290&pf=lq&delta=0.002"] {
+        let (s, notices) = flexarm::session::Session::open(state);
+        assert!(notices.is_empty(), "{notices:?}");
+        let status = s.status();
+        let story = serde_json::to_string(&status.story.unwrap()).unwrap();
+        assert!(!story.contains("± 0.00j") && !story.contains("± −0.00j"), "{state}: {story}");
+        assert!(story.contains("two real eigenvalues") || story.contains(" and "), "{state}");
+        assert!(!status.runs[0].readouts.a4.contains("± 0"), "{state}: {}", status.runs[0].readouts.a4);
+    }
+}

@@ -195,7 +195,11 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     } else {
         format!("α1 = {}, α2 = {} 1/s", significant_trimmed(a1, 3), significant_trimmed(a2, 3))
     };
-    let [open_re, open_im] = report.limit_pair_open[0];
+    let [open_re, _] = report.limit_pair_open[0];
+    // The pairs as the text quotes them: a conjugate pair, or two real eigenvalues where the
+    // motor no longer swings (never "± 0.00j").
+    let open_pair = minus(&super::numbers::eigen_pair(report.limit_pair_open, 2));
+    let loop_limit_pair = minus(&super::numbers::eigen_pair(report.limit_pair, 2));
     // With a model error the loop's δ → 0 pair is not A4 (the closed forms are for a controller
     // that knows the arm): the texts name both.
     let model_error = config.has_model_error();
@@ -230,7 +234,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     let re_a4_says = if model_error {
         format!(
             "{re_a4_says} — for a controller that knew this arm; with the model error the pair goes to {}, where it {}",
-            complex_pair(open_re, open_im),
+            open_pair.clone(),
             if open_re > 0.0 { "grows" } else { "dies out" }
         )
     } else {
@@ -259,10 +263,27 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
                 lambda(second)
             )
         }
+        // A motor damped past its swing: two real poles, never "± 0.00j".
+        Some(Pole { continuous: Some([re, im]), .. }) if im == 0.0 => {
+            match second.and_then(|i| report.poles[i].continuous) {
+                Some([re2, _]) => format!("s = {}", minus(&super::numbers::eigen_pair([[re, 0.0], [re2, 0.0]], 2))),
+                None => format!("s = {}", per_second(re)),
+            }
+        }
         Some(Pole { continuous: Some([re, im]), .. }) => format!("s = {}", complex_pair(re, im)),
         _ => "—".into(),
     };
     let paper = PaperFeedbackEffect::new(plant, config.controller.alpha, q2);
+    // Both eigenvalues from the closed form: a pair the gains leave real is two numbers.
+    let kpr_pair = {
+        let m = crate::analysis::resonance::closed_form_a4(
+            plant,
+            config.controller.alpha,
+            q2,
+            &crate::control::feedback::paper_gain(),
+        );
+        eigenvalues_2x2(m.trace(), m.determinant())
+    };
     // The minimum-energy LQ design reflects an unstable pair into the left half-plane and leaves a
     // stable one where it is (tests/resonance.rs checks it against the design).
     let lq_says = if model_error {
@@ -270,20 +291,25 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
          the left half-plane"
             .to_string()
     } else if open_re > 0.0 {
-        format!("reflects the unstable pair into the left half-plane (here {})", complex_pair(-open_re, open_im))
+        // Mirrored: each eigenvalue's real part changes sign (a real pair stays two real ones).
+        let [[r0, i0], [r1, i1]] = report.limit_pair_open;
+        let mirrored = minus(&super::numbers::eigen_pair([[-r0.abs(), i0], [-r1.abs(), i1]], 2));
+        format!("reflects the unstable pair into the left half-plane (here {mirrored})")
     } else {
-        format!("leaves a stable pair where it is (here {})", complex_pair(open_re, open_im))
+        format!(
+            "leaves a stable pair where it is (here {})",
+            minus(&super::numbers::eigen_pair(report.limit_pair_open, 2))
+        )
     };
     let pf = config.preliminary_feedback;
     let loop_limit = match (pf == crate::control::config::PreliminaryFeedbackChoice::Off, model_error) {
         (true, false) => "A4 — the ring in the pole plot".to_string(),
         (true, true) => {
-            format!("{} — the ring in the pole plot (not A4: the model error moves it)", complex_pair(open_re, open_im))
+            format!("{} — the ring in the pole plot (not A4: the model error moves it)", open_pair.clone())
         }
         (false, _) => {
-            let [re, im] = report.limit_pair[0];
             let error = if model_error { " and the model error" } else { "" };
-            format!("A4 with K_pr{error}, {} — the diamond in the pole plot", complex_pair(re, im))
+            format!("A4 with K_pr{error}, {loop_limit_pair} — the diamond in the pole plot")
         }
     };
     let flexible = report.flexible_pair();
@@ -361,7 +387,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         kpr_shift: per_second(paper.shift),
         kpr_shift_t1: per_second(paper.shift_t1),
         kpr_shift_t2: per_second(paper.shift_t2),
-        kpr_pair: complex_pair(paper.pair[0], paper.pair[1]),
+        kpr_pair: kpr_pair.clone(),
         kpr_alpha_limit: format!("{:.2} 1/s", r.paper_alpha_limit),
         lq_says,
         arm: crate::schema::arm_text(&plant.values()),
@@ -428,17 +454,16 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
             }
         },
         model_note: if model_error {
-            let [re, im] = report.limit_pair[0];
             let with = if pf == crate::control::config::PreliminaryFeedbackChoice::Off {
                 String::new()
             } else {
-                format!(", and {} with its preliminary feedback", complex_pair(re, im))
+                format!(", and {loop_limit_pair} with its preliminary feedback")
             };
             format!(
                 "The controller assumes the paper's arm, not this one: its predictor, friction observer and LQ design \
                  work on the paper's numbers. As δ → 0 the loop tends to {} without Kₚᵣ{with} — not to A4 = {}, \
                  which the formulas here give for a controller that knows this arm.",
-                complex_pair(open_re, open_im),
+                open_pair.clone(),
                 eigenvalues_2x2(r.trace, r.determinant)
             )
         } else {
@@ -470,7 +495,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         math_lag: equations.lag,
         math_energy: equations.energy,
         energy: report.swing_energy.map_or(String::new(), |e| energy_text(&e, law.lag(delta), delta)),
-        kpr_cure: kpr_cure(&paper, r, a1 == a2, &alpha),
+        kpr_cure: kpr_cure(&paper, &kpr_pair, r, a1 == a2, &alpha),
         kpr_works: if paper.pair[0] < 0.0 {
             "every small δ works — smaller δ even gives smaller errors".into()
         } else {
@@ -484,12 +509,12 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
 /// pair it leaves dies out as δ → 0.
 fn kpr_cure(
     paper: &PaperFeedbackEffect,
+    pair: &str,
     r: &crate::analysis::resonance::ResonanceReport,
     equal: bool,
     alpha: &str,
 ) -> String {
     let limit = format!("{:.2} 1/s", r.paper_alpha_limit);
-    let pair = complex_pair(paper.pair[0], paper.pair[1]);
     if paper.pair[0] < 0.0 {
         let range = if equal { format!(" — on this arm for every α below {limit}") } else { String::new() };
         format!(
