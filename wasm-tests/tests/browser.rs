@@ -124,7 +124,7 @@ fn spectral_radius_matches_the_native_core() {
 fn the_page_judges_rho_in_the_clis_words() {
     let mut borderline = 0;
     for &(state, verdict_word, headline, detail) in NATIVE_JUDGEMENT {
-        let session = WebSession::new(state);
+        let mut session = WebSession::new(state);
         let status = session.status().map_err(JsValue::from).unwrap();
         let run = js_sys::Array::from(&get(&status, "runs")).get(0);
         assert_eq!(verdict(&run), verdict_word, "{state}");
