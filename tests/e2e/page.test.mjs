@@ -437,6 +437,9 @@ test('the lesson: every step sets the simulator up, every prediction is answered
         // +4.6 1/s at k_d = 10, α = 5, by 0.5 1/s a step).
         await page.focus('#pair-handle');
         for (let k = 0; k < 12; k++) await page.keyboard.press('ArrowLeft');
+      } else if (await page.$eval('#play', (b) => b.getAttribute('aria-pressed') === 'false')) {
+        // A step whose goal is time starts paused (issue 34): the student presses Play.
+        await page.click('#play');
       }
       await page.waitForFunction(() => document.querySelector('#lesson-task-done').textContent.includes('Done'), null, { timeout: 15000 });
       if (s.title.startsWith('Find where')) assert.equal(await page.$eval('#delta-windows', (el) => el.hidden), false, 'revealed');
