@@ -305,11 +305,6 @@ pub struct ResonanceReport {
     pub alpha_star: f64,
     /// Where the pair without preliminary feedback stops being stable as α = α1 = α2 grows.
     pub open_bound: AlphaBound,
-    /// The same under the loop's fixed preliminary feedback (None without one, or where the gain
-    /// changes with α).
-    pub feedback_bound: Option<AlphaBound>,
-    /// The same under the paper's K_pr, whatever the loop's own feedback.
-    pub paper_bound: AlphaBound,
     /// What the loop's preliminary feedback adds to Re A4, 1/s (0 without one).
     pub feedback_shift: f64,
     /// For a fixed gain (the paper's), the largest α = α1 = α2 it keeps the pair stable at, 1/s.
@@ -343,8 +338,6 @@ impl ResonanceReport {
             arm_pair: [own.re, own.im],
             alpha_star: alpha_star(plant),
             open_bound: AlphaBound::new(plant, q2, &FeedbackGain::zeros()),
-            feedback_bound: damps.then(|| AlphaBound::new(plant, q2, gain)),
-            paper_bound: AlphaBound::new(plant, q2, &crate::control::feedback::paper_gain()),
             feedback_shift: shift,
             // Where det A4 reaches zero first (a heavily damped motor) the trace's limit is too high.
             feedback_alpha_limit: damps.then(|| AlphaBound::new(plant, q2, gain).stable_below()),
@@ -355,6 +348,16 @@ impl ResonanceReport {
 }
 
 impl ResonanceReport {
+    /// A4's two eigenvalues where they are real (tr² ≥ 4 det: the motor no longer swings), the
+    /// larger first; None for a swing, whose real part is Re A4.
+    pub fn real_eigenvalues(&self) -> Option<[f64; 2]> {
+        if swings(self.trace, self.determinant) {
+            return None;
+        }
+        let root = (self.trace * self.trace / 4.0 - self.determinant).max(0.0).sqrt();
+        Some([self.real_part + root, self.real_part - root])
+    }
+
     /// The motor damping B_v1 that kills the pair without preliminary feedback as δ → 0, N m s/rad:
     /// above 3β I_r1 (tr A4 < 0) and below the bound beyond which det A4 < 0 (a motor damped that
     /// much stops swinging, and a slow real mode grows); None where the controller drains the

@@ -212,8 +212,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     };
     // Re A4 is a growth rate only while the pair swings; two real eigenvalues are decided by the
     // larger one (det A4 < 0 puts one in the right half-plane whatever the trace).
-    let re_a4_says = if !crate::analysis::resonance::swings(r.trace, r.determinant) {
-        let larger = r.real_part + (r.trace * r.trace / 4.0 - r.determinant).max(0.0).sqrt();
+    let re_a4_says = if let Some([larger, _]) = r.real_eigenvalues() {
         if larger > 0.0 {
             minus(&format!(
                 "A4 is two real eigenvalues here, the larger {:.2} 1/s > 0: the motor no longer swings, and in the \

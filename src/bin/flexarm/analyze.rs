@@ -1,7 +1,7 @@
 //! `flexarm analyze`: the sampled loop linearized at rest — ρ, the eigenvalues, the δ → 0 pair A4.
 
 use clap::{ArgMatches, Command};
-use flexarm::analysis::resonance::{swings, ResonanceReport};
+use flexarm::analysis::resonance::ResonanceReport;
 use flexarm::analysis::{self, StabilityReport};
 use flexarm::plot::format::minus;
 use flexarm::schema;
@@ -209,16 +209,12 @@ fn resonance_text(r: &ResonanceReport, config: &SimulationConfig) -> String {
     let parts =
         format!("3β/2 − Bv1/(2 Ir1) = {:.4} − {:.4} = {:.4} 1/s", r.controller_feed, r.motor_damping, r.real_part);
     let beta = format!("β = α1 + μ (α1 − α2) = {:.4} 1/s (μ = {:.4})", r.beta, r.mu);
-    s += &if swings(r.trace, r.determinant) {
-        format!("  Re A4 = {parts}, with {beta}\n")
-    } else {
-        let root = (r.trace * r.trace / 4.0 - r.determinant).sqrt();
-        minus(&format!(
-            "  A4 has two real eigenvalues here (tr² ≥ 4 det: the motor no longer swings), {:.4} and {:.4} 1/s: \
-             {parts} is their mean, not a growth rate; with {beta}\n",
-            r.real_part + root,
-            r.real_part - root
-        ))
+    s += &match r.real_eigenvalues() {
+        None => format!("  Re A4 = {parts}, with {beta}\n"),
+        Some([larger, smaller]) => minus(&format!(
+            "  A4 has two real eigenvalues here (tr² ≥ 4 det: the motor no longer swings), {larger:.4} and {smaller:.4} \
+             1/s: {parts} is their mean, not a growth rate; with {beta}\n"
+        )),
     };
     s += &if r.arm_pair[1] != 0.0 {
         format!(
