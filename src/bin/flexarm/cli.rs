@@ -87,13 +87,20 @@ fn value_name(p: &Param) -> String {
     }
 }
 
-/// The short help line of a parameter (`-h`): label, unit, range, default.
-fn short_help(p: &Param) -> String {
+/// What both help forms add to a parameter's label: "; default 0.01" (nothing for a switch that
+/// is off) and ", s".
+fn default_and_unit(p: &Param) -> (String, String) {
     let default = match p.default_value() {
         schema::Value::Switch(false) => String::new(),
         v => format!("; default {}", v.text()),
     };
     let unit = if p.unit.is_empty() { String::new() } else { format!(", {}", p.unit) };
+    (default, unit)
+}
+
+/// The short help line of a parameter (`-h`): label, unit, range, default.
+fn short_help(p: &Param) -> String {
+    let (default, unit) = default_and_unit(p);
     let range = match &p.kind {
         Kind::Number(n) if n.min_inclusive => {
             format!(" ({}–{}{default})", schema::format_number(n.min), schema::format_number(n.max))
@@ -109,11 +116,7 @@ fn short_help(p: &Param) -> String {
 
 /// The help of a parameter (`--help`): label, unit, range in words, default, what it does.
 fn help(p: &Param) -> String {
-    let default = match p.default_value() {
-        schema::Value::Switch(false) => String::new(),
-        v => format!("; default {}", v.text()),
-    };
-    let unit = if p.unit.is_empty() { String::new() } else { format!(", {}", p.unit) };
+    let (default, unit) = default_and_unit(p);
     let range = match &p.kind {
         Kind::Number(n) => format!(" ({}{default})", n.allowed_text(p.unit)),
         Kind::Choice { .. } => format!(" ({}{default})", p.allowed(false)),
