@@ -132,3 +132,28 @@ fn the_page_never_writes_a_real_pair_as_a_complex_one() {
         assert!(!status.runs[0].readouts.a4.contains("± 0"), "{state}: {}", status.runs[0].readouts.a4);
     }
 }
+
+/// Items 6 and 14 on every arm preset and α: the page's cure sentence, the CLI's line on the
+/// paper's gains and the pair's stability under them (the numerical δ → 0 limit, which knows
+/// nothing of the words) agree.
+#[test]
+fn the_cure_is_said_truly_on_every_arm_preset_and_alpha() {
+    let mut failing = 0;
+    for preset in flexarm::session::presets::ARMS {
+        for alpha in [0.3, 1.0, 2.0, 5.0] {
+            let state = format!("arm={}&alpha={alpha}&pf=paper", preset.id);
+            let (s, notices) = flexarm::session::Session::open(&state);
+            assert!(notices.is_empty(), "{notices:?}");
+            let plant = s.run(0).unwrap().closed_loop().config().plant;
+            let works = growth(&plant, alpha, &paper_gain()) < 0.0;
+            let cure = s.status().story.unwrap().kpr_cure;
+            assert_eq!(cure.contains("then every small δ works"), works, "{state}: {cure}");
+            assert_eq!(cure.contains("small δ still fail"), !works, "{state}: {cure}");
+            let cli = analyze(&["--arm", preset.id, "--alpha", &alpha.to_string()]);
+            assert_eq!(cli.contains("does not damp the pair on this arm"), !works, "{state}:\n{cli}");
+            failing += usize::from(!works);
+        }
+    }
+    // Not a vacuous check: the paper's gains fail somewhere (α = 5, the heavier motor).
+    assert!(failing >= 2, "{failing}");
+}
