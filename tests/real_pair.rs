@@ -157,3 +157,23 @@ fn the_cure_is_said_truly_on_every_arm_preset_and_alpha() {
     // Not a vacuous check: the paper's gains fail somewhere (α = 5, the heavier motor).
     assert!(failing >= 2, "{failing}");
 }
+
+/// Where the paper's gains fail because the motor is damped past its swing (det A4 < 0 first),
+/// the reason given is that, not the feed outweighing their damping — which is false there.
+#[test]
+fn a_motor_damped_past_its_swing_is_given_its_own_reason() {
+    let plant = PlantParameters { bv1: 290.0, ..PlantParameters::default() };
+    let bound = AlphaBound::new(&plant, 0.0, &paper_gain());
+    assert!(bound.lost_to_det() && growth(&plant, 2.0, &paper_gain()) > 0.0);
+    let (s, _) = flexarm::session::Session::open("bv1=290&pf=paper");
+    let cure = s.status().story.unwrap().kpr_cure;
+    let cli = analyze(&["--bv1", "290"]);
+    for text in [&cure, &cli] {
+        assert!(text.contains("one real eigenvalue of the pair crosses zero (det A4 < 0)"), "{text}");
+        assert!(!text.contains("outweighs"), "{text}");
+    }
+    // On the heavier motor the trace decides, and the feed is the reason.
+    let heavier = PlantParameters { ir1: 4.0 * PlantParameters::default().ir1, ..PlantParameters::default() };
+    assert!(!AlphaBound::new(&heavier, 0.0, &paper_gain()).lost_to_det());
+    assert!(analyze(&["--arm", "heavier"]).contains("outweighs the shift's"));
+}

@@ -305,6 +305,10 @@ pub struct ResonanceReport {
     pub alpha_star: f64,
     /// Where the pair without preliminary feedback stops being stable as α = α1 = α2 grows.
     pub open_bound: AlphaBound,
+    /// The same under the loop's fixed preliminary feedback (None without one, or where the gain
+    /// changes with α), and under the paper's K_pr whatever the loop's own feedback.
+    pub feedback_bound: Option<AlphaBound>,
+    pub paper_bound: AlphaBound,
     /// What the loop's preliminary feedback adds to Re A4, 1/s (0 without one).
     pub feedback_shift: f64,
     /// For a fixed gain (the paper's), the largest α = α1 = α2 it keeps the pair stable at, 1/s.
@@ -321,6 +325,10 @@ impl ResonanceReport {
         let own = arm_pair(plant, q2)[0];
         let shift = feedback_shift(plant, alpha, q2, gain);
         let damps = fixed && shift < 0.0;
+        // Where det A4 reaches zero first (a heavily damped motor) the trace's limit is too high.
+        let feedback_bound = damps.then(|| AlphaBound::new(plant, q2, gain));
+        // The limit is for α1 = α2, where the shift does not depend on α.
+        let paper_bound = AlphaBound::new(plant, q2, &crate::control::feedback::paper_gain());
         Self {
             j_eff: r.j_eff,
             mu: r.mu,
@@ -338,11 +346,11 @@ impl ResonanceReport {
             arm_pair: [own.re, own.im],
             alpha_star: alpha_star(plant),
             open_bound: AlphaBound::new(plant, q2, &FeedbackGain::zeros()),
+            feedback_bound,
+            paper_bound,
             feedback_shift: shift,
-            // Where det A4 reaches zero first (a heavily damped motor) the trace's limit is too high.
-            feedback_alpha_limit: damps.then(|| AlphaBound::new(plant, q2, gain).stable_below()),
-            // The limit is for α1 = α2, where the shift does not depend on α.
-            paper_alpha_limit: AlphaBound::new(plant, q2, &crate::control::feedback::paper_gain()).stable_below(),
+            feedback_alpha_limit: feedback_bound.map(|b| b.stable_below()),
+            paper_alpha_limit: paper_bound.stable_below(),
         }
     }
 }

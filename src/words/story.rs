@@ -503,6 +503,17 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     }
 }
 
+/// Why a fixed preliminary feedback leaves the δ → 0 pair unstable at these α, from where its
+/// α bound comes: the controller's feed against the damping it adds (tr A4), or a motor damped
+/// past its swing, where one real eigenvalue crosses zero (det A4).
+pub fn gains_fail_because(bound: &crate::analysis::resonance::AlphaBound) -> &'static str {
+    if bound.lost_to_det() {
+        "the motor is damped past its swing and one real eigenvalue of the pair crosses zero (det A4 < 0)"
+    } else {
+        "the controller's feed 3α/2 outweighs their damping"
+    }
+}
+
 /// "In short"'s cure, from what the paper's K_pr does to the pair on this arm at these α (the
 /// pair it makes, and for α1 = α2 the largest α it keeps stable): "every small δ" only where the
 /// pair it leaves dies out as δ → 0.
@@ -524,8 +535,9 @@ fn kpr_cure(
         let range = if equal { format!(" only for α below {limit} on this arm") } else { String::new() };
         format!(
             "A preliminary feedback Kₚᵣ damps the ringing first — the paper's gains do so{range}: at \
-             {alpha} they leave the pair at {pair}, the controller's feed 3α/2 outweighs their damping, and small δ \
-             still fail (the LQ design, redone for the arm and α, damps it)."
+             {alpha} they leave the pair at {pair}, {}, and small δ still fail (the LQ design, redone for the arm \
+             and α, damps it).",
+            gains_fail_because(&r.paper_bound)
         )
     }
 }

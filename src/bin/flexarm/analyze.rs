@@ -250,14 +250,20 @@ fn resonance_text(r: &ResonanceReport, config: &SimulationConfig) -> String {
         // The paper's gains are fixed (designed for the paper's arm at α = 2): where this arm and α
         // leave the pair unstable with them, say so and why.
         let [a1, a2] = config.controller.alpha;
-        if let (Some(limit), true) = (r.feedback_alpha_limit, a1 == a2) {
-            if a1 >= limit {
+        if let (Some(bound), true) = (r.feedback_bound, a1 == a2) {
+            if a1 >= bound.stable_below() {
+                let why = if bound.lost_to_det() {
+                    flexarm::words::story::gains_fail_because(&bound).to_string()
+                } else {
+                    format!(
+                        "the feed 3α/2 − Bv1/(2 Ir1) = {} 1/s outweighs the shift's {} 1/s",
+                        minus(&format!("{:.4}", r.real_part)),
+                        minus(&format!("{:.4}", r.feedback_shift))
+                    )
+                };
                 s += &format!(
-                    "  so at α = {} 1/s it does not damp the pair on this arm: the feed 3α/2 − Bv1/(2 Ir1) = {} 1/s \
-                     outweighs the shift's {} 1/s, and small δ fail{}\n",
+                    "  so at α = {} 1/s it does not damp the pair on this arm: {why}, and small δ fail{}\n",
                     flexarm::plot::format::significant_trimmed(a1, 3),
-                    minus(&format!("{:.4}", r.real_part)),
-                    minus(&format!("{:.4}", r.feedback_shift)),
                     if config.preliminary_feedback == flexarm::control::config::PreliminaryFeedbackChoice::Paper {
                         " (the paper's gains are fixed, designed for the paper's arm at α = 2 1/s; --pf lq is redone for \
                          each arm and α)"
