@@ -8,8 +8,8 @@
 //! friction follows a 1-s slew. The Jankowski–Van Brussel controller integrates a stabilized
 //! index-3 DAE with backward Euler over k = 12 steps of ε = δ/8 and applies the predicted torque
 //! one sampling period δ later. For small δ the loop is unstable: the joint's resonance (motor and
-//! link 1 against each other through the spring) is a motion the controller cannot see — it reads
-//! only the links — and feeds; in the limit δ → 0 it is the pair A4 ≈ 2.63 ± 29.58j, with
+//! link 1 against each other through the spring) is a motion the controller's torque has no gain on —
+//! its gain is exactly zero on θ and θ̇ — and, on the paper's arm, feeds; in the limit δ → 0 it is the pair A4 ≈ 2.63 ± 29.58j, with
 //! Re A4 = 3α/2 − Bv1/(2 Ir1) ([`analysis::resonance`]). A preliminary linear feedback K_pr damps
 //! the motor and moves the pair to ≈ −2.5 ± 29.6j, after which every small δ works.
 //!

@@ -193,6 +193,8 @@ fn the_prediction_forgets_the_measured_motor_after_two_steps_at_every_delta() {
                 // ... it was there at X_1 and in the impulsive U_1, U_2 ...
                 assert!((motor.states[1] - base.states[1]).amax() > 0.01, "{case}: X_1 keeps the motor's change");
                 assert!((motor.torques[0] - base.torques[0]).amax() > 1.0, "{case}");
+                // U_2 too (the figure's caption says so: "from X₂ and U₃ on").
+                assert!((motor.torques[1] - base.torques[1]).amax() > 1.0, "{case}: U_2 keeps the motor's change");
                 // ... while the same change of link 1 moves U_k.
                 let d_link = (link.torques[k - 1] - u_k).amax();
                 assert!(d_link > 1e3 * (motor.torques[k - 1] - u_k).amax().max(1e-12), "{case}: {d_link:e}");

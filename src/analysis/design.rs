@@ -105,12 +105,16 @@ pub fn small_delta_cured(windows: &StableWindows) -> bool {
 /// k_d* = 3β Ir1 − Bv1 (tr A4 < 0: the pair damped) and, while the controller feeds the resonance
 /// (3β > 0), below the damping at which det A4 = 0 — beyond it the motor no longer swings against
 /// link 1 and a slow real mode grows. A stiffer twist spring raises that upper bound:
-/// det A4 = a00 (a11 − k_d/Ir1) − a01 (a10 − k_p/Ir1).
+/// det A4 = a00 (a11 − k_d/Ir1) − a01 (a10 − k_p/Ir1). Between the two the pair stops swinging
+/// first, at `swings_below` (tr² = 4 det), and stays stable as two real eigenvalues up to `upper`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct DampingWindow {
     pub lower: f64,
     /// None where the controller drains the resonance (3β ≤ 0): no upper bound.
     pub upper: Option<f64>,
+    /// The k_d above which the pair is two real eigenvalues (the motor no longer swings against
+    /// link 1), N m s/rad; None where it never swings (a01 (a10 − k_p/Ir1) ≥ 0).
+    pub swings_below: Option<f64>,
 }
 
 impl DampingWindow {
@@ -120,7 +124,10 @@ impl DampingWindow {
         let lower = ir1 * a.trace();
         let upper =
             (a[(0, 0)] > 0.0).then(|| ir1 * (a[(1, 1)] - a[(0, 1)] * (a[(1, 0)] - stiffness / ir1) / a[(0, 0)]));
-        Self { lower, upper }
+        // (a00 − a11 + k_d/Ir1)² = −4 a01 (a10 − k_p/Ir1): the discriminant of A4 vanishes.
+        let spring = -a[(0, 1)] * (a[(1, 0)] - stiffness / ir1);
+        let swings_below = (spring > 0.0).then(|| ir1 * (2.0 * spring.sqrt() - a[(0, 0)] + a[(1, 1)]));
+        Self { lower, upper, swings_below }
     }
 
     /// True when k_d lies in the window.

@@ -366,18 +366,37 @@ impl ResonanceReport {
         Some([self.real_part + root, self.real_part - root])
     }
 
-    /// The motor damping B_v1 that kills the pair without preliminary feedback as δ → 0, N m s/rad:
-    /// above 3β I_r1 (tr A4 < 0) and below the bound beyond which det A4 < 0 (a motor damped that
-    /// much stops swinging, and a slow real mode grows); None where the controller drains the
-    /// resonance (β ≤ 0) and no damping is needed. `plant` is the arm the report is of.
-    pub fn damping_window(&self, plant: &PlantParameters) -> Option<[f64; 2]> {
+    /// The motor damping B_v1 that decides the pair without preliminary feedback as δ → 0, N m s/rad,
+    /// three thresholds: the pair dies out above 3β I_r1 (tr A4 < 0); it stops swinging above
+    /// I_r1 (2 √(det A4 + 3β B_v1/I_r1) − 3β) (tr² = 4 det: two real eigenvalues, both still
+    /// stable); and a real one grows only above the bound where det A4 < 0. None where the
+    /// controller drains the resonance (β ≤ 0) and no damping is needed. `plant` is the arm the
+    /// report is of.
+    pub fn damping_window(&self, plant: &PlantParameters) -> Option<DampingThresholds> {
         if self.beta <= 0.0 {
             return None;
         }
-        // det A4 without the motor's damping term: what B_v1 must stay below, over 3β.
+        // det A4 without the motor's damping term: Ω² = K1/Ir1 + K1/J_eff + 6γ, which B_v1 leaves.
         let stiffness = self.determinant + 3.0 * self.beta * plant.bv1 / plant.ir1;
-        Some([3.0 * self.beta * plant.ir1, stiffness * plant.ir1 / (3.0 * self.beta)])
+        Some(DampingThresholds {
+            damped_above: 3.0 * self.beta * plant.ir1,
+            // (3β + B_v1/Ir1)² = 4 Ω²: the discriminant of A4 vanishes.
+            swings_below: plant.ir1 * (2.0 * stiffness.max(0.0).sqrt() - 3.0 * self.beta),
+            unstable_above: stiffness * plant.ir1 / (3.0 * self.beta),
+        })
     }
+}
+
+/// The motor damping's three thresholds for the δ → 0 pair without preliminary feedback, N m s/rad
+/// ([`ResonanceReport::damping_window`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DampingThresholds {
+    /// Above it the pair dies out (tr A4 < 0).
+    pub damped_above: f64,
+    /// Below it the motor swings (a complex pair); above it two real eigenvalues.
+    pub swings_below: f64,
+    /// Above it one real eigenvalue is positive (det A4 < 0).
+    pub unstable_above: f64,
 }
 
 /// What the paper's K_pr, acting continuously, does to the pair at α and the rest point q2: the

@@ -79,7 +79,7 @@ pub const A1: Param = arm(
     "kg m²",
     "a1 (A1)",
     spec(4.984, [0.4, 50.0], Scale::Log, [4.984e-3, 4984.0], inertia!("0.004984 to 4984")),
-    "Inertia of both links about joint 1 (with link 2 folded back: A1 + 2 A3 cos q2 is the whole term).",
+    "Inertia of both links about joint 1 with link 2 at a right angle (q2 = ±π/2, where cos q2 = 0): the mass matrix's M11 = A1 + 2 A3 cos q2.",
 );
 
 /// A2, kg m².
@@ -107,7 +107,7 @@ pub const A3: Param = arm(
         [0.0, 3.28],
         "must be ≥ 0 and at most ten times the paper's value, and A3² < A1·A2 − A2² (the mass matrix positive definite)",
     ),
-    "How strongly the links push on each other (A3 cos q2 in the mass matrix): 0 decouples them.",
+    "How the links' inertia coupling changes with the elbow angle (A3 cos q2 in the mass matrix): at 0 the cos q2 and Coriolis terms vanish, but the links still push on each other through M12 = A2.",
 );
 
 /// Ir1, kg m².
@@ -129,8 +129,8 @@ pub const BV1: Param = arm(
     "N m s/rad",
     "bv1 (B_v1)",
     spec(1.40, [0.0, 50.0], Scale::Linear, [0.0, 1400.0], DAMPING),
-    "Viscous damping of the motor: a torque against its speed. Re A4 = 3α/2 − B_v1/(2 I_r1): enough of it damps \
-     the swing with no preliminary feedback.",
+    "Viscous damping of the motor: a torque against its speed. As δ → 0, Re A4 = 3α/2 − B_v1/(2 I_r1) while \
+     the motor swings: enough of it damps the swing with no preliminary feedback.",
 );
 
 /// Bv2, N m s/rad.

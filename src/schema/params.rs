@@ -262,8 +262,9 @@ pub const REST: Param = Param {
     scope: Scope::Run,
     help: "The analysis (ρ, the poles, the windows of δ, the maps) holds for small motions about one rest point, \
            with the friction cancelled: where the slew ends, or the end of the slew under way, \
-           which under the repeating slew alternates between q2 = 0 and 3π/2 rad (the paper asks the same of \
-           the preliminary feedback's design: a linearization about an operating point updated if necessary).",
+           which under the repeating slew alternates between q2 = 0 and 3π/2 rad. Only the analysis moves: \
+           the preliminary feedback keeps its fixed gains (the paper's gain scheduling would redesign K_pr at \
+           an updated operating point; this setting does not).",
 };
 
 /// The repeating there-and-back slew.

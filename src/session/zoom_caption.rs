@@ -37,8 +37,8 @@ impl Session {
         if let [u1, u2, ..] = sweep.torques[..] {
             text += &format!(
                 " The first two, U₁ = ({}, {}) and U₂ = ({}, {}) N m, are impulsive: they put the motor where the \
-                 links' law needs it, and from X₂ on nothing it predicts depends on the motor's measured angle or \
-                 speed.",
+                 links' law needs it (U₂ still depends on the motor's measured angle), and from X₂ and U₃ on nothing it \
+                 predicts depends on the motor's measured angle or speed.",
                 scientific(u1[0], 2),
                 scientific(u1[1], 2),
                 scientific(u2[0], 2),

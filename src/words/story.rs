@@ -26,6 +26,9 @@ pub struct Story {
     /// (4.68 Hz) for the arm alone". The controller moves it a little (A4, [`Story::omega_a4`]),
     /// the sampled loop a little more ([`Story::loop_pair`]): three frequencies, each named.
     pub omega_arm: String,
+    /// "In short"'s disease, for the arm and α shown: whether steering the links feeds the swing,
+    /// whether that beats the motor's damping, and where the pair goes as δ → 0.
+    pub short_feed: String,
     pub omega_clamped: String,
     /// J_eff: "4.30 kg m²".
     pub j_eff: String,
@@ -50,6 +53,9 @@ pub struct Story {
     pub alpha2_drain: String,
     /// α* = Bv1/(3 Ir1).
     pub alpha_star: String,
+    /// What α = 0.2 1/s (the explanation's Try button) does on this arm: below or above α*, and
+    /// the pair A4 it leaves as δ → 0.
+    pub alpha_small: String,
     /// Run A's δ, ρ, ln ρ/δ and its flexible loop pole at that δ.
     pub delta: String,
     pub rho: String,
@@ -68,6 +74,9 @@ pub struct Story {
     pub kpr_shift_t2: String,
     pub kpr_pair: String,
     pub kpr_alpha_limit: String,
+    /// The paper's K_pr's shift of Re A4 on this arm at the two ends of the rest points: "−5.12 1/s
+    /// at q2 = 0, −4.28 1/s at q2 = π".
+    pub kpr_shift_rest: String,
     /// What the minimum-energy LQ design does to the pair, with the pair it makes.
     pub lq_says: String,
     /// Whether the paper's K_pr makes every small δ work at these α: what the pair it makes says.
@@ -95,6 +104,9 @@ pub struct Story {
     pub lag: String,
     pub lag_growth: String,
     pub lag_window: String,
+    /// The loop's own rate beside the law's estimate: the law is made for the loop without K_pr, so
+    /// with K_pr on the run's ln ρ/δ is another loop's.
+    pub lag_compare: String,
     /// The mechanism at this δ, computed ([`crate::analysis::energy`]): how far the held torque
     /// lags the swing and what share of the swing's energy it, the preliminary feedback and the
     /// arm's damping put in or take out each period. Empty without a flexible pair.
@@ -348,12 +360,68 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         }
         None => "every small δ: here the motor's damping outweighs the feed, and no lag is needed".into(),
     };
+    let short_feed = {
+        let steering = if r.controller_feed > 0.0 {
+            "steering the links feeds the swing a little"
+        } else if r.controller_feed < 0.0 {
+            "steering the links drains the swing"
+        } else {
+            "steering the links neither feeds nor drains the swing"
+        };
+        // What the pair does as δ → 0, from the loop's own limit (with a model error it is not A4).
+        let outcome = match r.real_eigenvalues().filter(|_| !model_error) {
+            Some([larger, _]) if larger > 0.0 => {
+                "the motor no longer swings, and a slow real mode grows: the smallest δ fail".to_string()
+            }
+            Some(_) => "the motor no longer swings and settles: the smallest δ work without Kₚᵣ".into(),
+            None if open_re > 0.0 => {
+                let against = if r.controller_feed > 0.0 { ", faster than the motor's damping drains it" } else { "" };
+                format!("the swing grows{against}: at small δ the ringing grows")
+            }
+            None if r.controller_feed > 0.0 => {
+                "but the motor's damping drains it faster: the ringing dies out, and the smallest δ work without Kₚᵣ"
+                    .into()
+            }
+            None => "the ringing dies out, and the smallest δ work without Kₚᵣ".into(),
+        };
+        format!("On this arm, at {alpha}, {steering}; as δ → 0 the pair goes to {open_pair}, so {outcome}.")
+    };
+    let alpha_small = {
+        let small = 0.2;
+        let at = crate::analysis::resonance::JointResonance::new(plant, [small; 2], q2);
+        let pair = eigenvalues_2x2(at.trace(), at.determinant());
+        let dies = at.eigenvalues.iter().all(|e| e.re < 0.0);
+        let side = if small < r.alpha_star { "below" } else { "above" };
+        format!(
+            "On this arm α* = {:.2} 1/s, so α = 0.2 1/s is {side} it: as δ → 0 the pair goes to {pair}, {}.",
+            r.alpha_star,
+            if dies { "which dies out, and the smallest δ work without Kₚᵣ" } else { "which grows: the smallest δ fail without Kₚᵣ" }
+        )
+    };
+    let kpr_shift_rest = {
+        let at = |q2: f64| PaperFeedbackEffect::new(plant, config.controller.alpha, q2).shift;
+        format!("on this arm {} at q2 = 0, {} at q2 = π", per_second(at(0.0)), per_second(at(core::f64::consts::PI)))
+    };
+    let lag_compare = if pf == crate::control::config::PreliminaryFeedbackChoice::Off {
+        format!("The loop itself changes at ln ρ/δ = {}.", per_second(report.growth_rate))
+    } else {
+        format!(
+            "The law is made for the loop without Kₚᵣ; this run has a preliminary feedback on, so its ln ρ/δ = {} \
+             is another loop's rate, not the law's to predict.",
+            per_second(report.growth_rate)
+        )
+    };
     Story {
+        short_feed,
+        alpha_small,
+        kpr_shift_rest,
+        lag_compare,
         alpha: alpha.clone(),
         rest: format!("q2 = {} rad", if q2.abs() < 5e-13 { "0".into() } else { significant_trimmed(q2, 3) }),
         arm_pair: complex_pair(r.arm_pair[0], r.arm_pair[1]),
         omega_joint: frequency(r.omega_joint),
-        omega_arm: frequency(r.omega_joint) + " for the arm alone",
+        // The damped swing's own frequency (Im of the arm's pair), not the undamped formula.
+        omega_arm: frequency(r.arm_pair[1].abs()) + " for the arm alone",
         omega_clamped: format!("{:.1} rad/s", r.omega_clamped),
         j_eff: format!("{:.2} kg m²", r.j_eff),
         a4: if model_error {
@@ -391,14 +459,28 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         lq_says,
         arm: crate::schema::arm_text(&plant.values()),
         damping_needed: match r.damping_window(plant) {
-            Some([lower, upper]) => {
+            Some(t) => {
+                // Two thresholds above the one that damps the pair, never merged: where the pair
+                // turns real (the motor stops swinging) and where a real eigenvalue turns positive.
+                let swing = if t.swings_below > 0.0 {
+                    format!(
+                        "the motor swings against link 1 below {:.0} N m s/rad; above that the pair is two real \
+                         eigenvalues, and one of them grows only beyond {:.0} N m s/rad",
+                        t.swings_below, t.unstable_above
+                    )
+                } else {
+                    format!(
+                        "the pair is two real eigenvalues at any B_v1, and one of them grows beyond {:.0} N m s/rad",
+                        t.unstable_above
+                    )
+                };
                 format!(
-                "B_v1 > {} I_r1 = {lower:.1} N m s/rad, and (as δ → 0) below {upper:.0} N m s/rad, beyond which the \
-                 motor no longer swings and a slow real mode grows (this arm: {} N m s/rad)",
-                // With α1 ≠ α2 the pair is fed 3β/2, β = α1 + μ (α1 − α2) (the explanation derives it).
-                if a1 == a2 { "3α".to_string() } else { format!("3β (β = α1 + μ (α1 − α2) = {:.2} 1/s)", r.beta) },
-                crate::schema::format_number(plant.bv1)
-            )
+                    "B_v1 > {} I_r1 = {:.1} N m s/rad as δ → 0; {swing} (this arm: {} N m s/rad)",
+                    // With α1 ≠ α2 the pair is fed 3β/2, β = α1 + μ (α1 − α2) (the explanation derives it).
+                    if a1 == a2 { "3α".to_string() } else { format!("3β (β = α1 + μ (α1 − α2) = {:.2} 1/s)", r.beta) },
+                    t.damped_above,
+                    crate::schema::format_number(plant.bv1)
+                )
             }
             None => format!(
                 "none at these α: the controller drains the resonance (β = {:.2} 1/s ≤ 0; this arm: {} N m s/rad)",
@@ -426,10 +508,16 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
                     config.twist.stiffness,
                 );
                 let three = if a1 == a2 { "3α" } else { "3β" };
+                let swing = window.swings_below.filter(|s| *s > window.lower).map_or(String::new(), |s| {
+                    format!(
+                        "; above {} N m s/rad the motor no longer swings against link 1 (two real eigenvalues)",
+                        significant_trimmed(s, 3)
+                    )
+                });
                 let upper = window.upper.map_or(String::new(), |u| {
                     format!(
-                        " and below {} N m s/rad, beyond which the motor no longer swings and a slow real mode grows (a \
-                         stiffer twist spring k_p raises this bound)",
+                        " and below {} N m s/rad, beyond which a slow real mode grows (a stiffer twist spring k_p \
+                         raises this bound){swing}",
                         significant_trimmed(u, 3)
                     )
                 });

@@ -113,7 +113,7 @@ test('an arm preset and an impossible arm: the damped motor is stable without K_
   await page.waitForFunction(() => new URLSearchParams(location.search).get('bv1') === '15');
   await page.waitForFunction(() => document.querySelector('#verdict').dataset.verdict === 'stable', null, { timeout: 20000 });
   const s = await story(page);
-  assert.match(s.damping_needed, /^B_v1 > 3α I_r1 = 11\.6 N m s\/rad, and .* \(this arm: 15 N m s\/rad\)$/);
+  assert.match(s.damping_needed, /^B_v1 > 3α I_r1 = 11\.6 N m s\/rad as δ → 0; .* \(this arm: 15 N m s\/rad\)$/);
   assert.match(s.re_a4, /^−/, `Re A4 < 0: ${s.re_a4}`);
   await page.screenshot({ path: path.join(shots, 'arm-damped.png') });
   // Under the paper's gains on another arm, the page says they stay fixed (none without K_pr).
