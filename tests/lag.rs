@@ -15,13 +15,9 @@ use flexarm::analysis::lag::LagLaw;
 use flexarm::analysis::{analyze, stable_windows, LinearSettings};
 use flexarm::*;
 
+/// The paper's arm with K1 and I_r1 scaled, α1 = α2 = `alpha`, no preliminary feedback.
 fn config(k1: f64, ir1: f64, alpha: f64) -> SimulationConfig {
-    let mut c = SimulationConfig::default();
-    c.plant.k1 *= k1;
-    c.plant.ir1 *= ir1;
-    c.controller.alpha = [alpha; 2];
-    c.preliminary_feedback = PreliminaryFeedbackChoice::Off;
-    c
+    common::lag::config(k1, ir1, 1.0, alpha)
 }
 
 #[test]

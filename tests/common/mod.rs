@@ -1,6 +1,7 @@
-//! Helpers shared by the session-level tests.
+//! Helpers shared by the tests: the session-level ones, and the lag law's arms ([`lag`]).
 #![allow(dead_code)]
 
+pub mod lag;
 pub mod visit;
 
 use flexarm::session::Session;
