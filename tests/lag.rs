@@ -5,11 +5,8 @@
 //! The law: the held torque reaches the swing 1.5 δ late on average; the controller's feed 3β/2
 //! then pushes the swing only by cos(1.5 ωδ) of itself (ω = |Im A4|), and the swing is damped
 //! from ωδ = arccos(B_v1/(3β I_r1))/1.5 up to about π (half a turn per period, the Nyquist
-//! frequency). The tolerance it has, found over this grid and asserted where the swing turns fast
-//! against its growth (3β/2 ≤ ω/4, the paper's arm at α = 2: 0.10 ω): the true lower edge within
-//! −2 … +16 % of the law's, the true upper edge between 0.94 π and π (or the window goes on past π
-//! where it merges with the next) — while in δ the same windows move by a factor of more than 50.
-//! Beyond that domain the law's edge stays a lower bound (up to 38 % low on this grid).
+//! frequency). It is a heuristic: its bias is measured over a grid in `tests/lag_bias.rs`, and the
+//! page quotes the constants that test asserts.
 
 use flexarm::analysis::lag::LagLaw;
 use flexarm::analysis::{analyze, stable_windows, LinearSettings};
@@ -18,76 +15,6 @@ use flexarm::*;
 /// The paper's arm with K1 and I_r1 scaled, α1 = α2 = `alpha`, no preliminary feedback.
 fn config(k1: f64, ir1: f64, alpha: f64) -> SimulationConfig {
     common::lag::config(k1, ir1, 1.0, alpha)
-}
-
-#[test]
-fn the_controller_alone_works_where_the_lagged_feed_brakes_the_swing_below_half_a_turn_per_period() {
-    let pi = core::f64::consts::PI;
-    let mut rows = Vec::new();
-    let (mut low_ratio, mut high_turn) = ([f64::INFINITY, 0.0f64], f64::INFINITY);
-    let mut first_windows = Vec::new();
-    for k1 in [0.25, 0.5, 1.0, 2.0, 4.0] {
-        for ir1 in [0.25, 1.0, 4.0] {
-            for alpha in [0.5, 1.0, 2.0, 3.0] {
-                let case = format!("K1×{k1} Ir1×{ir1} α={alpha}");
-                let c = config(k1, ir1, alpha);
-                let law = LagLaw::of(&analyze(&c, None).unwrap());
-                let windows = stable_windows(&LinearSettings::of(&c, None), [5e-4, 1.0]).unwrap();
-                let Some([lo, hi]) = law.window() else {
-                    // The motor damps the swing at every small δ: stable from the smallest δ on.
-                    assert!(windows.windows.first().is_some_and(|w| w[0] <= windows.range[0]), "{case}");
-                    continue;
-                };
-                // The true window the law describes: the first one reaching past its lower edge.
-                let w = windows
-                    .windows
-                    .iter()
-                    .find(|w| w[1] > lo)
-                    .unwrap_or_else(|| panic!("{case}: no window above {lo} s"));
-                let (ratio, upper) = (w[0] / lo, law.turn(w[1]));
-                let merged = w[1] > 1.1 * hi;
-                rows.push(format!(
-                    "{case}: ω = {:.1} rad/s, 3β/2 = {:.2} 1/s ({:.3} ω); law ωδ from {:.3}, true {:.3} to {}; δ from {:.4} to {:.4} s",
-                    law.omega,
-                    law.feed,
-                    law.feed / law.omega,
-                    law.turn(lo),
-                    law.turn(w[0]),
-                    if merged { "past π (merged)".to_string() } else { format!("{upper:.3}") },
-                    w[0],
-                    w[1]
-                ));
-                // Always a lower bound: below the law's edge the lagged feed still pushes.
-                assert!(ratio >= 0.98, "{case}: lower edge {} below the law's {lo}", w[0]);
-                // Its domain: the swing turns fast against its growth, 3β/2 ≤ ω/4.
-                if law.feed > 0.25 * law.omega {
-                    continue;
-                }
-                assert!(ratio <= 1.16, "{case}: lower edge {} against the law's {lo} (×{ratio:.3})", w[0]);
-                assert!(merged || (0.94 * pi..=1.001 * pi).contains(&upper), "{case}: ends at ωδ = {upper:.3}");
-                low_ratio = [low_ratio[0].min(ratio), low_ratio[1].max(ratio)];
-                if !merged {
-                    high_turn = high_turn.min(upper);
-                }
-                first_windows.push(w[0]);
-            }
-        }
-    }
-    println!("{}", rows.join("\n"));
-    println!(
-        "where 3β/2 ≤ ω/4: lower edge / the law's {:.3}–{:.3}; upper edge ≥ {high_turn:.3} rad ({:.3} π)",
-        low_ratio[0],
-        low_ratio[1],
-        high_turn / pi
-    );
-    // The law is worth stating: in δ the same windows spread far wider than in ωδ.
-    let spread =
-        first_windows.iter().cloned().fold(0.0, f64::max) / first_windows.iter().cloned().fold(f64::INFINITY, f64::min);
-    assert!(
-        first_windows.len() >= 40 && spread > 50.0,
-        "{} cases, lower edges in δ spread ×{spread:.1}",
-        first_windows.len()
-    );
 }
 
 /// The law's growth σ ≈ (3β/2) cos(1.5 ωδ) − B_v1/(2 I_r1) has the sign of ln ρ/δ for the paper's
@@ -118,14 +45,21 @@ fn the_lag_laws_growth_has_the_sign_of_the_loops() {
 #[test]
 fn the_page_states_the_law_with_the_tested_tolerances() {
     let page = include_str!("../www/index.html").split_whitespace().collect::<Vec<_>>().join(" ");
+    // The bias is rendered from the measured constants (tests/lag_bias.rs), never fixed text.
+    for gone in ["within −2 … +16 % of the law's", "between 0.94 π and π", "trust its sign more than its size"] {
+        assert!(!page.contains(gone), "the page should no longer say {gone:?}");
+    }
+    assert!(page.contains(r#"<span data-live="lag_bias">"#));
+    let story = common::session("pf=off").status().story.unwrap();
+    use flexarm::analysis::lag::*;
     for said in [
-        "within −2 … +16 % of the law's",
-        "between 0.94 π and π",
-        "3β/2 ≤ ω/4",
-        "by a factor of more than 50",
-        "on some arms (the lighter motor), the window runs on past π",
+        format!("between {:.2} and {:.2} times the law's", LOWER_EDGE_RATIO[0], LOWER_EDGE_RATIO[1]),
+        format!("from {:.2} to {:.2} rad", LOWER_EDGE_TURN[0], LOWER_EDGE_TURN[1]),
+        format!("between {:.2} π and {:.2} π", UPPER_EDGE_TURNS[0], UPPER_EDGE_TURNS[1]),
+        GRID_DESCRIPTION.to_string(),
+        "This arm at α = 2 1/s lies inside that domain.".into(),
     ] {
-        assert!(page.contains(said), "the page should say {said:?}");
+        assert!(story.lag_bias.contains(&said), "the story should say {said:?}: {}", story.lag_bias);
     }
     // The lighter motor (I_r1 ÷ 4) at α = 2: its first window runs on past ωδ = π.
     let c = config(1.0, 0.25, 2.0);
@@ -191,7 +125,12 @@ fn the_readme_quotes_the_law() {
         first[1]
     );
     assert!(readme.contains(&said), "README should say {said:?}");
-    assert!(readme.contains("within −2 … +16 % of the law's and the upper between 0.94 π and π wherever 3β/2 ≤ ω/4"));
+    use flexarm::analysis::lag::*;
+    let bias = format!(
+        "the true lower edge is {:.2}–{:.2} times the law's (mostly early: just above its edge the swing can still grow), the true lower edges spread over ωδ {:.2}–{:.2} rad (the edge depends on α and B_v1/I_r1), and where the swing ends the window it ends at {:.2}–{:.2} π",
+        LOWER_EDGE_RATIO[0], LOWER_EDGE_RATIO[1], LOWER_EDGE_TURN[0], LOWER_EDGE_TURN[1], UPPER_EDGE_TURNS[0], UPPER_EDGE_TURNS[1]
+    );
+    assert!(readme.contains(&bias), "README should say {bias:?}");
 }
 
 mod common;

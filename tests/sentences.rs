@@ -99,13 +99,21 @@ fn the_kpr_shifts_are_this_arms() {
                 let linear = linearize_at_rest(&plant, [alpha; 2], [0.5 * PI, q2]);
                 let re = |g: &FeedbackGain| limit_pair(&linear, g).unwrap().eigenvalues[0].re;
                 let shift = re(&paper_gain()) - re(&FeedbackGain::zeros());
-                assert!(s.kpr_shift_rest.contains(&per_second(shift)), "{arm} q2 = {q2}: {shift} in {}", s.kpr_shift_rest);
+                assert!(
+                    s.kpr_shift_rest.contains(&per_second(shift)),
+                    "{arm} q2 = {q2}: {shift} in {}",
+                    s.kpr_shift_rest
+                );
             }
         }
     }
     let (s, _) = story("ir1=3.878&pf=paper");
     // The review's independent model: −2.92 and −2.09 (to its rounding).
-    assert!(s.kpr_shift_rest.starts_with("on this arm −2.9") && s.kpr_shift_rest.ends_with("−2.09 1/s at q2 = π"), "{}", s.kpr_shift_rest);
+    assert!(
+        s.kpr_shift_rest.starts_with("on this arm −2.9") && s.kpr_shift_rest.ends_with("−2.09 1/s at q2 = π"),
+        "{}",
+        s.kpr_shift_rest
+    );
 }
 
 /// Item 4: a sampled K_pr still makes every small δ work; only the largest stable δ depends on
@@ -141,16 +149,28 @@ fn the_motor_stops_swinging_before_a_real_mode_grows() {
                 assert!(!real(with(0.99 * t.swings_below)), "{arm} α={alpha}: swings below {}", t.swings_below);
                 assert!(real(with(1.01 * t.swings_below)), "{arm} α={alpha}: real above {}", t.swings_below);
                 assert!(with(1.01 * t.swings_below).iter().all(|e| e.re < 0.0), "{arm} α={alpha}: still stable");
-                assert!(s.damping_needed.contains(&format!("below {:.0} N m s/rad", t.swings_below)), "{}", s.damping_needed);
+                assert!(
+                    s.damping_needed.contains(&format!("below {:.0} N m s/rad", t.swings_below)),
+                    "{}",
+                    s.damping_needed
+                );
             }
             assert!(with(0.99 * t.unstable_above).iter().all(|e| e.re < 0.0), "{arm} α={alpha}");
             assert!(with(1.01 * t.unstable_above).iter().any(|e| e.re > 0.0), "{arm} α={alpha}");
-            assert!(s.damping_needed.contains(&format!("beyond {:.0} N m s/rad", t.unstable_above)), "{}", s.damping_needed);
+            assert!(
+                s.damping_needed.contains(&format!("beyond {:.0} N m s/rad", t.unstable_above)),
+                "{}",
+                s.damping_needed
+            );
             assert!(s.damping_needed.contains("as δ → 0"), "{}", s.damping_needed);
         }
     }
     let (s, _) = story("pf=off");
-    assert!(s.damping_needed.contains("below 104 N m s/rad") && s.damping_needed.contains("beyond 286 N m s/rad"), "{}", s.damping_needed);
+    assert!(
+        s.damping_needed.contains("below 104 N m s/rad") && s.damping_needed.contains("beyond 286 N m s/rad"),
+        "{}",
+        s.damping_needed
+    );
     assert!(!s.damping_needed.contains("beyond which the motor no longer swings and a slow real mode grows"));
 }
 

@@ -113,7 +113,9 @@ fn what_is_said_of_the_preliminary_feedback_is_the_programs() {
         "page",
     );
     let at_pi = feedback_shift(&plant, [2.0, 2.0], PI, &k);
-    says(&minus(format!("({shift:.2} 1/s at q2 = 0, {at_pi:.2} 1/s at q2 = π)")), &page, "page");
+    // Live now, for the arm shown (issue 37): the story's on the paper's arm.
+    let live = common::session("preset=fig5.3&pf=paper").status().story.unwrap().kpr_shift_rest;
+    assert_eq!(live, minus(format!("on this arm {shift:.2} 1/s at q2 = 0, {at_pi:.2} 1/s at q2 = π")));
     says(&format!("above α = {:.2} 1/s", alpha_limit(&plant, shift)), LESSON_TEXT, "lesson");
     // At α = 5 only a window is left.
     let w = windows(&config(0.01, 5.0, PreliminaryFeedbackChoice::Paper));

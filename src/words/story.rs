@@ -104,6 +104,9 @@ pub struct Story {
     pub lag: String,
     pub lag_growth: String,
     pub lag_window: String,
+    /// How far to trust the lag law: its bias measured over a grid ([`crate::analysis::lag`]'s
+    /// constants) and whether this arm at these α lies in the grid's domain.
+    pub lag_bias: String,
     /// The loop's own rate beside the law's estimate: the law is made for the loop without K_pr, so
     /// with K_pr on the run's ln ρ/δ is another loop's.
     pub lag_compare: String,
@@ -337,10 +340,14 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     let delta = config.controller.sampling_period;
     let equations = super::equations::equations(report, &law, config.controller.alpha, delta);
     let pi = core::f64::consts::PI;
-    let lag_growth = if law.turn(delta) < pi {
+    // The law is for a swing: where A4 is two real eigenvalues there is no turn to lag behind.
+    let swings = r.real_eigenvalues().is_none();
+    let lag_growth = if !swings {
+        "none here: the motor does not swing (A4 is two real eigenvalues), so there is no turn to lag behind".into()
+    } else if law.turn(delta) < pi {
         minus(&format!(
-            "σ ≈ (3β/2) cos φ − B_v1/(2 I_r1) = {:.2} × {:.2} − {:.2} = {:.2} 1/s, an estimate: trust its sign more \
-             than its size",
+            "σ ≈ (3β/2) cos φ − B_v1/(2 I_r1) = {:.2} × {:.2} − {:.2} = {:.2} 1/s, a heuristic's estimate: near the \
+             law's edge neither its sign nor its size is to be trusted (below)",
             law.feed,
             law.lag(delta).cos(),
             law.damping,
@@ -350,15 +357,49 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         "none here: beyond ωδ = π the swing is aliased and the law says nothing".into()
     };
     let lag_window = match law.window() {
+        _ if !swings => "no window from the law: the motor does not swing here".into(),
         Some([lo, hi]) => {
             format!(
-                "ωδ from arccos(B_v1/(3β I_r1))/1.5 = {:.2}, where σ = 0, up to π: δ from {} to {} s",
+                "ωδ from arccos(B_v1/(3β I_r1))/1.5 = {:.2}, where σ = 0 (a lag φ₀ = {:.0}°), up to π: δ from {} to {} s, \
+                 by the law",
                 law.turn(lo),
+                law.zero_crossing_lag().unwrap_or(0.0).to_degrees(),
                 significant_trimmed(lo, 2),
                 significant_trimmed(hi, 3)
             )
         }
-        None => "every small δ: here the motor's damping outweighs the feed, and no lag is needed".into(),
+        None => "every small δ, by the law: here the motor's damping outweighs the feed, and no lag is needed".into(),
+    };
+    let lag_bias = {
+        use crate::analysis::lag::{GRID_DESCRIPTION, LOWER_EDGE_RATIO, LOWER_EDGE_TURN, UPPER_EDGE_TURNS};
+        let here = if !swings {
+            "This arm is outside it: its motor does not swing.".to_string()
+        } else if law.in_domain() {
+            format!("This arm at {alpha} lies inside that domain.")
+        } else if law.feed <= law.damping {
+            format!("At {alpha} this arm needs no window: the motor's damping outweighs the feed.")
+        } else {
+            format!(
+                "This arm at {alpha} lies outside that domain (3β/2 = {:.2} ω > ω/4): there the law's edge is a rougher \
+                 guide.",
+                law.feed / law.omega
+            )
+        };
+        format!(
+            "The law is a heuristic, in the manner of a describing function: it keeps only cos φ of a push delayed by \
+             1.5 δ, and the phase it assumes is not the computed one (the mechanism below). Measured against ρ over \
+             {GRID_DESCRIPTION}, the true lower edge lies between {:.2} and {:.2} times the law's: the law's edge is \
+             mostly early, and just above it the swing can still grow while σ < 0. In ωδ the true lower edges spread \
+             from {:.2} to {:.2} rad, for the law's edge arccos(B_v1/(3α I_r1))/1.5 depends on α and on B_v1/I_r1, not \
+             only on the swing. The upper edge is a separate argument: at ωδ = π the sampler cannot tell the swing's \
+             phase, and where the swing ends the window it ends between {:.2} π and {:.2} π. {here}",
+            LOWER_EDGE_RATIO[0],
+            LOWER_EDGE_RATIO[1],
+            LOWER_EDGE_TURN[0],
+            LOWER_EDGE_TURN[1],
+            UPPER_EDGE_TURNS[0],
+            UPPER_EDGE_TURNS[1]
+        )
     };
     let short_feed = {
         let steering = if r.controller_feed > 0.0 {
@@ -395,7 +436,11 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         format!(
             "On this arm α* = {:.2} 1/s, so α = 0.2 1/s is {side} it: as δ → 0 the pair goes to {pair}, {}.",
             r.alpha_star,
-            if dies { "which dies out, and the smallest δ work without Kₚᵣ" } else { "which grows: the smallest δ fail without Kₚᵣ" }
+            if dies {
+                "which dies out, and the smallest δ work without Kₚᵣ"
+            } else {
+                "which grows: the smallest δ fail without Kₚᵣ"
+            }
         )
     };
     let kpr_shift_rest = {
@@ -412,6 +457,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         )
     };
     Story {
+        lag_bias,
         short_feed,
         alpha_small,
         kpr_shift_rest,
@@ -477,7 +523,11 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
                 format!(
                     "B_v1 > {} I_r1 = {:.1} N m s/rad as δ → 0; {swing} (this arm: {} N m s/rad)",
                     // With α1 ≠ α2 the pair is fed 3β/2, β = α1 + μ (α1 − α2) (the explanation derives it).
-                    if a1 == a2 { "3α".to_string() } else { format!("3β (β = α1 + μ (α1 − α2) = {:.2} 1/s)", r.beta) },
+                    if a1 == a2 {
+                        "3α".to_string()
+                    } else {
+                        format!("3β (β = α1 + μ (α1 − α2) = {:.2} 1/s)", r.beta)
+                    },
                     t.damped_above,
                     crate::schema::format_number(plant.bv1)
                 )
