@@ -75,8 +75,8 @@ fn the_small_alpha_sentence_is_computed_for_the_arm_shown() {
         let (s, plant) = story(&format!("{arm}&pf=off"));
         let grows = grows(&plant, 0.2);
         fails += usize::from(grows);
-        assert!(s.alpha_small.contains(&format!("α* = {:.2} 1/s", alpha_star(&plant))), "{arm}: {}", s.alpha_small);
-        assert_eq!(s.alpha_small.contains("is above it"), 0.2 > alpha_star(&plant), "{arm}: {}", s.alpha_small);
+        assert_eq!(s.alpha_star, format!("{:.2} 1/s", alpha_star(&plant)), "{arm}");
+        assert_eq!(s.alpha_small.contains("is above α*"), 0.2 > alpha_star(&plant), "{arm}: {}", s.alpha_small);
         assert_eq!(s.alpha_small.contains("which grows"), grows, "{arm}: {}", s.alpha_small);
     }
     assert!(fails >= 2, "the heavier motors: {fails}");

@@ -402,30 +402,33 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         )
     };
     let short_feed = {
-        let steering = if r.controller_feed > 0.0 {
-            "steering the links feeds the swing a little"
-        } else if r.controller_feed < 0.0 {
-            "steering the links drains the swing"
-        } else {
-            "steering the links neither feeds nor drains the swing"
-        };
-        // What the pair does as δ → 0, from the loop's own limit (with a model error it is not A4).
-        let outcome = match r.real_eigenvalues().filter(|_| !model_error) {
-            Some([larger, _]) if larger > 0.0 => {
-                "the motor no longer swings, and a slow real mode grows: the smallest δ fail".to_string()
-            }
-            Some(_) => "the motor no longer swings and settles: the smallest δ work without Kₚᵣ".into(),
-            None if open_re > 0.0 => {
-                let against = if r.controller_feed > 0.0 { ", faster than the motor's damping drains it" } else { "" };
-                format!("the swing grows{against}: at small δ the ringing grows")
-            }
-            None if r.controller_feed > 0.0 => {
-                "but the motor's damping drains it faster: the ringing dies out, and the smallest δ work without Kₚᵣ"
-                    .into()
-            }
-            None => "the ringing dies out, and the smallest δ work without Kₚᵣ".into(),
-        };
-        format!("On this arm, at {alpha}, {steering}; as δ → 0 the pair goes to {open_pair}, so {outcome}.")
+        // What steering the links does to the swing, and where the pair goes as δ → 0 (from the
+        // loop's own limit: with a model error it is not A4).
+        let pair = format!("as δ → 0 the pair goes to {open_pair}");
+        let feeds = r.controller_feed > 0.0;
+        match r.real_eigenvalues().filter(|_| !model_error) {
+            Some([larger, _]) => format!(
+                "On this arm, at {alpha}, the motor is damped past its swing: {pair}, and {}.",
+                if larger > 0.0 {
+                    "a slow real mode grows: the smallest δ fail"
+                } else {
+                    "it settles: the smallest δ work without Kₚᵣ"
+                }
+            ),
+            None if open_re > 0.0 && feeds => format!(
+                "On this arm, at {alpha}, steering the links feeds the swing faster than the motor's damping drains \
+                 it: {pair}, and at small δ the ringing grows."
+            ),
+            None if open_re > 0.0 => format!("On this arm, at {alpha}, {pair}, and at small δ the ringing grows."),
+            None if feeds => format!(
+                "On this arm, at {alpha}, steering the links feeds the swing, but the motor's damping drains it \
+                 faster: {pair}, the ringing dies out, and the smallest δ work without Kₚᵣ."
+            ),
+            None => format!(
+                "On this arm, at {alpha}, steering the links drains the swing: {pair}, the ringing dies out, and the \
+                 smallest δ work without Kₚᵣ."
+            ),
+        }
     };
     let alpha_small = {
         let small = 0.2;
@@ -434,8 +437,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         let dies = at.eigenvalues.iter().all(|e| e.re < 0.0);
         let side = if small < r.alpha_star { "below" } else { "above" };
         format!(
-            "On this arm α* = {:.2} 1/s, so α = 0.2 1/s is {side} it: as δ → 0 the pair goes to {pair}, {}.",
-            r.alpha_star,
+            "On this arm α = 0.2 1/s is {side} α*: as δ → 0 the pair goes to {pair}, {}.",
             if dies {
                 "which dies out, and the smallest δ work without Kₚᵣ"
             } else {
