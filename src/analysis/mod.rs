@@ -14,6 +14,7 @@ pub mod lag;
 pub mod resonance;
 pub mod sampled;
 pub mod stability_map;
+pub mod structure;
 pub mod swing;
 pub mod windows;
 

@@ -128,6 +128,12 @@ impl LoopModel {
         &self.model
     }
 
+    /// What the predictor integrates: the controller's model of the arm linearized (the arm
+    /// itself unless `model = paper` on another arm).
+    pub(crate) fn predictor(&self) -> &LinearModel {
+        self.predictor.as_ref().unwrap_or(&self.model)
+    }
+
     /// The preliminary feedback's gain K.
     pub(crate) fn gain(&self) -> &FeedbackGain {
         &self.gain

@@ -8,6 +8,7 @@
 //! | [`verdict`] | the simulation's verdict, its growth rate, why a run diverged |
 //! | [`judgement`] | a run's judgement: headline, ρ's prediction, what was observed and why, the analysis line |
 //! | [`design`] | the preliminary feedback as a design: its pair, its price analog and sampled, in torque, its parts |
+//! | [`structure`] | section 3's structure for the arm shown: V*, the zero dynamics, A4, the index, k |
 //! | [`story`] | the explanation's live numbers, from run A's analysis |
 //! | [`equations`] | the same numbers as MathML equations |
 //! | [`settings`] | a run's settings, its feedback, a map's caption, a point of it, the errors, the stable windows of δ |
@@ -24,5 +25,6 @@ pub mod numbers;
 pub mod panels;
 pub mod settings;
 pub mod story;
+pub mod structure;
 pub mod verdict;
 pub mod work;

@@ -80,6 +80,10 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let (headline, detail) = judge_analysis(&report)
         .ok_or_else(|| Failure(format!("the linear analysis gave ρ = {}, not a number", report.spectral_radius), 2))?;
     let verdict = words::judgement::verdict(headline, &detail);
+    // Section 3's structure for the arm shown: V*, Ā1, A4, the index, k at and below it.
+    // (An arm whose linearized DAE is not regular has no such structure; the rest still stands.)
+    let structure = analysis::structure::Structure::of(&config, q2);
+    let structure_words = structure.as_ref().ok().map(|s| words::structure::structure(s, config.preliminary_feedback));
     if m.get_flag("json") {
         // Non-finite floats (e.g. ln 0) become null in serde_json's Value.
         let mut v = serde_json::to_value(&report).map_err(|e| Failure(format!("JSON encoding failed: {e}"), 1))?;
@@ -105,6 +109,16 @@ pub fn run(m: &ArgMatches) -> Res<String> {
             "torque": torque,
             "twist_parts": flexarm::control::feedback::twist_parts(&gain),
         });
+        v["structure"] = match (&structure, &structure_words) {
+            (Ok(s), Some(w)) => {
+                let mut object =
+                    serde_json::to_value(s).map_err(|e| Failure(format!("JSON encoding failed: {e}"), 1))?;
+                object["sentences"] = json!(w.lines());
+                object
+            }
+            (Err(e), _) => json!({ "error": e.to_string() }),
+            _ => serde_json::Value::Null,
+        };
         if let Some([re, im, kp, kd]) = placement {
             v["placement"] = json!({ "target": [re, im], "twist_stiffness": kp, "twist_damping": kd });
         }
@@ -122,6 +136,16 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         text += "(the closed form below is for a controller that knows this arm; the pairs above include the model error)\n";
     }
     text += &resonance_text(&report.resonance, &config);
+    text += "section 3's structure at this rest point (the predictor as δ → 0, knowing the arm; k at δ):\n";
+    match (&structure, &structure_words) {
+        (Ok(_), Some(w)) => {
+            for line in w.lines() {
+                text += &format!("  {line}\n");
+            }
+        }
+        (Err(e), _) => text += &format!("  not computed: {e}\n"),
+        _ => {}
+    }
     text += &format!(
         "stable windows of δ at these α (edges within {:.0e} s): {}\n",
         windows.tolerance,
