@@ -7,6 +7,7 @@
 use flexarm::analysis::resonance::*;
 use flexarm::analysis::*;
 use flexarm::control::feedback::*;
+use flexarm::plot::format::{minus, significant_trimmed};
 use flexarm::words::numbers::per_second;
 use flexarm::*;
 use std::f64::consts::PI;
@@ -246,4 +247,65 @@ fn the_zoom_caption_says_from_x2_and_u3_on() {
     let caption = s.status().cycle;
     assert!(caption.contains("from X₂ and U₃ on nothing it predicts depends"), "{caption}");
     assert!(caption.contains("U₂ still depends on the motor's measured angle"), "{caption}");
+}
+
+/// The paper's Section 3, visible: the page's structure sentences are the analysis' for the arm
+/// shown — V* of dimension 6, the zero dynamics at −α (the links' law), the quotient A4 the same
+/// pair the explanation quotes (with K_pr moved), the index 5 → 3, and the horizon probes.
+#[test]
+fn the_section_3_view_is_computed_for_the_arm_shown() {
+    for arm in arms() {
+        for (alpha, pf) in [(2.0, "off"), (2.0, "paper"), (0.5, "paper")] {
+            let state = format!("{arm}&alpha={alpha}&pf={pf}");
+            let (s, plant) = story(&state);
+            assert!(s.structure_v_star.contains("is 6-dimensional"), "{state}: {}", s.structure_v_star);
+            let zeros = format!("at {} 1/s (×6)", minus(&significant_trimmed(-alpha, 4)));
+            assert!(s.structure_zero_dynamics.contains(&zeros), "{state}: {}", s.structure_zero_dynamics);
+            // The quotient's A4 is the explanation's (the closed form), and with K_pr the diamond's.
+            assert!(
+                s.structure_quotient.contains(&format!("A4 = {}", s.a4)),
+                "{state}: {} vs {}",
+                s.structure_quotient,
+                s.a4
+            );
+            if pf == "paper" {
+                assert!(
+                    s.structure_quotient.contains(&s.kpr_pair),
+                    "{state}: {} vs {}",
+                    s.structure_quotient,
+                    s.kpr_pair
+                );
+            }
+            let stable = |e: [nalgebra::Complex<f64>; 2]| e.iter().all(|e| e.re < 0.0);
+            let open_stable = stable(limit(&plant, alpha));
+            assert!(
+                s.structure_quotient.contains(if open_stable { "j 1/s, stable" } else { "j 1/s, unstable" }),
+                "{state}"
+            );
+            assert!(
+                s.structure_index.starts_with("Index 5 ") && s.structure_index.contains(", 3 with the stabilized"),
+                "{state}"
+            );
+            assert!(s.structure_horizon.contains("k = 3 is already enough"), "{state}: {}", s.structure_horizon);
+        }
+    }
+}
+
+/// Every `data-live` element of the page names a field of the story, and at the paper's settings
+/// each is filled (an element naming a field that does not exist stays "—" for ever).
+#[test]
+fn every_live_number_of_the_page_is_a_field_of_the_story() {
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/www/index.html")).unwrap();
+    let (s, _) = story("pf=off&mode=full");
+    let json = serde_json::to_value(&s).unwrap();
+    let mut keys: Vec<&str> = page.split("data-live=\"").skip(1).map(|t| &t[..t.find('"').unwrap()]).collect();
+    keys.dedup();
+    assert!(keys.len() > 40, "{}", keys.len());
+    for key in keys {
+        let v = json.get(key).unwrap_or_else(|| panic!("data-live=\"{key}\" is not a field of the story"));
+        // kpr_note and model_note are empty where they do not apply.
+        if !["kpr_note", "model_note"].contains(&key) {
+            assert!(v.as_str().is_some_and(|t| !t.is_empty()), "{key} is empty");
+        }
+    }
 }

@@ -447,7 +447,14 @@ impl Session {
             } else {
                 // The settings' configuration, as the analysis: a change reaches the loop only at its
                 // next sampling instant.
-                self.a.analysis().report().map(|report| crate::words::story::story(&self.a.settings().config(), report))
+                let config = self.a.settings().config();
+                let analysis = self.a.analysis();
+                analysis.report().map(|report| {
+                    let words = analysis
+                        .structure()
+                        .map(|s| crate::words::structure::structure(s, config.preliminary_feedback));
+                    crate::words::story::story(&config, report).with_structure(words)
+                })
             },
         }
     }

@@ -13,6 +13,9 @@ use super::settings::RunSettings;
 pub struct AnalysisCache {
     key: Option<LinearSettings>,
     result: Option<Result<StabilityReport, String>>,
+    /// Section 3's structure of the same settings, computed on first use after a change (a few ms:
+    /// a drag of δ pays for it at most once per status, not once per move).
+    structure: std::cell::OnceCell<Option<crate::analysis::structure::Structure>>,
 }
 
 impl AnalysisCache {
@@ -25,7 +28,15 @@ impl AnalysisCache {
         }
         self.key = Some(key);
         self.result = Some(analyze(config, Some(q2)).map_err(|e| e.to_string()));
+        self.structure = std::cell::OnceCell::new();
         true
+    }
+
+    /// Section 3's structure of these settings (None before the first update, or where the
+    /// linearized DAE has none).
+    pub fn structure(&self) -> Option<&crate::analysis::structure::Structure> {
+        let key = self.key.as_ref()?;
+        self.structure.get_or_init(|| crate::analysis::structure::Structure::new(key).ok()).as_ref()
     }
 
     /// What the analysis was computed for (None before the first update).

@@ -122,6 +122,28 @@ pub struct Story {
     pub math_growth: String,
     pub math_lag: String,
     pub math_energy: String,
+    /// Section 3's structure (V*, the zero dynamics Ā1, the quotient A4, the index, k), one sentence
+    /// each ([`super::structure`]); empty until [`Story::with_structure`] fills them.
+    pub structure_v_star: String,
+    pub structure_zero_dynamics: String,
+    pub structure_quotient: String,
+    pub structure_index: String,
+    pub structure_horizon: String,
+}
+
+impl Story {
+    /// The story with Section 3's sentences of `words` (computed apart: the structure costs more
+    /// than the rest of the story, so the session caches it with the analysis).
+    pub fn with_structure(mut self, words: Option<super::structure::StructureWords>) -> Self {
+        if let Some(w) = words {
+            self.structure_v_star = w.v_star;
+            self.structure_zero_dynamics = w.zero_dynamics;
+            self.structure_quotient = w.quotient;
+            self.structure_index = w.index;
+            self.structure_horizon = w.horizon;
+        }
+        self
+    }
 }
 
 /// A frequency as every sentence of the story writes it: "29.40 rad/s (4.68 Hz)".
@@ -633,6 +655,11 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         math_growth: equations.growth,
         math_lag: equations.lag,
         math_energy: equations.energy,
+        structure_v_star: String::new(),
+        structure_zero_dynamics: String::new(),
+        structure_quotient: String::new(),
+        structure_index: String::new(),
+        structure_horizon: String::new(),
         energy: report.swing_energy.map_or(String::new(), |e| energy_text(&e, law.lag(delta), delta)),
         kpr_cure: kpr_cure(&paper, &kpr_pair, r, a1 == a2, &alpha),
         kpr_works: if paper.pair[0] < 0.0 {

@@ -149,8 +149,9 @@ pub fn structure(s: &Structure, pf: PreliminaryFeedbackChoice) -> StructureWords
         if s.index_suffices() { format!(", so k = {} is already enough", s.index_stabilized) } else { String::new() };
     let probes: Vec<String> = s.probes.iter().map(probe).collect();
     let horizon = format!(
-        "The paper asks k larger than the index, the schema k > {}; {forgets}{enough}. At δ = {} s, kε = {}δ: {}.",
-        s.schema_index,
+        "The paper asks k larger than the index, and this program keeps k ≥ {}; {forgets}{enough}. At δ = {} s, \
+         kε = {}δ: {}.",
+        s.schema_index + 1,
         significant_trimmed(s.delta, 3),
         significant_trimmed(s.horizon_ratio, 3),
         probes.join("; ")
