@@ -241,7 +241,7 @@ fn the_sentences_say_the_structures_numbers() {
     assert!(w.v_star.contains("is 6-dimensional (the recursion Vᵢ: 8 → 7 → 6)"), "{}", w.v_star);
     assert!(w.zero_dynamics.contains("at −2 1/s (×6)") && w.zero_dynamics.contains("minimum phase"));
     assert!(w.quotient.contains("A4 = 2.64 ± 29.58j 1/s, unstable"), "{}", w.quotient);
-    assert!(w.quotient.contains("paper K_pr moves it to −2.48 ± 29.60j 1/s, stable"), "{}", w.quotient);
+    assert!(w.quotient.contains("with paper K_pr it moves to −2.48 ± 29.60j 1/s, stable"), "{}", w.quotient);
     assert!(w.index.starts_with("Index 5 ") && w.index.contains(", 3 with the stabilized"), "{}", w.index);
     assert!(w.horizon.contains("U_k from k = 3 on, so k = 3 is already enough"), "{}", w.horizon);
     assert!(w.horizon.contains("U₂ reacts to θ(tₙ) with 3.45e4 N m/rad (∝ 1/ε²)"), "{}", w.horizon);

@@ -125,7 +125,7 @@ pub fn structure(s: &Structure, pf: PreliminaryFeedbackChoice) -> StructureWords
     );
     if s.feedback {
         quotient +=
-            &format!("; {} moves it to {}, {}", feedback_short(pf), spectrum(&s.quotient), verdict(s.quotient_stable));
+            &format!("; with {} it moves to {}, {}", feedback_short(pf), spectrum(&s.quotient), verdict(s.quotient_stable));
     }
     quotient.push('.');
     let dims = |d: &[usize]| d.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(", ");
