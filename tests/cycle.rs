@@ -194,7 +194,8 @@ fn the_prediction_forgets_the_measured_motor_after_two_steps_at_every_delta() {
                 assert!((motor.states[1] - base.states[1]).amax() > 0.01, "{case}: X_1 keeps the motor's change");
                 assert!((motor.torques[0] - base.torques[0]).amax() > 1.0, "{case}");
                 // U_2 too (the figure's caption says so: "from X₂ and U₃ on").
-                assert!((motor.torques[1] - base.torques[1]).amax() > 1.0, "{case}: U_2 keeps the motor's change");
+                // (its gain on θ is about I_r1/ε²: 0.9 N m for this 2e-3 rad at ε = 0.067 s)
+                assert!((motor.torques[1] - base.torques[1]).amax() > 0.1, "{case}: U_2 keeps the motor's change");
                 // ... while the same change of link 1 moves U_k.
                 let d_link = (link.torques[k - 1] - u_k).amax();
                 assert!(d_link > 1e3 * (motor.torques[k - 1] - u_k).amax().max(1e-12), "{case}: {d_link:e}");
