@@ -39,6 +39,11 @@ fn story(state: &str) -> (flexarm::words::story::Story, PlantParameters) {
 fn arms() -> Vec<String> {
     let mut arms: Vec<String> = flexarm::session::presets::ARMS.iter().map(|p| format!("arm={}", p.id)).collect();
     arms.push("ir1=3.878".into());
+    // A small grid beyond the presets: a softer spring with a lighter motor, a stiffer spring with a
+    // damped motor, a heavy lightly damped motor, a long first link without coupling.
+    for arm in ["k1=576.3&ir1=0.9695", "k1=2305.2&bv1=4.2", "ir1=3.878&bv1=0.7", "a3=0&a1=2.5&bv2=1"] {
+        arms.push(arm.into());
+    }
     arms
 }
 
