@@ -314,3 +314,19 @@ fn every_live_number_of_the_page_is_a_field_of_the_story() {
         }
     }
 }
+
+/// The lag law's measured bounds are claimed for an arm only where the grid they were measured on
+/// covers it (α = 5 1/s lies beyond the grid's 0.5–3 1/s; the heavier motor's I_r1 × 4 within it).
+#[test]
+fn the_lag_laws_bounds_are_claimed_only_inside_the_grid() {
+    for (state, inside) in [
+        ("pf=off", true),
+        ("pf=off&alpha=5", false),
+        ("arm=heavier&pf=off", true),
+        ("k1=11526&pf=off", false),
+        ("a3=0&pf=off", false),
+    ] {
+        let (s, _) = story(state);
+        assert_eq!(s.lag_bias.contains("outside the grid measured"), !inside, "{state}: {}", s.lag_bias);
+    }
+}

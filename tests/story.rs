@@ -245,7 +245,7 @@ fn what_rho_certifies_is_said_with_the_programs_numbers() {
         }
     }
     assert!(largest > 0.003 && largest < 0.0045, "{largest}");
-    says("by up to 0.004 s between q2 = 0 and q2 = π", &page, "page");
+    says("by up to 0.004 s as q2 goes from 0 to π (on the paper's arm)", &page, "page");
 }
 
 /// The explanation's live numbers are the report's: the same A4, the same loop pole, and the

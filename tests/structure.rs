@@ -245,7 +245,11 @@ fn the_sentences_say_the_structures_numbers() {
     assert!(w.index.starts_with("Index 5 ") && w.index.contains(", 3 with the stabilized"), "{}", w.index);
     assert!(w.horizon.contains("U_k from k = 3 on, so k = 3 is already enough"), "{}", w.horizon);
     assert!(w.horizon.contains("U₂ reacts to θ(tₙ) with 3.45e4 N m/rad (∝ 1/ε²)"), "{}", w.horizon);
-    assert!(w.horizon.contains("k = 3 (m = 2): no gain on θ, θ̇, ρ = 0.9808"), "{}", w.horizon);
+    assert!(w.horizon.contains("k = 3 (m = 2, kε = 1.5δ): no gain on θ, θ̇, ρ = 0.9808"), "{}", w.horizon);
+    assert!(w.horizon.contains("k = 1 (m = 1, kε = 1δ)"), "k = 1 cannot reach 1.5δ with ε ≤ δ: {}", w.horizon);
+    // The zeros are the law's: the arm with its links as output has none of its own.
+    assert_eq!(s.arm_zeros, 0);
+    assert!(w.zero_dynamics.contains("no finite zeros of its own"), "{}", w.zero_dynamics);
     // Other settings, other numbers: unequal α, no feedback, the heavier motor.
     let heavier = arm("heavier").unwrap().plant();
     let s = Structure::of(&config(heavier, [0.5, 2.0], PreliminaryFeedbackChoice::Off), Some(0.0)).unwrap();
@@ -255,7 +259,7 @@ fn the_sentences_say_the_structures_numbers() {
     let upper = if a4[0].im > 0.0 { a4[0] } else { a4[1] };
     let pair = format!("{:.2} ± {:.2}j 1/s", upper.re, upper.im).replace('-', "−");
     assert!(w.quotient.contains(&format!("A4 = {pair}")), "{} vs {pair}", w.quotient);
-    assert!(!w.quotient.contains("moves it"), "no feedback, no move: {}", w.quotient);
+    assert!(!w.quotient.contains("K_pr it moves to"), "no feedback, no move: {}", w.quotient);
     assert!(w.horizon.contains(&format!("{:.2e}", heavier.ir1 / (0.01f64 / (4.0 / 3.0)).powi(2))), "{}", w.horizon);
 }
 

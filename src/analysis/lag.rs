@@ -59,6 +59,25 @@ pub const LOWER_EDGE_TURN: [f64; 2] = [0.18, 1.21];
 /// range), it ends past the lower bound.
 pub const UPPER_EDGE_TURNS: [f64; 2] = [0.94, 1.11];
 
+/// Whether the grid the bounds are measured over covers this arm and α: α1 = α2 within
+/// [`GRID_ALPHA`]'s span, K1, I_r1 and B_v1 within their factors' span of the paper's, and the rest
+/// of the arm the paper's (the grid kept it so).
+pub fn grid_covers(plant: &crate::model::PlantParameters, alpha: [f64; 2]) -> bool {
+    let paper = crate::model::PlantParameters::default();
+    let within = |v: f64, span: &[f64]| {
+        let (lo, hi) = (span[0], span[span.len() - 1]);
+        v >= lo * (1.0 - 1e-9) && v <= hi * (1.0 + 1e-9)
+    };
+    let rest_is_papers =
+        crate::model::PlantParameters { k1: paper.k1, ir1: paper.ir1, bv1: paper.bv1, ..*plant } == paper;
+    alpha[0] == alpha[1]
+        && within(alpha[0], &GRID_ALPHA)
+        && within(plant.k1 / paper.k1, &GRID_STIFFNESS)
+        && within(plant.ir1 / paper.ir1, &GRID_MOTOR_INERTIA)
+        && within(plant.bv1 / paper.bv1, &GRID_MOTOR_DAMPING)
+        && rest_is_papers
+}
+
 /// The lag law of one loop's resonance (its closed-form feed and damping, its swing ω).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LagLaw {

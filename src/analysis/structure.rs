@@ -145,6 +145,10 @@ pub struct Structure {
     pub index_path: usize,
     /// dim 𝒲ᵢ of its second Wong sequence, 𝒲₀ = {0} first, up to 𝒲* (each once).
     pub index_path_sequence: Vec<usize>,
+    /// The finite zeros of the arm itself with its links as output (the path pencil's finite
+    /// eigenvalues, its two idle states left out): 0 — the flexible-joint arm has none, so the zero
+    /// dynamics of the stabilized constraint are the law's roots alone.
+    pub arm_zeros: usize,
     /// The index with the stabilized constraint (4.3) and the integrators w (4.2).
     pub index_stabilized: usize,
     pub index_stabilized_sequence: Vec<usize>,
@@ -206,6 +210,8 @@ impl Structure {
             feedback: gain.iter().any(|g| *g != 0.0),
             invariance_residual: open.invariance_residual.max(with.invariance_residual),
             index_path,
+            // 10 = 8 states and inputs + 2 idle states; 𝒲* is the infinite part.
+            arm_zeros: 8usize.saturating_sub(*index_path_sequence.last().unwrap_or(&0)),
             index_path_sequence,
             index_stabilized,
             index_stabilized_sequence,

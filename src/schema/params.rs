@@ -148,8 +148,9 @@ pub const TWIST_DAMPING: Param = Param {
     kind: Kind::Number(gain_spec(200.0, 16.0)),
     scope: Scope::Run,
     help: "With pf = twist: a damper between motor and link 1, applied by the motor, T1 += k_d (q̇1 − θ̇). The \
-           swing's real part is Re A4 = 3α/2 − (Bv1 + k_d)/(2 Ir1): damped for k_d > 3α Ir1 − Bv1, up to where the \
-           motor stops swinging and a slow real mode grows.",
+           swing's real part is Re A4 = 3α/2 − (Bv1 + k_d)/(2 Ir1): damped for k_d > 3α Ir1 − Bv1 (as δ → 0); \
+           a stronger damper first stops the motor swinging (two real eigenvalues, still stable) and, further up, \
+           where det A4 = 0, lets a slow real mode grow.",
 };
 
 /// An LQ weight: positive, on a log scale over [`control`] (the limits a decade beyond it each way).

@@ -64,9 +64,15 @@ fn inner_line(name: &str, w: Option<&StableWindows>) -> String {
     let cure = if small_delta_cured(w) { " — every small δ works" } else { " — small δ fail" };
     let max = match largest_stable_delta(w) {
         Some(d) if d >= w.range[1] => format!("; it never fails up to {} s", w.range[1]),
-        Some(d) if w.windows.len() > 1 => {
-            format!("; δ_max = {} s (then unstable but for islands)", significant_trimmed(d, 3))
-        }
+        Some(d) if w.windows.len() > 1 => match w.windows.last() {
+            // A last window that runs to the range's end is no island.
+            Some(last) if last[1] >= w.range[1] => format!(
+                "; δ_max = {} s (then unstable, and stable again from {} s to the end of the range)",
+                significant_trimmed(d, 3),
+                significant_trimmed(last[0], 3)
+            ),
+            _ => format!("; δ_max = {} s (then unstable but for islands)", significant_trimmed(d, 3)),
+        },
         Some(d) => format!("; δ_max = {} s", significant_trimmed(d, 3)),
         None => String::new(),
     };

@@ -396,6 +396,8 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         use crate::analysis::lag::{GRID_DESCRIPTION, LOWER_EDGE_RATIO, LOWER_EDGE_TURN, UPPER_EDGE_TURNS};
         let here = if !swings {
             "This arm is outside it: its motor does not swing.".to_string()
+        } else if !crate::analysis::lag::grid_covers(plant, config.controller.alpha) {
+            format!("This arm at {alpha} lies outside the grid measured: the bounds are not known to hold here.")
         } else if law.in_domain() {
             format!("This arm at {alpha} lies inside that domain.")
         } else if law.feed <= law.damping {

@@ -78,7 +78,12 @@ fn growth(order: f64) -> String {
 /// ρ = 2.036".
 fn probe(p: &HorizonProbe) -> String {
     let loop_rho = p.rho.map_or("ρ not computable".into(), |r| format!("ρ = {}", rho(r)));
-    let head = format!("k = {} (m = {})", p.k, significant_trimmed(p.eps_ratio, 3));
+    let head = format!(
+        "k = {} (m = {}, kε = {}δ)",
+        p.k,
+        significant_trimmed(p.eps_ratio, 3),
+        significant_trimmed(p.k as f64 / p.eps_ratio, 3)
+    );
     if p.torque_forgets {
         return format!("{head}: no gain on θ, θ̇, {loop_rho}");
     }
@@ -109,23 +114,39 @@ pub fn structure(s: &Structure, pf: PreliminaryFeedbackChoice) -> StructureWords
         s.v_star_dim,
         sequence.join(" → ")
     );
-    let phase = if s.minimum_phase {
-        "stable, the arm being minimum phase"
-    } else {
-        "not all stable: the arm is not minimum phase here"
+    // The zeros are those of the constraint (4.3) as output: the law's roots, plus any finite
+    // zeros of the arm itself with its links as output (none for this arm).
+    let why = match (s.arm_zeros, s.minimum_phase) {
+        (0, true) => "the roots of the law (4.3) chosen for the links, stable by design: the arm with its links as \
+                      output has no finite zeros of its own (minimum phase)"
+            .to_string(),
+        (n, true) => format!("the law's roots and the arm's own {n} finite zeros, all stable (minimum phase)"),
+        (n, false) => {
+            format!("not all stable: the arm's own {n} finite zeros include unstable ones (not minimum phase)")
+        }
     };
-    let zero_dynamics =
-        format!("On V* the controller places Ā1, the zero dynamics, at {}: {phase}.", spectrum(&s.zero_dynamics));
-    let verdict = |stable: bool| if stable { "stable" } else { "unstable" };
-    let alone = if s.limit_ignores_motor { " alone (its limit feedback has no gain on θ, θ̇)" } else { "" };
-    let mut quotient = format!(
-        "It leaves the quotient ℝ⁸/V*{alone}: A4 = {}, {}",
-        spectrum(&s.quotient_open),
-        verdict(s.quotient_open_stable)
+    let zero_dynamics = format!(
+        "On V* the controller places Ā1, the zero dynamics of the constraint as output, at {}: {why}.",
+        spectrum(&s.zero_dynamics)
     );
+    let verdict = |stable: bool| if stable { "stable" } else { "unstable" };
+    let (alone, moved) = if s.limit_ignores_motor {
+        (
+            "Its limit feedback has no gain on θ, θ̇, which complete V*: on the quotient ℝ⁸/V* the closed loop induces",
+            " — the arm's swing as the law moves it, not a pole the controller places",
+        )
+    } else {
+        ("On the quotient ℝ⁸/V* the closed loop induces", "")
+    };
+    let mut quotient =
+        format!("{alone} A4 = {}, {}{moved}", spectrum(&s.quotient_open), verdict(s.quotient_open_stable));
     if s.feedback {
-        quotient +=
-            &format!("; with {} it moves to {}, {}", feedback_short(pf), spectrum(&s.quotient), verdict(s.quotient_stable));
+        quotient += &format!(
+            "; with {} it moves to {}, {}",
+            feedback_short(pf),
+            spectrum(&s.quotient),
+            verdict(s.quotient_stable)
+        );
     }
     quotient.push('.');
     let dims = |d: &[usize]| d.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(", ");
@@ -150,7 +171,7 @@ pub fn structure(s: &Structure, pf: PreliminaryFeedbackChoice) -> StructureWords
     let probes: Vec<String> = s.probes.iter().map(probe).collect();
     let horizon = format!(
         "The paper asks k larger than the index, and this program keeps k ≥ {}; {forgets}{enough}. At δ = {} s, \
-         kε = {}δ: {}.",
+         with kε as near this run's {}δ as ε ≤ δ allows: {}.",
         s.schema_index + 1,
         significant_trimmed(s.delta, 3),
         significant_trimmed(s.horizon_ratio, 3),

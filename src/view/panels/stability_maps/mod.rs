@@ -290,8 +290,8 @@ impl PanelView for StabilityMaps {
             items.push(item(
                 Glyph::Dashed,
                 palette::A4_FEEDBACK,
-                "design map: the δ → 0 pair is damped between the dashed lines, k_d = 3α I_r1 − B_v1 and where the motor \
-                 stops swinging (a slow real mode grows above it)",
+                "design map: the δ → 0 pair is stable between the dashed lines, k_d = 3α I_r1 − B_v1 and where det A4 = 0 \
+                 (a slow real mode grows above it; the motor stops swinging well before, still stable)",
             ));
         }
         vec![LegendGroup { title: "stability maps", items, scale: Some(map_scale(frame.options.measure)) }]
