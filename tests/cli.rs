@@ -180,7 +180,7 @@ fn bad_input_fails_cleanly_with_status_2() {
     let cases: [(&[&str], &[&str]); 9] = [
         (&["simulate", "--delta", "-1"], &["δ", "sampling_period", "--delta"]),
         (&["simulate", "--pf", "maybe"], &["--pf"]),
-        (&["simulate", "--k", "2"], &["k (horizon", "--k"]),
+        (&["simulate", "--k", "0"], &["k (horizon", "--k"]),
         (&["simulate", "--bogus"], &["--bogus"]),
         (&["frobnicate"], &["frobnicate"]),
         (&["simulate", "--delta"], &["--delta"]),

@@ -283,3 +283,24 @@ fn analyze_prints_the_structure_and_exports_it() {
     assert_eq!(s["sentences"].as_array().unwrap().len(), 5);
     assert_eq!(s["feedback"], false);
 }
+
+/// "Try k below it": the schema lets k go below the DAE's index, and the simulation shows what the
+/// structure says — with k = 2 the applied torque is the impulsive U₂ and the arm is thrown off
+/// course at once; with k = 3, the index, it is as stable as with the paper's k = 12.
+#[test]
+fn below_the_index_the_simulated_arm_is_thrown_off_at_the_index_it_is_not() {
+    let run = |k: &str, m: &str| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_flexarm"))
+            .args(["simulate", "--k", k, "--eps-ratio", m, "--duration", "2"])
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let below = run("2", "1.33");
+    assert!(below.contains("Diverged") && below.contains("a tracking error passed π rad"), "{below}");
+    for (k, m) in [("3", "2"), ("12", "8")] {
+        let at = run(k, m);
+        assert!(at.contains("verdict                     Stable"), "k = {k}: {at}");
+    }
+}

@@ -45,9 +45,9 @@
 //! and before that it enters with gains growing as 1/ε². [`HorizonProbe`] measures it at the
 //! settings' δ: the gain from θ and θ̇ to the predictor's torque (U_k of eq. (2.4); with a
 //! preliminary feedback the V_k on top of K x) and to its state X_k, and ρ of the sampled loop with
-//! that k (the schema allows k ≥ 4 only; these are computed past it). What it finds, on every arm
+//! that k (the schema's slider starts at 4; k = 1 … 3 can be typed or linked to be tried). What it finds, on every arm
 //! preset, α and rest angle `tests/structure.rs` tries: X_k forgets from k = 2, U_k from k = 3,
-//! so k equal to the index is already enough (the paper and the schema ask k > 3); k = 1 and 2
+//! so k equal to the index is already enough (the paper asks k > 3); k = 1 and 2
 //! give ρ > 1.3 at δ = 0.01 s, k = 3 the ρ of k = 4 to 1e-3.
 
 use nalgebra::{Complex, SMatrix};
@@ -152,7 +152,7 @@ pub struct Structure {
     /// The index with the stabilized constraint (4.3) and the integrators w (4.2).
     pub index_stabilized: usize,
     pub index_stabilized_sequence: Vec<usize>,
-    /// The index the schema's k must exceed ([`DAE_INDEX`]).
+    /// The index the paper asks k to exceed ([`DAE_INDEX`]).
     pub schema_index: usize,
     /// δ and kε/δ of the settings, s and 1.
     pub delta: f64,

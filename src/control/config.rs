@@ -33,7 +33,9 @@ impl Default for ControllerParameters {
     }
 }
 
-/// The index of the stabilized DAE (4.1)–(4.3) in (X, U); the horizon must exceed it.
+/// The index of the stabilized DAE (4.1)–(4.3) in (X, U). The paper asks the horizon k to exceed
+/// it; `analysis::structure` finds k equal to it already enough (U_k forgets the inconsistent start
+/// from k = 3 on), and the schema lets k go below it, to be tried.
 pub const DAE_INDEX: usize = 3;
 
 impl ControllerParameters {

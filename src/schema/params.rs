@@ -288,10 +288,13 @@ pub const K: Param = Param {
     unit: "",
     name: "k (horizon steps)",
     kind: Kind::Number(NumberSpec {
-        min: 4.0,
+        min: 1.0,
         min_inclusive: true,
         max: 1000.0,
-        allowed: Some("must be an integer greater than the DAE index 3 (and at most 1000)"),
+        allowed: Some(
+            "must be an integer from 1 to 1000 (the paper asks k above the DAE's index 3; below it the applied \
+             torque keeps the DAE's impulsive start, which you may try)",
+        ),
         control: [4.0, 24.0],
         scale: Scale::Linear,
         digits: 2,
@@ -299,7 +302,9 @@ pub const K: Param = Param {
         default: 12.0,
     }),
     scope: Scope::Run,
-    help: "The predictor takes k backward-Euler steps of ε = δ/m; δ ≤ kε ≤ 2δ, i.e. k/2 ≤ m ≤ k.",
+    help: "The predictor takes k backward-Euler steps of ε = δ/m; δ ≤ kε ≤ 2δ, i.e. k/2 ≤ m ≤ k. The paper asks k \
+           above the DAE's index 3: its first two torques are impulsive (the DAE jumps to consistency), and with \
+           k = 1 or 2 the applied torque is one of them.",
 };
 
 /// m, so that ε = δ/m.

@@ -170,9 +170,9 @@ pub fn structure(s: &Structure, pf: PreliminaryFeedbackChoice) -> StructureWords
         if s.index_suffices() { format!(", so k = {} is already enough", s.index_stabilized) } else { String::new() };
     let probes: Vec<String> = s.probes.iter().map(probe).collect();
     let horizon = format!(
-        "The paper asks k larger than the index, and this program keeps k ≥ {}; {forgets}{enough}. At δ = {} s, \
-         with kε as near this run's {}δ as ε ≤ δ allows: {}.",
-        s.schema_index + 1,
+        "The paper asks k larger than the index {}; {forgets}{enough}. At δ = {} s, with kε as near this run's {}δ \
+         as ε ≤ δ allows: {}.",
+        s.schema_index,
         significant_trimmed(s.delta, 3),
         significant_trimmed(s.horizon_ratio, 3),
         probes.join("; ")
