@@ -304,3 +304,18 @@ fn below_the_index_the_simulated_arm_is_thrown_off_at_the_index_it_is_not() {
         assert!(at.contains("verdict                     Stable"), "k = {k}: {at}");
     }
 }
+
+/// k and m fit only each other (k/2 ≤ m ≤ k): a link or a Try button giving both, in either
+/// order, is read whole — not refused key by key against the other's old value.
+#[test]
+fn a_link_with_k_below_the_index_and_its_m_is_read_whole() {
+    for state in ["k=2&eps_ratio=1.33", "eps_ratio=1.33&k=2", "k=20&eps_ratio=14"] {
+        let (s, notices) = flexarm::session::Session::open(state);
+        assert!(notices.is_empty(), "{state}: {notices:?}");
+        let c = s.run(0).unwrap().closed_loop().config().controller;
+        assert!(c.horizon_steps == 2 || c.horizon_steps == 20, "{state}: {c:?}");
+    }
+    // A k that fits no m given is still refused, with its notice.
+    let (_, notices) = flexarm::session::Session::open("k=2");
+    assert!(notices.iter().any(|n| n.key == "k"), "{notices:?}");
+}

@@ -237,6 +237,9 @@ impl Settings {
             set_aside
                 .extend(["views", "strip"].into_iter().filter(|k| pairs.iter().any(|(key, _)| key == k)).map(ignored));
         }
+        // Values that parse but do not run with the others as they stand (k without its m): tried
+        // again together once every key is read, so a link may give both in any order.
+        let mut deferred: Vec<(&'static schema::Param, &String, Error)> = Vec::new();
         for p in schema::PARAMS {
             // The last occurrence of a key wins, as in URLSearchParams.get of a rewritten URL.
             let Some((_, text)) = pairs.iter().rev().find(|(k, _)| k == p.key) else { continue };
@@ -276,7 +279,23 @@ impl Settings {
                     }
                     e => e,
                 };
-                fail(p.key, e)?;
+                // Only a value that was read but does not fit the others waits for them.
+                if source == Source::Page && self.set_text(p.key, text, source).is_ok() {
+                    *self = before;
+                    deferred.push((p, text, e));
+                } else {
+                    fail(p.key, e)?;
+                }
+            }
+        }
+        if !deferred.is_empty() {
+            let before = *self;
+            let together = deferred.iter().all(|(p, text, _)| self.set_text(p.key, text, source).is_ok());
+            if !(together && self.validate().is_ok()) {
+                *self = before;
+                for (p, _, e) in deferred {
+                    fail(p.key, e)?;
+                }
             }
         }
         notices.extend(set_aside);

@@ -1,13 +1,14 @@
 // The explanation's "Try:" buttons: each names an action as `kind:args` (data-try), e.g.
 // `preset:fig5.3`, `pf:paper`, `delta:0.04`, `map:off:0.05:2`, `compare:on`, or any settings as
-// `set:key:value[:key:value…]` (`set:alpha1:0.5:alpha2:2`).
+// `set:key:value[:key:value…]` (`set:alpha1:0.5:alpha2:2`), or settings read together as a state
+// string, `state:k=2&eps_ratio=1.33` (values that only fit each other, as k and m).
 
 /**
  * The action a button's spec names (pure).
  * @param {string} spec
  * @returns {{ kind: 'preset', id: string } | { kind: 'set', key: string, value: string }
  *   | { kind: 'map', side: string, delta: number, alpha: number }
- *   | { kind: 'sets', pairs: [string, string][] } | null}
+ *   | { kind: 'sets', pairs: [string, string][] } | { kind: 'state', query: string } | null}
  */
 export function parseTry(spec) {
   const [kind, a, b, c] = String(spec).split(':');
@@ -20,6 +21,8 @@ export function parseTry(spec) {
       for (let i = 0; i < words.length; i += 2) pairs.push([words[i], words[i + 1]]);
       return { kind: 'sets', pairs };
     }
+    case 'state':
+      return a ? { kind: 'state', query: a } : null;
     case 'preset':
       return a ? { kind: 'preset', id: a } : null;
     case 'pf':
@@ -41,7 +44,7 @@ export function parseTry(spec) {
 /**
  * Wires every `button.try`.
  * @param {{ preset: (id: string) => void, set: (key: string, value: string) => void,
- *   sets: (pairs: [string, string][]) => void,
+ *   sets: (pairs: [string, string][]) => void, state: (query: string) => void,
  *   map: (side: string, delta: number, alpha: number) => void, after: () => void }} on
  */
 export function wireTryButtons(on) {
@@ -52,6 +55,7 @@ export function wireTryButtons(on) {
       if (action.kind === 'preset') on.preset(action.id);
       else if (action.kind === 'set') on.set(action.key, action.value);
       else if (action.kind === 'sets') on.sets(action.pairs);
+      else if (action.kind === 'state') on.state(action.query);
       else on.map(action.side, action.delta, action.alpha);
       on.after();
     });

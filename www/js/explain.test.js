@@ -8,6 +8,7 @@ test('every kind of Try button', () => {
   assert.deepEqual(parseTry('alpha:0.5'), { kind: 'set', key: 'alpha', value: '0.5' });
   assert.deepEqual(parseTry('compare:on'), { kind: 'set', key: 'compare', value: '1' });
   assert.deepEqual(parseTry('map:off:0.05:2'), { kind: 'map', side: 'off', delta: 0.05, alpha: 2 });
+  assert.deepEqual(parseTry('state:k=2&eps_ratio=1.33'), { kind: 'state', query: 'k=2&eps_ratio=1.33' });
 });
 
 test('malformed specs do nothing', () => {

@@ -130,6 +130,8 @@ function wireTry(session, { change, unlinkAlpha }, sheet) {
       if (pairs.some(([k]) => k === 'alpha1' || k === 'alpha2')) unlinkAlpha();
       change(() => pairs.forEach(([k, v]) => session.set(k, v)));
     },
+    // Settings that only fit together (k and m): read at once, as a link is.
+    state: (query) => change(() => session.readState(query)),
     map: (side, delta, alpha) => change(() => {
       session.set('map', '1');
       session.setFromMap(side, delta, alpha);
