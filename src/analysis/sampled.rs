@@ -455,9 +455,16 @@ pub fn spectral_radius(config: &SimulationConfig, q2: Option<f64>) -> Result<f64
 /// nalgebra's solver, which does not balance, gave ρ = 70571 where the balanced map gives 1.0267.
 fn balanced(m: &Mat10) -> Mat10 {
     let mut a = *m;
-    if !a.iter().all(|v| v.is_finite()) {
-        return a;
+    if a.iter().all(|v| v.is_finite()) {
+        balance(&mut a);
     }
+    a
+}
+
+/// Balances `a` in place (D⁻¹ a D, D diagonal powers of 2, see [`balanced`]) and returns D's
+/// diagonal. `a` must be finite.
+pub(crate) fn balance(a: &mut Mat10) -> [f64; 10] {
+    let mut scale = [1.0; 10];
     // Sweeps until no scaling shrinks a row and column by 5 %; a few suffice, the cap is a guard.
     for _ in 0..100 {
         let mut changed = false;
@@ -484,6 +491,7 @@ fn balanced(m: &Mat10) -> Mat10 {
             }
             if (col * f + row / f) < 0.95 * sum {
                 changed = true;
+                scale[i] *= f;
                 for j in 0..10 {
                     a[(i, j)] /= f;
                     a[(j, i)] *= f;
@@ -494,5 +502,5 @@ fn balanced(m: &Mat10) -> Mat10 {
             break;
         }
     }
-    a
+    scale
 }

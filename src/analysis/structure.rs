@@ -550,42 +550,7 @@ fn balanced(f: &Mat10) -> Result<(Mat10, [f64; 10], f64), Error> {
         return Err(Error::Analysis("the linearized DAE has a non-finite entry"));
     }
     let mut a = *f;
-    let mut scale = [1.0; 10];
-    for _ in 0..100 {
-        let mut changed = false;
-        for i in 0..10 {
-            let (mut col, mut row) = (0.0, 0.0);
-            for j in (0..10).filter(|&j| j != i) {
-                col += a[(j, i)].abs();
-                row += a[(i, j)].abs();
-            }
-            if col == 0.0 || row == 0.0 {
-                continue;
-            }
-            let sum = col + row;
-            let mut g = 1.0;
-            let mut c = col;
-            while c < row / 2.0 && g < 1e150 {
-                g *= 2.0;
-                c *= 4.0;
-            }
-            while c > row * 2.0 && g > 1e-150 {
-                g /= 2.0;
-                c /= 4.0;
-            }
-            if col * g + row / g < 0.95 * sum {
-                changed = true;
-                scale[i] *= g;
-                for j in 0..10 {
-                    a[(i, j)] /= g;
-                    a[(j, i)] *= g;
-                }
-            }
-        }
-        if !changed {
-            break;
-        }
-    }
+    let scale = super::sampled::balance(&mut a);
     let norm = a.norm();
     if norm == 0.0 {
         return Err(Error::Analysis("the linearized DAE is zero"));
