@@ -54,7 +54,7 @@ fn arms() -> Vec<String> {
 fn in_short_says_what_the_controller_does_to_the_swing_on_the_arm_shown() {
     let page = page();
     assert!(!page.contains("measures only the links"), "the controller measures the whole state");
-    assert!(page.contains("the torque it computes has exactly zero gain on the motor's angle and speed"));
+    assert!(page.contains("the torque it computes (with k ≥ 3 steps, as the paper's k = 12) has exactly zero gain on the motor's angle and speed"));
     assert!(page.contains(r#"<span data-live="short_feed">"#));
     let mut both = [false; 2];
     for arm in arms() {
@@ -309,7 +309,7 @@ fn every_live_number_of_the_page_is_a_field_of_the_story() {
     for key in keys {
         let v = json.get(key).unwrap_or_else(|| panic!("data-live=\"{key}\" is not a field of the story"));
         // kpr_note and model_note are empty where they do not apply.
-        if !["kpr_note", "model_note"].contains(&key) {
+        if !["kpr_note", "model_note", "horizon_note"].contains(&key) {
             assert!(v.as_str().is_some_and(|t| !t.is_empty()), "{key} is empty");
         }
     }
@@ -329,4 +329,60 @@ fn the_lag_laws_bounds_are_claimed_only_inside_the_grid() {
         let (s, _) = story(state);
         assert_eq!(s.lag_bias.contains("outside the grid measured"), !inside, "{state}: {}", s.lag_bias);
     }
+}
+
+/// A second cold review: the paper's gains at the analysis' rest point are not the whole story
+/// when the repeating slew also holds at its other end (I_r1 = 3.878 at α = 2: stable at q2 = 0,
+/// +0.34 ± 23.72j at q2 = 3π/2), and the α limits are said to be this rest point's.
+#[test]
+fn the_cure_names_its_rest_point_and_the_other_end_where_it_differs() {
+    let (s, plant) = story("ir1=3.878&pf=paper&repeat=1");
+    let linear = linearize_at_rest(&plant, [2.0; 2], [0.5 * PI, 1.5 * PI]);
+    let there = limit_pair(&linear, &paper_gain()).unwrap().eigenvalues;
+    assert!(there.iter().any(|e| e.re > 0.0), "the other end is unstable: {there:?}");
+    for text in [&s.kpr_cure, &s.kpr_works] {
+        assert!(text.contains("at this rest point (q2 = 0 rad)"), "{text}");
+        assert!(text.contains("other end (q2 = 4.71 rad)") && text.contains("small δ fail there"), "{text}");
+    }
+    // A single slew rests at its end only: no such clause.
+    let (s, _) = story("ir1=3.878&pf=paper&repeat=0");
+    assert!(!s.kpr_cure.contains("other end"), "{}", s.kpr_cure);
+    // Where both ends agree, nothing is added (the paper's arm at α = 2).
+    let (s, _) = story("pf=paper&repeat=1");
+    assert!(!s.kpr_cure.contains("other end"), "{}", s.kpr_cure);
+}
+
+/// Below the DAE's index (k = 2) the explanation says what no longer holds, and names no flexible
+/// pair, A4 limit or energy balance of a mode that has none.
+#[test]
+fn below_the_index_the_explanation_says_what_no_longer_holds() {
+    let (s, _) = story("k=2&eps_ratio=1.33&pf=paper");
+    assert!(s.horizon_note.starts_with("k = 2 is below the DAE's index 3"), "{}", s.horizon_note);
+    assert!(s.short_feed.contains("there is no δ → 0 pair"), "{}", s.short_feed);
+    assert!(s.kpr_works.starts_with("not while k = 2"), "{}", s.kpr_works);
+    assert!(!s.kpr_cure.contains("every small δ works"), "{}", s.kpr_cure);
+    assert!(s.loop_limit.starts_with("nothing"), "{}", s.loop_limit);
+    assert!(s.energy.is_empty(), "{}", s.energy);
+    let (s, _) = story("pf=paper");
+    assert!(s.horizon_note.is_empty());
+}
+
+/// A strong twist damper makes the δ → 0 pair two real modes (−6.36 and −65.72 at k_d = 150): the
+/// loop's flexible pair is the two real poles nearest them, not the links' law's near −α.
+#[test]
+fn a_real_flexible_pair_is_the_one_nearest_its_limit() {
+    let (s, _) = story("pf=twist&twist_damping=150");
+    assert!(s.loop_limit.contains("−6.36 and −65.72"), "{}", s.loop_limit);
+    assert!(s.loop_pair.contains("−5.53 and −67.10"), "{}", s.loop_pair);
+    assert!(s.energy.contains("two real modes, not a swing"), "{}", s.energy);
+}
+
+/// Which viscous friction damps the arm's own pair is computed (on the heavier motor B_v2 gives
+/// most of it).
+#[test]
+fn the_arms_damping_is_split_as_computed() {
+    let (s, _) = story("pf=off");
+    assert!(s.arm_damping.starts_with("mostly the motor's B_v1"), "{}", s.arm_damping);
+    let (s, _) = story("arm=heavier&pf=off");
+    assert!(s.arm_damping.starts_with("mostly joint 2's B_v2"), "{}", s.arm_damping);
 }

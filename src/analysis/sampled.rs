@@ -317,6 +317,27 @@ impl StabilityReport {
     /// Nyquist frequency π/δ, and at it split into two real negative eigenvalues. The pair is the
     /// eigenvalue whose angle is nearest that, with its conjugate (or, real, its real twin).
     pub fn flexible_pair(&self) -> [Option<usize>; 2] {
+        // A pair damped past its swing (two real eigenvalues as δ → 0, a strong twist damper) does
+        // not turn: every real pole has angle 0, and the pair is the two real poles whose s are
+        // nearest the limit's two — not the slow modes the links' law places near −α.
+        let [[r0, i0], [r1, i1]] = self.limit_pair;
+        if i0 == 0.0 && i1 == 0.0 && r0.is_finite() && r1.is_finite() {
+            let real_s = |p: &Pole| match p.continuous {
+                Some([re, im]) if im.abs() <= 1e-9 * re.abs().max(1e-300) => Some(re),
+                _ => None,
+            };
+            let nearest = |target: f64, skip: Option<usize>| {
+                self.poles
+                    .iter()
+                    .enumerate()
+                    .filter(|(j, _)| Some(*j) != skip)
+                    .filter_map(|(j, p)| real_s(p).map(|re| (j, (re - target).abs())))
+                    .min_by(|a, b| a.1.total_cmp(&b.1))
+                    .map(|(j, _)| j)
+            };
+            let first = nearest(r0, None);
+            return [first, nearest(r1, first)];
+        }
         let omega = self.limit_pair[0][1].abs();
         let turn = (omega * self.sampling_period).rem_euclid(core::f64::consts::TAU);
         let target = if turn > core::f64::consts::PI { core::f64::consts::TAU - turn } else { turn };

@@ -26,6 +26,10 @@ pub struct Story {
     /// (4.68 Hz) for the arm alone". The controller moves it a little (A4, [`Story::omega_a4`]),
     /// the sampled loop a little more ([`Story::loop_pair`]): three frequencies, each named.
     pub omega_arm: String,
+    /// Where k is below the DAE's index: what of the explanation does not hold then. Empty otherwise.
+    pub horizon_note: String,
+    /// Which viscous friction damps the arm's own pair, with what each alone would give.
+    pub arm_damping: String,
     /// "In short"'s disease, for the arm and α shown: whether steering the links feeds the swing,
     /// whether that beats the motor's damping, and where the pair goes as δ → 0.
     pub short_feed: String,
@@ -168,7 +172,7 @@ pub fn phase_words(lag: f64) -> String {
 }
 
 /// The swing's energy over one period at δ, in words (`law_lag`: the lag law's φ, for comparison).
-fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f64) -> String {
+fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f64, swings: bool) -> String {
     // Both the computed lag and the law's φ in (−180°, 180°]: behind (lags) or ahead.
     let signed = |degrees: f64| {
         let d = degrees.rem_euclid(360.0);
@@ -207,9 +211,19 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
     let [held, preliminary, damping, net] = energy_shares(e);
     let feedback =
         if e.preliminary_feedback != 0.0 { format!(", Kₚᵣ {}", share(preliminary, "")) } else { String::new() };
+    // A pair damped past its swing has no phase to lag by: only the balance is said.
+    let (head, what) = if swings {
+        (format!("the held torque {phase}{law} — {role}. Over each period it"), "swing")
+    } else {
+        (
+            "the pair is two real modes, not a swing (no phase to lag by). Over each period the held torque"
+                .to_string(),
+            "pair",
+        )
+    };
     format!(
-        "At δ = {} s the held torque {phase}{law} — {role}. Over each period it {}{feedback}, and the arm's damping \
-         takes {} out: the swing's energy changes by {}{} a period, so it {}.",
+        "At δ = {} s {head} {}{feedback}, and the arm's damping takes {} out: the {what}'s energy changes by {}{} a \
+         period, so it {}.",
         significant_trimmed(delta, 3),
         share(held, " of the swing's energy"),
         percent(damping),
@@ -240,6 +254,8 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     // With a model error the loop's δ → 0 pair is not A4 (the closed forms are for a controller
     // that knows the arm): the texts name both.
     let model_error = config.has_model_error();
+    // Below the DAE's index the applied torque is an impulsive first step: no δ → 0 limit, no A4.
+    let below_index = config.controller.horizon_steps < crate::control::config::DAE_INDEX;
     let feed_says = if r.controller_feed > 0.0 {
         "the controller feeds the resonance"
     } else if r.controller_feed < 0.0 {
@@ -287,6 +303,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     };
     let [first, second] = report.flexible_pair();
     let loop_pair = match first.map(|i| report.poles[i]) {
+        _ if below_index => "not to be told apart (k below the DAE's index: no δ → 0 pair to follow)".to_string(),
         // At the Nyquist frequency the pair is two real negative eigenvalues, each flipping sign
         // every period.
         Some(p) if p.discrete[0] < 0.0 && p.discrete[1].abs() <= 1e-12 * p.discrete[0].abs() => {
@@ -339,6 +356,11 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     };
     let pf = config.preliminary_feedback;
     let loop_limit = match (pf == crate::control::config::PreliminaryFeedbackChoice::Off, model_error) {
+        _ if below_index => {
+            "nothing: with k below the DAE's index the torque's gain on the motor grows as 1/ε², and the loop has no \
+             δ → 0 limit"
+                .to_string()
+        }
         (true, false) => "A4 — the ring in the pole plot".to_string(),
         (true, true) => {
             format!("{} — the ring in the pole plot (not A4: the model error moves it)", open_pair.clone())
@@ -350,6 +372,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     };
     let flexible = report.flexible_pair();
     let rho_set_by = match report.poles.first() {
+        _ if below_index => "a mode that has no δ → 0 limit (k below the DAE's index)".to_string(),
         Some(_) if flexible.contains(&Some(0)) => "the flexible pair".to_string(),
         Some(p) => match p.continuous {
             Some([re, im]) if im.abs() > 1e-9 => format!("another pair, at s = {}", complex_pair(re, im)),
@@ -392,6 +415,21 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         }
         None => "every small δ, by the law: here the motor's damping outweighs the feed, and no lag is needed".into(),
     };
+    // How much of the arm's own damping each viscous friction gives: the arm's pair with the other
+    // one set to zero.
+    let arm_damping = {
+        let alone = |p: crate::model::PlantParameters| crate::analysis::resonance::arm_pair(&p, q2)[0].re;
+        let motor = alone(crate::model::PlantParameters { bv2: 0.0, ..*plant });
+        let joint2 = alone(crate::model::PlantParameters { bv1: 0.0, ..*plant });
+        let both = format!("B_v1 alone would give {}, B_v2 alone {}", per_second(motor), per_second(joint2));
+        if motor.abs() > 2.0 * joint2.abs() {
+            format!("mostly the motor's B_v1, a little joint 2's B_v2 ({both})")
+        } else if joint2.abs() > 2.0 * motor.abs() {
+            format!("mostly joint 2's B_v2, a little the motor's B_v1 ({both})")
+        } else {
+            format!("the motor's B_v1 and joint 2's B_v2 together ({both})")
+        }
+    };
     let lag_bias = {
         use crate::analysis::lag::{GRID_DESCRIPTION, LOWER_EDGE_RATIO, LOWER_EDGE_TURN, UPPER_EDGE_TURNS};
         let here = if !swings {
@@ -431,6 +469,12 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         let pair = format!("as δ → 0 the pair goes to {open_pair}");
         let feeds = r.controller_feed > 0.0;
         match r.real_eigenvalues().filter(|_| !model_error) {
+            _ if below_index => format!(
+                "With k = {} below the DAE's index, though, the torque applied keeps a large gain on the motor's \
+                 angle: there is no δ → 0 pair, and the loop is unstable (ρ = {}).",
+                config.controller.horizon_steps,
+                rho_text(report.spectral_radius)
+            ),
             Some([larger, _]) => format!(
                 "On this arm, at {alpha}, the motor is damped past its swing: {pair}, and {}.",
                 if larger > 0.0 {
@@ -482,7 +526,33 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
             per_second(report.growth_rate)
         )
     };
+    // The loop's own δ → 0 pair (with its preliminary feedback) swings, or is two real modes.
+    let loop_swings = report.limit_pair[0][1] != 0.0 || report.limit_pair[1][1] != 0.0;
+    let rest_words = format!(
+        "this rest point (q2 = {} rad)",
+        if q2.abs() < 5e-13 { "0".into() } else { significant_trimmed(q2, 3) }
+    );
+    // The repeating slew also holds at its other end: what the paper's K_pr does there.
+    let other_end = {
+        let ends = [config.reference.start[1], config.reference.end[1]];
+        let other = ends.into_iter().find(|e| (e - q2).abs() > 1e-9 && config.reference.repeat_hold.is_some());
+        other_end_words(plant, config.controller.alpha, paper.pair[0] < 0.0, other)
+    };
     Story {
+        horizon_note: if below_index {
+            format!(
+                "k = {} is below the DAE's index {}: the torque the controller applies is one of the prediction's \
+                 impulsive first steps, with a large gain on the motor's measured angle (Section 3 below). What this \
+                 explanation says of the δ → 0 limit, of A4 and of the torque's zero gain on the motor holds for \
+                 k ≥ {} only.",
+                config.controller.horizon_steps,
+                crate::control::config::DAE_INDEX,
+                crate::control::config::DAE_INDEX
+            )
+        } else {
+            String::new()
+        },
+        arm_damping,
         lag_bias,
         short_feed,
         alpha_small,
@@ -662,12 +732,35 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         structure_quotient: String::new(),
         structure_index: String::new(),
         structure_horizon: String::new(),
-        energy: report.swing_energy.map_or(String::new(), |e| energy_text(&e, law.lag(delta), delta)),
-        kpr_cure: kpr_cure(&paper, &kpr_pair, r, a1 == a2, &alpha),
-        kpr_works: if paper.pair[0] < 0.0 {
-            "every small δ works — smaller δ even gives smaller errors".into()
+        energy: if below_index {
+            String::new()
         } else {
-            format!("still the smallest δ fail here: at {alpha} the pair it makes is in the right half-plane")
+            report.swing_energy.map_or(String::new(), |e| energy_text(&e, law.lag(delta), delta, loop_swings))
+        },
+        kpr_cure: if below_index {
+            format!(
+                "With k = {} below the DAE's index {}, neither Kₚᵣ nor a smaller δ is the cure: the applied torque is \
+                 an impulsive first step of the prediction (ρ = {} here; Section 3 below).",
+                config.controller.horizon_steps,
+                crate::control::config::DAE_INDEX,
+                rho_text(report.spectral_radius)
+            )
+        } else {
+            kpr_cure(&paper, &kpr_pair, r, a1 == a2, &alpha, &rest_words, &other_end)
+        },
+        kpr_works: if below_index {
+            format!(
+                "not while k = {} is below the DAE's index {}: the loop is unstable (ρ = {})",
+                config.controller.horizon_steps,
+                crate::control::config::DAE_INDEX,
+                rho_text(report.spectral_radius)
+            )
+        } else if paper.pair[0] < 0.0 {
+            format!("every small δ works at {rest_words} — smaller δ even gives smaller errors{other_end}")
+        } else {
+            format!(
+                "still the smallest δ fail here: at {alpha} the pair it makes at {rest_words} is in the right half-plane{other_end}"
+            )
         },
     }
 }
@@ -692,21 +785,51 @@ fn kpr_cure(
     r: &crate::analysis::resonance::ResonanceReport,
     equal: bool,
     alpha: &str,
+    rest: &str,
+    other_end: &str,
 ) -> String {
     let limit = format!("{:.2} 1/s", r.paper_alpha_limit);
     if paper.pair[0] < 0.0 {
-        let range = if equal { format!(" — on this arm for every α below {limit}") } else { String::new() };
+        let range = if equal {
+            format!(" — on this arm, at {rest}, for every α below {limit}")
+        } else {
+            format!(" at {rest}")
+        };
         format!(
             "A preliminary feedback Kₚᵣ damps the ringing first (the paper's gains move the pair to {pair} \
-             at {alpha}); then every small δ works{range}."
+             at {alpha}); then every small δ works{range}.{other_end}"
         )
     } else {
-        let range = if equal { format!(" only for α below {limit} on this arm") } else { String::new() };
+        let range = if equal { format!(" only for α below {limit} on this arm at {rest}") } else { String::new() };
         format!(
             "A preliminary feedback Kₚᵣ damps the ringing first — the paper's gains do so{range}: at \
              {alpha} they leave the pair at {pair}, {}, and small δ still fail (the LQ design, redone for the arm \
-             and α, damps it).",
+             and α, damps it).{other_end}",
             gains_fail_because(&r.paper_bound)
         )
     }
+}
+
+/// Where the repeating slew also rests at its other end (`q2`), what the paper's K_pr leaves there
+/// at these α, when it differs in stability from the analysis' rest point: " Where the slew
+/// holds at q2 = 4.71 rad the pair sits at 0.34 ± 23.72j 1/s: small δ fail there." Empty otherwise.
+fn other_end_words(
+    plant: &crate::model::PlantParameters,
+    alpha: [f64; 2],
+    here_stable: bool,
+    q2: Option<f64>,
+) -> String {
+    let Some(q2) = q2 else { return String::new() };
+    let m = crate::analysis::resonance::closed_form_a4(plant, alpha, q2, &crate::control::feedback::paper_gain());
+    let stable = m.complex_eigenvalues().iter().all(|e| e.re < 0.0);
+    if stable == here_stable {
+        return String::new();
+    }
+    format!(
+        " Where the repeating slew holds at its other end (q2 = {} rad) the paper's gains leave the pair at {}: small \
+         δ {} there (“Linearize at: where the arm is headed” shows it).",
+        significant_trimmed(q2, 3),
+        eigenvalues_2x2(m.trace(), m.determinant()),
+        if stable { "work" } else { "fail" }
+    )
 }

@@ -133,7 +133,7 @@ pub fn structure(s: &Structure, pf: PreliminaryFeedbackChoice) -> StructureWords
     let (alone, moved) = if s.limit_ignores_motor {
         (
             "Its limit feedback has no gain on θ, θ̇, which complete V*: on the quotient ℝ⁸/V* the closed loop induces",
-            " — the arm's swing as the law moves it, not a pole the controller places",
+            " — the arm's swing as the law moves it (its α moves it), not a pole the controller places",
         )
     } else {
         ("On the quotient ℝ⁸/V* the closed loop induces", "")
