@@ -30,6 +30,9 @@ pub struct Story {
     pub horizon_note: String,
     /// Which viscous friction damps the arm's own pair, with what each alone would give.
     pub arm_damping: String,
+    /// "In short"'s last sentence: why some larger δ work without K_pr (the lag), or, where the
+    /// pair dies out as δ → 0 without it, that no lag is needed.
+    pub short_lag: String,
     /// "In short"'s disease, for the arm and α shown: whether steering the links feeds the swing,
     /// whether that beats the motor's damping, and where the pair goes as δ → 0.
     pub short_feed: String,
@@ -225,7 +228,7 @@ fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f6
         "At δ = {} s {head} {}{feedback}, and the arm's damping takes {} out: the {what}'s energy changes by {}{} a \
          period, so it {}.",
         significant_trimmed(delta, 3),
-        share(held, " of the swing's energy"),
+        share(held, if swings { " of the swing's energy" } else { " of the pair's energy" }),
         percent(damping),
         if net > 0.0 { "+" } else { "" },
         percent(net),
@@ -357,9 +360,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     let pf = config.preliminary_feedback;
     let loop_limit = match (pf == crate::control::config::PreliminaryFeedbackChoice::Off, model_error) {
         _ if below_index => {
-            "nothing: with k below the DAE's index the torque's gain on the motor grows as 1/ε², and the loop has no \
-             δ → 0 limit"
-                .to_string()
+            "no limit (k below the DAE's index: the torque's gain on the motor grows as 1/ε²)".to_string()
         }
         (true, false) => "A4 — the ring in the pole plot".to_string(),
         (true, true) => {
@@ -449,7 +450,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         };
         format!(
             "The law is a heuristic, in the manner of a describing function: it keeps only cos φ of a push delayed by \
-             1.5 δ, and the phase it assumes is not the computed one (the mechanism below). Measured against ρ over \
+             1.5 δ, and the phase it assumes is not the computed one (the mechanism above). Measured against ρ over \
              {GRID_DESCRIPTION}, the true lower edge lies between {:.2} and {:.2} times the law's: the law's edge is \
              mostly early, and just above it the swing can still grow while σ < 0. In ωδ the true lower edges spread \
              from {:.2} to {:.2} rad, for the law's edge arccos(B_v1/(3α I_r1))/1.5 depends on α and on B_v1/I_r1, not \
@@ -528,6 +529,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     };
     // The loop's own δ → 0 pair (with its preliminary feedback) swings, or is two real modes.
     let loop_swings = report.limit_pair[0][1] != 0.0 || report.limit_pair[1][1] != 0.0;
+    let clause = |c: &str| if c.is_empty() { String::new() } else { format!("; {c}") };
     let rest_words = format!(
         "this rest point (q2 = {} rad)",
         if q2.abs() < 5e-13 { "0".into() } else { significant_trimmed(q2, 3) }
@@ -539,6 +541,17 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         other_end_words(plant, config.controller.alpha, paper.pair[0] < 0.0, other)
     };
     Story {
+        short_lag: if !below_index && !model_error && open_re < 0.0 && r.real_eigenvalues().is_none() {
+            format!(
+                "Without it, on this arm at {alpha} every small δ already works: the motor's damping outweighs the \
+                 controller's feed, and no lag is needed."
+            )
+        } else {
+            "Without it, some larger δ work because the controller's torque arrives late, 1.5 δ after the measurement \
+             on average, and a push that comes more than a quarter of a swing late brakes the ringing instead of \
+             feeding it. How late is late enough depends on how fast the arm rings: another arm, other δ."
+                .into()
+        },
         horizon_note: if below_index {
             format!(
                 "k = {} is below the DAE's index {}: the torque the controller applies is one of the prediction's \
@@ -726,7 +739,8 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         math_rho: equations.rho,
         math_growth: equations.growth,
         math_lag: equations.lag,
-        math_energy: equations.energy,
+        // Below the DAE's index there is no pair to balance.
+        math_energy: if below_index { String::new() } else { equations.energy },
         structure_v_star: String::new(),
         structure_zero_dynamics: String::new(),
         structure_quotient: String::new(),
@@ -756,10 +770,12 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
                 rho_text(report.spectral_radius)
             )
         } else if paper.pair[0] < 0.0 {
-            format!("every small δ works at {rest_words} — smaller δ even gives smaller errors{other_end}")
+            format!("every small δ works at {rest_words} — smaller δ even gives smaller errors{}", clause(&other_end))
         } else {
             format!(
-                "still the smallest δ fail here: at {alpha} the pair it makes at {rest_words} is in the right half-plane{other_end}"
+                "still the smallest δ fail here: at {alpha} the pair it makes at {rest_words} is in the right \
+                 half-plane{}",
+                clause(&other_end)
             )
         },
     }
@@ -797,16 +813,27 @@ fn kpr_cure(
         };
         format!(
             "A preliminary feedback Kₚᵣ damps the ringing first (the paper's gains move the pair to {pair} \
-             at {alpha}); then every small δ works{range}.{other_end}"
+             at {alpha}); then every small δ works{range}.{}",
+            sentence(other_end)
         )
     } else {
         let range = if equal { format!(" only for α below {limit} on this arm at {rest}") } else { String::new() };
         format!(
             "A preliminary feedback Kₚᵣ damps the ringing first — the paper's gains do so{range}: at \
              {alpha} they leave the pair at {pair}, {}, and small δ still fail (the LQ design, redone for the arm \
-             and α, damps it).{other_end}",
-            gains_fail_because(&r.paper_bound)
+             and α, damps it).{}",
+            gains_fail_because(&r.paper_bound),
+            sentence(other_end)
         )
+    }
+}
+
+/// A clause as a sentence of its own after another: " Where …." (empty stays empty).
+fn sentence(clause: &str) -> String {
+    let mut chars = clause.chars();
+    match chars.next() {
+        Some(c) => format!(" {}{}.", c.to_uppercase(), chars.as_str()),
+        None => String::new(),
     }
 }
 
@@ -825,9 +852,10 @@ fn other_end_words(
     if stable == here_stable {
         return String::new();
     }
+    // A clause: " Where …" after a sentence, "; where …" inside one (the callers join it).
     format!(
-        " Where the repeating slew holds at its other end (q2 = {} rad) the paper's gains leave the pair at {}: small \
-         δ {} there (“Linearize at: where the arm is headed” shows it).",
+        "where the repeating slew holds at its other end (q2 = {} rad) the paper's gains leave the pair at {}: small \
+         δ {} there (“Linearize at: where the arm is headed” shows it)",
         significant_trimmed(q2, 3),
         eigenvalues_2x2(m.trace(), m.determinant()),
         if stable { "work" } else { "fail" }

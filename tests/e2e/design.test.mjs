@@ -125,9 +125,9 @@ test('at α = 5 the paper\'s K_pr fails and a designed damper cures it (the Try 
   const { page, problems, close } = await openPage(env.browser, env.server.base, '?mode=full', SIZES.laptop);
   const verdict = () => page.evaluate(() => window.flexarm.session.status().runs[0].verdict);
   await page.click('#explain > summary');
-  await page.click('button.try[data-try="set:alpha:5:pf:paper"]');
+  await page.click('button.try[data-try="state:arm=paper&alpha=5&pf=paper"]');
   await page.waitForFunction(() => window.flexarm.session.status().runs[0].verdict === 'unstable', null, { timeout: 20000 });
-  await page.click('button.try[data-try="set:alpha:5:pf:twist:twist_stiffness:0:twist_damping:40"]');
+  await page.click('button.try[data-try="state:arm=paper&alpha=5&pf=twist&twist_stiffness=0&twist_damping=40"]');
   await page.waitForFunction(() => window.flexarm.session.status().runs[0].verdict === 'stable', null, { timeout: 20000 });
   assert.equal(await verdict(), 'stable');
   assert.equal(await param(page, 'twist_damping'), 40);
