@@ -830,10 +830,12 @@ fn kpr_cure(
 
 /// A clause as a sentence of its own after another: " Where …." (empty stays empty).
 fn sentence(clause: &str) -> String {
-    let mut chars = clause.chars();
-    match chars.next() {
-        Some(c) => format!(" {}{}.", c.to_uppercase(), chars.as_str()),
-        None => String::new(),
+    // The clauses begin "where" (char::to_uppercase would bring Unicode's case tables, ≈ 7 kB of
+    // wasm, for one letter).
+    match clause.strip_prefix("where") {
+        Some(rest) => format!(" Where{rest}."),
+        None if clause.is_empty() => String::new(),
+        None => format!(" {clause}."),
     }
 }
 
