@@ -362,7 +362,8 @@ fn below_the_index_the_explanation_says_what_no_longer_holds() {
     assert!(s.kpr_works.starts_with("not while k = 2"), "{}", s.kpr_works);
     assert!(!s.kpr_cure.contains("every small δ works"), "{}", s.kpr_cure);
     assert!(s.loop_limit.starts_with("no limit"), "{}", s.loop_limit);
-    assert!(s.energy.is_empty(), "{}", s.energy);
+    assert!(s.energy.starts_with("Not here"), "{}", s.energy);
+    assert!(s.short_lag.contains("not by the lag"), "{}", s.short_lag);
     let (s, _) = story("pf=paper");
     assert!(s.horizon_note.is_empty());
 }
@@ -408,11 +409,17 @@ fn the_third_reviews_findings_stay_fixed() {
     assert!(s.energy.contains("of the pair's energy") && !s.energy.contains("swing's energy"), "{}", s.energy);
     let page = page();
     for try_ in [
-        "state:arm=paper&amp;pf=off&amp;delta=0.05",
+        "state:arm=paper&amp;pf=off&amp;delta=0.05&amp;alpha=2&amp;k=12&amp;eps_ratio=8",
+        "state:arm=stiffer&amp;pf=off&amp;delta=0.05&amp;alpha=2&amp;k=12&amp;eps_ratio=8",
         "state:arm=paper&amp;alpha=5&amp;pf=twist&amp;twist_stiffness=0&amp;twist_damping=40",
-        "state:arm=paper&amp;map=1&amp;pf=off&amp;delta=0.05&amp;alpha=2",
+        "state:arm=paper&amp;map=1&amp;pf=off&amp;delta=0.15&amp;alpha=2&amp;k=12&amp;eps_ratio=8",
     ] {
         assert!(page.contains(try_), "{try_}");
     }
     assert!(!page.contains("narrow on the paper's arm"));
+    // A Try button that names the paper's arm sets it: no map: or set: one does.
+    for (i, _) in page.match_indices("(the paper's arm)</button>") {
+        let start = page[..i].rfind("data-try=\"").unwrap();
+        assert!(page[start..i].contains("state:arm=paper"), "{}", &page[start..i]);
+    }
 }

@@ -541,7 +541,11 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         other_end_words(plant, config.controller.alpha, paper.pair[0] < 0.0, other)
     };
     Story {
-        short_lag: if !below_index && !model_error && open_re < 0.0 && r.real_eigenvalues().is_none() {
+        short_lag: if below_index {
+            "Which δ work here is set by that impulsive torque, not by the lag of the torque behind the swing that \
+             explains the windows for k ≥ 3."
+                .into()
+        } else if !model_error && open_re < 0.0 && r.real_eigenvalues().is_none() {
             format!(
                 "Without it, on this arm at {alpha} every small δ already works: the motor's damping outweighs the \
                  controller's feed, and no lag is needed."
@@ -747,7 +751,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         structure_index: String::new(),
         structure_horizon: String::new(),
         energy: if below_index {
-            String::new()
+            "Not here: with k below the DAE's index there is no flexible pair to follow.".into()
         } else {
             report.swing_energy.map_or(String::new(), |e| energy_text(&e, law.lag(delta), delta, loop_swings))
         },

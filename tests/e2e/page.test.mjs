@@ -541,7 +541,7 @@ test('the screen reader hears the new ρ when δ changes, even where the verdict
   const said = () => page.$eval('#verdict-announce', (el) => el.textContent);
   await page.waitForFunction(() => /1\.0239/.test(document.querySelector('#verdict-announce').textContent), null, { timeout: 30000 });
   // δ = 0.15 s without K_pr (the explanation's button): unstable too, with another ρ.
-  await page.evaluate(() => document.querySelector('[data-try="state:arm=paper&pf=off&delta=0.15"]').click());
+  await page.evaluate(() => document.querySelector('[data-try="state:arm=paper&pf=off&delta=0.15&alpha=2&k=12&eps_ratio=8"]').click());
   await page.waitForFunction(() => /1\.0206/.test(document.querySelector('#verdict-announce').textContent), null, { timeout: 30000 });
   assert.doesNotMatch(await said(), /1\.0239/);
   assert.deepEqual(problems, []);
