@@ -364,6 +364,11 @@ fn below_the_index_the_explanation_says_what_no_longer_holds() {
     assert!(s.loop_limit.starts_with("no limit"), "{}", s.loop_limit);
     assert!(s.energy.starts_with("Not here"), "{}", s.energy);
     assert!(s.short_lag.contains("not by the lag"), "{}", s.short_lag);
+    assert!(
+        s.lag_window.starts_with("no window from the law here") && s.lag_bias.ends_with("does not apply here at all."),
+        "{}",
+        s.lag_bias
+    );
     let (s, _) = story("pf=paper");
     assert!(s.horizon_note.is_empty());
 }

@@ -225,7 +225,7 @@ fn what_rho_certifies_is_said_with_the_programs_numbers() {
     let page = page_text();
     let spring = flexarm::plot::format::grouped(flexarm::schema::round_significant(plant.fc1 / plant.eps1, 3));
     says(
-        &format!("= {spring} N m/rad at rest, about forty times K1"),
+        &format!("= {spring} N m/rad at rest, about forty times its K1"),
         &page.replace("<sub>c1</sub>/ε<sub>1</sub>", "_c1/ε1"),
         "page",
     );

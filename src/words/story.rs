@@ -388,7 +388,9 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     let pi = core::f64::consts::PI;
     // The law is for a swing: where A4 is two real eigenvalues there is no turn to lag behind.
     let swings = r.real_eigenvalues().is_none();
-    let lag_growth = if !swings {
+    let lag_growth = if below_index {
+        "none here: with k below the DAE's index the impulsive torque, not the lag, decides".into()
+    } else if !swings {
         "none here: the motor does not swing (A4 is two real eigenvalues), so there is no turn to lag behind".into()
     } else if law.turn(delta) < pi {
         minus(&format!(
@@ -403,6 +405,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         "none here: beyond ωδ = π the swing is aliased and the law says nothing".into()
     };
     let lag_window = match law.window() {
+        _ if below_index => "no window from the law here: with k below the DAE's index it does not apply".into(),
         _ if !swings => "no window from the law: the motor does not swing here".into(),
         Some([lo, hi]) => {
             format!(
@@ -433,7 +436,9 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     };
     let lag_bias = {
         use crate::analysis::lag::{GRID_DESCRIPTION, LOWER_EDGE_RATIO, LOWER_EDGE_TURN, UPPER_EDGE_TURNS};
-        let here = if !swings {
+        let here = if below_index {
+            "With k below the DAE's index the law does not apply here at all.".to_string()
+        } else if !swings {
             "This arm is outside it: its motor does not swing.".to_string()
         } else if !crate::analysis::lag::grid_covers(plant, config.controller.alpha) {
             format!("This arm at {alpha} lies outside the grid measured: the bounds are not known to hold here.")
@@ -757,8 +762,8 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         },
         kpr_cure: if below_index {
             format!(
-                "With k = {} below the DAE's index {}, neither Kₚᵣ nor a smaller δ is the cure: the applied torque is \
-                 an impulsive first step of the prediction (ρ = {} here; Section 3 below).",
+                "With k = {} below the DAE's index {}, small δ fail with or without Kₚᵣ: the applied torque is an \
+                 impulsive first step of the prediction (ρ = {} here; Section 3 below).",
                 config.controller.horizon_steps,
                 crate::control::config::DAE_INDEX,
                 rho_text(report.spectral_radius)
