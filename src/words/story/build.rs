@@ -1,240 +1,12 @@
-//! The explanation's numbers, live: every number the page's "why" text quotes about the current
-//! settings, formatted from run A's analysis (the report the verdict and the pole plot show), so
-//! the words and the figures cannot disagree. The page puts each into the `data-live` element of
-//! the same name.
+//! The story built from run A's configuration and its analysis.
 
-use serde::Serialize;
-
-use super::numbers::{complex_pair, eigenvalues_2x2, energy_shares, per_second, percent, rho as rho_text};
+use super::phrases::{energy_text, frequency, kpr_cure, other_end_words};
+use super::Story;
 use crate::analysis::resonance::PaperFeedbackEffect;
 use crate::analysis::{Pole, StabilityReport};
 use crate::control::config::SimulationConfig;
 use crate::plot::format::{minus, significant_trimmed};
-
-/// The numbers of the explanation, as text with units.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Story {
-    /// "α = 2 1/s", or "α1 = 0.5, α2 = 2 1/s".
-    pub alpha: String,
-    /// The rest point the analysis is linearized at: "q2 = 0 rad".
-    pub rest: String,
-    /// The arm's own pair, no controller, the friction cancelled: "−0.29 ± 29.36j 1/s".
-    pub arm_pair: String,
-    /// √(K1 (1/Ir1 + 1/J_eff)) and √(K1/Ir1): "29.40 rad/s (4.68 Hz)", "24.4 rad/s".
-    pub omega_joint: String,
-    /// The arm's own ringing, named as such for the explanation's short form: "29.40 rad/s
-    /// (4.68 Hz) for the arm alone". The controller moves it a little (A4, [`Story::omega_a4`]),
-    /// the sampled loop a little more ([`Story::loop_pair`]): three frequencies, each named.
-    pub omega_arm: String,
-    /// Where k is below the DAE's index: what of the explanation does not hold then. Empty otherwise.
-    pub horizon_note: String,
-    /// Which viscous friction damps the arm's own pair, with what each alone would give.
-    pub arm_damping: String,
-    /// "In short"'s last sentence: why some larger δ work without K_pr (the lag), or, where the
-    /// pair dies out as δ → 0 without it, that no lag is needed.
-    pub short_lag: String,
-    /// "In short"'s disease, for the arm and α shown: whether steering the links feeds the swing,
-    /// whether that beats the motor's damping, and where the pair goes as δ → 0.
-    pub short_feed: String,
-    pub omega_clamped: String,
-    /// J_eff: "4.30 kg m²".
-    pub j_eff: String,
-    /// A4 without preliminary feedback: "2.64 ± 29.58j 1/s"; its trace and determinant.
-    pub a4: String,
-    pub a4_trace: String,
-    pub a4_det: String,
-    /// Re A4 and its two parts: the controller's feed 3β/2 and the motor's damping Bv1/(2 Ir1).
-    pub re_a4: String,
-    pub feed: String,
-    pub motor_damping: String,
-    /// What the sign of the controller's part and of Re A4 mean, in words.
-    pub feed_says: String,
-    pub re_a4_says: String,
-    /// μ and β = α1 + μ (α1 − α2) at the rest point.
-    pub mu: String,
-    pub beta: String,
-    /// The six poles the limit controller places: "−2 1/s, all six".
-    pub six_poles: String,
-    /// How much faster link 2's law must be for the controller to drain the resonance:
-    /// α2 > α1 (1 + μ)/μ, "4.21 α1".
-    pub alpha2_drain: String,
-    /// α* = Bv1/(3 Ir1).
-    pub alpha_star: String,
-    /// What α = 0.2 1/s (the explanation's Try button) does on this arm: below or above α*, and
-    /// the pair A4 it leaves as δ → 0.
-    pub alpha_small: String,
-    /// Run A's δ, ρ, ln ρ/δ and its flexible loop pole at that δ.
-    pub delta: String,
-    pub rho: String,
-    pub growth: String,
-    pub loop_pair: String,
-    /// What the sampled pair tends to as δ → 0: "A4 — the ring in the pole plot", or with a
-    /// preliminary feedback "A4 with K_pr — the diamond in the pole plot".
-    pub loop_limit: String,
-    /// Which mode sets ρ: "the flexible pair", or "another mode, at s = −1.95 1/s".
-    pub rho_set_by: String,
-    /// The paper's K_pr on the pair (acting continuously): its shift of the pair's real part, the
-    /// parts of it through T1 and T2, the pair it makes, and the largest α (α1 = α2) it keeps
-    /// stable.
-    pub kpr_shift: String,
-    pub kpr_shift_t1: String,
-    pub kpr_shift_t2: String,
-    pub kpr_pair: String,
-    pub kpr_alpha_limit: String,
-    /// The paper's K_pr's shift of Re A4 on this arm at the two ends of the rest points: "−5.12 1/s
-    /// at q2 = 0, −4.28 1/s at q2 = π".
-    pub kpr_shift_rest: String,
-    /// What the minimum-energy LQ design does to the pair, with the pair it makes.
-    pub lq_says: String,
-    /// Whether the paper's K_pr makes every small δ work at these α: what the pair it makes says.
-    pub kpr_works: String,
-    /// The cure in one sentence for "In short", true on the arm and α shown: where the paper's
-    /// K_pr makes every small δ work (α below its bound on this arm), or why it does not here.
-    pub kpr_cure: String,
-    /// The arm, only what differs from the paper's: "the paper's arm", "K1 = 4610.4 N m/rad (paper: 1152.6)".
-    pub arm: String,
-    /// The motor damping that makes Re A4 < 0 with no preliminary feedback, B_v1 > 3β I_r1
-    /// (3α I_r1 when α1 = α2), and this arm's.
-    pub damping_needed: String,
-    /// Next to the K_pr control: the paper's gains were designed for the paper's arm at α = 2;
-    /// empty where that is what runs.
-    pub kpr_note: String,
-    /// Where the controller assumes the paper's arm on another arm (`model = paper`): where the
-    /// loop goes as δ → 0 instead of A4, which the closed forms describe for a controller that
-    /// knows the arm. Empty without a model error.
-    pub model_note: String,
-    /// Why some larger δ work (the lag law, [`crate::analysis::lag`]): ω = |Im A4| in rad/s and
-    /// Hz, how far the swing turns per period (ωδ) and by the time the torque acts (1.5 ωδ),
-    /// the growth the law predicts, and its window of δ.
-    pub omega_a4: String,
-    pub turn: String,
-    pub lag: String,
-    pub lag_growth: String,
-    pub lag_window: String,
-    /// How far to trust the lag law: its bias measured over a grid ([`crate::analysis::lag`]'s
-    /// constants) and whether this arm at these α lies in the grid's domain.
-    pub lag_bias: String,
-    /// The loop's own rate beside the law's estimate: the law is made for the loop without K_pr, so
-    /// with K_pr on the run's ln ρ/δ is another loop's.
-    pub lag_compare: String,
-    /// The mechanism at this δ, computed ([`crate::analysis::energy`]): how far the held torque
-    /// lags the swing and what share of the swing's energy it, the preliminary feedback and the
-    /// arm's damping put in or take out each period. Empty without a flexible pair.
-    pub energy: String,
-    /// The same numbers as equations (MathML, [`super::equations`]) for the page's `data-math`
-    /// elements: the law (4.3), Re A4, ρ, ln ρ/δ and the lag law.
-    pub math_constraint: String,
-    pub math_re_a4: String,
-    pub math_rho: String,
-    pub math_growth: String,
-    pub math_lag: String,
-    pub math_energy: String,
-    /// Section 3's structure (V*, the zero dynamics Ā1, the quotient A4, the index, k), one sentence
-    /// each ([`super::structure`]); empty until [`Story::with_structure`] fills them.
-    pub structure_v_star: String,
-    pub structure_zero_dynamics: String,
-    pub structure_quotient: String,
-    pub structure_index: String,
-    pub structure_horizon: String,
-}
-
-impl Story {
-    /// The story with Section 3's sentences of `words` (computed apart: the structure costs more
-    /// than the rest of the story, so the session caches it with the analysis).
-    pub fn with_structure(mut self, words: Option<super::structure::StructureWords>) -> Self {
-        if let Some(w) = words {
-            self.structure_v_star = w.v_star;
-            self.structure_zero_dynamics = w.zero_dynamics;
-            self.structure_quotient = w.quotient;
-            self.structure_index = w.index;
-            self.structure_horizon = w.horizon;
-        }
-        self
-    }
-}
-
-/// A frequency as every sentence of the story writes it: "29.40 rad/s (4.68 Hz)".
-fn frequency(omega: f64) -> String {
-    format!("{omega:.2} rad/s ({:.2} Hz)", omega / (2.0 * core::f64::consts::PI))
-}
-
-/// Where the held torque is against the motor's velocity, its lag in degrees in (−180°, 180°]:
-/// "is in phase with …" within half a degree (a phase that rounds to 0° is neither ahead nor
-/// behind), "lags … by 21°", "runs 21° ahead of …".
-pub fn phase_words(lag: f64) -> String {
-    let rounded = lag.round();
-    if lag.abs() < 0.5 {
-        "is in phase with the motor's velocity".into()
-    } else if rounded.abs() >= 180.0 {
-        "is in antiphase with the motor's velocity".into()
-    } else {
-        let (verb, tail) =
-            if lag > 0.0 { ("lags the motor's velocity by ", "") } else { ("runs ", " ahead of the motor's velocity") };
-        format!("{verb}{:.0}°{tail}", rounded.abs())
-    }
-}
-
-/// The swing's energy over one period at δ, in words (`law_lag`: the lag law's φ, for comparison).
-fn energy_text(e: &crate::analysis::energy::SwingEnergy, law_lag: f64, delta: f64, swings: bool) -> String {
-    // Both the computed lag and the law's φ in (−180°, 180°]: behind (lags) or ahead.
-    let signed = |degrees: f64| {
-        let d = degrees.rem_euclid(360.0);
-        if d > 180.0 {
-            d - 360.0
-        } else {
-            d
-        }
-    };
-    let lag = signed(e.lag.to_degrees());
-    let phase = phase_words(lag);
-    let role =
-        if lag.abs() < 90.0 { "less than a quarter turn: it pushes" } else { "more than a quarter turn: it brakes" };
-    let law = {
-        let l = signed(law_lag.to_degrees());
-        // Two numbers, two meanings: the lag computed over one period, and the law's estimate.
-        let side = if l.abs() < 0.5 {
-            ""
-        } else if l >= 0.0 {
-            " behind"
-        } else {
-            " ahead"
-        };
-        format!(
-            " (computed over one period; the lag law estimates φ = 1.5 ωδ, whole turns dropped, at {:.0}°{side})",
-            l.abs()
-        )
-    };
-    let share = |v: f64, whose: &str| {
-        if v >= 0.0 {
-            format!("puts {}{whose} in", percent(v))
-        } else {
-            format!("takes {}{whose} out", percent(-v))
-        }
-    };
-    let [held, preliminary, damping, net] = energy_shares(e);
-    let feedback =
-        if e.preliminary_feedback != 0.0 { format!(", Kₚᵣ {}", share(preliminary, "")) } else { String::new() };
-    // A pair damped past its swing has no phase to lag by: only the balance is said.
-    let (head, what) = if swings {
-        (format!("the held torque {phase}{law} — {role}. Over each period it"), "swing")
-    } else {
-        (
-            "the pair is two real modes, not a swing (no phase to lag by). Over each period the held torque"
-                .to_string(),
-            "pair",
-        )
-    };
-    format!(
-        "At δ = {} s {head} {}{feedback}, and the arm's damping takes {} out: the {what}'s energy changes by {}{} a \
-         period, so it {}.",
-        significant_trimmed(delta, 3),
-        share(held, if swings { " of the swing's energy" } else { " of the pair's energy" }),
-        percent(damping),
-        if net > 0.0 { "+" } else { "" },
-        percent(net),
-        if net > 0.0 { "grows" } else { "dies out" }
-    )
-}
+use crate::words::numbers::{complex_pair, eigenvalues_2x2, per_second, rho as rho_text};
 
 /// The story of run A's settings (`config`, the configuration its settings make — the loop takes
 /// a change only at its next sampling instant, and the story must not mix the new analysis with
@@ -252,8 +24,8 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     let [open_re, _] = report.limit_pair_open[0];
     // The pairs as the text quotes them: a conjugate pair, or two real eigenvalues where the
     // motor no longer swings (never "± 0.00j").
-    let open_pair = minus(&super::numbers::eigen_pair(report.limit_pair_open, 2));
-    let loop_limit_pair = minus(&super::numbers::eigen_pair(report.limit_pair, 2));
+    let open_pair = minus(&crate::words::numbers::eigen_pair(report.limit_pair_open, 2));
+    let loop_limit_pair = minus(&crate::words::numbers::eigen_pair(report.limit_pair, 2));
     // With a model error the loop's δ → 0 pair is not A4 (the closed forms are for a controller
     // that knows the arm): the texts name both.
     let model_error = config.has_model_error();
@@ -322,7 +94,9 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         // A motor damped past its swing: two real poles, never "± 0.00j".
         Some(Pole { continuous: Some([re, im]), .. }) if im == 0.0 => {
             match second.and_then(|i| report.poles[i].continuous) {
-                Some([re2, _]) => format!("s = {}", minus(&super::numbers::eigen_pair([[re, 0.0], [re2, 0.0]], 2))),
+                Some([re2, _]) => {
+                    format!("s = {}", minus(&crate::words::numbers::eigen_pair([[re, 0.0], [re2, 0.0]], 2)))
+                }
                 None => format!("s = {}", per_second(re)),
             }
         }
@@ -349,12 +123,12 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     } else if open_re > 0.0 {
         // Mirrored: each eigenvalue's real part changes sign (a real pair stays two real ones).
         let [[r0, i0], [r1, i1]] = report.limit_pair_open;
-        let mirrored = minus(&super::numbers::eigen_pair([[-r0.abs(), i0], [-r1.abs(), i1]], 2));
+        let mirrored = minus(&crate::words::numbers::eigen_pair([[-r0.abs(), i0], [-r1.abs(), i1]], 2));
         format!("reflects the unstable pair into the left half-plane (here {mirrored})")
     } else {
         format!(
             "leaves a stable pair where it is (here {})",
-            minus(&super::numbers::eigen_pair(report.limit_pair_open, 2))
+            minus(&crate::words::numbers::eigen_pair(report.limit_pair_open, 2))
         )
     };
     let pf = config.preliminary_feedback;
@@ -384,7 +158,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
     };
     let law = crate::analysis::lag::LagLaw::of(report);
     let delta = config.controller.sampling_period;
-    let equations = super::equations::equations(report, &law, config.controller.alpha, delta);
+    let equations = crate::words::equations::equations(report, &law, config.controller.alpha, delta);
     let pi = core::f64::consts::PI;
     // The law is for a swing: where A4 is two real eigenvalues there is no turn to lag behind.
     let swings = r.real_eigenvalues().is_none();
@@ -591,7 +365,7 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
         a4: if model_error {
             eigenvalues_2x2(r.trace, r.determinant)
         } else {
-            minus(&super::numbers::eigen_pair(report.limit_pair_open, 2))
+            minus(&crate::words::numbers::eigen_pair(report.limit_pair_open, 2))
         },
         a4_trace: per_second(r.trace),
         a4_det: format!("{:.0} 1/s²", r.determinant),
@@ -788,87 +562,4 @@ pub fn story(config: &SimulationConfig, report: &StabilityReport) -> Story {
             )
         },
     }
-}
-
-/// Why a fixed preliminary feedback leaves the δ → 0 pair unstable at these α, from where its
-/// α bound comes: the controller's feed against the damping it adds (tr A4), or a motor damped
-/// past its swing, where one real eigenvalue crosses zero (det A4).
-pub fn gains_fail_because(bound: &crate::analysis::resonance::AlphaBound) -> &'static str {
-    if bound.lost_to_det() {
-        "the motor is damped past its swing and one real eigenvalue of the pair crosses zero (det A4 < 0)"
-    } else {
-        "the controller's feed 3α/2 outweighs their damping"
-    }
-}
-
-/// "In short"'s cure, from what the paper's K_pr does to the pair on this arm at these α (the
-/// pair it makes, and for α1 = α2 the largest α it keeps stable): "every small δ" only where the
-/// pair it leaves dies out as δ → 0.
-fn kpr_cure(
-    paper: &PaperFeedbackEffect,
-    pair: &str,
-    r: &crate::analysis::resonance::ResonanceReport,
-    equal: bool,
-    alpha: &str,
-    rest: &str,
-    other_end: &str,
-) -> String {
-    let limit = format!("{:.2} 1/s", r.paper_alpha_limit);
-    if paper.pair[0] < 0.0 {
-        let range = if equal {
-            format!(" — on this arm, at {rest}, for every α below {limit}")
-        } else {
-            format!(" at {rest}")
-        };
-        format!(
-            "A preliminary feedback Kₚᵣ damps the ringing first (the paper's gains move the pair to {pair} \
-             at {alpha}); then every small δ works{range}.{}",
-            sentence(other_end)
-        )
-    } else {
-        let range = if equal { format!(" only for α below {limit} on this arm at {rest}") } else { String::new() };
-        format!(
-            "A preliminary feedback Kₚᵣ damps the ringing first — the paper's gains do so{range}: at \
-             {alpha} they leave the pair at {pair}, {}, and small δ still fail (the LQ design, redone for the arm \
-             and α, damps it).{}",
-            gains_fail_because(&r.paper_bound),
-            sentence(other_end)
-        )
-    }
-}
-
-/// A clause as a sentence of its own after another: " Where …." (empty stays empty).
-fn sentence(clause: &str) -> String {
-    // The clauses begin "where" (char::to_uppercase would bring Unicode's case tables, ≈ 7 kB of
-    // wasm, for one letter).
-    match clause.strip_prefix("where") {
-        Some(rest) => format!(" Where{rest}."),
-        None if clause.is_empty() => String::new(),
-        None => format!(" {clause}."),
-    }
-}
-
-/// Where the repeating slew also rests at its other end (`q2`), what the paper's K_pr leaves there
-/// at these α, when it differs in stability from the analysis' rest point: " Where the slew
-/// holds at q2 = 4.71 rad the pair sits at 0.34 ± 23.72j 1/s: small δ fail there." Empty otherwise.
-fn other_end_words(
-    plant: &crate::model::PlantParameters,
-    alpha: [f64; 2],
-    here_stable: bool,
-    q2: Option<f64>,
-) -> String {
-    let Some(q2) = q2 else { return String::new() };
-    let m = crate::analysis::resonance::closed_form_a4(plant, alpha, q2, &crate::control::feedback::paper_gain());
-    let stable = m.complex_eigenvalues().iter().all(|e| e.re < 0.0);
-    if stable == here_stable {
-        return String::new();
-    }
-    // A clause: " Where …" after a sentence, "; where …" inside one (the callers join it).
-    format!(
-        "where the repeating slew holds at its other end (q2 = {} rad) the paper's gains leave the pair at {}: small \
-         δ {} there (“Linearize at: where the arm is headed” shows it)",
-        significant_trimmed(q2, 3),
-        eigenvalues_2x2(m.trace(), m.determinant()),
-        if stable { "work" } else { "fail" }
-    )
 }
