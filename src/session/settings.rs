@@ -261,16 +261,15 @@ impl Settings {
                 continue;
             }
             let before = *self;
-            let taken = self.set_text(p.key, text, source).and_then(|()| {
-                // The page takes a value only if the settings can still run together (an arm
-                // whose mass matrix fails, a k that does not fit m): that key alone is skipped.
-                if source == Source::Page {
-                    self.validate()
-                } else {
-                    Ok(())
-                }
-            });
-            if let Err(e) = taken {
+            // The page takes a value only if the settings can still run together (an arm whose mass
+            // matrix fails, a k that does not fit m); a value that was read but does not fit the
+            // others waits for them (`deferred`), any other is that key's notice alone.
+            let taken = match self.set_text(p.key, text, source) {
+                Ok(()) if source == Source::Page => self.validate().map_err(|e| (e, true)),
+                Ok(()) => Ok(()),
+                Err(e) => Err((e, false)),
+            };
+            if let Err((e, read)) = taken {
                 *self = before;
                 // A link's notice names the key and the text it holds, as for a value it cannot read.
                 let e = match e {
@@ -279,9 +278,7 @@ impl Settings {
                     }
                     e => e,
                 };
-                // Only a value that was read but does not fit the others waits for them.
-                if source == Source::Page && self.set_text(p.key, text, source).is_ok() {
-                    *self = before;
+                if read {
                     deferred.push((p, text, e));
                 } else {
                     fail(p.key, e)?;
