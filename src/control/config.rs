@@ -9,6 +9,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::{finite, positive, ConfigError};
+use super::sensing::SensorModel;
 use crate::model::params::{PlantParameters, SlewParameters};
 use crate::schema;
 
@@ -225,6 +226,8 @@ pub struct SimulationConfig {
     /// The arm the controller assumes (its predictor, friction observer and LQ design): this
     /// arm, or the paper's while the real one differs.
     pub model: ControllerModel,
+    /// What the controller reads and the motors can apply (the paper's perfect robot by default).
+    pub sensors: SensorModel,
 }
 
 impl Default for SimulationConfig {
@@ -243,6 +246,7 @@ impl Default for SimulationConfig {
             divergence_bound: DEFAULT_DIVERGENCE_BOUND,
             lq_design_q2: 0.0,
             model: ControllerModel::Arm,
+            sensors: SensorModel::default(),
         }
     }
 }
@@ -284,6 +288,7 @@ impl SimulationConfig {
         schema::LQ_TWIST_WEIGHT.check(self.lq.twist)?;
         schema::LQ_RATE_WEIGHT.check(self.lq.twist_rate)?;
         schema::LQ_TORQUE_WEIGHT.check(self.lq.torque)?;
+        self.sensors.validate()?;
         Ok(())
     }
 }

@@ -15,6 +15,7 @@ pub mod linear;
 pub mod metrics;
 pub mod predictive;
 pub mod price;
+pub mod sensing;
 pub mod traces;
 pub mod work;
 

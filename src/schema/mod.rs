@@ -384,11 +384,13 @@ impl Param {
 mod arm;
 mod panels;
 mod params;
+mod sensing;
 mod view;
 
 pub use arm::*;
 pub use panels::{PanelKind, Tab};
 pub use params::*;
+pub use sensing::*;
 pub use view::*;
 
 /// The parameter with this key.
