@@ -21,6 +21,7 @@ use super::history::{History, LoopState};
 use super::linear::inner_loop_rate;
 use super::metrics::{DivergenceReason, ErrorStats, Metrics};
 use super::predictive::{controller_vector, Predictor, StateVector, Sweep};
+use super::sensing::Measurement;
 use super::traces::{Snapshot, Traces};
 use crate::error::{ConfigError, Error};
 use crate::model::friction::FrictionObserver;
@@ -149,6 +150,8 @@ pub struct ClosedLoop {
     applied_torque: Vector2<f64>,
     /// An extra torque (the "poke") and the time it ends.
     disturbance: Option<(Vector2<f64>, f64)>,
+    /// The digital controller's last reading (`config.sensors`; unused while they are off).
+    measurement: Measurement,
 
     traces: Traces,
     stats: ErrorStats,
@@ -187,6 +190,7 @@ impl ClosedLoop {
             held_feedback: Vector2::zeros(),
             applied_torque: Vector2::zeros(),
             disturbance: None,
+            measurement: Measurement::new(config.sensors.seed),
             traces: Traces::default(),
             stats: ErrorStats::default(),
             divergence: None,
@@ -271,6 +275,7 @@ impl ClosedLoop {
         self.held_feedback = state.held_feedback;
         self.applied_torque = state.applied_torque;
         self.disturbance = state.disturbance;
+        self.measurement = state.measurement;
         self.divergence = None;
         self.sampled = false;
         self.traces.truncate_after(state.time);
@@ -297,6 +302,7 @@ impl ClosedLoop {
             held_feedback: self.held_feedback,
             applied_torque: self.applied_torque,
             disturbance: self.disturbance,
+            measurement: self.measurement,
             config: 0,
         }
     }
@@ -393,11 +399,12 @@ impl ClosedLoop {
         controller_vector(&self.plant_state.q, &self.plant_state.qdot, &self.integrators)
     }
 
-    /// The applied torque for controller state `x` at the current instant.
+    /// The applied torque for controller state `x` at the current instant, within the motors'
+    /// limit. A digital controller (sensors on) holds its preliminary feedback over the period.
     fn torque_at(&self, x: &StateVector) -> Vector2<f64> {
         let feedback = match self.config.inner_loop {
-            InnerLoop::Continuous => self.derived.gain * x,
-            InnerLoop::Sampled => self.held_feedback,
+            InnerLoop::Continuous if !self.config.sensors.is_digital() => self.derived.gain * x,
+            _ => self.held_feedback,
         };
         let compensation = match self.config.friction_compensation {
             FrictionCompensation::Continuous => self.observer.estimate,
@@ -408,7 +415,24 @@ impl ClosedLoop {
             Some((torque, until)) if self.time < until => torque,
             _ => Vector2::zeros(),
         };
-        self.v_applied + feedback + compensation + poke
+        let torque = self.v_applied + feedback + compensation + poke;
+        match self.config.sensors.limit() {
+            Some(limit) => torque.map(|t| t.clamp(-limit, limit)),
+            None => torque,
+        }
+    }
+
+    /// What the controller knows at this sampling instant: the true X (the paper's perfect
+    /// sensors), or X_m = (m, ν, w) read through the sensors.
+    fn read_state(&mut self) -> StateVector {
+        let sensors = self.config.sensors;
+        if !sensors.is_digital() {
+            return self.controller_state();
+        }
+        let reference = self.derived.reference.sample(self.time).q;
+        let (q, qdot) = (&self.plant_state.q, &self.plant_state.qdot);
+        self.measurement.read(&sensors, self.time, q, qdot, [reference[0], reference[1]]);
+        controller_vector(&self.measurement.angles, &self.measurement.velocities, &self.integrators)
     }
 
     /// The work of a sampling instant: new configuration, new v, new prediction.
@@ -428,7 +452,7 @@ impl ClosedLoop {
         // Kept before this instant's work, so that continuing from here repeats it.
         let state = self.loop_state();
         self.history.record(state, &self.config);
-        let x = self.controller_state();
+        let x = self.read_state();
         self.v_applied = self.v_next.take().unwrap_or_else(Vector2::zeros);
         self.held_compensation = self.observer.estimate;
         self.held_feedback = self.derived.gain * x;
@@ -459,8 +483,13 @@ impl ClosedLoop {
         let h = d.plant_step;
         let p = &d.model;
         let t0 = self.time;
+        // A digital controller's integrators and observer run on what it read, held (eq. (4.2)
+        // and (4.4) with the measured angle and the velocity estimate).
+        let digital = self.config.sensors.is_digital().then_some(self.measurement);
+        let observed = |qdot: &nalgebra::Vector3<f64>| digital.map_or(*qdot, |m| m.velocities);
 
-        self.observer.advance(p, self.plant_state.qdot[2], self.plant_state.qdot[1], 0.5 * h);
+        let v = observed(&self.plant_state.qdot);
+        self.observer.advance(p, v[2], v[1], 0.5 * h);
         let alpha = self.config.controller.alpha;
         let mut w = self.integrators;
         let this = &*self;
@@ -472,13 +501,20 @@ impl ClosedLoop {
             |_, q, v, w, _| this.torque_at(&controller_vector(q, v, w)),
             // ẇ_i = α_i³ (q_i − q_di), eq. (4.2).
             |s, q, _| {
-                let qd = d.reference.sample(t0 + s).q;
-                Vector2::new(alpha[0].powi(3) * (q[0] - qd[0]), alpha[1].powi(3) * (q[1] - qd[1]))
+                let e = match digital {
+                    Some(m) => m.error,
+                    None => {
+                        let qd = d.reference.sample(t0 + s).q;
+                        Vector2::new(q[0] - qd[0], q[1] - qd[1])
+                    }
+                };
+                Vector2::new(alpha[0].powi(3) * e[0], alpha[1].powi(3) * e[1])
             },
         );
         self.plant_state = plant_state;
         self.integrators = w;
-        self.observer.advance(p, self.plant_state.qdot[2], self.plant_state.qdot[1], 0.5 * h);
+        let v = observed(&self.plant_state.qdot);
+        self.observer.advance(p, v[2], v[1], 0.5 * h);
 
         self.step_in_period += 1;
         self.steps_taken += 1;
@@ -501,7 +537,13 @@ impl ClosedLoop {
         } else if e.amax() > self.config.divergence_bound {
             self.divergence = Some((self.time, DivergenceReason::ErrorBound));
         } else {
-            self.stats.record(self.time, &e, &self.applied_torque, d.reference.is_moving(self.time));
+            self.stats.record(
+                self.time,
+                &e,
+                &self.applied_torque,
+                d.reference.is_moving(self.time),
+                self.config.sensors.limit(),
+            );
         }
         if self.steps_taken.is_multiple_of(d.output_every as u64) || self.divergence.is_some() {
             self.record_trace();

@@ -11,6 +11,7 @@ use nalgebra::Vector2;
 
 use super::config::SimulationConfig;
 use super::predictive::StateVector;
+use super::sensing::Measurement;
 use crate::model::friction::FrictionObserver;
 use crate::model::plant::PlantState;
 
@@ -34,6 +35,8 @@ pub struct LoopState {
     pub held_feedback: Vector2<f64>,
     pub applied_torque: Vector2<f64>,
     pub disturbance: Option<(Vector2<f64>, f64)>,
+    /// The digital controller's last reading (unused while the sensors are off).
+    pub measurement: Measurement,
     /// Which configuration was in force (a serial number in the history's list of them).
     pub(super) config: u32,
 }

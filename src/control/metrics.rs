@@ -86,6 +86,14 @@ pub struct Metrics {
     pub errors_at_floor: bool,
     /// max |T_i| applied, N m.
     pub max_torque: [f64; 2],
+    /// RMS of e_i while the reference rests (the floor the sensors leave), rad; 0 if it never rests.
+    pub rms_error_rest: [f64; 2],
+    /// RMS of T_i over the whole run, N m.
+    pub rms_torque: [f64; 2],
+    /// RMS of T_i while the reference rests, N m: the torque's noise once the slew is done.
+    pub rms_torque_rest: [f64; 2],
+    /// The share of the time T_i was at the motors' limit (0 without a limit).
+    pub saturated: [f64; 2],
     /// The tracking errors e1, e2 at the last sample, rad.
     pub error: [f64; 2],
     pub verdict: Verdict,
@@ -228,6 +236,13 @@ pub(crate) struct ErrorStats {
     sum_sq: [f64; 2],
     samples: u64,
     max_torque: [f64; 2],
+    /// Σ e_i², Σ T_i² while the reference rests and the samples in it; Σ T_i² over all samples;
+    /// the samples with T_i at the limit.
+    rest_sum_sq: [f64; 2],
+    rest_torque_sq: [f64; 2],
+    rest_samples: u64,
+    torque_sq: [f64; 2],
+    saturated: [u64; 2],
     windows: std::collections::VecDeque<Window>,
     window_start: f64,
     window_max: f64,
@@ -251,14 +266,32 @@ pub(crate) struct ErrorStats {
 }
 
 impl ErrorStats {
-    pub(crate) fn record(&mut self, t: f64, e: &Vector2<f64>, torque: &Vector2<f64>, moving: bool) {
+    /// Records the errors `e` and the applied `torque` at `t` (every plant step); `limit` is the
+    /// motors' torque limit, if any.
+    pub(crate) fn record(
+        &mut self,
+        t: f64,
+        e: &Vector2<f64>,
+        torque: &Vector2<f64>,
+        moving: bool,
+        limit: Option<f64>,
+    ) {
         for i in 0..2 {
             let a = e[i].abs();
             let slot = if moving { &mut self.max_slew[i] } else { &mut self.max_after[i] };
             *slot = slot.max(a);
             self.sum_sq[i] += e[i] * e[i];
             self.max_torque[i] = self.max_torque[i].max(torque[i].abs());
+            self.torque_sq[i] += torque[i] * torque[i];
+            if !moving {
+                self.rest_sum_sq[i] += e[i] * e[i];
+                self.rest_torque_sq[i] += torque[i] * torque[i];
+            }
+            if limit.is_some_and(|l| torque[i].abs() >= l) {
+                self.saturated[i] += 1;
+            }
         }
+        self.rest_samples += u64::from(!moving);
         self.samples += 1;
         self.last = [e[0], e[1]];
         if self.was_moving && !moving {
@@ -413,8 +446,17 @@ impl ErrorStats {
             growth_rate,
             errors_at_floor: at_floor,
             max_torque: self.max_torque,
+            rms_error_rest: rms(self.rest_sum_sq, self.rest_samples),
+            rms_torque: rms(self.torque_sq, self.samples),
+            rms_torque_rest: rms(self.rest_torque_sq, self.rest_samples),
+            saturated: self.saturated.map(|k| k as f64 / n),
             error: self.last,
             verdict,
         }
     }
+}
+
+/// √(Σ/n) of each of two sums over `n` samples (0 for none).
+fn rms(sum_sq: [f64; 2], n: u64) -> [f64; 2] {
+    sum_sq.map(|s| if n == 0 { 0.0 } else { (s / n as f64).sqrt() })
 }

@@ -15,6 +15,7 @@
 //! X_m = (m, ν, w), never the true state. A torque limit clamps T1 and T2 (the motor's and link 2's)
 //! whether or not the rest is on.
 
+use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
 use crate::error::ConfigError;
@@ -156,6 +157,58 @@ impl NoiseSource {
         let phi = std::f64::consts::TAU * self.uniform();
         self.spare = Some(r * phi.sin());
         r * phi.cos()
+    }
+}
+
+/// What the controller read at its last sampling instant: the measured angles m_n, the velocity
+/// estimate ν_n and the noise source's state (all of it part of the loop's state, so that a run
+/// continued from a kept instant reads the same).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Measurement {
+    /// m_n = (q1, q2, θ) as read, rad.
+    pub angles: Vector3<f64>,
+    /// ν_n = (q̇1, q̇2, θ̇) as estimated, rad/s.
+    pub velocities: Vector3<f64>,
+    /// The errors as read, m_n − q_d(t_n) for links 1 and 2, rad: what the integrators w
+    /// integrate over the period (a digital integrator, w_{n+1} = w_n + δ α³ (m_n − q_d(t_n))).
+    pub error: Vector2<f64>,
+    /// When m_n was read (None before the first reading), s.
+    pub time: Option<f64>,
+    pub noise: NoiseSource,
+}
+
+impl Measurement {
+    /// Nothing read yet; the noise drawn from `seed`.
+    pub fn new(seed: u64) -> Self {
+        Self {
+            angles: Vector3::zeros(),
+            velocities: Vector3::zeros(),
+            error: Vector2::zeros(),
+            time: None,
+            noise: NoiseSource::new(seed),
+        }
+    }
+
+    /// Reads the true angles `q` and velocities `qdot` at time `t`, when the reference is at link
+    /// angles `reference`, through `sensors`. The
+    /// difference runs over the time since the last reading (δ, or the old δ across a change of
+    /// it); the first reading has no predecessor and estimates rest.
+    pub fn read(&mut self, sensors: &SensorModel, t: f64, q: &Vector3<f64>, qdot: &Vector3<f64>, reference: [f64; 2]) {
+        let mut m = Vector3::zeros();
+        for i in 0..3 {
+            m[i] = sensors.quantize(q[i]);
+            if sensors.noise > 0.0 {
+                m[i] += sensors.noise * self.noise.normal();
+            }
+        }
+        self.velocities = match (sensors.velocity, self.time) {
+            (VelocitySource::Exact, _) => *qdot,
+            (VelocitySource::Difference, Some(t0)) if t > t0 => (m - self.angles) / (t - t0),
+            (VelocitySource::Difference, _) => Vector3::zeros(),
+        };
+        self.angles = m;
+        self.error = Vector2::new(m[0] - reference[0], m[1] - reference[1]);
+        self.time = Some(t);
     }
 }
 

@@ -7,6 +7,7 @@ use crate::control::config::{
     ControllerModel, FrictionCompensation, InnerLoop, LqWeights, PreliminaryFeedbackChoice, SimulationConfig,
     TwistFeedback,
 };
+use crate::control::sensing::{SensorModel, VelocitySource};
 use crate::model::PlantParameters;
 use crate::schema::{self, Param, Value};
 
@@ -61,6 +62,7 @@ pub(super) fn quiet_at_default(key: &str) -> bool {
         || key == schema::TWIST_DAMPING.key
         || is_lq_weight(key)
         || schema::is_arm(key)
+        || schema::is_sensor(key)
 }
 
 /// A weight of the LQ design (`pf = lq`).
@@ -94,6 +96,8 @@ pub struct RunSettings {
     pub plant: PlantParameters,
     /// The arm the controller assumes.
     pub model: ControllerModel,
+    /// The sensors and the torque limit (the paper's perfect robot by default).
+    pub sensors: SensorModel,
 }
 
 impl Default for RunSettings {
@@ -115,6 +119,7 @@ impl Default for RunSettings {
             rest: RestPoint::from_name(choice(&schema::REST)).unwrap_or_default(),
             plant: PlantParameters::default(),
             model: ControllerModel::from_name(choice(&schema::MODEL)).unwrap_or_default(),
+            sensors: SensorModel::default(),
         }
     }
 }
@@ -135,6 +140,7 @@ impl RunSettings {
         c.inner_loop = self.inner;
         c.reference.repeat_hold = self.repeat.then_some(REPEAT_HOLD);
         c.model = self.model;
+        c.sensors = self.sensors;
         c
     }
 
@@ -155,6 +161,7 @@ impl RunSettings {
             rest: RestPoint::default(),
             plant: c.plant,
             model: c.model,
+            sensors: c.sensors,
         }
     }
 
@@ -177,6 +184,11 @@ impl RunSettings {
             "eps_ratio" => Value::Number(self.eps_ratio),
             "rest" => Value::Choice(self.rest.name()),
             "model" => Value::Choice(self.model.name()),
+            "encoder" => Value::Number(self.sensors.encoder_counts),
+            "noise" => Value::Number(self.sensors.noise),
+            "seed" => Value::Number(self.sensors.seed as f64),
+            "velocity" => Value::Choice(self.sensors.velocity.name()),
+            "torque_limit" => Value::Number(self.sensors.torque_limit),
             _ => return self.plant.get(key).map(Value::Number),
         })
     }
@@ -204,6 +216,13 @@ impl RunSettings {
             ("eps_ratio", Value::Number(x)) => self.eps_ratio = x,
             ("rest", Value::Choice(s)) => self.rest = RestPoint::from_name(s).unwrap_or(self.rest),
             ("model", Value::Choice(s)) => self.model = ControllerModel::from_name(s).unwrap_or(self.model),
+            ("encoder", Value::Number(x)) => self.sensors.encoder_counts = x,
+            ("noise", Value::Number(x)) => self.sensors.noise = x,
+            ("seed", Value::Number(x)) => self.sensors.seed = x as u64,
+            ("velocity", Value::Choice(s)) => {
+                self.sensors.velocity = VelocitySource::from_name(s).unwrap_or(self.sensors.velocity)
+            }
+            ("torque_limit", Value::Number(x)) => self.sensors.torque_limit = x,
             (_, Value::Number(x)) => return self.plant.set(key, x),
             _ => return false,
         }

@@ -133,6 +133,9 @@ impl Settings {
         if super::run_settings::is_lq_weight(key) {
             return used(PreliminaryFeedbackChoice::Lq);
         }
+        if key == schema::SEED.key {
+            return self.a.sensors.noise > 0.0;
+        }
         true
     }
 

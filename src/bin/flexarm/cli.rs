@@ -167,6 +167,7 @@ pub fn run_args(keys: &[&str]) -> Vec<Arg> {
         ),
     ));
     args.extend(schema::ARM_PARAMS.iter().copied().chain([&schema::MODEL]).map(param_arg));
+    args.extend(schema::SENSOR_PARAMS.iter().copied().map(param_arg));
     args.push(
         Arg::new("state")
             .long("state")
@@ -212,7 +213,9 @@ pub fn read_settings_of(m: &ArgMatches, keys: &[&str], uses_page_keys: bool) -> 
         settings.set_arm(id).map_err(lib_error)?;
     }
     for p in
-        schema::PARAMS.iter().filter(|p| keys.contains(&p.key) || schema::is_arm(p.key) || p.key == schema::MODEL.key)
+        schema::PARAMS.iter().filter(|p| {
+            keys.contains(&p.key) || schema::is_arm(p.key) || schema::is_sensor(p.key) || p.key == schema::MODEL.key
+        })
     {
         let text = match p.kind {
             Kind::Switch { .. } => m.get_flag(p.key).then(|| "1".to_string()),
