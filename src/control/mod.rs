@@ -16,6 +16,7 @@ pub mod metrics;
 pub mod predictive;
 pub mod price;
 pub mod sensing;
+pub mod sensor_sweep;
 pub mod traces;
 pub mod work;
 
