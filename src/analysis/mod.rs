@@ -8,9 +8,11 @@
 //! is read by the session, the CLI and the figures; it never runs the nonlinear simulation.
 
 pub mod design;
+pub mod digital;
 pub mod energy;
 pub mod judgement;
 pub mod lag;
+pub mod noise;
 pub mod resonance;
 pub mod sampled;
 pub mod stability_map;
@@ -18,6 +20,8 @@ pub mod structure;
 pub mod swing;
 pub mod windows;
 
+pub use digital::{digital_loop, DigitalLoop, Mat13};
+pub use noise::{digital_spectrum, discrete_lyapunov, noise_floor, NoiseFloor};
 pub use sampled::{
     analyze, describes, loop_eigenvalues, sampled_loop_matrix, spectral_radius, LinearSettings, LoopModel, Pole,
     StabilityReport,
