@@ -147,8 +147,7 @@ fn smaller_delta_trades_error_for_torque_noise() {
 /// η_{n−1})/δ — the difference's noise without its lag. ζ = (x, v, η_{n−1}). Returns ρ, rms e1
 /// and rms T1 for q = 2π/1024.
 fn scipy_model(delta: f64) -> [f64; 3] {
-    let mut controller = ControllerParameters::default();
-    controller.sampling_period = delta;
+    let controller = ControllerParameters { sampling_period: delta, ..ControllerParameters::default() };
     let (arm, k) = (linearize_at_rest(&PlantParameters::default(), [2.0; 2], [0.5, 0.0]), paper_gain());
     let m: Mat10 = sampled_loop_matrix(&arm, &arm, &k, &controller, InnerLoop::Sampled).unwrap();
     let k_pred = m.fixed_view::<2, 8>(8, 0).into_owned();
