@@ -9,6 +9,7 @@
 use nalgebra::{Complex, SMatrix};
 use serde::{Deserialize, Serialize};
 
+use super::digital::{digital_eigenvalues, digital_loop, digital_spectral_radius, DigitalLoop};
 use super::energy::{swing_energy, EnergyModel, SwingEnergy};
 use super::resonance::ResonanceReport;
 use crate::control::config::{
@@ -17,6 +18,7 @@ use crate::control::config::{
 };
 use crate::control::feedback::{resolve_gain, FeedbackGain};
 use crate::control::linear::{expm, limit_pair, linearize_at_rest, predictor_gain, LinearModel, Mat10, Mat8};
+use crate::control::sensing::VelocitySource;
 use crate::error::Error;
 use crate::model::params::PlantParameters;
 
@@ -40,6 +42,9 @@ pub struct LinearSettings {
     pub lq_design_q2: f64,
     /// The arm the controller assumes.
     pub model: ControllerModel,
+    /// The velocity source of a digital controller (sensors on, [`super::digital`]); None for
+    /// the paper's loop. The noise level does not change ρ, so it is not here.
+    pub sensing: Option<VelocitySource>,
 }
 
 impl LinearSettings {
@@ -55,6 +60,7 @@ impl LinearSettings {
             inner_loop: config.inner_loop,
             lq_design_q2: config.lq_design_q2,
             model: config.model,
+            sensing: config.sensors.is_digital().then_some(config.sensors.velocity),
         }
     }
 
@@ -88,6 +94,9 @@ impl LinearSettings {
             ..SimulationConfig::default()
         };
         c.reference.end = self.rest;
+        if let Some(velocity) = self.sensing {
+            c.sensors.velocity = velocity;
+        }
         c
     }
 }
@@ -148,8 +157,20 @@ impl LoopModel {
         sampled_loop_matrix(&self.model, predictor, &self.gain, &controller, self.settings.inner_loop)
     }
 
-    /// ρ at sampling period `delta`.
+    /// The digital loop (sensors on) at sampling period `delta` with velocities from `velocity`
+    /// (validated against the schema's range): Φ_p, Γ_p from the arm, K_pred from the predictor.
+    pub fn digital_loop(&self, delta: f64, velocity: VelocitySource) -> Result<DigitalLoop, Error> {
+        let mut controller = self.settings.controller;
+        controller.sampling_period = delta;
+        controller.validate()?;
+        digital_loop(&self.model, self.predictor(), &self.gain, &controller, velocity)
+    }
+
+    /// ρ at sampling period `delta`: the digital loop's with sensors on, else the sampled loop's.
     pub fn spectral_radius(&self, delta: f64) -> Result<f64, Error> {
+        if let Some(velocity) = self.settings.sensing {
+            return Ok(digital_spectral_radius(&self.digital_loop(delta, velocity)?.f));
+        }
         Ok(loop_eigenvalues(&self.loop_matrix(delta)?).first().map(|c| c.norm()).unwrap_or(0.0))
     }
 
@@ -190,10 +211,16 @@ impl LoopModel {
         self.report_at(self.settings.controller.sampling_period)
     }
 
-    /// The whole report at sampling period `delta`.
+    /// The whole report at sampling period `delta`. With sensors on, ρ and the poles (thirteen)
+    /// are the digital loop's, and the swing's mode and energy (of the 10-state map) are left out.
     pub fn report_at(&self, delta: f64) -> Result<StabilityReport, Error> {
-        let phi = self.loop_matrix(delta)?;
-        let ev = loop_eigenvalues(&phi);
+        let (ev, phi) = match self.settings.sensing {
+            Some(velocity) => (digital_eigenvalues(&self.digital_loop(delta, velocity)?.f), None),
+            None => {
+                let phi = self.loop_matrix(delta)?;
+                (loop_eigenvalues(&phi), Some(phi))
+            }
+        };
         let spectral_radius = ev.first().map(|c| c.norm()).unwrap_or(0.0);
         let poles = ev
             .iter()
@@ -232,7 +259,7 @@ impl LoopModel {
             swing_mode: None,
             swing_energy: None,
         };
-        if let [Some(i), _] = report.flexible_pair() {
+        if let (Some(phi), [Some(i), _]) = (phi, report.flexible_pair()) {
             let [re, im] = report.poles[i].discrete;
             report.swing_mode = super::swing::SwingMode::new(&phi, Complex::new(re, im));
             report.swing_energy = report.swing_mode.as_ref().and_then(|m| self.swing_energy(delta, m).ok());
@@ -295,7 +322,7 @@ pub struct StabilityReport {
     pub spectral_radius: f64,
     /// ln ρ / δ, the asymptotic growth rate of the errors, 1/s.
     pub growth_rate: f64,
-    /// All ten eigenvalues, largest |λ| first.
+    /// All the eigenvalues (ten; thirteen for the digital loop), largest |λ| first.
     pub poles: Vec<Pole>,
     /// The δ → 0 pair A4 without preliminary feedback, 1/s.
     pub limit_pair_open: [[f64; 2]; 2],
