@@ -17,6 +17,7 @@ pub mod judgement;
 pub mod lag;
 pub mod noise;
 pub mod resonance;
+pub mod sensor_study;
 pub mod sampled;
 pub mod stability_map;
 pub mod structure;

@@ -90,8 +90,9 @@ pub struct Metrics {
     pub rms_error_rest: [f64; 2],
     /// RMS of T_i over the whole run, N m.
     pub rms_torque: [f64; 2],
-    /// RMS of T_i while the reference rests, N m: the torque's noise once the slew is done.
-    pub rms_torque_rest: [f64; 2],
+    /// The standard deviation of T_i while the reference rests, N m: how much the torque
+    /// fluctuates about its mean (the friction's compensation) once the slew is done — its noise.
+    pub torque_fluctuation_rest: [f64; 2],
     /// The share of the time T_i was at the motors' limit (0 without a limit).
     pub saturated: [f64; 2],
     /// The tracking errors e1, e2 at the last sample, rad.
@@ -240,6 +241,7 @@ pub(crate) struct ErrorStats {
     /// the samples with T_i at the limit.
     rest_sum_sq: [f64; 2],
     rest_torque_sq: [f64; 2],
+    rest_torque_sum: [f64; 2],
     rest_samples: u64,
     torque_sq: [f64; 2],
     saturated: [u64; 2],
@@ -286,6 +288,7 @@ impl ErrorStats {
             if !moving {
                 self.rest_sum_sq[i] += e[i] * e[i];
                 self.rest_torque_sq[i] += torque[i] * torque[i];
+                self.rest_torque_sum[i] += torque[i];
             }
             if limit.is_some_and(|l| torque[i].abs() >= l) {
                 self.saturated[i] += 1;
@@ -448,7 +451,7 @@ impl ErrorStats {
             max_torque: self.max_torque,
             rms_error_rest: rms(self.rest_sum_sq, self.rest_samples),
             rms_torque: rms(self.torque_sq, self.samples),
-            rms_torque_rest: rms(self.rest_torque_sq, self.rest_samples),
+            torque_fluctuation_rest: deviation(self.rest_torque_sum, self.rest_torque_sq, self.rest_samples),
             saturated: self.saturated.map(|k| k as f64 / n),
             error: self.last,
             verdict,
@@ -459,4 +462,16 @@ impl ErrorStats {
 /// √(Σ/n) of each of two sums over `n` samples (0 for none).
 fn rms(sum_sq: [f64; 2], n: u64) -> [f64; 2] {
     sum_sq.map(|s| if n == 0 { 0.0 } else { (s / n as f64).sqrt() })
+}
+
+/// The standard deviation of each of two series from its sum and sum of squares over `n` samples.
+fn deviation(sum: [f64; 2], sum_sq: [f64; 2], n: u64) -> [f64; 2] {
+    if n == 0 {
+        return [0.0; 2];
+    }
+    let n = n as f64;
+    [0, 1].map(|i| {
+        let mean = sum[i] / n;
+        (sum_sq[i] / n - mean * mean).max(0.0).sqrt()
+    })
 }

@@ -23,8 +23,8 @@ pub struct SweepPoint {
     pub max_error_slew: [f64; 2],
     /// RMS e1, e2 at rest after the slew, rad.
     pub rms_error_rest: [f64; 2],
-    /// RMS T1, T2 at rest after the slew, N m.
-    pub rms_torque_rest: [f64; 2],
+    /// The standard deviation of T1, T2 at rest after the slew, N m.
+    pub torque_fluctuation_rest: [f64; 2],
     /// max |T1|, |T2|, N m.
     pub max_torque: [f64; 2],
     /// The share of the time T1, T2 sat at the limit.
@@ -39,19 +39,11 @@ impl SweepPoint {
             sampling_period: delta,
             max_error_slew: m.max_error_slew,
             rms_error_rest: m.rms_error_rest,
-            rms_torque_rest: m.rms_torque_rest,
+            torque_fluctuation_rest: m.torque_fluctuation_rest,
             max_torque: m.max_torque,
             saturated: m.saturated,
             diverged: matches!(m.verdict, super::metrics::Verdict::Diverged { .. }),
         }
-    }
-
-    /// The largest tracking error of the run, slew or rest: what a user of the arm sees, rad.
-    pub fn worst_error(&self) -> f64 {
-        if self.diverged {
-            return f64::INFINITY;
-        }
-        self.max_error_slew[0].max(self.max_error_slew[1]).max(self.rms_error_rest[0]).max(self.rms_error_rest[1])
     }
 }
 
@@ -121,20 +113,5 @@ impl SensorSweep {
     pub fn finish(&mut self) -> Result<(), Error> {
         while self.step()? {}
         Ok(())
-    }
-
-    /// The δ whose run with the settings' sensors has the smallest worst error, if it lies
-    /// strictly inside the list (a best δ exists there: smaller and larger are both worse),
-    /// with its index. None until done.
-    pub fn best(&self) -> Option<(usize, f64)> {
-        if !self.is_done() || self.real.len() < 3 {
-            return None;
-        }
-        let (i, _) = self
-            .real
-            .iter()
-            .enumerate()
-            .min_by(|a, b| a.1.worst_error().total_cmp(&b.1.worst_error()))?;
-        (i > 0 && i + 1 < self.real.len()).then(|| (i, self.deltas[i]))
     }
 }

@@ -18,6 +18,7 @@ pub mod presets;
 pub mod python;
 pub mod query;
 pub mod run;
+mod sensor_study;
 mod run_settings;
 pub mod settings;
 pub mod status;
@@ -35,6 +36,7 @@ use crate::schema::{self, Kind, Scope, Value};
 pub use controls::{display, ControlValue};
 pub use map_cache::{MapSide, Maps};
 pub use presets::{arm, preset, ArmPreset, Preset, ARMS, PRESETS};
+pub use sensor_study::SensorStudyView;
 pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS, HISTORY_SECONDS};
 pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source, ViewSettings};
 pub use status::{run_status, RunStatus};
@@ -131,6 +133,8 @@ pub struct Session {
     viewing: Option<f64>,
     /// What the classroom hides now.
     hidden: Hidden,
+    /// The study of what bounds δ with run A's sensors, run a little at a time.
+    sensor_study: sensor_study::StudyJob,
 }
 
 impl Session {
@@ -150,6 +154,7 @@ impl Session {
             trace_seconds: DEFAULT_TRACE_SECONDS,
             viewing: None,
             hidden: Hidden::default(),
+            sensor_study: sensor_study::StudyJob::default(),
         };
         session.maps.show(&session.linear_settings());
         session.maps.enabled = settings.view.shown().map;

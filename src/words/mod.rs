@@ -23,6 +23,7 @@ pub mod equations;
 pub mod judgement;
 pub mod numbers;
 pub mod panels;
+pub mod sensors;
 pub mod settings;
 pub mod story;
 pub mod structure;

@@ -1,0 +1,120 @@
+//! What bounds δ from below with these sensors (issue 36), as facts: for each δ of a list, the
+//! simulated slew with the settings' sensors and with perfect ones ([`crate::control::sensor_sweep`]),
+//! the linear prediction of the noise ([`super::noise`]); the δ where the tracking error during
+//! the slew is smallest, and what the numbers on either side of it show. Values, never English.
+
+use super::noise::{noise_floor, NoiseFloor};
+use super::sampled::{LinearSettings, LoopModel};
+use crate::control::config::SimulationConfig;
+use crate::control::sensor_sweep::{SensorSweep, SweepPoint};
+
+/// The sampling periods studied, s: the slider's lower end to past the paper's largest working δ
+/// with K_pr (0.08 s at α = 2), roughly evenly on a log scale.
+pub const STUDY_DELTAS: [f64; 11] = [0.002, 0.003, 0.005, 0.007, 0.01, 0.015, 0.02, 0.03, 0.05, 0.07, 0.1];
+
+/// One δ of the study.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct StudyRow {
+    pub sampling_period: f64,
+    /// The run with the settings' sensors (None until simulated).
+    pub real: Option<SweepPoint>,
+    /// The run with perfect sensors and no torque limit.
+    pub ideal: Option<SweepPoint>,
+    /// The linear prediction of the noise (None where the digital loop is unstable or the
+    /// sensors read exactly).
+    pub predicted: Option<NoiseFloor>,
+}
+
+/// Where the tracking error is smallest, once every run is in.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Best {
+    /// Runs are still to come.
+    Pending,
+    /// A best δ exists: the smallest δ of the list tracks markedly worse (by over
+    /// [`MARKEDLY_WORSE`]) than the δ at `index`, and so do the larger ones.
+    Inside { index: usize },
+    /// The least error is at `index`, and down to the smallest δ of the list the error stays
+    /// within [`MARKEDLY_WORSE`] of it: no best δ inside the list.
+    Smallest { index: usize },
+    /// The largest δ tracks best (the sensors' error outweighs the sampling everywhere).
+    Largest,
+}
+
+/// The smallest δ tracks "markedly worse" than the best when its error exceeds the least by this
+/// factor: below it the differences are of the order of how the errors vary from one δ to the
+/// next (the friction's stick and slip, where a joint stops), not a trend.
+pub const MARKEDLY_WORSE: f64 = 1.25;
+
+/// The whole study.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct SensorStudy {
+    pub rows: Vec<StudyRow>,
+    pub best: Best,
+    /// The smallest δ's tracking error over the least of all (≥ 1; None until done or where
+    /// the smallest δ diverged): what sampling as fast as the list goes costs.
+    pub smallest_excess: Option<f64>,
+    /// The share of the runs done, 0 … 1.
+    pub progress: f64,
+}
+
+impl SensorStudy {
+    /// The facts of `sweep` so far, with the prediction for `config`'s sensors at each δ.
+    pub fn of(config: &SimulationConfig, sweep: &SensorSweep) -> Self {
+        let model = config
+            .sensors
+            .is_digital()
+            .then(|| LoopModel::new(&LinearSettings::of(config, None)).ok())
+            .flatten();
+        let rows: Vec<StudyRow> = sweep
+            .deltas()
+            .iter()
+            .enumerate()
+            .map(|(i, &d)| StudyRow {
+                sampling_period: d,
+                real: sweep.real.get(i).copied(),
+                ideal: sweep.ideal.get(i).copied(),
+                predicted: model.as_ref().and_then(|m| noise_floor(m, d, &config.sensors).ok()),
+            })
+            .collect();
+        let (best, smallest_excess) = match sweep.is_done() {
+            false => (Best::Pending, None),
+            true => best_of(&rows),
+        };
+        Self { rows, best, smallest_excess, progress: sweep.progress() }
+    }
+
+    /// The row of the best δ, if one exists inside the list.
+    pub fn best_row(&self) -> Option<&StudyRow> {
+        match self.best {
+            Best::Inside { index } => self.rows.get(index),
+            _ => None,
+        }
+    }
+}
+
+/// The tracking error during the slew that the study minimizes: max |e1|, |e2| while the
+/// reference moves (∞ for a run that diverged), rad.
+pub fn tracking_error(p: &SweepPoint) -> f64 {
+    if p.diverged {
+        f64::INFINITY
+    } else {
+        p.max_error_slew[0].max(p.max_error_slew[1])
+    }
+}
+
+fn best_of(rows: &[StudyRow]) -> (Best, Option<f64>) {
+    let errors: Vec<f64> = rows.iter().map(|r| r.real.as_ref().map_or(f64::INFINITY, tracking_error)).collect();
+    let Some((index, &least)) = errors.iter().enumerate().min_by(|a, b| a.1.total_cmp(b.1)) else {
+        return (Best::Pending, None);
+    };
+    let excess = (errors[0].is_finite() && least > 0.0).then(|| errors[0] / least);
+    let best = if index + 1 == rows.len() && index > 0 {
+        Best::Largest
+    } else if excess.is_some_and(|x| x > MARKEDLY_WORSE) {
+        Best::Inside { index }
+    } else {
+        Best::Smallest { index }
+    };
+    (best, excess)
+}

@@ -1,0 +1,91 @@
+//! What bounds δ from below with run A's sensors (issue 36): the study of
+//! [`crate::analysis::sensor_study`] as a job the page runs a little at a time — one simulated
+//! slew per call, so the table fills while the page stays live — and restarts when a setting it
+//! depends on changes (anything of run A but δ, which the study sweeps).
+
+use super::Session;
+use crate::analysis::noise::noise_floor;
+use crate::analysis::sensor_study::{Best, SensorStudy, STUDY_DELTAS};
+use crate::analysis::{LinearSettings, LoopModel};
+use crate::control::config::SimulationConfig;
+use crate::control::sensor_sweep::SensorSweep;
+use crate::error::Error;
+use crate::words::sensors::{prediction_text, sensors_text, study_summary, study_table};
+
+/// The running study and what it was started for.
+#[derive(Clone, Debug, Default)]
+pub struct StudyJob {
+    /// Run A's configuration with δ normalized away.
+    key: Option<SimulationConfig>,
+    sweep: Option<SensorSweep>,
+}
+
+/// The study as the page shows it: facts, and the words and table rendered from them.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct SensorStudyView {
+    pub study: SensorStudy,
+    /// "a 1024-count encoder, velocities differenced over δ, …".
+    pub sensors: String,
+    /// The header row and one row per δ, as text.
+    pub table: Vec<Vec<String>>,
+    /// The row of the least error (0-based, without the header), once known.
+    pub best_row: Option<usize>,
+    /// The row nearest run A's δ.
+    pub current_row: usize,
+    pub summary: Vec<String>,
+    /// The linear prediction at run A's δ.
+    pub prediction: String,
+    pub done: bool,
+}
+
+/// Run A's configuration with δ normalized away: the study's key.
+fn study_key(config: &SimulationConfig) -> SimulationConfig {
+    let mut c = *config;
+    c.controller.sampling_period = STUDY_DELTAS[0];
+    c
+}
+
+impl Session {
+    /// Advances the study of run A's sensors by up to `runs` simulated slews (0: only report),
+    /// starting it over if run A's settings other than δ changed; returns where it stands.
+    pub fn sensor_study_step(&mut self, runs: usize) -> Result<SensorStudyView, Error> {
+        let config = self.settings.a.config();
+        let key = study_key(&config);
+        let job = &mut self.sensor_study;
+        if job.key != Some(key) || job.sweep.is_none() {
+            job.sweep = Some(SensorSweep::new(key, &STUDY_DELTAS)?);
+            job.key = Some(key);
+        }
+        let sweep = job.sweep.as_mut().ok_or(Error::Analysis("no study"))?;
+        for _ in 0..runs {
+            if !sweep.step()? {
+                break;
+            }
+        }
+        let study = SensorStudy::of(&config, sweep);
+        let delta = config.controller.sampling_period;
+        let floor = config
+            .sensors
+            .is_digital()
+            .then(|| LoopModel::new(&LinearSettings::of(&config, None)).and_then(|m| noise_floor(&m, delta, &config.sensors)))
+            .and_then(Result::ok);
+        let current_row = STUDY_DELTAS
+            .iter()
+            .enumerate()
+            .min_by(|a, b| (a.1.ln() - delta.ln()).abs().total_cmp(&(b.1.ln() - delta.ln()).abs()))
+            .map_or(0, |(i, _)| i);
+        Ok(SensorStudyView {
+            sensors: sensors_text(&config.sensors),
+            table: study_table(&study, &config.sensors),
+            best_row: match study.best {
+                Best::Inside { index } | Best::Smallest { index } => Some(index),
+                _ => None,
+            },
+            current_row,
+            summary: study_summary(&study, &config.sensors),
+            prediction: prediction_text(delta, floor.as_ref(), &config.sensors),
+            done: sweep.is_done(),
+            study,
+        })
+    }
+}

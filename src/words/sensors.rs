@@ -1,0 +1,241 @@
+//! The sensors, the torque limit and what they do to δ's lower bound, in words: rendered from the
+//! facts of [`crate::analysis::sensor_study`] and [`crate::analysis::noise`], never canned.
+
+use crate::analysis::noise::NoiseFloor;
+use crate::analysis::sensor_study::{tracking_error, Best, SensorStudy, StudyRow, MARKEDLY_WORSE};
+use crate::control::sensing::{SensorModel, VelocitySource};
+use crate::control::sensor_sweep::SWEEP_SECONDS;
+use crate::plot::format::{number, significant};
+
+/// The sensors in a few words: "a 1024-count encoder, velocities differenced over δ, torque at
+/// most 150 N m", or the paper's "perfect sensors, unlimited torque".
+pub fn sensors_text(s: &SensorModel) -> String {
+    let mut parts = Vec::new();
+    if s.encoder_counts > 0.0 {
+        parts.push(format!("a {}-count encoder", number(s.encoder_counts)));
+    }
+    if s.noise > 0.0 {
+        parts.push(format!("angle noise σ = {} rad", significant(s.noise, 2)));
+    }
+    if s.velocity == VelocitySource::Difference {
+        parts.push("velocities differenced over δ".to_string());
+    }
+    if let Some(limit) = s.limit() {
+        parts.push(format!("torque at most {} N m", number(limit)));
+    }
+    if parts.is_empty() {
+        "perfect sensors, unlimited torque (the paper's)".to_string()
+    } else {
+        parts.join(", ")
+    }
+}
+
+/// The study's table: a header row (with units) and one row per δ, every cell text; cells not yet
+/// simulated are "…", predictions that do not exist "—".
+pub fn study_table(study: &SensorStudy, sensors: &SensorModel) -> Vec<Vec<String>> {
+    let limited = sensors.limit().is_some();
+    let mut header = vec![
+        "δ [s]".to_string(),
+        "max error in the slew [rad]".to_string(),
+        "… with perfect sensors [rad]".to_string(),
+        "RMS error at rest [rad]".to_string(),
+        "T1 fluctuation at rest (RMS about its mean) [N m]".to_string(),
+        "peak T1 [N m]".to_string(),
+    ];
+    if limited {
+        header.push("time at the limit".to_string());
+    }
+    header.push("predicted RMS T1 noise [N m]".to_string());
+    let mut table = vec![header];
+    for r in &study.rows {
+        let sim = |f: &dyn Fn(&crate::control::sensor_sweep::SweepPoint) -> String, p: Option<_>| {
+            p.as_ref().map_or("…".to_string(), f)
+        };
+        let mut row = vec![
+            number(r.sampling_period),
+            sim(&|p| error_cell(tracking_error(p)), r.real),
+            sim(&|p| error_cell(tracking_error(p)), r.ideal),
+            sim(&|p| significant(p.rms_error_rest[0].max(p.rms_error_rest[1]), 2), r.real),
+            sim(&|p| significant(p.torque_fluctuation_rest[0], 2), r.real),
+            sim(&|p| significant(p.max_torque[0], 3), r.real),
+        ];
+        if limited {
+            row.push(sim(&|p| percent(p.saturated[0].max(p.saturated[1])), r.real));
+        }
+        row.push(r.predicted.map_or("—".to_string(), |f| significant(f.rms_torque[0], 2)));
+        table.push(row);
+    }
+    table
+}
+
+fn error_cell(e: f64) -> String {
+    if e.is_finite() {
+        significant(e, 2)
+    } else {
+        "diverged".to_string()
+    }
+}
+
+fn percent(share: f64) -> String {
+    if share == 0.0 {
+        "0 %".to_string()
+    } else if share < 0.01 {
+        "< 1 %".to_string()
+    } else {
+        format!("{:.0} %", 100.0 * share)
+    }
+}
+
+/// The study's findings in sentences, each from the numbers of the rows it names.
+pub fn study_summary(study: &SensorStudy, sensors: &SensorModel) -> Vec<String> {
+    let mut out = vec![format!(
+        "Each row is the paper's 1-s slew and {} s at rest, simulated with {} and again with perfect sensors.",
+        number(SWEEP_SECONDS - 1.0),
+        sensors_text(sensors)
+    )];
+    let real = |r: &StudyRow| r.real.as_ref().map_or(f64::INFINITY, tracking_error);
+    let ideal = |r: &StudyRow| r.ideal.as_ref().map_or(f64::INFINITY, tracking_error);
+    let (Some(first), Some(last)) = (study.rows.first(), study.rows.last()) else {
+        return out;
+    };
+    let best = match study.best {
+        Best::Pending => {
+            out.push(format!("Simulating: {:.0} % done.", 100.0 * study.progress));
+            return out;
+        }
+        Best::Inside { index } | Best::Smallest { index } => &study.rows[index],
+        Best::Largest => last,
+    };
+    let at = |r: &StudyRow| format!("{} s", number(r.sampling_period));
+    out.push(match study.best {
+        Best::Inside { .. } => format!(
+            "A best δ exists with these sensors: the error during the slew is smallest at δ = {} ({} rad), and \
+             both faster and slower sampling track worse — at {}, {}× worse.",
+            at(best),
+            significant(real(best), 2),
+            at(first),
+            significant(study.smallest_excess.unwrap_or(f64::NAN), 2)
+        ),
+        Best::Smallest { index: 0 } => format!(
+            "The error during the slew is smallest at the smallest δ studied, {} ({} rad): with these sensors, \
+             sampling faster still helps down to it.",
+            at(best),
+            significant(real(best), 2)
+        ),
+        Best::Smallest { .. } => format!(
+            "The error during the slew is smallest at δ = {} ({} rad) and stays within {} % of that down to the \
+             smallest δ studied, {}: no best δ above it — sampling faster neither helps nor hurts much there.",
+            at(best),
+            significant(real(best), 2),
+            number(100.0 * (MARKEDLY_WORSE - 1.0)),
+            at(first)
+        ),
+        _ => format!(
+            "The error during the slew is smallest at the largest δ studied, {} ({} rad).",
+            at(best),
+            significant(real(best), 2)
+        ),
+    });
+    if let Best::Inside { .. } = study.best {
+        out.push(below_best(first, best, sensors));
+    }
+    if let Some(s) = above_best(study, best, &real, &ideal) {
+        out.push(s);
+    }
+    out
+}
+
+/// Why the smallest δ tracks worse than the best: how far it is from perfect sensors, and the
+/// torque's noise and time at the limit there.
+fn below_best(first: &StudyRow, best: &StudyRow, sensors: &SensorModel) -> String {
+    let (Some(f), Some(b), Some(fi), Some(bi)) = (first.real, best.real, first.ideal, best.ideal) else {
+        return String::new();
+    };
+    let (e, ei) = (tracking_error(&f), tracking_error(&fi));
+    let mut s = format!("At δ = {} s the error is {} rad", number(first.sampling_period), error_cell(e));
+    if e.is_finite() && ei > 0.0 {
+        s += &format!(", {}× what perfect sensors give ({} rad)", significant(e / ei, 2), significant(ei, 2));
+        // Faster sampling helps the perfect robot and hurts this one: what differs, the sensors,
+        // is what grows.
+        if ei < tracking_error(&bi) {
+            s += ": the sensors' error, not the sampling, sets it there";
+        }
+    }
+    let (tf, tb) = (f.torque_fluctuation_rest[0], b.torque_fluctuation_rest[0]);
+    if tf > 1.2 * tb {
+        s += &format!(
+            "; T1 fluctuates by {} N m RMS at rest there, against {} N m at {} s",
+            significant(tf, 2),
+            significant(tb, 2),
+            number(best.sampling_period)
+        );
+    }
+    if let Some(limit) = sensors.limit() {
+        let sat = f.saturated[0].max(f.saturated[1]);
+        if sat > 0.0 {
+            s += &format!(", and a motor sits at its {} N m limit {} of the time", number(limit), percent(sat));
+        }
+    }
+    s + "."
+}
+
+/// What happens above the best δ: the largest δ that did not diverge, against perfect sensors.
+fn above_best(
+    study: &SensorStudy,
+    best: &StudyRow,
+    real: &dyn Fn(&StudyRow) -> f64,
+    ideal: &dyn Fn(&StudyRow) -> f64,
+) -> Option<String> {
+    let top = study
+        .rows
+        .iter()
+        .rev()
+        .find(|r| r.sampling_period > best.sampling_period && real(r).is_finite())?;
+    let (e, ei) = (real(top), ideal(top));
+    let mut s = format!(
+        "At δ = {} s the error is {} rad, and {} rad with perfect sensors",
+        number(top.sampling_period),
+        significant(e, 2),
+        error_cell(ei)
+    );
+    if ei.is_finite() && ei > 0.3 * e {
+        s += ": there the sampling itself sets it";
+    }
+    let diverged = study.rows.iter().find(|r| r.real.is_some_and(|p| p.diverged));
+    if let Some(d) = diverged {
+        s += &format!("; from δ = {} s the run with these sensors diverges", number(d.sampling_period));
+    }
+    Some(s + ".")
+}
+
+/// The linear prediction at the current δ, and where it stops applying.
+pub fn prediction_text(delta: f64, floor: Option<&NoiseFloor>, sensors: &SensorModel) -> String {
+    if !sensors.is_digital() {
+        return "With perfect sensors there is no noise to predict: turn on an encoder, noise or differenced \
+                velocities."
+            .to_string();
+    }
+    let Some(f) = floor else {
+        return format!(
+            "At δ = {} s the noise-free digital loop is unstable (ρ ≥ 1): there is no noise floor to predict.",
+            number(delta)
+        );
+    };
+    let mut s = format!(
+        "Linear prediction at δ = {} s (each angle's error as white noise of variance Δ²/12 + σ², the friction \
+         taken as cancelled): RMS e1 {} rad, \
+         e2 {} rad, T1 {} N m, T2 {} N m; ρ of the noise-free digital loop {}.",
+        number(delta),
+        significant(f.rms_error[0], 2),
+        significant(f.rms_error[1], 2),
+        significant(f.rms_torque[0], 2),
+        significant(f.rms_torque[1], 2),
+        crate::words::numbers::rho(f.spectral_radius)
+    );
+    if sensors.encoder_counts > 0.0 {
+        s += " It counts on the arm crossing many counts between samples, as in the slew; at rest the reading \
+              barely changes: the arm settles up to half a count off, more than predicted, and the torque is \
+              quieter.";
+    }
+    s
+}

@@ -1,0 +1,89 @@
+//! What bounds δ from below with real sensors (issue 36): the best δ the simulation finds, and
+//! how it moves with the encoder's resolution and the torque limit — properties over several
+//! values, on more than one arm and α, so that the page's sentences about it are tested.
+
+use flexarm::analysis::sensor_study::Best;
+use flexarm::session::{Session, SensorStudyView, Settings, Source};
+
+fn study(query: &str) -> SensorStudyView {
+    let mut s = Settings::default();
+    s.read(query, Source::CommandLine).unwrap();
+    let mut session = Session::new(s).unwrap();
+    let v = session.sensor_study_step(1000).unwrap();
+    assert!(v.done, "{query}");
+    v
+}
+
+/// The smallest δ's error over the least: what sampling as fast as the list goes costs.
+fn excess(v: &SensorStudyView) -> f64 {
+    v.study.smallest_excess.expect("the smallest δ does not diverge")
+}
+
+fn non_increasing(values: &[f64], what: &str) {
+    // 10 % slack: near its least the error varies from one δ to the next by about that much
+    // (where the friction's stick and slip let a joint stop).
+    for w in values.windows(2) {
+        assert!(w[1] <= 1.1 * w[0], "{what}: {values:?}");
+    }
+}
+
+#[test]
+fn a_coarse_encoder_has_a_best_delta_and_a_fine_one_does_not() {
+    // Velocities differenced over δ: the reading's error divided by δ.
+    for base in ["alpha=2", "alpha=3", "ir1=3.878"] {
+        let counts = [256, 512, 1024, 4096, 16384, 65536];
+        let views: Vec<SensorStudyView> =
+            counts.iter().map(|n| study(&format!("{base}&encoder={n}&velocity=difference"))).collect();
+        let excesses: Vec<f64> = views.iter().map(excess).collect();
+        non_increasing(&excesses, &format!("{base}: the cost of sampling fast, as the counts grow"));
+        for (n, v) in counts.iter().zip(&views) {
+            let inside = matches!(v.study.best, Best::Inside { .. });
+            if *n <= 512 {
+                assert!(inside, "{base}, {n} counts: {:?}", v.study.best);
+            }
+            if *n >= 16384 {
+                assert!(!inside, "{base}, {n} counts: {:?}", v.study.best);
+            }
+            // The page says what the facts say.
+            assert_eq!(v.summary.iter().any(|s| s.starts_with("A best δ exists")), inside, "{base}, {n}");
+        }
+        // The best δ of a coarse encoder is larger than the smallest δ, and not smaller than a
+        // finer one's.
+        let best = |v: &SensorStudyView| match v.study.best {
+            Best::Inside { index } | Best::Smallest { index } => v.study.rows[index].sampling_period,
+            _ => f64::NAN,
+        };
+        assert!(best(&views[0]) > 0.002 && best(&views[0]) >= best(&views[5]), "{base}");
+    }
+}
+
+#[test]
+fn a_lower_torque_limit_makes_fast_sampling_cost_more() {
+    let limits = [105.0, 120.0, 150.0, 200.0, 0.0];
+    let excesses: Vec<f64> = limits
+        .iter()
+        .map(|l| excess(&study(&format!("encoder=1024&velocity=difference&torque_limit={l}"))))
+        .collect();
+    // The limit rises left to right (0: none).
+    let reversed: Vec<f64> = excesses.iter().rev().copied().collect();
+    for w in reversed.windows(2) {
+        assert!(w[1] >= w[0] / 1.1, "a lower limit costs at least as much: {excesses:?}");
+    }
+    assert!(excesses[0] > 2.0 * excesses[4], "{excesses:?}");
+    // At the lowest limit the smallest δ spends time at it, and the page says so.
+    let v = study("encoder=1024&velocity=difference&torque_limit=105");
+    let first = v.study.rows[0].real.unwrap();
+    assert!(first.saturated[0] > 0.0);
+    assert!(v.summary.iter().any(|s| s.contains("sits at its 105 N m limit")), "{:?}", v.summary);
+}
+
+#[test]
+fn with_perfect_sensors_the_study_runs_the_papers_robot_once_per_delta() {
+    let v = study("delta=0.01");
+    for r in &v.study.rows {
+        assert_eq!(r.real, r.ideal);
+        assert!(r.predicted.is_none());
+    }
+    // The paper: "small δ yields small tracking error".
+    assert!(matches!(v.study.best, Best::Smallest { index: 0 }), "{:?}", v.study.best);
+}
