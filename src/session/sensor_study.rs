@@ -23,7 +23,11 @@ pub struct StudyJob {
 /// The study as the page shows it: facts, and the words and table rendered from them.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct SensorStudyView {
+    /// The facts (not sent to the page, which shows the words and the table).
+    #[serde(skip)]
     pub study: SensorStudy,
+    /// The share of the runs done, 0 … 1.
+    pub progress: f64,
     /// "a 1024-count encoder, velocities differenced over δ, …".
     pub sensors: String,
     /// The header row and one row per δ, as text.
@@ -85,6 +89,7 @@ impl Session {
             summary: study_summary(&study, &config.sensors),
             prediction: prediction_text(delta, floor.as_ref(), &config.sensors),
             done: sweep.is_done(),
+            progress: study.progress,
             study,
         })
     }

@@ -13,6 +13,7 @@ mod figure;
 mod gpu;
 pub mod offline;
 pub mod renderer;
+mod sensors;
 pub mod session;
 
 use serde::Serialize;

@@ -193,6 +193,22 @@ export class Page {
     return this.#session.isFinished();
   }
 
+  /**
+   * The study of what bounds δ with run A's sensors, after up to `runs` more simulated slews.
+   * @param {number} runs @returns {import('./sensors.js').SensorStudy}
+   */
+  sensorStudy(runs) {
+    return this.#session.sensorStudy(runs);
+  }
+
+  /**
+   * The controller's time per sample in this browser, against run A's δ (Rust's words).
+   * @returns {{ secondsPerSample: number, samplingPeriod: number, share: number, text: string }}
+   */
+  controllerTime() {
+    return this.#session.controllerTime();
+  }
+
   /** @param {number} t */
   viewAt(t) {
     this.#session.viewAt(t);

@@ -22,6 +22,7 @@ import { createClassroom } from './classroom.js';
 import { createFigure } from './figure.js';
 import { createRefresh } from './refresh.js';
 import { createDesign } from './design.js';
+import { createSensors } from './sensors.js';
 import { createSaveOffline } from './save_offline.js';
 import { installHooks } from './hooks.js';
 import { startRenderer } from './renderer.js';
@@ -66,6 +67,7 @@ async function main() {
       loop.resync();
       figure.hidePointer();
       loop.scheduleMaps();
+      sensors.changed();
     },
   });
   const { change } = settings;
@@ -77,6 +79,10 @@ async function main() {
     togglePlay,
     reset,
     textChoices: (wasm.schema().find((/** @type {any} */ p) => p.key === 'text')?.options ?? []).map((/** @type {string[]} */ [value, label]) => ({ value, label })),
+  });
+  const sensors = createSensors({
+    study: (runs) => guard('Sensor study', () => session.sensorStudy(runs), null),
+    processor: () => guard('Controller time', () => session.controllerTime().text, null),
   });
   wireOutputs({ session, guard });
   const canvas = /** @type {HTMLCanvasElement} */ (byId('canvas'));
@@ -109,6 +115,7 @@ async function main() {
   installHooks({ session, wasm, store, show: errors.show, status, controls: settings.controls, layout: figure.layout, figures: loop.figures });
 
   begin({ session, store, sync: settings.sync, loop });
+  sensors.changed();
   await startRenderer({ ready: rendererReady, use: figure.use, current: figure.renderer, store, guard, show: errors.show, touch });
   loop.touch();
   // The maps start once the first frame's work is done, so they do not delay it.
