@@ -216,6 +216,12 @@ export class Page {
     return this.#session.mapTimes();
   }
 
+  /** Run A's controller timed here, one sampling instant's prediction against δ (≈ 30 ms at most).
+   * @returns {{secondsPerSample: number, samplingPeriod: number, share: number, text: string}} */
+  controllerTime() {
+    return this.#session.controllerTime();
+  }
+
   /** The time shown, s. @returns {number} */
   time() {
     return this.#session.time();
