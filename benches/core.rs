@@ -1,7 +1,8 @@
 //! Benchmarks of the core, as a plain bench binary (no timed tests):
 //!
 //! `cargo bench --bench core` times one controller sample (k = 12 Newton-solved backward-Euler
-//! steps), a 10-s closed-loop run at δ = 0.01 s (and as the page runs it), one spectral-radius evaluation, an arm change
+//! steps), the same from the middle of the slew as `flexarm simulate` times it (issue 36, "the
+//! processor": k = 12 and k = 4, as a share of δ = 10 ms and 2 ms), a 10-s closed-loop run at δ = 0.01 s (and as the page runs it), one spectral-radius evaluation, an arm change
 //! to ρ, A4 and the windows, and both maps after it, and prints medians over repeated batches. `cargo bench --bench core -- --python` also runs the
 //! Python/NumPy/SciPy baseline of the same loop (bench/run_python.sh) and reports the ratio.
 
@@ -46,6 +47,22 @@ fn main() {
     let (sample_med, sample_min) = time_it(21, 20_000, || {
         black_box(predictor.predict(&reference, black_box(s.time), black_box(&x), &guess).unwrap());
     });
+
+    // Issue 36, "the processor": the sampling instant's prediction as `flexarm simulate` times it
+    // (`control::timing`, from the reference's middle), at k = 12 (m = 8) and k = 4 (m = 4), at
+    // δ = 0.01 and 0.002 s (ε = δ/m changes Newton's work a little).
+    let processor = |k: usize, m: f64, delta: f64| {
+        let mut c = config;
+        c.controller.horizon_steps = k;
+        c.controller.eps_ratio = m;
+        c.controller.sampling_period = delta;
+        let mut w = flexarm::control::ControllerWorkload::new(&c).unwrap();
+        let start = Instant::now();
+        let plan = flexarm::control::TimingPlan { batches: 21, per_batch: 5_000, budget: 10.0 };
+        (w.measure(&mut || start.elapsed().as_secs_f64(), plan).unwrap(), k, w.newton_iterations())
+    };
+    let processors =
+        [processor(12, 8.0, 0.01), processor(12, 8.0, 0.002), processor(4, 4.0, 0.01), processor(4, 4.0, 0.002)];
 
     let (run_med, run_min) = time_it(11, 3, || {
         black_box(simulate(&config, 10.0).unwrap());
@@ -165,6 +182,14 @@ fn main() {
         sample_med * 1e6,
         sample_min * 1e6
     );
+    for (t, k, newton) in processors {
+        println!(
+            "| the processor: one sampling instant's prediction from mid-slew (k = {k}, {newton} Newton iterations), as `simulate` times it | {:.2} µs ({:.3} % of δ = {} ms) | |",
+            t.seconds_per_sample * 1e6,
+            100.0 * t.share(),
+            t.sampling_period * 1e3
+        );
+    }
     println!(
         "| 10-s closed-loop run, δ = 0.01 s, PF paper | {:.2} ms ({:.0}× real time) | {:.2} ms |",
         run_med * 1e3,

@@ -1,6 +1,7 @@
 //! The controller and the closed loop: the predictive controller of eqs. (2.3)–(2.4), the
 //! stabilized DAE linearized and its δ → 0 limit, the preliminary feedback K_pr (paper and LQ),
-//! and the sampled loop of Fig. 2.1 that records traces, metrics and a verdict.
+//! and the sampled loop of Fig. 2.1 that records traces, metrics and a verdict; `timing`, one
+//! sampling instant's prediction as work to be timed against δ ("faster than real-time").
 //!
 //! Module graph (no cycles): `config` ← `predictive` ← `linear` ← `feedback` ← `closed_loop`
 //! (with `traces` and `metrics`). Architecture invariant: `control` knows nothing of the
@@ -17,6 +18,7 @@ pub mod predictive;
 pub mod price;
 pub mod sensing;
 pub mod sensor_sweep;
+pub mod timing;
 pub mod traces;
 pub mod work;
 
@@ -26,5 +28,6 @@ pub use cycle::Cycle;
 pub use history::{History, LoopState};
 pub use metrics::{DivergenceReason, Metrics, Verdict};
 pub use price::{torque_price, TorqueFigures, TorquePrice};
+pub use timing::{ControllerTime, ControllerWorkload, TimingPlan};
 pub use traces::{Column, Snapshot, TraceEnvelope, Traces};
 pub use work::Work;

@@ -13,7 +13,10 @@ pub const PROGRESS_SECONDS: f64 = 3.0;
 
 /// Seconds per backward-Euler step of the predictor (k of them per sampling period, each a
 /// Newton solve of eq. (2.3)); measured 0.25 µs, rounded up (with the next, 3.9 µs a period
-/// at k = 12 against 3.55 µs measured).
+/// at k = 12 against 3.55 µs measured). The processor's own measurement (`control::timing`,
+/// `cargo bench --bench core`, issue 36) finds one prediction from mid-slew at 1.9–3.4 µs at
+/// k = 12 (34–36 Newton iterations; δ = 0.01 and 0.002 s) and 0.6–1.0 µs at k = 4, within this
+/// price.
 const SECONDS_PER_PREDICTION_STEP: f64 = 0.28e-6;
 /// Seconds per sampling period besides the prediction (measurement, observer, feedback).
 const SECONDS_PER_PERIOD: f64 = 0.5e-6;

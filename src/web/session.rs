@@ -109,6 +109,20 @@ struct MetricsView {
     max_torque: [f64; 2],
 }
 
+/// The controller's prediction timed in the page (issue 36): `controllerTime()`.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct ControllerTimeView {
+    /// The median seconds one sampling instant's prediction takes here, s.
+    seconds_per_sample: f64,
+    /// δ, s.
+    sampling_period: f64,
+    /// seconds per sample / δ (below 1: faster than real time).
+    share: f64,
+    /// The same in words.
+    text: String,
+}
+
 /// The physics session the page has open — runs, analyses, maps — for the page's façade
 /// (`www/js/flexarm.js`), which composes it with the [`super::classroom::WebClassroom`]: create it
 /// from the URL's query with `new Session(q)`.
@@ -328,6 +342,26 @@ impl WebSession {
     pub fn work_maps(&mut self, budget_ms: f64) -> bool {
         let mut clock = now_ms;
         self.inner.maps_mut().work(&mut clock, budget_ms)
+    }
+
+    /// `{secondsPerSample, samplingPeriod, share, text}`: run A's controller timed on this
+    /// computer — one sampling instant's prediction (k backward-Euler steps of the stabilized DAE,
+    /// Newton in each) from the middle of the slew, the median of 7 batches of up to 400 by the
+    /// page's clock (coarse in some browsers: a batch is long enough for it), ≈ 30 ms at most.
+    /// The paper: "to be implementable, the numerical integration of the DAE has to be faster
+    /// than real-time".
+    #[wasm_bindgen(js_name = controllerTime)]
+    pub fn controller_time(&self) -> Result<JsValue, JsError> {
+        use crate::control::timing::{ControllerWorkload, TimingPlan};
+        let mut workload = ControllerWorkload::new(&self.inner.settings().a.config()).map_err(js_error)?;
+        let plan = TimingPlan { per_batch: 400, ..TimingPlan::default() };
+        let t = workload.measure(&mut || now_ms() * 1e-3, plan).map_err(js_error)?;
+        to_js(&ControllerTimeView {
+            seconds_per_sample: t.seconds_per_sample,
+            sampling_period: t.sampling_period,
+            share: t.share(),
+            text: crate::words::processor::processor(&t),
+        })
     }
 
     /// `[{pf, ms, compute_ms}]`: how long each finished map took.

@@ -14,6 +14,7 @@
 //! | [`settings`] | a run's settings, its feedback, a map's caption, a point of it, the errors, the stable windows of δ |
 //! | [`panels`] | the panels a small canvas leaves out, and where they are |
 //! | [`work`] | what a run will cost, a duration in sensible units |
+//! | [`processor`] | how long the controller's prediction takes against δ: faster than real time or not |
 //! | [`numbers`] | numbers as the sentences write them (rates, ρ, percents, pairs, the swing's energy shares) |
 //!
 //! [`Verdict`]: crate::control::Verdict
@@ -23,6 +24,7 @@ pub mod equations;
 pub mod judgement;
 pub mod numbers;
 pub mod panels;
+pub mod processor;
 pub mod sensors;
 pub mod settings;
 pub mod story;

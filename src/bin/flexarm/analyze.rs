@@ -9,7 +9,7 @@ use flexarm::{words, SimulationConfig};
 use serde_json::json;
 
 use crate::cli::{self, lib_error, Failure, Res};
-use crate::output::{describe_config, settings_json};
+use crate::output::{describe_config, processor, processor_json, processor_text, settings_json};
 use flexarm::analysis::judgement::judge_analysis;
 
 /// The run settings the analysis depends on (friction compensation and the slew do not change ρ).
@@ -84,6 +84,8 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     // (An arm whose linearized DAE is not regular has no such structure; the rest still stands.)
     let structure = analysis::structure::Structure::of(&config, q2);
     let structure_words = structure.as_ref().ok().map(|s| words::structure::structure(s, config.preliminary_feedback));
+    // "To be implementable, the numerical integration of the DAE has to be faster than real-time."
+    let processor = processor(&config);
     if m.get_flag("json") {
         // Non-finite floats (e.g. ln 0) become null in serde_json's Value.
         let mut v = serde_json::to_value(&report).map_err(|e| Failure(format!("JSON encoding failed: {e}"), 1))?;
@@ -119,6 +121,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
             (Err(e), _) => json!({ "error": e.to_string() }),
             _ => serde_json::Value::Null,
         };
+        v["controller_seconds_per_sample"] = processor_json(&processor);
         if let Some([re, im, kp, kd]) = placement {
             v["placement"] = json!({ "target": [re, im], "twist_stiffness": kp, "twist_damping": kd });
         }
@@ -158,6 +161,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     for line in [design.analog, design.sampled, design.torque, design.parts].iter().filter(|l| !l.is_empty()) {
         text += &format!("  {line}\n");
     }
+    text += &format!("processor: {}\n", processor_text(&processor));
     Ok(text)
 }
 

@@ -1,9 +1,11 @@
 //! Words and numbers the commands share: the configuration line, the settings in JSON.
 
+use flexarm::control::timing::{ControllerTime, ControllerWorkload, TimingPlan};
 use flexarm::schema::{self, Scope, Value as Setting};
 use flexarm::session::RunSettings;
 use flexarm::SimulationConfig;
 use serde_json::{json, Map, Value};
+use std::time::Instant;
 
 /// A run's settings as every command's JSON writes them: each under its schema key, once, in the
 /// schema's order — α as `alpha1` and `alpha2` (the key `alpha` sets both and would repeat them),
@@ -63,5 +65,31 @@ pub fn delta_alpha_text(c: &SimulationConfig) -> String {
         format!("δ = {} s, α = {} 1/s", k.sampling_period, k.alpha[0])
     } else {
         format!("δ = {} s, α1 = {} 1/s, α2 = {} 1/s", k.sampling_period, k.alpha[0], k.alpha[1])
+    }
+}
+
+/// The controller's prediction timed on this computer (issue 36, "the processor"): the median
+/// seconds per sampling instant over 7 batches of up to 200 predictions from the middle of the
+/// slew, a few milliseconds in all. The paper: "to be implementable, the numerical integration of
+/// the DAE has to be faster than real-time".
+pub fn processor(config: &SimulationConfig) -> Result<ControllerTime, flexarm::Error> {
+    let mut workload = ControllerWorkload::new(config)?;
+    let start = Instant::now();
+    workload.measure(&mut || start.elapsed().as_secs_f64(), TimingPlan::default())
+}
+
+/// The processor's line: the timing in words, or why there is none.
+pub fn processor_text(time: &Result<ControllerTime, flexarm::Error>) -> String {
+    match time {
+        Ok(t) => flexarm::words::processor::processor(t),
+        Err(e) => format!("the controller's prediction was not timed: {e}"),
+    }
+}
+
+/// The JSON field `controller_seconds_per_sample`: the median seconds, or null.
+pub fn processor_json(time: &Result<ControllerTime, flexarm::Error>) -> Value {
+    match time {
+        Ok(t) if t.is_measured() => json!(t.seconds_per_sample),
+        _ => Value::Null,
     }
 }

@@ -15,7 +15,7 @@ use std::io::{BufWriter, Write};
 
 use crate::cli::{self, lib_error, write_file, Res};
 use crate::long_work::{self, Progress, TraceSinks};
-use crate::output::{delta_alpha_text, describe_config, settings_json};
+use crate::output::{delta_alpha_text, describe_config, processor, processor_json, processor_text, settings_json};
 
 /// The run settings `simulate` takes.
 pub const KEYS: &[&str] =
@@ -82,7 +82,8 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let rho = report.as_ref().ok().map(|r| r.spectral_radius);
     let failed = report.as_ref().err().map(|e| e.to_string());
     let judgement = in_words(&judge(&metrics, report.as_ref().ok(), failed.as_deref(), &config, metrics.error));
-    let linear = Linear { rho, q2, describes: analysis::describes(&config), judgement };
+    let linear =
+        Linear { rho, q2, describes: analysis::describes(&config), judgement, processor: Some(processor(&config)) };
     let mut out = if json_out {
         simulation_json(&settings, &config, duration, &metrics, &linear).to_string() + "\n"
     } else {
@@ -116,6 +117,9 @@ pub struct Linear {
     /// False where the run's friction is not cancelled ([`analysis::describes`]).
     pub describes: bool,
     pub judgement: Judgement,
+    /// The controller's prediction timed on this computer (issue 36); None where not asked
+    /// (`sweep --simulate`: its rows are the settings', not the computer's).
+    pub processor: Option<Result<flexarm::control::ControllerTime, flexarm::Error>>,
 }
 
 /// The run as one JSON object: the settings under their schema keys, the state string, the
@@ -170,6 +174,9 @@ pub fn simulation_json(
     if let (Value::Object(v), Value::Object(result)) = (&mut v, result) {
         v.extend(result);
     }
+    if let Some(time) = &linear.processor {
+        v["controller_seconds_per_sample"] = processor_json(time);
+    }
     v
 }
 
@@ -192,5 +199,8 @@ fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, linear: &Li
     // The analysis line in the page's words (the same judgement as the verdict's).
     let rho = linear.rho.map_or("n/a (the analysis failed)".into(), |r| format!("{r:.6}"));
     s += &format!("  spectral radius ρ           {rho}\n  {}\n", j.rho);
+    if let Some(time) = &linear.processor {
+        s += &format!("  processor                   {}\n", processor_text(time));
+    }
     s
 }
