@@ -87,3 +87,31 @@ fn with_perfect_sensors_the_study_runs_the_papers_robot_once_per_delta() {
     // The paper: "small δ yields small tracking error".
     assert!(matches!(v.study.best, Best::Smallest { index: 0 }), "{:?}", v.study.best);
 }
+
+#[test]
+fn the_lessons_numbers_are_the_studys() {
+    let lesson = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/www/lessons/paper.md")).unwrap();
+    let step = lesson.split("## ").find(|s| s.starts_with("A real robot")).expect("the step");
+    let v = study("preset=real-encoder");
+    let row = |delta: &str| v.table.iter().skip(1).find(|r| r[0] == delta).unwrap().clone();
+    let [r10, r5, r2] = [row("0.01"), row("0.005"), row("0.002")];
+    // Columns: δ, error with the sensors, with perfect ones, …, time at the limit, predicted T1.
+    let said = format!(
+        "{} rad at δ = 0.01 s, {} rad at 0.005 s and {} rad at 0.002 s, against {}, {} and {} rad with perfect sensors",
+        r10[1], r5[1], r2[1], r10[2], r5[2], r2[2]
+    );
+    assert!(step.contains(&said), "the lesson should say: {said}");
+    let last = r10.len() - 1;
+    let torque = format!("{} N m at 0.01 s, {} at 0.005 and {} N m at 0.002 s", r10[last], r5[last], r2[last]);
+    assert!(step.contains(&torque), "the lesson should say: {torque}");
+    assert!(step.contains(&format!("at its limit {} of the time", r2[last - 1])), "{}", r2[last - 1]);
+    assert!(matches!(v.study.best, Best::Inside { .. }));
+    let best = match v.study.best {
+        Best::Inside { index } => v.study.rows[index].sampling_period,
+        _ => unreachable!(),
+    };
+    assert!(step.contains(&format!("a best δ exists, about {best} s")), "{best}");
+    let fine = study("preset=real-encoder&encoder=16384");
+    assert!(matches!(fine.study.best, Best::Smallest { index: 0 }), "{:?}", fine.study.best);
+    assert!(step.contains("a finer one (16384 counts) tracks best at the smallest δ studied, 0.002 s"));
+}

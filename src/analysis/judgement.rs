@@ -65,12 +65,18 @@ pub enum Caveat {
     /// spring at rest (of `spring` = F_c1/ε1 N m/rad, rounded to 3 figures, beside the joint's
     /// K1) and a torque of up to F_c1 beyond ε1.
     NoFriction { spring: f64, eps1: f64, k1: f64, fc1: f64 },
+    /// ρ is the noise-free loop's: the run also carries its sensors' error and its torque limit
+    /// (`config.sensors`), which the linear analysis does not see.
+    Sensors(crate::control::sensing::SensorModel),
 }
 
 impl Caveat {
     /// The caveat of a configuration's friction compensation.
     pub fn of(config: &SimulationConfig) -> Caveat {
         let p = config.plant;
+        if config.sensors != crate::control::sensing::SensorModel::default() {
+            return Caveat::Sensors(config.sensors);
+        }
         match config.friction_compensation {
             FrictionCompensation::Continuous => Caveat::Nonlinear,
             FrictionCompensation::Held => Caveat::HeldFriction,
@@ -283,8 +289,9 @@ pub enum RhoLine {
     /// No analysis.
     Missing,
     /// ρ at the rest point q2 (rad), its rate ln ρ/δ (not always finite), and whether it
-    /// describes the run.
-    Analysis { q2: f64, rho: f64, rate: f64, describes: bool },
+    /// describes the run; `digital`: the loop is the digital controller of the sensors (its ρ
+    /// is that of the noise-free loop).
+    Analysis { q2: f64, rho: f64, rate: f64, describes: bool, digital: bool },
 }
 
 /// What a run's status says about it, decided once from the simulation's metrics, the linear
@@ -461,7 +468,13 @@ pub fn judge(
     };
     let rho = match report {
         None => RhoLine::Missing,
-        Some(r) => RhoLine::Analysis { q2: r.rest[1], rho: r.spectral_radius, rate: r.growth_rate, describes: applies },
+        Some(r) => RhoLine::Analysis {
+            q2: r.rest[1],
+            rho: r.spectral_radius,
+            rate: r.growth_rate,
+            describes: applies,
+            digital: config.sensors.is_digital(),
+        },
     };
     let failed = matches!(headline, Headline::Unstable | Headline::Diverged);
     let large_error = if failed { None } else { m.large_error(&config.reference) };

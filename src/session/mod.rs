@@ -19,6 +19,7 @@ pub mod python;
 pub mod query;
 pub mod run;
 mod sensor_study;
+mod sensor_study_job;
 mod run_settings;
 pub mod settings;
 pub mod status;
@@ -36,7 +37,7 @@ use crate::schema::{self, Kind, Scope, Value};
 pub use controls::{display, ControlValue};
 pub use map_cache::{MapSide, Maps};
 pub use presets::{arm, preset, ArmPreset, Preset, ARMS, PRESETS};
-pub use sensor_study::SensorStudyView;
+pub use sensor_study_job::SensorStudyView;
 pub use run::{AnalysisCache, Run, DEFAULT_TRACE_SECONDS, HISTORY_SECONDS};
 pub use settings::{CompareSettings, Notice, RunSettings, Settings, Source, ViewSettings};
 pub use status::{run_status, RunStatus};
@@ -134,7 +135,7 @@ pub struct Session {
     /// What the classroom hides now.
     hidden: Hidden,
     /// The study of what bounds δ with run A's sensors, run a little at a time.
-    sensor_study: sensor_study::StudyJob,
+    sensor_study: sensor_study_job::StudyJob,
 }
 
 impl Session {
@@ -154,7 +155,7 @@ impl Session {
             trace_seconds: DEFAULT_TRACE_SECONDS,
             viewing: None,
             hidden: Hidden::default(),
-            sensor_study: sensor_study::StudyJob::default(),
+            sensor_study: sensor_study_job::StudyJob::default(),
         };
         session.maps.show(&session.linear_settings());
         session.maps.enabled = settings.view.shown().map;

@@ -18,7 +18,7 @@ pub struct Preset {
 /// All presets, in the order a student meets them. Each names every setting the paper's model
 /// fixes (the paper's arm, friction compensated continuously, the inner loop continuous, k = 12,
 /// ε = δ/8), so a preset restores them and the page names a figure only when they hold.
-pub const PRESETS: [Preset; 5] = [
+pub const PRESETS: [Preset; 6] = [
     Preset {
         id: "fig5.1",
         title: "Fig. 5.1: δ = 0.04 s with preliminary feedback (satisfactory errors)",
@@ -48,6 +48,13 @@ pub const PRESETS: [Preset; 5] = [
         title: "Smaller α slows the growth (α = 0.5, no preliminary feedback)",
         settings_title: "α = 0.5, no preliminary feedback",
         state: "arm=paper&delta=0.01&alpha=0.5&pf=off&friction=continuous&inner=continuous&k=12&eps_ratio=8",
+    },
+    Preset {
+        id: "real-encoder",
+        title: "A real robot: a 1024-count encoder, velocities differenced, torque ≤ 150 N m (δ = 0.01 s, K_pr on)",
+        settings_title: "A 1024-count encoder, velocities differenced, torque ≤ 150 N m, δ = 0.01 s",
+        state: "arm=paper&delta=0.01&alpha=2&pf=paper&friction=continuous&inner=continuous&k=12&eps_ratio=8\
+                &encoder=1024&velocity=difference&torque_limit=150",
     },
 ];
 

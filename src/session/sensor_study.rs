@@ -3,6 +3,7 @@
 //! slew per call, so the table fills while the page stays live — and restarts when a setting it
 //! depends on changes (anything of run A but δ, which the study sweeps).
 
+use super::sensor_study_job::SensorStudyView;
 use super::Session;
 use crate::analysis::noise::noise_floor;
 use crate::analysis::sensor_study::{Best, SensorStudy, STUDY_DELTAS};
@@ -11,36 +12,6 @@ use crate::control::config::SimulationConfig;
 use crate::control::sensor_sweep::SensorSweep;
 use crate::error::Error;
 use crate::words::sensors::{prediction_text, sensors_text, study_summary, study_table};
-
-/// The running study and what it was started for.
-#[derive(Clone, Debug, Default)]
-pub struct StudyJob {
-    /// Run A's configuration with δ normalized away.
-    key: Option<SimulationConfig>,
-    sweep: Option<SensorSweep>,
-}
-
-/// The study as the page shows it: facts, and the words and table rendered from them.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct SensorStudyView {
-    /// The facts (not sent to the page, which shows the words and the table).
-    #[serde(skip)]
-    pub study: SensorStudy,
-    /// The share of the runs done, 0 … 1.
-    pub progress: f64,
-    /// "a 1024-count encoder, velocities differenced over δ, …".
-    pub sensors: String,
-    /// The header row and one row per δ, as text.
-    pub table: Vec<Vec<String>>,
-    /// The row of the least error (0-based, without the header), once known.
-    pub best_row: Option<usize>,
-    /// The row nearest run A's δ.
-    pub current_row: usize,
-    pub summary: Vec<String>,
-    /// The linear prediction at run A's δ.
-    pub prediction: String,
-    pub done: bool,
-}
 
 /// Run A's configuration with δ normalized away: the study's key.
 fn study_key(config: &SimulationConfig) -> SimulationConfig {

@@ -144,6 +144,10 @@ pub fn large_error(l: &crate::control::metrics::LargeError) -> String {
 pub fn caveat(c: &Caveat) -> String {
     match *c {
         Caveat::Nonlinear => "the analysis is linearized at rest; far from rest the arm is nonlinear".into(),
+        Caveat::Sensors(sensors) => format!(
+            "ρ is the noise-free loop's; the run also carries {}, which the linear analysis does not see",
+            crate::words::sensors::sensors_text(&sensors)
+        ),
         Caveat::HeldFriction => "the analysis takes the friction as cancelled; held over δ, the compensation leaves \
                                  the friction's change within each period"
             .into(),
@@ -350,10 +354,13 @@ pub fn scope(q2: f64) -> String {
 pub fn rho_line(line: &RhoLine) -> String {
     match *line {
         RhoLine::Missing => "linear analysis: ρ = —".into(),
-        RhoLine::Analysis { q2, rho, rate, describes } => {
+        RhoLine::Analysis { q2, rho, rate, describes, digital } => {
             let growth =
                 if rate.is_finite() { format!(" (ln ρ/δ = {} 1/s)", two_decimals(rate)) } else { String::new() };
-            let scope = scope(q2);
+            let mut scope = scope(q2);
+            if digital {
+                scope += ", the digital loop without its sensors' error";
+            }
             if describes {
                 // The same judgement as the headline's, in the same words.
                 let (digits, verdict) = match Prediction::of_rate(rate) {

@@ -86,6 +86,8 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let structure_words = structure.as_ref().ok().map(|s| words::structure::structure(s, config.preliminary_feedback));
     // "To be implementable, the numerical integration of the DAE has to be faster than real-time."
     let processor = processor(&config);
+    // With sensors on: the noise their white error leaves at this δ (the linear prediction).
+    let floor = crate::output::noise_floor(&config);
     if m.get_flag("json") {
         // Non-finite floats (e.g. ln 0) become null in serde_json's Value.
         let mut v = serde_json::to_value(&report).map_err(|e| Failure(format!("JSON encoding failed: {e}"), 1))?;
@@ -122,6 +124,11 @@ pub fn run(m: &ArgMatches) -> Res<String> {
             _ => serde_json::Value::Null,
         };
         v["controller_seconds_per_sample"] = processor_json(&processor);
+        v["noise_floor"] = match &floor {
+            Some(Ok(f)) => json!(f),
+            Some(Err(e)) => json!({ "error": e.to_string() }),
+            None => serde_json::Value::Null,
+        };
         if let Some([re, im, kp, kd]) = placement {
             v["placement"] = json!({ "target": [re, im], "twist_stiffness": kp, "twist_damping": kd });
         }
@@ -162,6 +169,13 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         text += &format!("  {line}\n");
     }
     text += &format!("processor: {}\n", processor_text(&processor));
+    if config.sensors.is_digital() {
+        let f = floor.as_ref().and_then(|r| r.as_ref().ok());
+        text += &format!(
+            "noise floor: {}\n",
+            words::sensors::prediction_text(config.controller.sampling_period, f, &config.sensors)
+        );
+    }
     Ok(text)
 }
 

@@ -55,7 +55,26 @@ pub fn describe_config(c: &SimulationConfig) -> String {
         "  the controller assumes the paper's arm (model = paper): a model error\n"
     } else {
         ""
+    } + &sensors_line(c)
+}
+
+/// "  sensors: a 1024-count encoder, …" while any sensor or the torque limit is on (else nothing).
+fn sensors_line(c: &SimulationConfig) -> String {
+    if c.sensors == flexarm::control::sensing::SensorModel::default() {
+        return String::new();
     }
+    let digital = if c.sensors.is_digital() { " (a digital controller: what it computes is held over δ)" } else { "" };
+    format!("  sensors: {}{digital}\n", flexarm::words::sensors::sensors_text(&c.sensors))
+}
+
+/// The linear noise floor of `c`'s digital loop at its δ, if its sensors make it digital (Err:
+/// why there is none, e.g. an unstable loop).
+pub fn noise_floor(c: &SimulationConfig) -> Option<Result<flexarm::analysis::NoiseFloor, flexarm::Error>> {
+    use flexarm::analysis::{noise_floor, LinearSettings, LoopModel};
+    c.sensors.is_digital().then(|| {
+        LoopModel::new(&LinearSettings::of(c, None))
+            .and_then(|m| noise_floor(&m, c.controller.sampling_period, &c.sensors))
+    })
 }
 
 /// "δ = 0.01 s, α = 2 1/s" (or α1, α2 when they differ).

@@ -167,6 +167,9 @@ pub fn simulation_json(
         "slew_response_amplitude": slew_amplitude,
         "slew_response_period": slew_period,
         "max_torque": m.max_torque,
+        "rms_error_rest": m.rms_error_rest,
+        "torque_fluctuation_rest": m.torque_fluctuation_rest,
+        "saturated": m.saturated,
         "spectral_radius": linear.rho,
         "q2": linear.q2,
         "analysis_describes_run": linear.describes,
@@ -196,6 +199,17 @@ fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, linear: &Li
     s += &format!("  RMS e1, e2                  {}\n", pair(m.rms_error, "rad"));
     s += &format!("  growth rate                 {growth}\n");
     s += &format!("  max |T1|, |T2|              {:.3}, {:.3} N m\n", m.max_torque[0], m.max_torque[1]);
+    if c.sensors != flexarm::control::sensing::SensorModel::default() {
+        s += &format!("  RMS e1, e2 at rest          {}\n", pair(m.rms_error_rest, "rad"));
+        s += &format!("  T1, T2 fluctuation at rest  {} (standard deviation)\n", pair(m.torque_fluctuation_rest, "N m"));
+        if c.sensors.limit().is_some() {
+            s += &format!(
+                "  time at the torque limit    {:.1} %, {:.1} % (T1, T2)\n",
+                100.0 * m.saturated[0],
+                100.0 * m.saturated[1]
+            );
+        }
+    }
     // The analysis line in the page's words (the same judgement as the verdict's).
     let rho = linear.rho.map_or("n/a (the analysis failed)".into(), |r| format!("{r:.6}"));
     s += &format!("  spectral radius ρ           {rho}\n  {}\n", j.rho);

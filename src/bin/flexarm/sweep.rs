@@ -103,8 +103,16 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let mut done = 0.0;
     let mut rows = Vec::new();
     let mut text = format!("{:>10} {:>8} {:>12} {:>10}", "δ [s]", "α [1/s]", "ρ", "linear");
+    // With sensors on: their noise floor at each δ, predicted, and with --simulate as simulated.
+    let sensors = settings.a.sensors.is_digital();
+    if sensors {
+        text += &format!("  {:>18} {:>18}", "pred. RMS e1 [rad]", "pred. RMS T1 [N m]");
+    }
     if run {
         text += &format!("  {:>28}  {:>21}  {:>21}", "simulation", "max |e| slew [rad]", "max |e| after [rad]");
+        if sensors {
+            text += &format!("  {:>18} {:>19} {:>10}", "RMS e1 rest [rad]", "T1 fluct. [N m]", "at limit");
+        }
     }
     text += "\n";
     for &alpha in &alphas {
@@ -121,6 +129,16 @@ pub fn run(m: &ArgMatches) -> Res<String> {
             row["verdict"] = json!(linear);
             row["state"] = json!(point.run_query());
             text += &format!("{delta:>10.5} {alpha:>8.3} {rho:>12.6} {linear:>10}");
+            if sensors {
+                let floor = crate::output::noise_floor(&c).and_then(Result::ok);
+                let cell = |v: Option<f64>| v.map_or("—".to_string(), |v| format!("{v:.3e}"));
+                text += &format!(
+                    "  {:>18} {:>18}",
+                    cell(floor.map(|f| f.rms_error[0])),
+                    cell(floor.map(|f| f.rms_torque[0]))
+                );
+                row["noise_floor"] = json!(floor);
+            }
             if run {
                 let sinks = TraceSinks { csv: None, envelope: None };
                 let (m, _) = long_work::run(&c, duration, sinks, &mut quiet)?;
@@ -133,6 +151,13 @@ pub fn run(m: &ArgMatches) -> Res<String> {
                 let [s1, s2] = m.max_error_slew;
                 let [a1, a2] = m.max_error_after;
                 text += &format!("  {verdict:>28}  {s1:>10.3e} {s2:>10.3e}  {a1:>10.3e} {a2:>10.3e}");
+                if sensors {
+                    let share = 100.0 * m.saturated[0].max(m.saturated[1]);
+                    text += &format!(
+                        "  {:>18.3e} {:>19.3e} {:>9.1}%",
+                        m.rms_error_rest[0], m.torque_fluctuation_rest[0], share
+                    );
+                }
             }
             text += "\n";
             rows.push(row);

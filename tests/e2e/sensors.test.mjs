@@ -1,0 +1,83 @@
+// Issue 36: what bounds δ from below on a real arm. The section "A real robot" takes an encoder,
+// differenced velocities and a torque limit through the schema like δ; its study fills a table of
+// error and torque against δ a slew per frame, says whether a best δ exists (from the numbers),
+// and times the controller in this browser. The verdict says ρ is the noise-free loop's. Prints
+// the time the study took and the controller's time; screenshots at the three sizes go to
+// screenshots/sensors-*.png.
+
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import { shared, openPage, SIZES, shots } from './harness.mjs';
+
+const env = shared();
+const REAL = '?mode=full&delta=0.01&encoder=1024&velocity=difference&torque_limit=150';
+
+/** Opens the section and waits until the study is done; returns its texts and the time it took. */
+async function study(page) {
+  const started = Date.now();
+  await page.evaluate(() => {
+    const d = /** @type {HTMLDetailsElement} */ (document.getElementById('sensors-details'));
+    d.open = true;
+    d.scrollIntoView({ block: 'start' });
+  });
+  await page.waitForFunction(() => {
+    const rows = [...document.querySelectorAll('#sensors-table tbody tr')];
+    return rows.length === 11 && !rows.some((r) => r.textContent.includes('…'))
+      && document.getElementById('sensors-progress')?.textContent === '';
+  }, null, { timeout: 60000, polling: 100 });
+  const ms = Date.now() - started;
+  const texts = await page.evaluate(() => ({
+    summary: document.getElementById('sensors-summary')?.textContent ?? '',
+    findings: [...document.querySelectorAll('#sensors-summary-list li')].map((n) => n.textContent),
+    prediction: document.getElementById('sensors-prediction')?.textContent ?? '',
+    processor: document.getElementById('sensors-processor')?.textContent ?? '',
+    best: document.querySelector('#sensors-table tr.best th')?.textContent ?? '',
+    current: document.querySelector('#sensors-table tr.current th')?.textContent ?? '',
+    head: [...document.querySelectorAll('#sensors-table thead th')].map((n) => n.textContent),
+  }));
+  return { ...texts, ms };
+}
+
+test('a real robot: a coarse encoder has a best δ, a fine one not; the controller timed here', { timeout: 240000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, REAL);
+  const s = await study(page);
+  console.log(`sensor study (1024 counts, differenced, 150 N m): ${s.ms} ms to fill 11 δ × 2 runs; ${s.processor}`);
+  assert.match(s.summary, /a 1024-count encoder, velocities differenced over δ, torque at most 150 N m/);
+  assert.ok(s.head.some((h) => /time at the limit/.test(h)), s.head.join(' | '));
+  assert.match(s.findings.join(' '), /A best δ exists with these sensors: the error during the slew is smallest at δ = 0\.005 s/);
+  assert.match(s.findings.join(' '), /sits at its 150 N m limit/);
+  assert.equal(s.best.trim(), '0.005');
+  assert.match(s.current, /0\.01/);
+  assert.match(s.prediction, /^Linear prediction at δ = 0\.01 s .*ρ of the noise-free digital loop 0\.984/);
+  assert.match(s.processor, /takes [\d.]+ (ns|µs|ms) per sample here: [\d.]+ % of δ = 10 ms/);
+  // The run's status says what ρ is with sensors on: the same ρ as the prediction's.
+  const rhoLine = await page.locator('#verdict-rho').textContent();
+  assert.match(rhoLine ?? '', /the digital loop without its sensors' error\): ρ = 0\.9841 < 1/);
+  // A finer encoder: no best δ above the smallest studied.
+  await page.locator('button.try', { hasText: 'Try: a finer one (16384 counts)' }).click();
+  await page.waitForFunction(() => new URL(location.href).searchParams.get('encoder') === '16384', null, { timeout: 10000 });
+  const fine = await study(page);
+  assert.match(fine.summary, /16384-count encoder/);
+  assert.doesNotMatch(fine.findings.join(' '), /A best δ exists/);
+  assert.match(fine.findings.join(' '), /smallest at the smallest δ studied, 0\.002 s/);
+  // Back to the paper's robot: the study is the paper's slew, once per δ, and nothing to predict.
+  await page.locator('button.try', { hasText: "Back to the paper's perfect robot" }).click();
+  await page.waitForFunction(() => !new URL(location.href).searchParams.has('encoder'), null, { timeout: 10000 });
+  const paper = await study(page);
+  assert.match(paper.summary, /perfect sensors, unlimited torque/);
+  assert.match(paper.prediction, /no noise to predict/);
+  assert.deepEqual(problems, []);
+  await close();
+
+  for (const [name, size] of Object.entries(SIZES)) {
+    const shot = await openPage(env.browser, env.server.base, REAL, size);
+    if (name === 'phone') await shot.page.getByText('Controls, verdict and lesson').first().click();
+    await study(shot.page);
+    await shot.page.evaluate(() => document.getElementById('sensors-study')?.scrollIntoView({ block: 'start' }));
+    await shot.page.waitForTimeout(300);
+    await shot.page.screenshot({ path: path.join(shots, `sensors-${name}.png`) });
+    assert.deepEqual(shot.problems, [], name);
+    await shot.close();
+  }
+});
