@@ -177,3 +177,33 @@ fn the_papers_gains_on_the_heavier_motor_are_as_printed() {
         assert_eq!(rho > 1.0, pf == "paper");
     }
 }
+
+#[test]
+fn the_real_robot_row_is_the_codes() {
+    use flexarm::analysis::{noise_floor, LinearSettings, LoopModel};
+    use flexarm::control::sensing::{SensorModel, VelocitySource};
+    let r = row("\"small δ yields small tracking error");
+    let sensors = SensorModel { encoder_counts: 1024.0, velocity: VelocitySource::Difference, ..Default::default() };
+    let floors: Vec<_> = [0.002, 0.01, 0.04]
+        .iter()
+        .map(|&d| {
+            let mut c = config(d, 2.0, PreliminaryFeedbackChoice::Paper);
+            c.sensors = sensors;
+            noise_floor(&LoopModel::new(&LinearSettings::of(&c, None)).unwrap(), d, &sensors).unwrap()
+        })
+        .collect();
+    let rho: Vec<String> = floors.iter().map(|f| format!("{:.4}", f.spectral_radius)).collect();
+    assert!(r.contains(&format!("{} at δ = 0.002 s, {} at 0.01 s, {} at 0.04 s", rho[0], rho[1], rho[2])), "{rho:?}\n{r}");
+    let sci = |v: f64| format!("{v:.2e}");
+    let e: Vec<String> = floors.iter().map(|f| sci(f.rms_error[0])).collect();
+    assert!(r.contains(&format!("RMS e1 {}, {}, {} rad", e[0], e[1], e[2])), "{e:?}");
+    let t: Vec<String> = floors.iter().map(|f| format!("{}", flexarm::plot::format::significant(f.rms_torque[0], 3))).collect();
+    assert!(r.contains(&format!("RMS T1 {}, {}, {} N m", t[0], t[1], t[2])), "{t:?}");
+    // The simulated figures are the study's (tests/sensor_study.rs checks the same in the lesson).
+    let mut s = flexarm::session::Settings::default();
+    s.read("preset=real-encoder", flexarm::session::Source::CommandLine).unwrap();
+    let v = Session::new(s).unwrap().sensor_study_step(1000).unwrap();
+    let cell = |d: &str, i: usize| v.table.iter().find(|row| row[0] == d).unwrap()[i].clone();
+    assert!(r.contains(&format!("best at δ = 0.005 s (max \\|e\\| {} rad; {} rad at 0.002 s", cell("0.005", 1), cell("0.002", 1))));
+    assert!(r.contains(&format!("limit {} of the time", cell("0.002", 6))));
+}

@@ -359,3 +359,26 @@ fn an_offline_file_carries_its_lesson_step_moment_and_student_mode() {
 fn flexarm_lesson() -> String {
     include_str!("../../www/lessons/paper.md").to_string()
 }
+
+/// Issue 36: with a 1024-count encoder and velocities differenced over δ, the paper's loop with
+/// K_pr stays stable at δ = 0.01 s (ρ of the noise-free digital loop 0.9841, as the independent
+/// SciPy model in the issue found), and the encoder costs tracking: the error during the slew is
+/// many times the perfect robot's. The study the page shows finds a best δ inside its list.
+#[wasm_bindgen_test]
+fn an_encoder_keeps_the_loop_stable_but_costs_tracking() {
+    let sensors = "&encoder=1024&velocity=difference";
+    let rho = spectral_radius(&format!("{}{sensors}", state(0.01, 2.0, "paper"))).map_err(JsValue::from).unwrap();
+    assert!((rho - 0.9841).abs() < 0.003, "ρ = {rho}");
+    let mut session = WebSession::new(&format!("{}{sensors}", state(0.01, 2.0, "paper")));
+    while session.time() < 3.0 - 1e-9 && !session.is_finished() {
+        session.advance(0.1).map_err(JsValue::from).unwrap();
+    }
+    let m = session.metrics(0).map_err(JsValue::from).unwrap();
+    assert_eq!(verdict(&m), "stable");
+    let perfect = pair(&run(0.01, "paper", 3.0), "max_error_slew");
+    let real = pair(&m, "max_error_slew");
+    assert!(real[1] > 10.0 * perfect[1], "{real:?} vs {perfect:?}");
+    let study = session.sensor_study(100).map_err(JsValue::from).unwrap();
+    assert_eq!(get(&study, "done").as_bool(), Some(true));
+    assert!(get(&study, "best_row").as_f64().is_some_and(|i| i > 0.0), "a best δ above the smallest");
+}
