@@ -115,3 +115,14 @@ fn the_lessons_numbers_are_the_studys() {
     assert!(matches!(fine.study.best, Best::Smallest { index: 0 }), "{:?}", fine.study.best);
     assert!(step.contains("a finer one (16384 counts) tracks best at the smallest δ studied, 0.002 s"));
 }
+
+#[test]
+fn where_the_smallest_delta_diverges_a_best_delta_exists_above_it() {
+    // Without K_pr the paper's loop fails at small δ (Fig. 5.3); with an encoder too.
+    let v = study("pf=off&encoder=1024&velocity=difference&torque_limit=150");
+    assert!(v.study.rows[0].real.unwrap().diverged);
+    assert!(matches!(v.study.best, Best::Inside { .. }), "{:?}", v.study.best);
+    let said = v.summary.join(" ");
+    assert!(said.contains("A best δ exists") && said.contains("the run diverges"), "{said}");
+    assert!(!said.contains("diverged rad") && !said.contains("within 25 %"), "{said}");
+}

@@ -52,7 +52,8 @@ pub struct SensorStudy {
     pub rows: Vec<StudyRow>,
     pub best: Best,
     /// The smallest δ's tracking error over the least of all (≥ 1; None until done or where
-    /// the smallest δ diverged): what sampling as fast as the list goes costs.
+    /// the smallest δ diverged, which makes a best δ above it): what sampling as fast as the list
+    /// goes costs.
     pub smallest_excess: Option<f64>,
     /// The share of the runs done, 0 … 1.
     pub progress: f64,
@@ -109,9 +110,11 @@ fn best_of(rows: &[StudyRow]) -> (Best, Option<f64>) {
         return (Best::Pending, None);
     };
     let excess = (errors[0].is_finite() && least > 0.0).then(|| errors[0] / least);
+    // A smallest δ that diverges is as markedly worse as can be.
+    let worse = excess.is_some_and(|x| x > MARKEDLY_WORSE) || (index > 0 && errors[0].is_infinite());
     let best = if index + 1 == rows.len() && index > 0 {
         Best::Largest
-    } else if excess.is_some_and(|x| x > MARKEDLY_WORSE) {
+    } else if worse {
         Best::Inside { index }
     } else {
         Best::Smallest { index }

@@ -110,11 +110,14 @@ pub fn study_summary(study: &SensorStudy, sensors: &SensorModel) -> Vec<String> 
     out.push(match study.best {
         Best::Inside { .. } => format!(
             "A best δ exists with these sensors: the error during the slew is smallest at δ = {} ({} rad), and \
-             both faster and slower sampling track worse — at {}, {}× worse.",
+             both faster and slower sampling track worse — at {}, {}.",
             at(best),
             significant(real(best), 2),
             at(first),
-            significant(study.smallest_excess.unwrap_or(f64::NAN), 2)
+            match study.smallest_excess {
+                Some(x) => format!("{}× worse", significant(x, 2)),
+                None => "the run diverges".to_string(),
+            }
         ),
         Best::Smallest { index: 0 } => format!(
             "The error during the slew is smallest at the smallest δ studied, {} ({} rad): with these sensors, \
@@ -152,6 +155,13 @@ fn below_best(first: &StudyRow, best: &StudyRow, sensors: &SensorModel) -> Strin
         return String::new();
     };
     let (e, ei) = (tracking_error(&f), tracking_error(&fi));
+    if !e.is_finite() {
+        return format!(
+            "At δ = {} s the run with these sensors diverges, while perfect sensors track within {} rad.",
+            number(first.sampling_period),
+            error_cell(ei)
+        );
+    }
     let mut s = format!("At δ = {} s the error is {} rad", number(first.sampling_period), error_cell(e));
     if e.is_finite() && ei > 0.0 {
         s += &format!(", {}× what perfect sensors give ({} rad)", significant(e / ei, 2), significant(ei, 2));
@@ -201,7 +211,10 @@ fn above_best(
     if ei.is_finite() && ei > 0.3 * e {
         s += ": there the sampling itself sets it";
     }
-    let diverged = study.rows.iter().find(|r| r.real.is_some_and(|p| p.diverged));
+    let diverged = study
+        .rows
+        .iter()
+        .find(|r| r.sampling_period > top.sampling_period && r.real.is_some_and(|p| p.diverged));
     if let Some(d) = diverged {
         s += &format!("; from δ = {} s the run with these sensors diverges", number(d.sampling_period));
     }

@@ -11,7 +11,7 @@ import path from 'node:path';
 import { shared, openPage, SIZES, shots } from './harness.mjs';
 
 const env = shared();
-const REAL = '?mode=full&delta=0.01&encoder=1024&velocity=difference&torque_limit=150';
+const REAL = '?mode=full&preset=real-encoder';
 
 /** Opens the section and waits until the study is done; returns its texts and the time it took. */
 async function study(page) {
