@@ -126,3 +126,12 @@ fn where_the_smallest_delta_diverges_a_best_delta_exists_above_it() {
     assert!(said.contains("A best δ exists") && said.contains("the run diverges"), "{said}");
     assert!(!said.contains("diverged rad") && !said.contains("within 25 %"), "{said}");
 }
+
+#[test]
+fn the_study_runs_the_single_slew_even_where_the_page_repeats_it() {
+    // The page starts with the slew repeating; the study's "1-s slew and 2 s at rest" holds anyway.
+    let (mut page, _) = Session::open("preset=real-encoder");
+    assert!(page.settings().a.repeat);
+    let v = page.sensor_study_step(1000).unwrap();
+    assert_eq!(v.table, study("preset=real-encoder").table);
+}

@@ -59,8 +59,10 @@ pub struct SensorSweep {
 }
 
 impl SensorSweep {
-    /// A sweep of `config` over `deltas` (s), nothing run yet.
-    pub fn new(config: SimulationConfig, deltas: &[f64]) -> Result<Self, Error> {
+    /// A sweep of `config` over `deltas` (s), nothing run yet. Each point is the paper's single
+    /// slew and the rest after it, whether or not `config` repeats the slew.
+    pub fn new(mut config: SimulationConfig, deltas: &[f64]) -> Result<Self, Error> {
+        config.reference.repeat_hold = None;
         for &d in deltas {
             let mut c = config;
             c.controller.sampling_period = d;

@@ -13,19 +13,23 @@ import { shared, openPage, SIZES, shots } from './harness.mjs';
 const env = shared();
 const REAL = '?mode=full&preset=real-encoder';
 
-/** Opens the section and waits until the study is done; returns its texts and the time it took. */
-async function study(page) {
+/**
+ * Opens the section and waits until the study of the sensors `named` (a pattern of the summary) is
+ * done; returns its texts and the time it took.
+ */
+async function study(page, named) {
   const started = Date.now();
   await page.evaluate(() => {
     const d = /** @type {HTMLDetailsElement} */ (document.getElementById('sensors-details'));
     d.open = true;
     d.scrollIntoView({ block: 'start' });
   });
-  await page.waitForFunction(() => {
+  await page.waitForFunction((source) => {
     const rows = [...document.querySelectorAll('#sensors-table tbody tr')];
-    return rows.length === 11 && !rows.some((r) => r.textContent.includes('…'))
+    return new RegExp(source).test(document.getElementById('sensors-summary')?.textContent ?? '')
+      && rows.length === 11 && !rows.some((r) => r.textContent.includes('…'))
       && document.getElementById('sensors-progress')?.textContent === '';
-  }, null, { timeout: 60000, polling: 100 });
+  }, named.source, { timeout: 60000, polling: 100 });
   const ms = Date.now() - started;
   const texts = await page.evaluate(() => ({
     summary: document.getElementById('sensors-summary')?.textContent ?? '',
@@ -41,7 +45,7 @@ async function study(page) {
 
 test('a real robot: a coarse encoder has a best δ, a fine one not; the controller timed here', { timeout: 240000 }, async () => {
   const { page, problems, close } = await openPage(env.browser, env.server.base, REAL);
-  const s = await study(page);
+  const s = await study(page, /1024-count/);
   console.log(`sensor study (1024 counts, differenced, 150 N m): ${s.ms} ms to fill 11 δ × 2 runs; ${s.processor}`);
   assert.match(s.summary, /a 1024-count encoder, velocities differenced over δ, torque at most 150 N m/);
   assert.ok(s.head.some((h) => /time at the limit/.test(h)), s.head.join(' | '));
@@ -57,14 +61,14 @@ test('a real robot: a coarse encoder has a best δ, a fine one not; the controll
   // A finer encoder: no best δ above the smallest studied.
   await page.locator('button.try', { hasText: 'Try: a finer one (16384 counts)' }).click();
   await page.waitForFunction(() => new URL(location.href).searchParams.get('encoder') === '16384', null, { timeout: 10000 });
-  const fine = await study(page);
+  const fine = await study(page, /16384-count/);
   assert.match(fine.summary, /16384-count encoder/);
   assert.doesNotMatch(fine.findings.join(' '), /A best δ exists/);
   assert.match(fine.findings.join(' '), /smallest at the smallest δ studied, 0\.002 s/);
   // Back to the paper's robot: the study is the paper's slew, once per δ, and nothing to predict.
   await page.locator('button.try', { hasText: "Back to the paper's perfect robot" }).click();
   await page.waitForFunction(() => !new URL(location.href).searchParams.has('encoder'), null, { timeout: 10000 });
-  const paper = await study(page);
+  const paper = await study(page, /perfect sensors/);
   assert.match(paper.summary, /perfect sensors, unlimited torque/);
   assert.match(paper.prediction, /no noise to predict/);
   assert.deepEqual(problems, []);
@@ -73,7 +77,7 @@ test('a real robot: a coarse encoder has a best δ, a fine one not; the controll
   for (const [name, size] of Object.entries(SIZES)) {
     const shot = await openPage(env.browser, env.server.base, REAL, size);
     if (name === 'phone') await shot.page.getByText('Controls, verdict and lesson').first().click();
-    await study(shot.page);
+    await study(shot.page, /1024-count/);
     await shot.page.evaluate(() => document.getElementById('sensors-study')?.scrollIntoView({ block: 'start' }));
     await shot.page.waitForTimeout(300);
     await shot.page.screenshot({ path: path.join(shots, `sensors-${name}.png`) });

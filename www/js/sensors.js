@@ -12,6 +12,9 @@ import { byId, setSymbols, setText } from './dom.js';
 /**
  * @param {{ study: (runs: number) => SensorStudy | null, processor: () => string | null }} on
  */
+/** Milliseconds of simulation per frame while the study fills. */
+const BUDGET_MS = 40;
+
 export function createSensors(on) {
   const details = /** @type {HTMLDetailsElement} */ (byId('sensors-details'));
   const summary = byId('sensors-summary');
@@ -67,7 +70,10 @@ export function createSensors(on) {
       retime = false;
       setText(processor, on.processor() ?? '');
     }
-    const s = on.study(1);
+    // As many slews as fit in a share of the frame (each is one simulated slew of 3 s).
+    const start = performance.now();
+    let s = on.study(1);
+    while (s && !s.done && performance.now() - start < BUDGET_MS) s = on.study(1);
     if (!s) return;
     render(s);
     if (!s.done) schedule();
