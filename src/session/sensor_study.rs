@@ -11,7 +11,7 @@ use crate::analysis::{LinearSettings, LoopModel};
 use crate::control::config::SimulationConfig;
 use crate::control::sensor_sweep::SensorSweep;
 use crate::error::Error;
-use crate::words::sensors::{prediction_text, sensors_text, study_summary, study_table};
+use crate::words::sensors::{prediction_text, sensors_text, study_summary, study_table, table_note};
 
 /// Run A's configuration with δ normalized away: the study's key.
 fn study_key(config: &SimulationConfig) -> SimulationConfig {
@@ -52,6 +52,7 @@ impl Session {
         Ok(SensorStudyView {
             sensors: sensors_text(&config.sensors),
             table: study_table(&study, &config.sensors),
+            table_note: table_note(&config.sensors),
             best_row: match study.best {
                 Best::Inside { index } | Best::Smallest { index } => Some(index),
                 _ => None,

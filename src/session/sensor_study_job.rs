@@ -24,6 +24,8 @@ pub struct SensorStudyView {
     pub sensors: String,
     /// The header row and one row per δ, as text.
     pub table: Vec<Vec<String>>,
+    /// What the columns are.
+    pub table_note: String,
     /// The row of the least error (0-based, without the header), once known.
     pub best_row: Option<usize>,
     /// The row nearest run A's δ.

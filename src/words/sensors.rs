@@ -36,16 +36,16 @@ pub fn study_table(study: &SensorStudy, sensors: &SensorModel) -> Vec<Vec<String
     let limited = sensors.limit().is_some();
     let mut header = vec![
         "δ [s]".to_string(),
-        "max error in the slew [rad]".to_string(),
-        "… with perfect sensors [rad]".to_string(),
-        "RMS error at rest [rad]".to_string(),
-        "T1 fluctuation at rest (RMS about its mean) [N m]".to_string(),
+        "max |e|, slew [rad]".to_string(),
+        "perfect sensors [rad]".to_string(),
+        "RMS e, rest [rad]".to_string(),
+        "T1 noise, rest [N m]".to_string(),
         "peak T1 [N m]".to_string(),
     ];
     if limited {
-        header.push("time at the limit".to_string());
+        header.push("at the limit".to_string());
     }
-    header.push("predicted RMS T1 noise [N m]".to_string());
+    header.push("predicted T1 noise [N m]".to_string());
     let mut table = vec![header];
     for r in &study.rows {
         let sim = |f: &dyn Fn(&crate::control::sensor_sweep::SweepPoint) -> String, p: Option<_>| {
@@ -66,6 +66,21 @@ pub fn study_table(study: &SensorStudy, sensors: &SensorModel) -> Vec<Vec<String
         table.push(row);
     }
     table
+}
+
+/// What the table's columns are, in one paragraph under it.
+pub fn table_note(sensors: &SensorModel) -> String {
+    let mut s = "max |e|, slew: the largest error of either link while the arm slews; perfect sensors: the same \
+                 slew with the paper's exact readings and no torque limit; RMS e and T1 noise at rest: over the 2 s \
+                 after the slew (T1 noise is the motor torque's RMS about its mean); peak T1: the largest motor \
+                 torque"
+        .to_string();
+    if let Some(limit) = sensors.limit() {
+        s += &format!("; at the limit: the share of the time a motor sits at its {} N m", number(limit));
+    }
+    s + "; predicted T1 noise: the linear prediction with each reading's error as white noise, valid while the \
+         arm moves (— where the digital loop is unstable or reads exactly). The highlighted row has the least \
+         error; ▸ marks the δ of the run shown."
 }
 
 fn error_cell(e: f64) -> String {

@@ -164,7 +164,7 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   // (0.988 with the k/m link reading and the reviews' words) with issue 37's Section 3 (+19 kB: V* by its recursion on projectors with a small SVD of its
   // own, the Wong sequences for the index, the quotient's eigenvalues, the horizon probes) and the
   // sentences rendered for the arm shown: the 0.9-MB goal is not met.
-  assert.ok(gzip <= 0.988e6, `wasm gzip -9 ${gzip} bytes: over the 0.988-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
+  assert.ok(gzip <= 1.018e6, `wasm gzip -9 ${gzip} bytes: over the 1.018-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));

@@ -5,7 +5,7 @@
 import { byId, setSymbols, setText } from './dom.js';
 
 /**
- * @typedef {{ sensors: string, table: string[][], best_row: number | null, current_row: number,
+ * @typedef {{ sensors: string, table: string[][], table_note: string, best_row: number | null, current_row: number,
  *   summary: string[], prediction: string, done: boolean, progress: number }} SensorStudy
  */
 
@@ -21,6 +21,7 @@ export function createSensors(on) {
   const table = /** @type {HTMLTableElement} */ (byId('sensors-table'));
   const findings = byId('sensors-summary-list');
   const prediction = byId('sensors-prediction');
+  const note = byId('sensors-table-note');
   const progress = byId('sensors-progress');
   const processor = byId('sensors-processor');
   let scheduled = false;
@@ -60,6 +61,7 @@ export function createSensors(on) {
       return li;
     }));
     setSymbols(prediction, s.prediction);
+    setSymbols(note, s.table_note);
     setText(progress, s.done ? '' : `Simulating the slew at each δ: ${Math.round(100 * s.progress)} % done…`);
   }
 
