@@ -2,7 +2,9 @@
 //! state, run with NumPy and SciPy, finds the same loop — its ρ equal to flexarm's to 1e-8
 //! relative and its A4 (without and with the preliminary feedback) to 1e-6 — for the paper's
 //! figures, another α, other arms, the LQ gain, a sampled inner loop and a model error; with
-//! `--simulate` its nonlinear loop grows where ρ > 1 and dies out where ρ < 1.
+//! `--simulate` its nonlinear loop grows where ρ > 1 and dies out where ρ < 1. With the sensors
+//! on (issue 36) it builds the digital controller's 13-state loop: its ρ equals flexarm's to 1e-8
+//! and its noise floor (rms e1, e2, T1, T2) flexarm's `analysis::noise_floor` to 1e-6.
 //!
 //! Needs a Python with NumPy and SciPy: `scripts/test.sh` makes one (a virtual environment from
 //! PyPI) and runs this file with `FLEXARM_PYTHON` pointing at it:
@@ -10,7 +12,7 @@
 
 use std::process::Command;
 
-use flexarm::analysis::analyze;
+use flexarm::analysis::{analyze, noise_floor, spectral_radius, LinearSettings, LoopModel};
 use flexarm::session::python::{python_script, TEMPLATE};
 use flexarm::session::settings::{Settings, Source};
 
@@ -135,4 +137,51 @@ fn without_a_display_the_plot_is_saved_and_said_where() {
     assert!(is_png(&default), "{text}");
     assert_eq!(json["plot"].as_str(), default.to_str(), "{text}");
     assert!(text.contains("saved the plot of the errors to"), "{text}");
+}
+
+/// With the sensors on the script builds the digital loop (`analysis::digital`): its ρ is
+/// flexarm's and its noise floor (the discrete Lyapunov equation) flexarm's `noise_floor`, for an
+/// encoder with differenced velocities at two δ and α, noise alone, and another arm with the LQ
+/// gain; with the sensors off the JSON's `noise_floor` is null.
+#[test]
+#[ignore = "needs FLEXARM_PYTHON (numpy, scipy): scripts/test.sh runs it"]
+fn the_exported_script_finds_the_digital_loop_and_its_noise_floor() {
+    assert!(flexarm::session::ARMS.iter().any(|a| a.id == "heavier"));
+    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+    // The largest relative differences seen: ρ, rms e1, e2, T1, T2.
+    let mut worst = [0.0f64; 5];
+    for state in [
+        "delta=0.01&encoder=1024&velocity=difference",
+        "delta=0.002&encoder=4096&velocity=difference&alpha=3",
+        "delta=0.02&noise=0.0001",
+        "delta=0.01&encoder=1024&arm=heavier&pf=lq",
+    ] {
+        let (py, config, _) = run(state, &[]);
+        assert!(config.sensors.is_digital(), "{state}");
+        let ours = spectral_radius(&config, None).unwrap();
+        let rho = py["spectral_radius"].as_f64().unwrap();
+        worst[0] = worst[0].max(rel(rho, ours));
+        assert!(rel(rho, ours) < 1e-8, "{state}: ρ {rho} vs {ours}");
+        let delta = config.controller.sampling_period;
+        let model = LoopModel::new(&LinearSettings::of(&config, None)).unwrap();
+        let floor = noise_floor(&model, delta, &config.sensors).unwrap();
+        let theirs = &py["noise_floor"];
+        for (k, (key, ours)) in
+            [("rms_error", floor.rms_error), ("rms_torque", floor.rms_torque)].into_iter().enumerate()
+        {
+            for (i, ours) in ours.into_iter().enumerate() {
+                let v = theirs[key][i].as_f64().unwrap_or_else(|| panic!("{state}: {key} {theirs}"));
+                worst[1 + 2 * k + i] = worst[1 + 2 * k + i].max(rel(v, ours));
+                assert!(rel(v, ours) < 1e-6, "{state}: {key}[{i}] {v} vs {ours}");
+            }
+        }
+        println!("{state}: ρ = {rho:.10} (flexarm {ours:.10}), noise floor {theirs}");
+    }
+    println!(
+        "largest relative differences: ρ {:.1e}, rms e1 {:.1e}, e2 {:.1e}, T1 {:.1e}, T2 {:.1e}",
+        worst[0], worst[1], worst[2], worst[3], worst[4]
+    );
+    let (py, config, _) = run("delta=0.01&torque_limit=50", &[]);
+    assert!(!config.sensors.is_digital());
+    assert!(py["noise_floor"].is_null(), "{py}");
 }

@@ -1,13 +1,16 @@
 //! The model as a Python script: `www/export/model_template.py` filled with a configuration's
 //! numbers — the arm (and the arm the controller assumes), α, δ, k, m, the preliminary feedback's
-//! gains written out, the inner loop, the rest point and the slew — so that a student can rebuild
-//! the linearized loop in NumPy/SciPy, read how it is made, and compare its ρ and A4 with
-//! flexarm's (`tests/export_python.rs` runs it). The page's "Export as Python" and
-//! `flexarm export-python` write the same text.
+//! gains written out, the inner loop, the rest point, the slew and the sensors — so that a student
+//! can rebuild the linearized loop in NumPy/SciPy, read how it is made, and compare its ρ and A4
+//! with flexarm's (`tests/export_python.rs` runs it). With the sensors on it builds the digital
+//! controller's loop ([`crate::analysis::digital`]) and predicts its noise floor
+//! ([`crate::analysis::noise`]). The page's "Export as Python" and `flexarm export-python` write
+//! the same text.
 
 use super::Session;
 use crate::control::config::{InnerLoop, SimulationConfig};
 use crate::control::feedback::resolve_gain;
+use crate::control::sensing::SensorModel;
 use crate::error::Error;
 use crate::model::params::PlantParameters;
 use crate::schema::ARM_PARAMS;
@@ -38,6 +41,18 @@ fn arm(p: &PlantParameters) -> String {
     format!("{{{}}}", pairs.join(", "))
 }
 
+/// `{"encoder": 1024.0, "noise": 0.0, "velocity": "difference", "torque_limit": 0.0}`: the
+/// sensors as the script reads them (the seed is left out: the script has no noise to draw).
+fn sensors(s: &SensorModel) -> String {
+    format!(
+        "{{\"encoder\": {}, \"noise\": {}, \"velocity\": \"{}\", \"torque_limit\": {}}}",
+        num(s.encoder_counts),
+        num(s.noise),
+        s.velocity.name(),
+        num(s.torque_limit)
+    )
+}
+
 /// The script for `config`, linearized at rest at `rest` (q1, q2), headed by `state`, from
 /// `template` ([`TEMPLATE`]).
 pub fn python_script(config: &SimulationConfig, rest: [f64; 2], state: &str, template: &str) -> Result<String, Error> {
@@ -51,7 +66,7 @@ pub fn python_script(config: &SimulationConfig, rest: [f64; 2], state: &str, tem
     let s = &config.reference;
     // A state string is plain text here: no quote or backslash can end the script's strings.
     let state: String = state.chars().filter(|ch| !matches!(ch, '"' | '\\' | '\n' | '\r')).collect();
-    let fills: [(&str, String); 11] = [
+    let fills: [(&str, String); 12] = [
         ("{{STATE}}", state),
         ("{{ARM}}", arm(&config.plant)),
         ("{{MODEL}}", if config.has_model_error() { arm(&config.model_plant()) } else { "ARM".into() }),
@@ -79,6 +94,7 @@ pub fn python_script(config: &SimulationConfig, rest: [f64; 2], state: &str, tem
                 num(s.slew_time)
             ),
         ),
+        ("{{SENSORS}}", sensors(&config.sensors)),
     ];
     let mut out = template.to_string();
     for (key, value) in &fills {

@@ -9,6 +9,9 @@ predictive controller as a linear map (k backward-Euler steps of eps over the st
 eqs. (2.3)-(2.4), (4.2)-(4.3)), the one-period map of the sampled loop (the torque computed
 from x(t_n) is held from t_n + delta to t_n + 2 delta, Fig. 2.1), its eigenvalues and spectral
 radius rho (stable iff rho < 1), and the pair A4 the controller leaves as delta -> 0 (section 3).
+With sensors on (SENSORS: an encoder, noise, or velocities from differences) the controller is
+a digital one that reads only the measured angles: rho is then its 13-state loop's, and the
+script predicts the noise floor the angles' error leaves (the discrete Lyapunov equation).
 With --simulate it also runs the nonlinear arm under the predictive controller (the friction
 taken as cancelled by the observer of eq. (4.4)) and plots the errors if matplotlib is installed:
 in a window where there is a display, else saved to flexarm_errors.png (and said where);
@@ -23,7 +26,7 @@ import math
 import os
 
 import numpy as np
-from scipy.linalg import expm
+from scipy.linalg import expm, solve_discrete_lyapunov
 
 # ---------------------------------------------------------------------------------- settings
 # The arm, eq. (4.1), in the paper's units: inertias kg m^2, damping N m s/rad, friction N m,
@@ -42,6 +45,13 @@ K_PR = np.array({{GAIN}})
 INNER = "{{INNER}}"  # "continuous": K_pr x acts at all times; "sampled": held over each period
 REST = {{REST}}  # the rest point (q1, q2) the loop is linearized at, rad
 SLEW = {{SLEW}}  # the reference: from, to (rad, per link) in slew_time s
+# The sensors: encoder counts per revolution N on q1, q2, theta (0 = exact angles), the noise's
+# standard deviation sigma on each measured angle (rad), where the velocities come from ("exact",
+# as the paper, or "difference" of the measured angles over delta), and the torque limit |T1|,
+# |T2| <= torque_limit N m (0 = none). All off is the paper's perfect robot; with any of the first
+# three on the loop is the digital controller of digital_loop below. The torque limit does not
+# enter the linear model: a torque held at its limit is no longer a linear loop.
+SENSORS = {{SENSORS}}
 
 
 # ------------------------------------------------------------------------ the arm, eq. (4.1)
@@ -142,6 +152,104 @@ def loop_matrix(arm_lin, model_lin, gain):
     loop[0:8, 8:10] = gamma
     loop[8:10, 0:8] = predictor_gain(model_lin, gain)
     return loop
+
+
+# ---------------------------------------------------------- the digital loop (sensors on)
+def is_digital(sensors):
+    """True if the controller reads something other than the true state (a torque limit alone
+    leaves the paper's loop)."""
+    return sensors["encoder"] > 0 or sensors["noise"] > 0 or sensors["velocity"] == "difference"
+
+
+def angle_variance(sensors):
+    """The variance of one measured angle's error taken as white noise: q^2/12 + sigma^2, where
+    q = 2 pi / N is the encoder's count (its rounding error is uniform over one count while the
+    angle moves over many counts between samples) and sigma the noise's standard deviation."""
+    q = 2 * math.pi / sensors["encoder"] if sensors["encoder"] > 0 else 0.0
+    return q * q / 12 + sensors["noise"] ** 2
+
+
+def digital_loop(arm_lin, model_lin, gain, velocity):
+    """The digital controller's loop at rest: zeta_{n+1} = F zeta_n + G eta_n, u_n = H zeta_n + J eta_n.
+
+    The computer reads, at each t_n, only the angles, with an error eta_n (the encoder's rounding,
+    the noise), and everything it computes is held until t_{n+1} (deviations from rest):
+
+      m_n = q_n + eta_n                        the measured angles, q = (q1, q2, theta)
+      nu_n = q'_n, or (m_n - m_{n-1}) / delta  the velocities: exact, or differenced
+      X_n = (m_n, nu_n, w_n)                   what the controller knows (8 numbers)
+      u_n = v_n + K_pr X_n                     the torque, held on [t_n, t_{n+1}) (K_pr held too:
+                                               an analog K_pr would need analog velocities)
+      v_{n+1} = K_pred X_n                     the prediction, applied one period later (Fig. 2.1)
+      w_{n+1} = w_n + delta alpha^3 m_n[0:2]   the integrators, now the controller's own states
+      p_{n+1} = Phi_p p_n + Gamma_p u_n        the arm's six states p = (q, q'), u held (zero-order hold)
+      mprev_{n+1} = m_n                        kept for the difference
+
+    so zeta = (p, w, v, mprev) has 6 + 2 + 2 + 3 = 13 states (with exact velocities nobody reads
+    mprev: its three eigenvalues are 0). Phi_p, Gamma_p come from the arm, K_pred from the arm the
+    controller assumes. INNER plays no part: the preliminary feedback is always held here.
+    Returns F, G, H, J.
+    """
+    a, b, _, _ = arm_lin
+    # Zero-order hold: e^([A_p B_p; 0 0] delta) = [Phi_p Gamma_p; 0 I], A_p, B_p the arm's rows
+    # of q and q' (they do not read w).
+    aug = np.zeros((8, 8))
+    aug[0:6, 0:6] = a[0:6, 0:6] * DELTA
+    aug[0:6, 6:8] = b[0:6, :] * DELTA
+    transition = expm(aug)
+    phi_p, gamma_p = transition[0:6, 0:6], transition[0:6, 6:8]
+    k_pred = predictor_gain(model_lin, gain)
+
+    # X_n = S zeta_n + T eta_n.
+    s = np.zeros((8, 13))
+    t = np.zeros((8, 3))
+    s[0:3, 0:3] = np.eye(3)  # m_n = q_n + eta_n
+    t[0:3, 0:3] = np.eye(3)
+    if velocity == "difference":
+        s[3:6, 0:3] = np.eye(3) / DELTA  # nu_n = (q_n + eta_n - mprev_n) / delta
+        s[3:6, 10:13] = -np.eye(3) / DELTA
+        t[3:6, 0:3] = np.eye(3) / DELTA
+    else:
+        s[3:6, 3:6] = np.eye(3)  # nu_n = q'_n
+    s[6:8, 6:8] = np.eye(2)  # w_n
+
+    # u_n = v_n + K_pr X_n = H zeta_n + J eta_n.
+    h = gain @ s
+    h[:, 8:10] += np.eye(2)
+    j = gain @ t
+
+    f = np.zeros((13, 13))
+    g = np.zeros((13, 3))
+    f[0:6, :] = gamma_p @ h  # p_{n+1} = Phi_p p_n + Gamma_p u_n
+    f[0:6, 0:6] += phi_p
+    g[0:6, :] = gamma_p @ j
+    for i in range(2):  # w_{n+1} = w_n + delta alpha_i^3 m_n,i
+        gain_w = DELTA * ALPHA[i] ** 3
+        f[6 + i, 6 + i] = 1.0
+        f[6 + i, :] += gain_w * s[i, :]
+        g[6 + i, :] += gain_w * t[i, :]
+    f[8:10, :] = k_pred @ s  # v_{n+1} = K_pred X_n
+    g[8:10, :] = k_pred @ t
+    f[10:13, :] = s[0:3, :]  # mprev_{n+1} = m_n
+    g[10:13, :] = t[0:3, :]
+    return f, g, h, j
+
+
+def noise_floor(f, g, h, j, sensors):
+    """The stationary rms errors and torques the angles' white error leaves, at the instants t_n.
+
+    With eta_n white of covariance r I (r = q^2/12 + sigma^2), the covariance P of zeta obeys
+    P = F P F^T + r G G^T (the discrete Lyapunov equation; a solution only if rho < 1), and
+    u_n = H zeta_n + J eta_n has covariance H P H^T + r J J^T. One solve with r = 1 serves every
+    encoder and noise level: each rms is then scaled by sqrt(r).
+    """
+    p = solve_discrete_lyapunov(f, g @ g.T)
+    torque = h @ p @ h.T + j @ j.T
+    sd = math.sqrt(angle_variance(sensors))
+    return {
+        "rms_error": [sd * math.sqrt(max(p[i, i], 0.0)) for i in range(2)],  # e1, e2 (rad)
+        "rms_torque": [sd * math.sqrt(max(torque[i, i], 0.0)) for i in range(2)],  # T1, T2 (N m)
+    }
 
 
 # --------------------------------------------------------------- the limit as delta -> 0
@@ -289,13 +397,21 @@ def main():
 
     arm_lin = linearize(ARM, ALPHA, REST)
     model_lin = linearize(MODEL, ALPHA, REST)
-    loop = loop_matrix(arm_lin, model_lin, K_PR)
+    digital = is_digital(SENSORS)
+    if digital:
+        f, g, h, j = digital_loop(arm_lin, model_lin, K_PR, SENSORS["velocity"])
+        loop = f
+    else:
+        loop = loop_matrix(arm_lin, model_lin, K_PR)
     eigenvalues = sorted(np.linalg.eigvals(loop), key=lambda l: (-abs(l), -l.imag))
     rho = float(abs(eigenvalues[0]))
     pair_open = limit_pair(arm_lin, model_lin, np.zeros((2, 8)))
     pair = limit_pair(arm_lin, model_lin, K_PR)
 
     print(f"delta = {DELTA} s, alpha = {ALPHA} 1/s, k = {K}, eps = delta/{M} = {EPS:.4g} s")
+    if digital:
+        print(f"sensors: encoder {SENSORS['encoder']:g} counts/rev, noise {SENSORS['noise']:g} rad, velocities "
+              f"{SENSORS['velocity']}: the digital controller's loop (13 states)")
     print(f"spectral radius rho = {rho:.6f}: {'stable' if rho < 1 else 'unstable'}"
           f" (the errors change e-fold every {abs(DELTA / math.log(rho)):.3g} s)" if rho != 1 else "")
     print("eigenvalues of the one-period map (lambda, and s = ln(lambda)/delta in 1/s):")
@@ -304,6 +420,14 @@ def main():
         print(f"  {l.real:+.6f} {l.imag:+.6f}j   |lambda| = {abs(l):.6f}   s = {s.real:+.4f} {s.imag:+.4f}j")
     print(f"A4 (delta -> 0) without K_pr: {pair_open[0][0]:+.4f} +/- {abs(pair_open[0][1]):.4f}j 1/s")
     print(f"A4 with this preliminary feedback: {pair[0][0]:+.4f} +/- {abs(pair[0][1]):.4f}j 1/s")
+    floor = None
+    if digital and rho < 1:
+        floor = noise_floor(f, g, h, j, SENSORS)
+        print("noise floor (white quantization noise of variance q^2/12 + sigma^2): "
+              f"rms e1 = {floor['rms_error'][0]:.3g} rad, e2 = {floor['rms_error'][1]:.3g} rad; "
+              f"rms T1 = {floor['rms_torque'][0]:.3g} N m, T2 = {floor['rms_torque'][1]:.3g} N m")
+    elif digital:
+        print("noise floor: none (the digital loop is unstable, rho >= 1)")
 
     result = {
         "state": "{{STATE}}",
@@ -312,8 +436,12 @@ def main():
         "eigenvalues": [[float(l.real), float(l.imag)] for l in eigenvalues],
         "limit_pair_open": pair_open,
         "limit_pair": pair,
+        "noise_floor": floor,
     }
     if args.simulate:
+        if digital or SENSORS["torque_limit"] > 0:
+            print("(the simulation here runs the paper's perfect sensors, without the encoder, the noise, the "
+                  "differenced velocities or the torque limit: flexarm's own simulation has them)")
         times, errors = simulate(args.duration)
         result["simulated_seconds"] = float(times[-1]) if len(times) else 0.0
         result["max_error"] = [float(v) for v in np.max(np.abs(errors), axis=0)] if len(times) else None
