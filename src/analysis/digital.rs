@@ -120,7 +120,7 @@ pub fn digital_loop(
 pub fn digital_eigenvalues(m: &Mat13) -> Vec<Complex<f64>> {
     let mut a = *m;
     if a.iter().all(|v| v.is_finite()) {
-        balance13(&mut a);
+        balance(&mut a);
     }
     let mut ev: Vec<Complex<f64>> = a.complex_eigenvalues().iter().copied().collect();
     crate::sort::sort_by(&mut ev, |a, b| b.norm().total_cmp(&a.norm()).then(b.im.total_cmp(&a.im)));
@@ -132,10 +132,12 @@ pub fn digital_spectral_radius(m: &Mat13) -> f64 {
     digital_eigenvalues(m).first().map(|c| c.norm()).unwrap_or(0.0)
 }
 
-/// D⁻¹ M D with D diagonal powers of 2 (Parlett–Reinsch), the same sweeps as the 10-state
-/// [`super::sampled`] balancing: the same eigenvalues exactly, better conditioned.
-fn balance13(a: &mut Mat13) {
-    const N: usize = 13;
+/// Balances `a` in place (D⁻¹ a D, D diagonal powers of 2, as `sampled::balanced` and `digital_eigenvalues` do) and returns D's
+/// diagonal. `a` must be finite. Balancing leaves the eigenvalues as they are and takes out the
+/// error a badly scaled map puts in them.
+pub(crate) fn balance<const N: usize>(a: &mut SMatrix<f64, N, N>) -> [f64; N] {
+    let mut scale = [1.0; N];
+    // Sweeps until no scaling shrinks a row and column by 5 %; a few suffice, the cap is a guard.
     for _ in 0..100 {
         let mut changed = false;
         for i in 0..N {
@@ -148,7 +150,9 @@ fn balance13(a: &mut Mat13) {
                 continue;
             }
             let sum = col + row;
-            let (mut f, mut c) = (1.0, col);
+            // The power of 2 that brings col·f within a factor 2 of row/f (c = col·f² against row).
+            let mut f = 1.0;
+            let mut c = col;
             while c < row / 2.0 && f < 1e150 {
                 f *= 2.0;
                 c *= 4.0;
@@ -159,6 +163,7 @@ fn balance13(a: &mut Mat13) {
             }
             if (col * f + row / f) < 0.95 * sum {
                 changed = true;
+                scale[i] *= f;
                 for j in 0..N {
                     a[(i, j)] /= f;
                     a[(j, i)] *= f;
@@ -169,4 +174,5 @@ fn balance13(a: &mut Mat13) {
             break;
         }
     }
+    scale
 }

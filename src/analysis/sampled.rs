@@ -510,45 +510,7 @@ fn balanced(m: &Mat10) -> Mat10 {
 }
 
 /// Balances `a` in place (D⁻¹ a D, D diagonal powers of 2, see [`balanced`]) and returns D's
-/// diagonal. `a` must be finite.
+/// diagonal. `a` must be finite. (One balancing for every size: [`super::digital::balance`].)
 pub(crate) fn balance(a: &mut Mat10) -> [f64; 10] {
-    let mut scale = [1.0; 10];
-    // Sweeps until no scaling shrinks a row and column by 5 %; a few suffice, the cap is a guard.
-    for _ in 0..100 {
-        let mut changed = false;
-        for i in 0..10 {
-            let (mut col, mut row) = (0.0, 0.0);
-            for j in (0..10).filter(|&j| j != i) {
-                col += a[(j, i)].abs();
-                row += a[(i, j)].abs();
-            }
-            if col == 0.0 || row == 0.0 || !(col + row).is_finite() {
-                continue;
-            }
-            let sum = col + row;
-            // The power of 2 that brings col·f within a factor 2 of row/f (c = col·f² against row).
-            let mut f = 1.0;
-            let mut c = col;
-            while c < row / 2.0 && f < 1e150 {
-                f *= 2.0;
-                c *= 4.0;
-            }
-            while c > row * 2.0 && f > 1e-150 {
-                f /= 2.0;
-                c /= 4.0;
-            }
-            if (col * f + row / f) < 0.95 * sum {
-                changed = true;
-                scale[i] *= f;
-                for j in 0..10 {
-                    a[(i, j)] /= f;
-                    a[(j, i)] *= f;
-                }
-            }
-        }
-        if !changed {
-            break;
-        }
-    }
-    scale
+    super::digital::balance(a)
 }

@@ -125,3 +125,13 @@ pub const SENSOR_PARAMS: [&Param; 5] = [&ENCODER, &NOISE, &SEED, &VELOCITY, &TOR
 pub fn is_sensor(key: &str) -> bool {
     SENSOR_PARAMS.iter().any(|p| p.key == key)
 }
+
+/// What 0 means for a sensor setting, as its control shows it ("0 N m" would read as no torque).
+pub fn off_text(key: &str) -> Option<&'static str> {
+    match key {
+        "encoder" => Some("0: exact angles"),
+        "noise" => Some("0: none"),
+        "torque_limit" => Some("0: unlimited"),
+        _ => None,
+    }
+}

@@ -45,6 +45,9 @@ pub struct ControlValue {
 
 /// A number with the precision of its control and its unit ("0.0100 s", "2.00 1/s", "1.0×", "12").
 pub fn display(p: &schema::Param, x: f64) -> String {
+    if let Some(off) = schema::off_text(p.key).filter(|_| x == 0.0) {
+        return off.to_string();
+    }
     let spec = p.number();
     let v = if spec.is_some_and(|n| n.integer) {
         format!("{x}")

@@ -71,7 +71,10 @@ impl Session {
             _ => None,
         };
         let config = self.settings.a.config();
+        let digital = config.sensors.is_digital();
         let (analog, sampled) = match config.inner_loop {
+            // With the sensors on there is one loop, the digital controller's.
+            _ if digital => (Some(own), None),
             InnerLoop::Continuous => (Some(own), other),
             InnerLoop::Sampled => (other, Some(own)),
         };
@@ -84,6 +87,7 @@ impl Session {
         Some(crate::words::design::status(
             config.preliminary_feedback,
             config.inner_loop,
+            digital,
             report.limit_pair,
             [analog, sampled],
             torque,

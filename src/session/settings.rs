@@ -304,6 +304,9 @@ impl Settings {
 
     /// Applies a preset's settings over these.
     pub fn apply_preset(&mut self, p: &Preset) -> Result<(), Error> {
+        // A preset is a whole robot: the paper's figures have its perfect sensors, and only a
+        // preset that names sensors has them.
+        self.a.sensors = crate::control::sensing::SensorModel::default();
         self.read(p.state, Source::CommandLine).map(|_| ())
     }
 

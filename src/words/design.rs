@@ -95,10 +95,12 @@ pub fn parts(p: &TwistParts) -> String {
 
 /// The design status from its facts: the δ → 0 pair with the feedback, the windows of both inner
 /// loops (analog, sampled; None while computed), the torque (None while computed) and the gain's
-/// parts.
+/// parts. `digital`: the sensors make the controller digital — one loop, K_pr from the readings
+/// held over δ, whose windows are `windows[0]`.
 pub fn status(
     pf: crate::control::config::PreliminaryFeedbackChoice,
     inner: InnerLoop,
+    digital: bool,
     pair: [[f64; 2]; 2],
     windows: [Option<&StableWindows>; 2],
     torque_price: Option<&TorquePrice>,
@@ -117,8 +119,16 @@ pub fn status(
         pair: format!("A4 with {}: {shown} ({says})", feedback_short(pf)),
         target: [re, im.abs()],
         placeable: crate::analysis::design::placeable(pf),
-        analog: inner_line("Analog inner loop (Kₚᵣ x at every instant)", windows[0]),
-        sampled: inner_line("Sampled inner loop (Kₚᵣ x held over δ, as a computer applies it)", windows[1]),
+        analog: if digital {
+            inner_line("Digital controller (the sensors on: Kₚᵣ x from the readings, held over δ)", windows[0])
+        } else {
+            inner_line("Analog inner loop (Kₚᵣ x at every instant)", windows[0])
+        },
+        sampled: if digital {
+            String::new()
+        } else {
+            inner_line("Sampled inner loop (Kₚᵣ x held over δ, as a computer applies it)", windows[1])
+        },
         delta_max: windows.map(|w| w.and_then(largest_stable_delta)),
         inner: inner_name(inner),
         torque: torque_price.map_or_else(String::new, |t| torque(t, inner_name(inner))),

@@ -103,11 +103,19 @@ fn percent(share: f64) -> String {
 
 /// The study's findings in sentences, each from the numbers of the rows it names.
 pub fn study_summary(study: &SensorStudy, sensors: &SensorModel) -> Vec<String> {
-    let mut out = vec![format!(
-        "Each row is the paper's 1-s slew and {} s at rest, simulated with {} and again with perfect sensors.",
-        number(SWEEP_SECONDS - 1.0),
-        sensors_text(sensors)
-    )];
+    let mut out = vec![if *sensors == SensorModel::default() {
+        format!(
+            "Each row is the paper's 1-s slew and {} s at rest, simulated with the paper's perfect sensors and \
+             unlimited torque.",
+            number(SWEEP_SECONDS - 1.0)
+        )
+    } else {
+        format!(
+            "Each row is the paper's 1-s slew and {} s at rest, simulated with {} and again with perfect sensors.",
+            number(SWEEP_SECONDS - 1.0),
+            sensors_text(sensors)
+        )
+    }];
     let real = |r: &StudyRow| r.real.as_ref().map_or(f64::INFINITY, tracking_error);
     let ideal = |r: &StudyRow| r.ideal.as_ref().map_or(f64::INFINITY, tracking_error);
     let (Some(first), Some(last)) = (study.rows.first(), study.rows.last()) else {
@@ -261,9 +269,14 @@ pub fn prediction_text(delta: f64, floor: Option<&NoiseFloor>, sensors: &SensorM
         crate::words::numbers::rho(f.spectral_radius)
     );
     if sensors.encoder_counts > 0.0 {
-        s += " It counts on the arm crossing many counts between samples, as in the slew; at rest the reading \
-              barely changes: the arm settles up to half a count off, more than predicted, and the torque is \
-              quieter.";
+        s += &format!(
+            " One count is Δ = 2π/{} = {} rad. The prediction counts on the arm crossing many counts between \
+             samples, as in the slew; at rest the reading barely changes and it no longer applies — the error at \
+             rest in the table comes from the quantizer and the friction's stick and slip, the torque there is \
+             quieter.",
+            number(sensors.encoder_counts),
+            significant(sensors.count(), 2)
+        );
     }
     s
 }

@@ -105,6 +105,9 @@ pub fn run(c: &SimulationConfig) -> String {
     if c.has_model_error() {
         text += ", the controller assumes the paper's arm (a model error)";
     }
+    if c.sensors != paper.sensors {
+        text += &format!(", {}", crate::words::sensors::sensors_text(&c.sensors));
+    }
     if c.reference.repeat_hold.is_some() {
         text += ", slew repeating";
     }

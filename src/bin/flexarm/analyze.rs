@@ -71,6 +71,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     let design = words::design::status(
         config.preliminary_feedback,
         config.inner_loop,
+        config.sensors.is_digital(),
         report.limit_pair,
         [Some(&price.analog), Some(&price.sampled)],
         Some(&torque),
