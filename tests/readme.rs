@@ -197,7 +197,7 @@ fn the_real_robot_row_is_the_codes() {
     let sci = |v: f64| format!("{v:.2e}");
     let e: Vec<String> = floors.iter().map(|f| sci(f.rms_error[0])).collect();
     assert!(r.contains(&format!("RMS e1 {}, {}, {} rad", e[0], e[1], e[2])), "{e:?}");
-    let t: Vec<String> = floors.iter().map(|f| format!("{}", flexarm::plot::format::significant(f.rms_torque[0], 3))).collect();
+    let t: Vec<String> = floors.iter().map(|f| flexarm::plot::format::significant(f.rms_torque[0], 3)).collect();
     assert!(r.contains(&format!("RMS T1 {}, {}, {} N m", t[0], t[1], t[2])), "{t:?}");
     // The simulated figures are the study's (tests/sensor_study.rs checks the same in the lesson).
     let mut s = flexarm::session::Settings::default();

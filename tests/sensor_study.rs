@@ -141,7 +141,7 @@ fn a_paper_figure_has_perfect_sensors_and_the_page_names_the_encoder() {
     let (page, _) = Session::open("preset=real-encoder");
     assert_eq!(page.preset().map(|p| p.id), Some("real-encoder"));
     // Fig. 5.2 with an encoder added is not Fig. 5.2: no preset, and the settings say the encoder.
-    let (mut page, _) = Session::open("preset=fig5.2&encoder=1024");
+    let (page, _) = Session::open("preset=fig5.2&encoder=1024");
     assert!(page.preset().is_none());
     assert!(page.status().showing.contains("a 1024-count encoder"), "{}", page.status().showing);
     // A paper figure chosen over an encoder is the paper's robot again (in one state string the
