@@ -9,12 +9,12 @@ import { byId, setSymbols, setText } from './dom.js';
  *   summary: string[], prediction: string, done: boolean, progress: number }} SensorStudy
  */
 
-/**
- * @param {{ study: (runs: number) => SensorStudy | null, processor: () => string | null }} on
- */
 /** Milliseconds of simulation per frame while the study fills. */
 const BUDGET_MS = 40;
 
+/**
+ * @param {{ study: (runs: number) => SensorStudy | null, processor: () => string | null }} on
+ */
 export function createSensors(on) {
   const details = /** @type {HTMLDetailsElement} */ (byId('sensors-details'));
   const summary = byId('sensors-summary');
