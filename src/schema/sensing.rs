@@ -115,7 +115,7 @@ pub const TORQUE_LIMIT: Param = Param {
     )),
     scope: Scope::Run,
     help: "The motors deliver at most this torque; beyond it they saturate (0: unlimited, the paper's \
-           assumption). The slew itself needs about 97 N m on T1.",
+           assumption). On the paper's arm the slew itself needs about 97 N m on T1; another arm needs its own.",
 };
 
 /// The sensor settings, in the order the page and `--help` list them.
