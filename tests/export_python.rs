@@ -3,7 +3,7 @@
 //! relative and its A4 (without and with the preliminary feedback) to 1e-6 — for the paper's
 //! figures, another α, other arms, the LQ gain, a sampled inner loop and a model error; with
 //! `--simulate` its nonlinear loop grows where ρ > 1 and dies out where ρ < 1. With the sensors
-//! on (issue 36) it builds the digital controller's 13-state loop: its ρ equals flexarm's to 1e-8
+//! on (issue 36) it builds the digital controller's 16-state loop: its ρ equals flexarm's to 1e-8
 //! and its noise floor (rms e1, e2, T1, T2) flexarm's `analysis::noise_floor` to 1e-6.
 //!
 //! Needs a Python with NumPy and SciPy: `scripts/test.sh` makes one (a virtual environment from
@@ -153,6 +153,7 @@ fn the_exported_script_finds_the_digital_loop_and_its_noise_floor() {
     for state in [
         "delta=0.01&encoder=1024&velocity=difference",
         "delta=0.002&encoder=4096&velocity=difference&alpha=3",
+        "delta=0.005&encoder=1024&velocity=difference&velocity_filter=0.01",
         "delta=0.02&noise=0.0001",
         "delta=0.01&encoder=1024&arm=heavier&pf=lq",
     ] {

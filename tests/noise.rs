@@ -5,7 +5,7 @@
 use flexarm::analysis::*;
 use flexarm::control::feedback::paper_gain;
 use flexarm::control::linear::Mat10;
-use flexarm::control::sensing::{SensorModel, VelocitySource};
+use flexarm::control::sensing::{SensorModel, VelocityEstimator, VelocitySource};
 use flexarm::control::ControllerParameters;
 use flexarm::*;
 use nalgebra::SMatrix;
@@ -18,6 +18,10 @@ fn paper(delta: f64, counts: f64, velocity: VelocitySource) -> (LoopModel, Senso
     c.controller.sampling_period = delta;
     c.sensors = SensorModel { encoder_counts: counts, velocity, ..SensorModel::default() };
     (LoopModel::new(&LinearSettings::of(&c, Some(0.0))).unwrap(), c.sensors)
+}
+
+fn sensors_difference() -> VelocityEstimator {
+    VelocityEstimator { source: VelocitySource::Difference, filter: 0.0 }
 }
 
 fn floor(delta: f64, counts: f64, velocity: VelocitySource) -> NoiseFloor {
@@ -35,11 +39,11 @@ fn the_plant_rows_do_not_read_the_integrators() {
 fn the_lyapunov_solver_is_the_sum_of_the_series() {
     let delta = 0.01;
     let (model, _) = paper(delta, 1024.0, VelocitySource::Difference);
-    let dl = model.digital_loop(delta, VelocitySource::Difference).unwrap();
+    let dl = model.digital_loop(delta, sensors_difference()).unwrap();
     let q = dl.g * dl.g.transpose();
     let p = discrete_lyapunov(&dl.f, &q).unwrap();
     // ρ ≈ 0.984: after 6000 terms ρ^12000 ≈ e^-190 of the first is left out.
-    let (mut sum, mut term) = (Mat13::zeros(), q);
+    let (mut sum, mut term) = (MatDigital::zeros(), q);
     for _ in 0..6000 {
         sum += term;
         term = dl.f * term * dl.f.transpose();
@@ -57,8 +61,8 @@ fn the_lyapunov_solver_is_the_sum_of_the_series() {
 
 #[test]
 fn an_unstable_loop_has_no_noise_floor() {
-    let f = Mat13::identity() * 1.01;
-    assert!(matches!(discrete_lyapunov(&f, &Mat13::identity()), Err(Error::Analysis(_))));
+    let f = MatDigital::identity() * 1.01;
+    assert!(matches!(discrete_lyapunov(&f, &MatDigital::identity()), Err(Error::Analysis(_))));
 }
 
 /// With exact velocities and no noise the digital loop is the sampled inner loop but for its
@@ -73,20 +77,20 @@ fn with_exact_velocities_rho_is_the_sampled_inner_loops() {
     let sampled = LinearSettings::of(&c, Some(0.0));
     assert_eq!(sampled.sensing, None, "exact velocities without noise are the paper's loop");
     let rho_sampled = LoopModel::new(&sampled).unwrap().spectral_radius(delta).unwrap();
-    let digital = LinearSettings { sensing: Some(VelocitySource::Exact), ..sampled };
+    let digital = LinearSettings { sensing: Some(VelocityEstimator { source: VelocitySource::Exact, filter: 0.0 }), ..sampled };
     let model = LoopModel::new(&digital).unwrap();
     let rho_digital = model.spectral_radius(delta).unwrap();
     assert!((rho_digital - rho_sampled).abs() < 1e-3, "digital {rho_digital} vs sampled {rho_sampled}");
     assert_ne!(rho_digital, rho_sampled, "the digital loop is a different map");
-    // The report takes its ρ and its thirteen poles from the digital loop.
+    // The report takes its ρ and its sixteen poles from the digital loop.
     let report = model.report_at(delta).unwrap();
     assert_eq!(report.spectral_radius, rho_digital);
-    assert_eq!(report.poles.len(), 13);
+    assert_eq!(report.poles.len(), 16);
     assert!(report.swing_mode.is_none() && report.swing_energy.is_none());
-    let (rho, ev) = digital_spectrum(&model, delta, VelocitySource::Exact).unwrap();
+    let (rho, ev) = digital_spectrum(&model, delta, VelocityEstimator::default()).unwrap();
     assert_eq!(rho, rho_digital);
     assert!(ev.windows(2).all(|w| w[0].norm() >= w[1].norm()));
-    // m_prev is read by nobody: three eigenvalues 0.
+    // m_prev and ν_prev (no filter) are read by nobody: six eigenvalues 0.
     assert!(ev[10..].iter().all(|l| l.norm() < 1e-12), "{ev:?}");
 }
 
@@ -95,9 +99,9 @@ fn an_encoder_makes_the_settings_digital() {
     let mut c = SimulationConfig::default();
     assert_eq!(LinearSettings::of(&c, None).sensing, None);
     c.sensors.encoder_counts = 4096.0;
-    assert_eq!(LinearSettings::of(&c, None).sensing, Some(VelocitySource::Exact));
+    assert_eq!(LinearSettings::of(&c, None).sensing, Some(VelocityEstimator { source: VelocitySource::Exact, filter: 0.0 }));
     c.sensors = SensorModel { velocity: VelocitySource::Difference, ..SensorModel::default() };
-    assert_eq!(LinearSettings::of(&c, None).sensing, Some(VelocitySource::Difference));
+    assert_eq!(LinearSettings::of(&c, None).sensing, Some(VelocityEstimator { source: VelocitySource::Difference, filter: 0.0 }));
     // ρ of the configuration follows.
     let digital = spectral_radius(&c, None).unwrap();
     c.sensors = SensorModel::default();
@@ -120,6 +124,34 @@ fn the_differenced_velocitys_noise_grows_as_one_over_delta() {
         assert!(fine[i] < mid[i] && mid[i] < coarse[i], "velocity {i}: {fine:?} {mid:?} {coarse:?}");
     }
     assert_eq!(floor(0.01, 1024.0, VelocitySource::Exact).rms_velocity_estimate, [0.0; 3]);
+}
+
+/// A low-pass filter of time constant τ_v on the differenced velocity bounds its noise near σ/τ_v
+/// whatever δ: the torque noise no longer grows like 1/δ once δ ≪ τ_v, while the error floor
+/// (set by the angles' own error) barely moves.
+#[test]
+fn a_velocity_filter_stops_the_torque_noise_growing_as_delta_shrinks() {
+    let torque = |delta: f64, tau: f64| {
+        let mut c = SimulationConfig::default();
+        c.controller.sampling_period = delta;
+        c.sensors = SensorModel {
+            encoder_counts: 1024.0,
+            velocity: VelocitySource::Difference,
+            velocity_filter: tau,
+            ..SensorModel::default()
+        };
+        let model = LoopModel::new(&LinearSettings::of(&c, Some(0.0))).unwrap();
+        noise_floor(&model, delta, &c.sensors).unwrap()
+    };
+    let unfiltered = torque(0.002, 0.0).rms_torque[0] / torque(0.01, 0.0).rms_torque[0];
+    assert!(unfiltered > 4.0, "without a filter, T1 noise ∝ 1/δ: ratio {unfiltered}");
+    for tau in [0.02, 0.05] {
+        let (fast, slow) = (torque(0.002, tau), torque(0.01, tau));
+        let ratio = fast.rms_torque[0] / slow.rms_torque[0];
+        assert!(ratio < 1.3, "τ_v = {tau}: T1 noise at δ = 0.002 s over 0.01 s is {ratio}");
+        let e = fast.rms_error[0] / torque(0.002, 0.0).rms_error[0];
+        assert!((e - 1.0).abs() < 0.1, "τ_v = {tau}: the error floor moved by {e}");
+    }
 }
 
 #[test]
@@ -159,15 +191,15 @@ fn scipy_model(delta: f64) -> [f64; 3] {
         t[(3 + i, i)] = 1.0 / delta;
         t_prev[(3 + i, i)] = 1.0 / delta;
     }
-    let mut f = Mat13::zeros();
-    let mut g = SMatrix::<f64, 13, 3>::zeros();
+    let mut f = MatDigital::zeros();
+    let mut g = SMatrix::<f64, 16, 3>::zeros();
     f.fixed_view_mut::<10, 10>(0, 0).copy_from(&m);
     f.fixed_view_mut::<8, 3>(0, 10).copy_from(&(-gamma * k * t_prev));
     f.fixed_view_mut::<2, 3>(8, 10).copy_from(&(-k_pred * t_prev));
     g.fixed_view_mut::<8, 3>(0, 0).copy_from(&(gamma * k * t));
     g.fixed_view_mut::<2, 3>(8, 0).copy_from(&(k_pred * t));
     g.fixed_view_mut::<3, 3>(10, 0).copy_from(&SMatrix::<f64, 3, 3>::identity());
-    let mut h = SMatrix::<f64, 2, 13>::zeros();
+    let mut h = SMatrix::<f64, 2, 16>::zeros();
     h.fixed_view_mut::<2, 8>(0, 0).copy_from(&k);
     h[(0, 8)] = 1.0;
     h[(1, 9)] = 1.0;

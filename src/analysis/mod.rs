@@ -3,7 +3,7 @@
 //! ([`map`]), the stable windows of δ ([`windows`]), and the flexible joint's resonance, the pair
 //! A4, in closed form ([`resonance`]), and why some larger δ work without preliminary feedback: the
 //! lag of the held torque behind the swing ([`lag`]). With sensors on, the loop is a digital
-//! controller: its 13-state map from the measured angles ([`digital`]), whose ρ `LoopModel` then
+//! controller: its 16-state map from the measured angles ([`digital`]), whose ρ `LoopModel` then
 //! reports, and the noise floor the encoders' quantization leaves on the errors and the torque
 //! ([`noise`]).
 //!
@@ -24,7 +24,7 @@ pub mod structure;
 pub mod swing;
 pub mod windows;
 
-pub use digital::{digital_loop, DigitalLoop, Mat13};
+pub use digital::{digital_loop, DigitalLoop, MatDigital, DIGITAL_STATES};
 pub use noise::{digital_spectrum, discrete_lyapunov, noise_floor, NoiseFloor};
 pub use sampled::{
     analyze, describes, loop_eigenvalues, sampled_loop_matrix, spectral_radius, LinearSettings, LoopModel, Pole,

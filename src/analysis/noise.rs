@@ -17,9 +17,10 @@
 use nalgebra::{Complex, SMatrix};
 use serde::{Deserialize, Serialize};
 
-use super::digital::{digital_eigenvalues, digital_spectral_radius, Mat13};
-use super::sampled::LoopModel;
-use crate::control::sensing::{SensorModel, VelocitySource};
+use super::digital::{digital_eigenvalues, digital_spectral_radius, MatDigital, DIGITAL_STATES};
+use super::sampled::{LinearSettings, LoopModel};
+use crate::control::config::SimulationConfig;
+use crate::control::sensing::{SensorModel, VelocityEstimator};
 use crate::error::Error;
 
 /// The digital loop's noise floor at one δ ([`noise_floor`]).
@@ -35,12 +36,12 @@ pub struct NoiseFloor {
     pub rms_velocity_estimate: [f64; 3],
 }
 
-/// The noise-free digital loop at sampling period `delta` with velocities from `velocity`: its
+/// The noise-free digital loop at sampling period `delta` with velocities estimated by `velocity`: its
 /// spectral radius ρ and eigenvalues, largest |λ| first.
 pub fn digital_spectrum(
     model: &LoopModel,
     delta: f64,
-    velocity: VelocitySource,
+    velocity: VelocityEstimator,
 ) -> Result<(f64, Vec<Complex<f64>>), Error> {
     let ev = digital_eigenvalues(&model.digital_loop(delta, velocity)?.f);
     Ok((ev.first().map(|c| c.norm()).unwrap_or(0.0), ev))
@@ -51,7 +52,7 @@ pub fn digital_spectrum(
 /// no diagonal entry by more than 1e-15 of itself (the step is positive semidefinite, so the
 /// off-diagonal entries' change is bounded by the diagonal's). Err if ρ(F) ≥ 1: an unstable
 /// loop has no stationary covariance.
-pub fn discrete_lyapunov(f: &Mat13, q: &Mat13) -> Result<Mat13, Error> {
+pub fn discrete_lyapunov(f: &MatDigital, q: &MatDigital) -> Result<MatDigital, Error> {
     let rho = digital_spectral_radius(f);
     if rho.is_nan() || rho >= 1.0 {
         return Err(Error::Analysis("the digital loop is unstable (ρ ≥ 1): it has no noise floor"));
@@ -63,7 +64,7 @@ pub fn discrete_lyapunov(f: &Mat13, q: &Mat13) -> Result<Mat13, Error> {
         let step = a * p * a.transpose();
         let step = (step + step.transpose()) * 0.5;
         p += step;
-        let settled = (0..13).all(|i| step[(i, i)].abs() <= 1e-15 * p[(i, i)].abs());
+        let settled = (0..DIGITAL_STATES).all(|i| step[(i, i)].abs() <= 1e-15 * p[(i, i)].abs());
         if !p.iter().all(|v| v.is_finite()) {
             break;
         }
@@ -80,14 +81,42 @@ pub fn discrete_lyapunov(f: &Mat13, q: &Mat13) -> Result<Mat13, Error> {
 /// (see the module's note on when that describes a run). Err if the loop is unstable.
 pub fn noise_floor(model: &LoopModel, delta: f64, sensors: &SensorModel) -> Result<NoiseFloor, Error> {
     sensors.validate()?;
-    let dl = model.digital_loop(delta, sensors.velocity)?;
+    Ok(unit_noise_floor(model, delta, sensors.estimator())?.scaled(sensors.angle_variance().sqrt()))
+}
+
+/// The noise floor of `config` at its own δ, if its sensors make the controller digital (Err: why
+/// there is none, e.g. an unstable loop).
+pub fn noise_floor_of(config: &SimulationConfig) -> Option<Result<NoiseFloor, Error>> {
+    config.sensors.is_digital().then(|| {
+        LoopModel::new(&LinearSettings::of(config, None))
+            .and_then(|m| noise_floor(&m, config.controller.sampling_period, &config.sensors))
+    })
+}
+
+impl NoiseFloor {
+    /// The floor for an angle error of standard deviation `sd` from the floor for 1 (every rms
+    /// scales with it; ρ does not).
+    pub fn scaled(self, sd: f64) -> Self {
+        let s = |v: [f64; 2]| v.map(|x| x * sd);
+        Self {
+            spectral_radius: self.spectral_radius,
+            rms_error: s(self.rms_error),
+            rms_torque: s(self.rms_torque),
+            rms_velocity_estimate: self.rms_velocity_estimate.map(|x| x * sd),
+        }
+    }
+}
+
+/// The noise floor for an angle error of standard deviation 1 (rad): what every encoder and noise
+/// level scales ([`NoiseFloor::scaled`]), so that one solve serves them all.
+pub fn unit_noise_floor(model: &LoopModel, delta: f64, velocity: VelocityEstimator) -> Result<NoiseFloor, Error> {
+    let dl = model.digital_loop(delta, velocity)?;
     let spectral_radius = digital_spectral_radius(&dl.f);
-    // Unit covariance; every rms is then scaled by the angle error's standard deviation.
     let p = discrete_lyapunov(&dl.f, &(dl.g * dl.g.transpose()))?;
-    let sd = sensors.angle_variance().sqrt();
+    let sd = 1.0;
     let torque = dl.h * p * dl.h.transpose() + dl.j * dl.j.transpose();
     // ν − q̇ = (S_ν − E_q̇) ζ + T_ν η: zero for exact velocities.
-    let mut c: SMatrix<f64, 3, 13> = dl.s.fixed_view::<3, 13>(3, 0).into_owned();
+    let mut c: SMatrix<f64, 3, DIGITAL_STATES> = dl.s.fixed_view::<3, DIGITAL_STATES>(3, 0).into_owned();
     for i in 0..3 {
         c[(i, 3 + i)] -= 1.0;
     }

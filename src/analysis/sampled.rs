@@ -18,7 +18,7 @@ use crate::control::config::{
 };
 use crate::control::feedback::{resolve_gain, FeedbackGain};
 use crate::control::linear::{expm, limit_pair, linearize_at_rest, predictor_gain, LinearModel, Mat10, Mat8};
-use crate::control::sensing::VelocitySource;
+use crate::control::sensing::VelocityEstimator;
 use crate::error::Error;
 use crate::model::params::PlantParameters;
 
@@ -42,9 +42,9 @@ pub struct LinearSettings {
     pub lq_design_q2: f64,
     /// The arm the controller assumes.
     pub model: ControllerModel,
-    /// The velocity source of a digital controller (sensors on, [`super::digital`]); None for
+    /// How a digital controller estimates velocities (sensors on, [`super::digital`]); None for
     /// the paper's loop. The noise level does not change ρ, so it is not here.
-    pub sensing: Option<VelocitySource>,
+    pub sensing: Option<VelocityEstimator>,
 }
 
 impl LinearSettings {
@@ -60,7 +60,7 @@ impl LinearSettings {
             inner_loop: config.inner_loop,
             lq_design_q2: config.lq_design_q2,
             model: config.model,
-            sensing: config.sensors.is_digital().then_some(config.sensors.velocity),
+            sensing: config.sensors.is_digital().then_some(config.sensors.estimator()),
         }
     }
 
@@ -95,7 +95,8 @@ impl LinearSettings {
         };
         c.reference.end = self.rest;
         if let Some(velocity) = self.sensing {
-            c.sensors.velocity = velocity;
+            c.sensors.velocity = velocity.source;
+            c.sensors.velocity_filter = velocity.filter;
         }
         c
     }
@@ -157,9 +158,9 @@ impl LoopModel {
         sampled_loop_matrix(&self.model, predictor, &self.gain, &controller, self.settings.inner_loop)
     }
 
-    /// The digital loop (sensors on) at sampling period `delta` with velocities from `velocity`
+    /// The digital loop (sensors on) at sampling period `delta` with velocities estimated by `velocity`
     /// (validated against the schema's range): Φ_p, Γ_p from the arm, K_pred from the predictor.
-    pub fn digital_loop(&self, delta: f64, velocity: VelocitySource) -> Result<DigitalLoop, Error> {
+    pub fn digital_loop(&self, delta: f64, velocity: VelocityEstimator) -> Result<DigitalLoop, Error> {
         let mut controller = self.settings.controller;
         controller.sampling_period = delta;
         controller.validate()?;
@@ -211,7 +212,7 @@ impl LoopModel {
         self.report_at(self.settings.controller.sampling_period)
     }
 
-    /// The whole report at sampling period `delta`. With sensors on, ρ and the poles (thirteen)
+    /// The whole report at sampling period `delta`. With sensors on, ρ and the poles (sixteen)
     /// are the digital loop's, and the swing's mode and energy (of the 10-state map) are left out.
     pub fn report_at(&self, delta: f64) -> Result<StabilityReport, Error> {
         let (ev, phi) = match self.settings.sensing {
@@ -322,7 +323,7 @@ pub struct StabilityReport {
     pub spectral_radius: f64,
     /// ln ρ / δ, the asymptotic growth rate of the errors, 1/s.
     pub growth_rate: f64,
-    /// All the eigenvalues (ten; thirteen for the digital loop), largest |λ| first.
+    /// All the eigenvalues (ten; sixteen for the digital loop), largest |λ| first.
     pub poles: Vec<Pole>,
     /// The δ → 0 pair A4 without preliminary feedback, 1/s.
     pub limit_pair_open: [[f64; 2]; 2],

@@ -60,13 +60,19 @@ pub struct SensorStudy {
 }
 
 impl SensorStudy {
-    /// The facts of `sweep` so far, with the prediction for `config`'s sensors at each δ.
-    pub fn of(config: &SimulationConfig, sweep: &SensorSweep) -> Self {
+    /// The linear prediction for `config`'s sensors at each δ of `deltas` (None where there is
+    /// none: sensors off, or an unstable loop). Computed once per study, not per look at it.
+    pub fn predictions(config: &SimulationConfig, deltas: &[f64]) -> Vec<Option<NoiseFloor>> {
         let model = config
             .sensors
             .is_digital()
             .then(|| LoopModel::new(&LinearSettings::of(config, None)).ok())
             .flatten();
+        deltas.iter().map(|&d| model.as_ref().and_then(|m| noise_floor(m, d, &config.sensors).ok())).collect()
+    }
+
+    /// The facts of `sweep` so far, with `predicted` ([`Self::predictions`]) at each of its δ.
+    pub fn of(sweep: &SensorSweep, predicted: &[Option<NoiseFloor>]) -> Self {
         let rows: Vec<StudyRow> = sweep
             .deltas()
             .iter()
@@ -75,7 +81,7 @@ impl SensorStudy {
                 sampling_period: d,
                 real: sweep.real.get(i).copied(),
                 ideal: sweep.ideal.get(i).copied(),
-                predicted: model.as_ref().and_then(|m| noise_floor(m, d, &config.sensors).ok()),
+                predicted: predicted.get(i).copied().flatten(),
             })
             .collect();
         let (best, smallest_excess) = match sweep.is_done() {

@@ -11,7 +11,10 @@
 //! backward difference ν_n = (m_n − m_{n−1})/δ); and everything it computes is held over the
 //! period: the preliminary feedback K_pr X_m(t_n) (an analog K_pr would need analog
 //! velocities), the integrators w fed by the held measured angle, ẇ = α³(m_n − q_d(t)), and the
-//! friction observer fed by the held velocity estimate. The predictor starts from the measured
+//! friction observer fed by the held velocity estimate. A first-order low-pass filter of time
+//! constant τ_v may smooth that estimate, ν_n = β ν_{n−1} + (1 − β) ν_raw,n with β = e^(−δ/τ_v):
+//! it bounds the differenced velocity's noise (σ/τ_v instead of √2 σ/δ) at the price of a lag
+//! of about τ_v. The predictor starts from the measured
 //! X_m = (m, ν, w), never the true state. A torque limit clamps T1 and T2 (the motor's and link 2's)
 //! whether or not the rest is on.
 
@@ -62,13 +65,44 @@ pub struct SensorModel {
     /// The seed of the noise (a setting, so that a link reproduces a run bit for bit).
     pub seed: u64,
     pub velocity: VelocitySource,
+    /// The time constant τ_v of the first-order low-pass filter on the velocity estimate, s;
+    /// 0 = no filter.
+    pub velocity_filter: f64,
     /// |T1|, |T2| at most this, N m; 0 = no limit.
     pub torque_limit: f64,
 }
 
+/// How the controller estimates the velocities: from where, and through which filter. The linear
+/// analysis ([`crate::analysis::digital`]) needs exactly this of the sensors.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct VelocityEstimator {
+    pub source: VelocitySource,
+    /// τ_v, s; 0 = no filter.
+    pub filter: f64,
+}
+
+impl VelocityEstimator {
+    /// The filter's weight on the last estimate over an interval `dt`: β = e^(−dt/τ_v) (0 without
+    /// a filter, so that the estimate is the raw one exactly).
+    pub fn memory(&self, dt: f64) -> f64 {
+        if self.filter > 0.0 {
+            (-dt / self.filter).exp()
+        } else {
+            0.0
+        }
+    }
+}
+
 impl Default for SensorModel {
     fn default() -> Self {
-        Self { encoder_counts: 0.0, noise: 0.0, seed: 1, velocity: VelocitySource::Exact, torque_limit: 0.0 }
+        Self {
+            encoder_counts: 0.0,
+            noise: 0.0,
+            seed: 1,
+            velocity: VelocitySource::Exact,
+            velocity_filter: 0.0,
+            torque_limit: 0.0,
+        }
     }
 }
 
@@ -76,7 +110,15 @@ impl SensorModel {
     /// True if the controller reads something other than the true state: it is then the digital
     /// controller of the module's description. (A torque limit alone leaves the paper's loop.)
     pub fn is_digital(&self) -> bool {
-        self.encoder_counts > 0.0 || self.noise > 0.0 || self.velocity != VelocitySource::Exact
+        self.encoder_counts > 0.0
+            || self.noise > 0.0
+            || self.velocity != VelocitySource::Exact
+            || self.velocity_filter > 0.0
+    }
+
+    /// How the controller estimates the velocities.
+    pub fn estimator(&self) -> VelocityEstimator {
+        VelocityEstimator { source: self.velocity, filter: self.velocity_filter }
     }
 
     /// The encoder's count Δ = 2π/N, rad (0 for exact angles).
@@ -105,6 +147,7 @@ impl SensorModel {
         schema::ENCODER.check(self.encoder_counts)?;
         schema::NOISE.check(self.noise)?;
         schema::SEED.check(self.seed as f64)?;
+        schema::VELOCITY_FILTER.check(self.velocity_filter)?;
         schema::TORQUE_LIMIT.check(self.torque_limit)?;
         Ok(())
     }
@@ -201,10 +244,18 @@ impl Measurement {
                 m[i] += sensors.noise * self.noise.normal();
             }
         }
-        self.velocities = match (sensors.velocity, self.time) {
+        let raw = match (sensors.velocity, self.time) {
             (VelocitySource::Exact, _) => *qdot,
             (VelocitySource::Difference, Some(t0)) if t > t0 => (m - self.angles) / (t - t0),
             (VelocitySource::Difference, _) => Vector3::zeros(),
+        };
+        // The filter runs over the time since the last reading; the first reading starts it.
+        self.velocities = match self.time {
+            Some(t0) if sensors.velocity_filter > 0.0 && t > t0 => {
+                let beta = sensors.estimator().memory(t - t0);
+                self.velocities * beta + raw * (1.0 - beta)
+            }
+            _ => raw,
         };
         self.angles = m;
         self.error = Vector2::new(m[0] - reference[0], m[1] - reference[1]);
@@ -225,6 +276,53 @@ mod tests {
             assert!((s.quantize(a) - a).abs() <= 0.5 * q * (1.0 + 1e-12), "{a}");
         }
         assert_eq!(SensorModel::default().quantize(0.123), 0.123);
+    }
+
+    /// The filtered difference of white angle noise σ at rest: ν_n = β ν_{n−1} + (1 − β)(η_n −
+    /// η_{n−1})/δ has variance σ² (1 − β)²/δ² · 2/(1 + β) (the impulse response 1, −(1 − β)βᵏ⁻¹
+    /// summed in squares) — about σ²/τ_v² for δ ≪ τ_v, where the unfiltered difference has 2σ²/δ².
+    #[test]
+    fn the_filter_bounds_the_differenced_velocitys_noise() {
+        let sigma = 1e-3;
+        for (delta, tau) in [(0.001, 0.02), (0.004, 0.02), (0.002, 0.002), (0.01, 0.0)] {
+            let s = SensorModel {
+                noise: sigma,
+                seed: 5,
+                velocity: VelocitySource::Difference,
+                velocity_filter: tau,
+                ..SensorModel::default()
+            };
+            let mut m = Measurement::new(s.seed);
+            let n = 200_000;
+            let mut sum_sq = 0.0;
+            for i in 0..n + 100 {
+                m.read(&s, i as f64 * delta, &Vector3::zeros(), &Vector3::zeros(), [0.0, 0.0]);
+                if i >= 100 {
+                    sum_sq += m.velocities[0] * m.velocities[0];
+                }
+            }
+            let beta = s.estimator().memory(delta);
+            let expected = sigma * sigma * (1.0 - beta).powi(2) / (delta * delta) * 2.0 / (1.0 + beta);
+            let ratio = sum_sq / n as f64 / expected;
+            assert!((ratio - 1.0).abs() < 0.03, "δ = {delta}, τ_v = {tau}: {ratio}");
+            if tau > 0.0 && delta < tau {
+                // Bounded near σ/τ_v whatever δ.
+                let rms = (sum_sq / n as f64).sqrt();
+                assert!(rms < 1.1 * sigma / tau, "δ = {delta}, τ_v = {tau}: {rms}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_filtered_estimate_of_a_steady_motion_is_exact() {
+        // A ramp's difference is its slope; the filter's gain at zero frequency is 1.
+        let s = SensorModel { velocity: VelocitySource::Difference, velocity_filter: 0.02, ..SensorModel::default() };
+        let (mut m, slope, delta) = (Measurement::new(1), 0.7, 0.005);
+        for i in 0..400 {
+            let t = i as f64 * delta;
+            m.read(&s, t, &Vector3::repeat(slope * t), &Vector3::zeros(), [0.0, 0.0]);
+        }
+        assert!((m.velocities[0] - slope).abs() < 1e-6 * slope, "{}", m.velocities[0]);
     }
 
     #[test]

@@ -535,6 +535,7 @@ pub const PARAMS: &[&Param] = &[
     &super::NOISE,
     &super::SEED,
     &super::VELOCITY,
+    &super::VELOCITY_FILTER,
     &super::TORQUE_LIMIT,
     &DURATION,
     &OUTPUT_INTERVAL,

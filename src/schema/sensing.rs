@@ -99,6 +99,26 @@ pub const VELOCITY: Param = Param {
            (m_n − m_{n−1})/δ carries the angles' error divided by δ, and so grows as δ shrinks.",
 };
 
+/// The low-pass filter on the velocity estimate.
+pub const VELOCITY_FILTER: Param = Param {
+    key: "velocity_filter",
+    label: "Velocity filter time constant τ_v",
+    symbol: "τ_v",
+    unit: "s",
+    name: "velocity filter (velocity_filter)",
+    kind: Kind::Number(from_zero(
+        1.0,
+        [1e-4, 0.1],
+        Scale::Log,
+        false,
+        "must be from 0 (no filter) to 1 s (beyond, the estimate lags the arm's every motion)",
+    )),
+    scope: Scope::Run,
+    help: "A first-order low-pass filter on the velocity estimate, ν_n = β ν_{n−1} + (1 − β) ν_raw with \
+           β = e^(−δ/τ_v) (0: none). On differenced velocities it bounds their noise at about σ/τ_v whatever \
+           δ, instead of √2 σ/δ, but delays the estimate by about τ_v.",
+};
+
 /// The motor torque limit.
 pub const TORQUE_LIMIT: Param = Param {
     key: "torque_limit",
@@ -119,7 +139,7 @@ pub const TORQUE_LIMIT: Param = Param {
 };
 
 /// The sensor settings, in the order the page and `--help` list them.
-pub const SENSOR_PARAMS: [&Param; 5] = [&ENCODER, &NOISE, &SEED, &VELOCITY, &TORQUE_LIMIT];
+pub const SENSOR_PARAMS: [&Param; 6] = [&ENCODER, &NOISE, &SEED, &VELOCITY, &VELOCITY_FILTER, &TORQUE_LIMIT];
 
 /// True for a key of the sensor model.
 pub fn is_sensor(key: &str) -> bool {
@@ -130,7 +150,7 @@ pub fn is_sensor(key: &str) -> bool {
 pub fn off_text(key: &str) -> Option<&'static str> {
     match key {
         "encoder" => Some("0: exact angles"),
-        "noise" => Some("0: none"),
+        "noise" | "velocity_filter" => Some("0: none"),
         "torque_limit" => Some("0: unlimited"),
         _ => None,
     }

@@ -41,14 +41,16 @@ fn arm(p: &PlantParameters) -> String {
     format!("{{{}}}", pairs.join(", "))
 }
 
-/// `{"encoder": 1024.0, "noise": 0.0, "velocity": "difference", "torque_limit": 0.0}`: the
+/// `{"encoder": 1024.0, "noise": 0.0, "velocity": "difference", "velocity_filter": 0.0,
+/// "torque_limit": 0.0}`: the
 /// sensors as the script reads them (the seed is left out: the script has no noise to draw).
 fn sensors(s: &SensorModel) -> String {
     format!(
-        "{{\"encoder\": {}, \"noise\": {}, \"velocity\": \"{}\", \"torque_limit\": {}}}",
+        "{{\"encoder\": {}, \"noise\": {}, \"velocity\": \"{}\", \"velocity_filter\": {}, \"torque_limit\": {}}}",
         num(s.encoder_counts),
         num(s.noise),
         s.velocity.name(),
+        num(s.velocity_filter),
         num(s.torque_limit)
     )
 }

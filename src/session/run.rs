@@ -1,7 +1,8 @@
 //! One run of the page (A or B): the closed loop, its settings, and the linear analysis of those
 //! settings, computed once per change that matters.
 
-use crate::analysis::{analyze, LinearSettings, StabilityReport};
+use crate::analysis::noise::unit_noise_floor;
+use crate::analysis::{analyze, LinearSettings, LoopModel, NoiseFloor, StabilityReport};
 use crate::control::config::SimulationConfig;
 use crate::control::ClosedLoop;
 use crate::error::Error;
@@ -16,6 +17,9 @@ pub struct AnalysisCache {
     /// Section 3's structure of the same settings, computed on first use after a change (a few ms:
     /// a drag of δ pays for it at most once per status, not once per move).
     structure: std::cell::OnceCell<Option<crate::analysis::structure::Structure>>,
+    /// The digital loop's noise floor for an angle error of 1 rad RMS (None: sensors off or no
+    /// floor), on first use after a change: the encoder and the noise only scale it.
+    unit_floor: std::cell::OnceCell<Option<NoiseFloor>>,
 }
 
 impl AnalysisCache {
@@ -29,7 +33,21 @@ impl AnalysisCache {
         self.key = Some(key);
         self.result = Some(analyze(config, Some(q2)).map_err(|e| e.to_string()));
         self.structure = std::cell::OnceCell::new();
+        self.unit_floor = std::cell::OnceCell::new();
         true
+    }
+
+    /// The noise floor of the digital loop at the analysed δ for an angle error of 1 rad RMS
+    /// (None with the sensors off, before the first update, or where the loop is unstable).
+    pub fn unit_floor(&self) -> Option<&NoiseFloor> {
+        let key = self.key.as_ref()?;
+        self.unit_floor
+            .get_or_init(|| {
+                let velocity = key.sensing?;
+                let model = LoopModel::new(key).ok()?;
+                unit_noise_floor(&model, key.controller.sampling_period, velocity).ok()
+            })
+            .as_ref()
     }
 
     /// Section 3's structure of these settings (None before the first update, or where the

@@ -188,6 +188,7 @@ impl RunSettings {
             "noise" => Value::Number(self.sensors.noise),
             "seed" => Value::Number(self.sensors.seed as f64),
             "velocity" => Value::Choice(self.sensors.velocity.name()),
+            "velocity_filter" => Value::Number(self.sensors.velocity_filter),
             "torque_limit" => Value::Number(self.sensors.torque_limit),
             _ => return self.plant.get(key).map(Value::Number),
         })
@@ -222,6 +223,7 @@ impl RunSettings {
             ("velocity", Value::Choice(s)) => {
                 self.sensors.velocity = VelocitySource::from_name(s).unwrap_or(self.sensors.velocity)
             }
+            ("velocity_filter", Value::Number(x)) => self.sensors.velocity_filter = x,
             ("torque_limit", Value::Number(x)) => self.sensors.torque_limit = x,
             (_, Value::Number(x)) => return self.plant.set(key, x),
             _ => return false,

@@ -5,9 +5,7 @@
 
 use super::sensor_study_job::SensorStudyView;
 use super::Session;
-use crate::analysis::noise::noise_floor;
 use crate::analysis::sensor_study::{Best, SensorStudy, STUDY_DELTAS};
-use crate::analysis::{LinearSettings, LoopModel};
 use crate::control::config::SimulationConfig;
 use crate::control::sensor_sweep::SensorSweep;
 use crate::error::Error;
@@ -29,6 +27,7 @@ impl Session {
         let job = &mut self.sensor_study;
         if job.key != Some(key) || job.sweep.is_none() {
             job.sweep = Some(SensorSweep::new(key, &STUDY_DELTAS)?);
+            job.predicted = SensorStudy::predictions(&key, &STUDY_DELTAS);
             job.key = Some(key);
         }
         let sweep = job.sweep.as_mut().ok_or(Error::Analysis("no study"))?;
@@ -37,13 +36,10 @@ impl Session {
                 break;
             }
         }
-        let study = SensorStudy::of(&config, sweep);
+        let study = SensorStudy::of(sweep, &job.predicted);
         let delta = config.controller.sampling_period;
-        let floor = config
-            .sensors
-            .is_digital()
-            .then(|| LoopModel::new(&LinearSettings::of(&config, None)).and_then(|m| noise_floor(&m, delta, &config.sensors)))
-            .and_then(Result::ok);
+        // The same floor as the status under the verdict: run A's analysis, scaled.
+        let floor = self.a.analysis().unit_floor().map(|f| f.scaled(config.sensors.angle_variance().sqrt()));
         let current_row = STUDY_DELTAS
             .iter()
             .enumerate()

@@ -1,5 +1,6 @@
 //! The sensor study's job and what the page sees of it (the session's `sensor_study` runs it).
 
+use crate::analysis::noise::NoiseFloor;
 use crate::analysis::sensor_study::SensorStudy;
 use crate::control::config::SimulationConfig;
 use crate::control::sensor_sweep::SensorSweep;
@@ -10,6 +11,8 @@ pub struct StudyJob {
     /// Run A's configuration with δ normalized away.
     pub(super) key: Option<SimulationConfig>,
     pub(super) sweep: Option<SensorSweep>,
+    /// The linear prediction at each δ studied, computed with the sweep.
+    pub(super) predicted: Vec<Option<NoiseFloor>>,
 }
 
 /// The study as the page shows it: facts, and the words and table rendered from them.

@@ -55,6 +55,8 @@ pub struct RunStatus {
     pub readouts: Readouts,
     /// "no K_pr, δ = 0.01 s, α = 2 1/s": which settings this run has.
     pub settings: String,
+    /// With sensors on, what limits the error, from the linear noise floor (empty without them).
+    pub limits: String,
 }
 
 /// The status of `run`, named `name`.
@@ -108,7 +110,18 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         growth_rate: report.map(|r| r.growth_rate),
         readouts,
         settings: crate::words::settings::run(&run.settings().config()),
+        limits: limits(run),
     }
+}
+
+/// What limits the error of a run with sensors: their noise floor, scaled from the analysis's.
+fn limits(run: &Run) -> String {
+    let sensors = run.closed_loop().config().sensors;
+    if !sensors.is_digital() {
+        return String::new();
+    }
+    let floor = run.analysis().unit_floor().map(|f| f.scaled(sensors.angle_variance().sqrt()));
+    crate::words::sensors::limits_text(floor.as_ref(), &sensors)
 }
 
 /// What the flexible pair's δ → 0 limit is for `config`: A4 (with its K_pr) when the controller

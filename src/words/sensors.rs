@@ -20,6 +20,9 @@ pub fn sensors_text(s: &SensorModel) -> String {
     if s.velocity == VelocitySource::Difference {
         parts.push("velocities differenced over δ".to_string());
     }
+    if s.velocity_filter > 0.0 {
+        parts.push(format!("filtered with τ_v = {} s", number(s.velocity_filter)));
+    }
     if let Some(limit) = s.limit() {
         parts.push(format!("torque at most {} N m", number(limit)));
     }
@@ -168,7 +171,44 @@ pub fn study_summary(study: &SensorStudy, sensors: &SensorModel) -> Vec<String> 
     if let Some(s) = above_best(study, best, &real, &ideal) {
         out.push(s);
     }
+    if let Some(s) = at_rest(study, best) {
+        out.push(s);
+    }
     out
+}
+
+/// The best δ is judged by the slew; the columns at rest may point elsewhere: say where, from
+/// the rows' own numbers (None when no row at rest was simulated).
+fn at_rest(study: &SensorStudy, best: &StudyRow) -> Option<String> {
+    let least = |f: &dyn Fn(&crate::control::sensor_sweep::SweepPoint) -> f64| {
+        study
+            .rows
+            .iter()
+            .filter_map(|r| r.real.filter(|p| !p.diverged).map(|p| (r.sampling_period, f(&p))))
+            .filter(|(_, v)| v.is_finite())
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+    };
+    let (error_at, error) = least(&|p| p.rms_error_rest[0].max(p.rms_error_rest[1]))?;
+    let (torque_at, torque) = least(&|p| p.torque_fluctuation_rest[0])?;
+    let here = best.sampling_period;
+    if error_at == here && torque_at == here {
+        return Some(format!(
+            "That δ is judged by the slew; at rest, too, the error and T1's noise are least at {} s.",
+            number(here)
+        ));
+    }
+    let mut parts = Vec::new();
+    if error_at != here {
+        parts.push(format!("the error is least at δ = {} s ({} rad RMS)", number(error_at), significant(error, 2)));
+    }
+    if torque_at != here {
+        parts.push(format!("T1's noise at δ = {} s ({} N m RMS)", number(torque_at), significant(torque, 2)));
+    }
+    Some(format!(
+        "That δ is judged by the error during the slew. At rest {}: a δ chosen for holding still or for the \
+         motor can differ.",
+        parts.join(", and ")
+    ))
 }
 
 /// Why the smallest δ tracks worse than the best: how far it is from perfect sensors, and the
@@ -242,6 +282,43 @@ fn above_best(
         s += &format!("; from δ = {} s the run with these sensors diverges", number(d.sampling_period));
     }
     Some(s + ".")
+}
+
+/// What limits the error with these sensors, for the status under the verdict: the noise floor
+/// the linear prediction gives (`floor`, None where the digital loop is unstable), from which
+/// source and through which velocity estimate; ρ is the loop without that error.
+pub fn limits_text(floor: Option<&NoiseFloor>, sensors: &SensorModel) -> String {
+    let Some(f) = floor else {
+        return "With these sensors the noise-free digital loop is unstable (ρ ≥ 1): no error floor to speak of."
+            .to_string();
+    };
+    let quantizer = sensors.count() * sensors.count() / 12.0;
+    let source = match (sensors.encoder_counts > 0.0, sensors.noise > 0.0) {
+        (false, false) => {
+            return "The controller is digital but reads exact angles: the sensors add no error, and ρ says the rest."
+                .to_string();
+        }
+        (true, false) => format!("the {}-count encoder", number(sensors.encoder_counts)),
+        (false, true) => format!("the angle noise σ = {} rad", significant(sensors.noise, 2)),
+        (true, true) if quantizer >= sensors.noise * sensors.noise => {
+            format!("the {}-count encoder (more than the angle noise)", number(sensors.encoder_counts))
+        }
+        (true, true) => format!("the angle noise σ = {} rad (more than the encoder)", significant(sensors.noise, 2)),
+    };
+    let path = match (sensors.velocity, sensors.velocity_filter > 0.0) {
+        (VelocitySource::Difference, false) => " through the velocities differenced over δ".to_string(),
+        (VelocitySource::Difference, true) => format!(
+            " through the velocities differenced over δ and filtered (τ_v = {} s)",
+            number(sensors.velocity_filter)
+        ),
+        (VelocitySource::Exact, _) => String::new(),
+    };
+    format!(
+        "What limits the error: {source}{path} — by the linear prediction an error floor of about {} rad RMS on \
+         link 1 and {} N m RMS of noise on T1 while the arm moves. ρ is the loop without that error.",
+        significant(f.rms_error[0], 2),
+        significant(f.rms_torque[0], 2)
+    )
 }
 
 /// The linear prediction at the current δ, and where it stops applying.

@@ -10,7 +10,7 @@ eqs. (2.3)-(2.4), (4.2)-(4.3)), the one-period map of the sampled loop (the torq
 from x(t_n) is held from t_n + delta to t_n + 2 delta, Fig. 2.1), its eigenvalues and spectral
 radius rho (stable iff rho < 1), and the pair A4 the controller leaves as delta -> 0 (section 3).
 With sensors on (SENSORS: an encoder, noise, or velocities from differences) the controller is
-a digital one that reads only the measured angles: rho is then its 13-state loop's, and the
+a digital one that reads only the measured angles: rho is then its 16-state loop's, and the
 script predicts the noise floor the angles' error leaves (the discrete Lyapunov equation).
 With --simulate it also runs the nonlinear arm under the predictive controller (the friction
 taken as cancelled by the observer of eq. (4.4)) and plots the errors if matplotlib is installed:
@@ -47,9 +47,10 @@ REST = {{REST}}  # the rest point (q1, q2) the loop is linearized at, rad
 SLEW = {{SLEW}}  # the reference: from, to (rad, per link) in slew_time s
 # The sensors: encoder counts per revolution N on q1, q2, theta (0 = exact angles), the noise's
 # standard deviation sigma on each measured angle (rad), where the velocities come from ("exact",
-# as the paper, or "difference" of the measured angles over delta), and the torque limit |T1|,
+# as the paper, or "difference" of the measured angles over delta), the time constant tau_v of a
+# first-order low-pass filter on that velocity estimate (s, 0 = none), and the torque limit |T1|,
 # |T2| <= torque_limit N m (0 = none). All off is the paper's perfect robot; with any of the first
-# three on the loop is the digital controller of digital_loop below. The torque limit does not
+# four on the loop is the digital controller of digital_loop below. The torque limit does not
 # enter the linear model: a torque held at its limit is no longer a linear loop.
 SENSORS = {{SENSORS}}
 
@@ -158,7 +159,8 @@ def loop_matrix(arm_lin, model_lin, gain):
 def is_digital(sensors):
     """True if the controller reads something other than the true state (a torque limit alone
     leaves the paper's loop)."""
-    return sensors["encoder"] > 0 or sensors["noise"] > 0 or sensors["velocity"] == "difference"
+    return (sensors["encoder"] > 0 or sensors["noise"] > 0 or sensors["velocity"] == "difference"
+            or sensors["velocity_filter"] > 0)
 
 
 def angle_variance(sensors):
@@ -169,14 +171,16 @@ def angle_variance(sensors):
     return q * q / 12 + sensors["noise"] ** 2
 
 
-def digital_loop(arm_lin, model_lin, gain, velocity):
+def digital_loop(arm_lin, model_lin, gain, velocity, velocity_filter):
     """The digital controller's loop at rest: zeta_{n+1} = F zeta_n + G eta_n, u_n = H zeta_n + J eta_n.
 
     The computer reads, at each t_n, only the angles, with an error eta_n (the encoder's rounding,
     the noise), and everything it computes is held until t_{n+1} (deviations from rest):
 
       m_n = q_n + eta_n                        the measured angles, q = (q1, q2, theta)
-      nu_n = q'_n, or (m_n - m_{n-1}) / delta  the velocities: exact, or differenced
+      r_n = q'_n, or (m_n - m_{n-1}) / delta   the raw velocities: exact, or differenced
+      nu_n = beta nu_{n-1} + (1 - beta) r_n    through the low-pass filter, beta = exp(-delta/tau_v)
+                                               (beta = 0 without it)
       X_n = (m_n, nu_n, w_n)                   what the controller knows (8 numbers)
       u_n = v_n + K_pr X_n                     the torque, held on [t_n, t_{n+1}) (K_pr held too:
                                                an analog K_pr would need analog velocities)
@@ -184,9 +188,10 @@ def digital_loop(arm_lin, model_lin, gain, velocity):
       w_{n+1} = w_n + delta alpha^3 m_n[0:2]   the integrators, now the controller's own states
       p_{n+1} = Phi_p p_n + Gamma_p u_n        the arm's six states p = (q, q'), u held (zero-order hold)
       mprev_{n+1} = m_n                        kept for the difference
+      nuprev_{n+1} = nu_n                      kept for the filter
 
-    so zeta = (p, w, v, mprev) has 6 + 2 + 2 + 3 = 13 states (with exact velocities nobody reads
-    mprev: its three eigenvalues are 0). Phi_p, Gamma_p come from the arm, K_pred from the arm the
+    so zeta = (p, w, v, mprev, nuprev) has 6 + 2 + 2 + 3 + 3 = 16 states (with exact velocities
+    nobody reads mprev, without a filter nobody reads nuprev: their eigenvalues are 0). Phi_p, Gamma_p come from the arm, K_pred from the arm the
     controller assumes. INNER plays no part: the preliminary feedback is always held here.
     Returns F, G, H, J.
     """
@@ -201,16 +206,18 @@ def digital_loop(arm_lin, model_lin, gain, velocity):
     k_pred = predictor_gain(model_lin, gain)
 
     # X_n = S zeta_n + T eta_n.
-    s = np.zeros((8, 13))
+    s = np.zeros((8, 16))
     t = np.zeros((8, 3))
     s[0:3, 0:3] = np.eye(3)  # m_n = q_n + eta_n
     t[0:3, 0:3] = np.eye(3)
+    beta = math.exp(-DELTA / velocity_filter) if velocity_filter > 0 else 0.0
     if velocity == "difference":
-        s[3:6, 0:3] = np.eye(3) / DELTA  # nu_n = (q_n + eta_n - mprev_n) / delta
-        s[3:6, 10:13] = -np.eye(3) / DELTA
-        t[3:6, 0:3] = np.eye(3) / DELTA
+        s[3:6, 0:3] = (1 - beta) * np.eye(3) / DELTA  # r_n = (q_n + eta_n - mprev_n) / delta
+        s[3:6, 10:13] = -(1 - beta) * np.eye(3) / DELTA
+        t[3:6, 0:3] = (1 - beta) * np.eye(3) / DELTA
     else:
-        s[3:6, 3:6] = np.eye(3)  # nu_n = q'_n
+        s[3:6, 3:6] = (1 - beta) * np.eye(3)  # r_n = q'_n
+    s[3:6, 13:16] = beta * np.eye(3)  # nu_n = beta nuprev_n + (1 - beta) r_n
     s[6:8, 6:8] = np.eye(2)  # w_n
 
     # u_n = v_n + K_pr X_n = H zeta_n + J eta_n.
@@ -218,8 +225,8 @@ def digital_loop(arm_lin, model_lin, gain, velocity):
     h[:, 8:10] += np.eye(2)
     j = gain @ t
 
-    f = np.zeros((13, 13))
-    g = np.zeros((13, 3))
+    f = np.zeros((16, 16))
+    g = np.zeros((16, 3))
     f[0:6, :] = gamma_p @ h  # p_{n+1} = Phi_p p_n + Gamma_p u_n
     f[0:6, 0:6] += phi_p
     g[0:6, :] = gamma_p @ j
@@ -232,6 +239,8 @@ def digital_loop(arm_lin, model_lin, gain, velocity):
     g[8:10, :] = k_pred @ t
     f[10:13, :] = s[0:3, :]  # mprev_{n+1} = m_n
     g[10:13, :] = t[0:3, :]
+    f[13:16, :] = s[3:6, :]  # nuprev_{n+1} = nu_n
+    g[13:16, :] = t[3:6, :]
     return f, g, h, j
 
 
@@ -399,7 +408,7 @@ def main():
     model_lin = linearize(MODEL, ALPHA, REST)
     digital = is_digital(SENSORS)
     if digital:
-        f, g, h, j = digital_loop(arm_lin, model_lin, K_PR, SENSORS["velocity"])
+        f, g, h, j = digital_loop(arm_lin, model_lin, K_PR, SENSORS["velocity"], SENSORS["velocity_filter"])
         loop = f
     else:
         loop = loop_matrix(arm_lin, model_lin, K_PR)
@@ -411,7 +420,8 @@ def main():
     print(f"delta = {DELTA} s, alpha = {ALPHA} 1/s, k = {K}, eps = delta/{M} = {EPS:.4g} s")
     if digital:
         print(f"sensors: encoder {SENSORS['encoder']:g} counts/rev, noise {SENSORS['noise']:g} rad, velocities "
-              f"{SENSORS['velocity']}: the digital controller's loop (13 states)")
+              f"{SENSORS['velocity']} (filter tau_v = {SENSORS['velocity_filter']:g} s): the digital "
+              "controller's loop (16 states)")
     print(f"spectral radius rho = {rho:.6f}: {'stable' if rho < 1 else 'unstable'}"
           f" (the errors change e-fold every {abs(DELTA / math.log(rho)):.3g} s)" if rho != 1 else "")
     print("eigenvalues of the one-period map (lambda, and s = ln(lambda)/delta in 1/s):")
@@ -441,7 +451,7 @@ def main():
     if args.simulate:
         if digital or SENSORS["torque_limit"] > 0:
             print("(the simulation here runs the paper's perfect sensors, without the encoder, the noise, the "
-                  "differenced velocities or the torque limit: flexarm's own simulation has them)")
+                  "differenced velocities, their filter or the torque limit: flexarm's own simulation has them)")
         times, errors = simulate(args.duration)
         result["simulated_seconds"] = float(times[-1]) if len(times) else 0.0
         result["max_error"] = [float(v) for v in np.max(np.abs(errors), axis=0)] if len(times) else None

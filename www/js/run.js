@@ -12,7 +12,7 @@ export const GROWTH_REFRESH_MS = 1000;
  *   growth: string, a4: string }} Readouts
  * @typedef {{ run: string, verdict: string, headline: string, detail: string, observed: string,
  *   measured: boolean, finished: boolean, rho: string, announce: string, settings: string,
- *   readouts: Readouts }} RunStatus
+ *   readouts: Readouts, limits: string }} RunStatus
  */
 
 /** Whether the observation line should be rewritten now (pure): a new verdict, the first
@@ -46,6 +46,7 @@ export function createRunView(prefix, growthCell) {
   const detail = byId(`${prefix}-detail`);
   const observed = byId(`${prefix}-growth`);
   const rho = byId(`${prefix}-rho`);
+  const limits = byId(`${prefix}-limits`);
   const growth = byId(growthCell);
   const last = { verdict: '', measured: false, rho: '', shownAt: -Infinity };
   return {
@@ -63,6 +64,9 @@ export function createRunView(prefix, growthCell) {
       last.measured = s.measured;
       last.rho = s.rho;
       setText(rho, s.rho);
+      // With sensors on: what limits the error (empty, and hidden, for the paper's perfect robot).
+      setText(limits, s.limits);
+      if (limits.hidden !== !s.limits) limits.hidden = !s.limits;
     },
     /** Shown when the wasm crashed. */
     crashed() {

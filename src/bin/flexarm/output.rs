@@ -70,11 +70,7 @@ fn sensors_line(c: &SimulationConfig) -> String {
 /// The linear noise floor of `c`'s digital loop at its δ, if its sensors make it digital (Err:
 /// why there is none, e.g. an unstable loop).
 pub fn noise_floor(c: &SimulationConfig) -> Option<Result<flexarm::analysis::NoiseFloor, flexarm::Error>> {
-    use flexarm::analysis::{noise_floor, LinearSettings, LoopModel};
-    c.sensors.is_digital().then(|| {
-        LoopModel::new(&LinearSettings::of(c, None))
-            .and_then(|m| noise_floor(&m, c.controller.sampling_period, &c.sensors))
-    })
+    flexarm::analysis::noise::noise_floor_of(c)
 }
 
 /// "δ = 0.01 s, α = 2 1/s" (or α1, α2 when they differ).
