@@ -157,3 +157,83 @@ fn the_csv_names_the_measured_columns_at_its_end() {
     );
     assert_eq!(header[..2], ["t [s]", "q1 [rad]"]);
 }
+
+// ---------------------------------------------------------------- in the view
+
+mod common;
+use common::{play, session};
+
+use flexarm::plot::{palette, Color};
+use flexarm::view::{PanelKind, Scene, ViewOptions};
+
+fn drawn(query: &str) -> Scene {
+    let mut s = session(query);
+    play(&mut s, 1.5);
+    s.refresh();
+    let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
+    scene.draw_session(&s);
+    scene.draw_session(&s);
+    scene
+}
+
+fn paints(scene: &Scene, color: Color) -> bool {
+    scene.vertices().iter().any(|v| v.color == color.0)
+}
+
+fn note(scene: &Scene, kind: PanelKind) -> String {
+    scene.panel_info().into_iter().find(|p| p.id == kind.id()).map(|p| p.note).unwrap_or_default()
+}
+
+fn key_texts(scene: &Scene) -> Vec<String> {
+    scene.legend().iter().flat_map(|g| g.items.iter().map(move |i| format!("{}: {}", g.title, i.text))).collect()
+}
+
+#[test]
+fn the_torque_limit_is_drawn_and_keyed_only_when_the_motors_have_one() {
+    let limited = drawn("preset=real-encoder&mode=full&torque=1");
+    let torque = limited.panel_info().into_iter().find(|p| p.id == PanelKind::Torque.id()).expect("torques shown");
+    assert!(torque.note.contains("limit ±150 N m"), "{}", torque.note);
+    assert!(
+        torque.y_range[1] >= 150.0 && torque.y_range[0] <= -150.0,
+        "the scale shows the limit: {:?}",
+        torque.y_range
+    );
+    assert!(paints(&limited, palette::TORQUE_LIMIT));
+    assert!(
+        key_texts(&limited).iter().any(|t| t.starts_with("Torque limit: limit ±150 N m")),
+        "{:?}",
+        key_texts(&limited)
+    );
+
+    for query in ["encoder=1024&velocity=difference&mode=full&torque=1", "mode=full&torque=1"] {
+        let free = drawn(query);
+        assert!(!note(&free, PanelKind::Torque).contains("limit"), "{query}");
+        assert!(!paints(&free, palette::TORQUE_LIMIT), "{query}");
+        assert!(!key_texts(&free).iter().any(|t| t.contains("limit ±")), "{query}");
+    }
+    // Without the torque panel, no key to it.
+    assert!(!key_texts(&drawn("preset=real-encoder&mode=full")).iter().any(|t| t.contains("limit ±")));
+}
+
+#[test]
+fn the_switch_draws_the_measured_errors_only_where_the_controller_reads_sensors() {
+    let on = drawn("preset=real-encoder&measured=1");
+    assert!(paints(&on, palette::MEASURED1) && paints(&on, palette::MEASURED2));
+    assert!(
+        key_texts(&on).iter().any(|t| t.starts_with("What the controller reads: e1 as measured")),
+        "{:?}",
+        key_texts(&on)
+    );
+    assert!(note(&on, PanelKind::Error1).contains("as measured"));
+
+    // The switch off: nothing of it.
+    let off = drawn("preset=real-encoder");
+    assert!(!paints(&off, palette::MEASURED1));
+    assert!(!key_texts(&off).iter().any(|t| t.contains("as measured")));
+
+    // The sensors off: the controller reads the true state; said, not drawn twice.
+    let perfect = drawn("measured=1");
+    assert!(!paints(&perfect, palette::MEASURED1));
+    assert!(note(&perfect, PanelKind::Error1).contains("sensors off"));
+    assert!(key_texts(&perfect).iter().any(|t| t.contains("reads the true state")));
+}
