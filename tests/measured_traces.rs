@@ -237,3 +237,18 @@ fn the_switch_draws_the_measured_errors_only_where_the_controller_reads_sensors(
     assert!(note(&perfect, PanelKind::Error1).contains("sensors off"));
     assert!(key_texts(&perfect).iter().any(|t| t.contains("reads the true state")));
 }
+
+#[test]
+fn the_svg_figures_draw_what_the_canvas_draws() {
+    use flexarm::view::figure::figure_svg;
+    let mut s = session("preset=real-encoder&mode=full&torque=1&measured=1");
+    play(&mut s, 1.0);
+    let torques = figure_svg(&s, "torque", false).unwrap().svg;
+    assert!(torques.contains("limit ±150 N m"), "the torque figure keys the limit");
+    let errors = figure_svg(&s, "errors", false).unwrap().svg;
+    assert!(errors.contains("e1 as measured"), "the error figure keys the measured errors");
+    assert!(errors.contains(&palette::MEASURED1.css()), "and draws them");
+    let mut plain = session("mode=full&torque=1");
+    play(&mut plain, 1.0);
+    assert!(!figure_svg(&plain, "torque", false).unwrap().svg.contains("limit ±"));
+}
