@@ -148,7 +148,7 @@ pub const LOG: Param = switch(
 /// true ones.
 pub const MEASURED: Param = switch(
     "measured",
-    "What the controller reads: measured errors and estimated velocities",
+    "What the controller reads: the measured errors, held over each period",
     false,
     "With a real robot's sensors on, the error plots add e1, e2 as the controller read them (m − q_d at the \
      sampling instant, held over the period: steps a count high), light under the true errors; with the sensors \
