@@ -143,7 +143,8 @@ fn traces_have_the_requested_rate_and_a_csv_with_units() {
     let header = lines.next().unwrap();
     assert!(header.starts_with("t [s],q1 [rad]") && header.contains("e1 [rad]") && header.contains("T1 [N m]"));
     let row: Vec<f64> = lines.nth(10).unwrap().split(',').map(|v| v.parse().unwrap()).collect();
-    assert_eq!(row.len(), 17);
+    // 17 of the state and the controller, then the 5 of what it read (e1_meas … theta_dot_est).
+    assert_eq!(row.len(), 22);
     assert!((row[0] - 0.1).abs() < 1e-9);
 }
 

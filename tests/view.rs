@@ -823,6 +823,8 @@ fn a_diverged_state_with_non_finite_samples_draws_without_panicking() {
         v: [0.0; 2],
         xf_hat: [0.0; 2],
         w: [0.0; 2],
+        error_meas: [0.0; 2],
+        qdot_est: [0.0; 3],
     };
     let mut scene = Scene::new(ViewOptions { show_torque: true, ..Default::default() }, 800.0, 600.0, 1.0);
     scene.draw_state(&snapshot, &traces, None);

@@ -244,7 +244,7 @@ impl ClosedLoop {
     pub fn snapshot_at(&self, t: f64) -> Option<Snapshot> {
         let (state, config) = self.history.at(t)?;
         let reference = Reference::new(config.reference);
-        Some(snapshot_of(state, &reference))
+        Some(snapshot_of(state, &reference, config.sensors.is_digital()))
     }
 
     /// Goes back to the kept sampling instant at or before `t` and continues from there: the same
@@ -557,7 +557,7 @@ impl ClosedLoop {
 
     /// The newest state.
     pub fn snapshot(&self) -> Snapshot {
-        snapshot_of(&self.loop_state(), &self.derived.reference)
+        snapshot_of(&self.loop_state(), &self.derived.reference, self.config.sensors.is_digital())
     }
 
     /// The plant's full physical state (including the true friction torques).
@@ -581,19 +581,30 @@ impl ClosedLoop {
     }
 }
 
-/// What is drawn and recorded of a state.
-fn snapshot_of(state: &LoopState, reference: &Reference) -> Snapshot {
+/// What is drawn and recorded of a state; `digital`: the controller reads its sensors (what it
+/// read is then the held measurement, else the true state).
+fn snapshot_of(state: &LoopState, reference: &Reference, digital: bool) -> Snapshot {
     let r = reference.sample(state.time);
     let s = &state.plant;
+    let error = [s.q[0] - r.q[0], s.q[1] - r.q[1]];
+    let qdot = [s.qdot[0], s.qdot[1], s.qdot[2]];
+    let m = &state.measurement;
+    let (error_meas, qdot_est) = if digital && m.time.is_some() {
+        ([m.error[0], m.error[1]], [m.velocities[0], m.velocities[1], m.velocities[2]])
+    } else {
+        (error, qdot)
+    };
     Snapshot {
         time: state.time,
         q: [s.q[0], s.q[1], s.q[2]],
-        qdot: [s.qdot[0], s.qdot[1], s.qdot[2]],
+        qdot,
         qd: [r.q[0], r.q[1]],
-        error: [s.q[0] - r.q[0], s.q[1] - r.q[1]],
+        error,
         torque: [state.applied_torque[0], state.applied_torque[1]],
         v: [state.v_applied[0], state.v_applied[1]],
         xf_hat: [state.observer.estimate[0], state.observer.estimate[1]],
         w: [state.integrators[0], state.integrators[1]],
+        error_meas,
+        qdot_est,
     }
 }

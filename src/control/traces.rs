@@ -27,6 +27,12 @@ pub struct Snapshot {
     pub xf_hat: [f64; 2],
     /// Controller integrators w, rad/s².
     pub w: [f64; 2],
+    /// The errors as the controller read them, m_n − q_d(t_n), held from the sampling instant t_n
+    /// over its period, rad (with the sensors off: `error`).
+    pub error_meas: [f64; 2],
+    /// The velocities q̇1, q̇2, θ̇ as the controller estimated them, ν_n, held over the period,
+    /// rad/s (with the sensors off: `qdot`).
+    pub qdot_est: [f64; 3],
 }
 
 /// Declares the trace columns once: variant, accessor and key, CSV header with unit, and the value
@@ -91,6 +97,11 @@ columns! {
     V2 v2 "v2 [N m]" |s| s.v[1];
     Xf1Hat xf1_hat "xf1_hat [N m]" |s| s.xf_hat[0];
     Xf2Hat xf2_hat "xf2_hat [N m]" |s| s.xf_hat[1];
+    E1Meas e1_meas "e1_meas [rad]" |s| s.error_meas[0];
+    E2Meas e2_meas "e2_meas [rad]" |s| s.error_meas[1];
+    Q1DotEst q1_dot_est "q1_dot_est [rad/s]" |s| s.qdot_est[0];
+    Q2DotEst q2_dot_est "q2_dot_est [rad/s]" |s| s.qdot_est[1];
+    ThetaDotEst theta_dot_est "theta_dot_est [rad/s]" |s| s.qdot_est[2];
 }
 
 impl Column {
@@ -104,7 +115,9 @@ impl Column {
 pub const CSV_COLUMNS: &str = "columns: t time; q1, q2 the link angles, theta the motor angle, q1_dot, q2_dot, \
      theta_dot their velocities; q1_ref, q2_ref the reference slew; e1, e2 the errors e = q - q_ref; T1, T2 the \
      applied torques (T1 on the motor, T2 on joint 2); v1, v2 the controller's output; xf1_hat, xf2_hat the \
-     friction observer's estimate";
+     friction observer's estimate; e1_meas, e2_meas the errors as the controller read them (m - q_ref at the last \
+     sampling instant, held over the period) and q1_dot_est, q2_dot_est, theta_dot_est the velocities as it \
+     estimated them (with the sensors off: e1, e2 and the true velocities)";
 
 /// The recorded time series, one column per [`Column`] (equal lengths).
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -101,6 +101,12 @@ pub mod palette {
     pub const TORQUE1: Color = ERROR1;
     pub const TORQUE2: Color = ERROR2;
 
+    /// e1, e2 as the controller read them (the sensors' staircase), lighter, under the true ones.
+    pub const MEASURED1: Color = Color::hex(0x8fb8ee);
+    pub const MEASURED2: Color = Color::hex(0xf3a985);
+    /// The motors' torque limit ±L.
+    pub const TORQUE_LIMIT: Color = Color::hex(0xa1261d);
+
     /// Run B of a comparison: one violet hue for its curves, poles and map marker ...
     pub const RUN_B: Color = Color::hex(0x8a3cc2);
     /// ... and a lighter violet for its T2 and its A4-without-feedback rings.

@@ -561,6 +561,7 @@ pub const PARAMS: &[&Param] = &[
     &super::MEASURE,
     &super::TORQUE,
     &super::LOG,
+    &super::MEASURED,
     &super::PREDICT,
     &super::SWING,
     &super::ANSWERS,

@@ -144,6 +144,18 @@ pub const LOG: Param = switch(
     "log |e|: an exponential is a straight line, of slope ln ρ/δ.",
 );
 
+/// What the controller reads (issue 36): the measured errors, held over each period, beside the
+/// true ones.
+pub const MEASURED: Param = switch(
+    "measured",
+    "What the controller reads: the measured errors, held over each period",
+    false,
+    "With a real robot's sensors on, the error plots add e1, e2 as the controller read them (m − q_d at the \
+     sampling instant, held over the period: steps a count high), light under the true errors; with the sensors \
+     off the controller reads the true state and there is nothing to compare. The CSV always has the measured \
+     errors and the velocity estimates (e1_meas … theta_dot_est).",
+);
+
 /// The paper's Fig. 2.1 at one sampling instant: the time plots zoomed on it.
 pub const PREDICT: Param = switch(
     "predict",

@@ -26,6 +26,8 @@ pub struct ViewSettings {
     pub torque: bool,
     /// log |e| with the predicted slope.
     pub log: bool,
+    /// The errors as the controller read them, beside the true ones.
+    pub measured: bool,
     /// The time plots zoomed on one sampling instant (Fig. 2.1).
     pub predict: bool,
     /// The flexible pair's shape animated on the arm.
@@ -49,7 +51,7 @@ pub struct ViewSettings {
 }
 
 /// The view parameters, in the order the state string writes them.
-pub(super) const VIEW_PARAMS: [&Param; 21] = [
+pub(super) const VIEW_PARAMS: [&Param; 22] = [
     &schema::MODE,
     &schema::EMBED,
     &schema::WINDOW,
@@ -63,6 +65,7 @@ pub(super) const VIEW_PARAMS: [&Param; 21] = [
     &schema::MEASURE,
     &schema::TORQUE,
     &schema::LOG,
+    &schema::MEASURED,
     &schema::PREDICT,
     &schema::SWING,
     &schema::ANSWERS,
@@ -87,6 +90,7 @@ impl Default for ViewSettings {
             measure: Measure::Rho,
             torque: false,
             log: false,
+            measured: false,
             predict: false,
             swing: false,
             tab: Tab::Run,
@@ -122,6 +126,7 @@ impl ViewSettings {
             "measure" => Value::Choice(self.measure.name()),
             "torque" => Value::Switch(self.torque),
             "log" => Value::Switch(self.log),
+            "measured" => Value::Switch(self.measured),
             "predict" => Value::Switch(self.predict),
             "swing" => Value::Switch(self.swing),
             "answers" => Value::Choice(if self.answers_hidden { "hidden" } else { "shown" }),
@@ -150,6 +155,7 @@ impl ViewSettings {
             ("measure", Value::Choice(m)) => self.measure = Measure::from_name(m).unwrap_or_default(),
             ("torque", Value::Switch(b)) => self.torque = b,
             ("log", Value::Switch(b)) => self.log = b,
+            ("measured", Value::Switch(b)) => self.measured = b,
             ("predict", Value::Switch(b)) => self.predict = b,
             ("swing", Value::Switch(b)) => self.swing = b,
             ("answers", Value::Choice(a)) => self.answers_hidden = a == "hidden",

@@ -42,6 +42,8 @@ pub struct ViewOptions {
     pub measure: Measure,
     /// The error plots show log |e|, with the slope ln ρ / δ the analysis predicts.
     pub log_errors: bool,
+    /// The error plots add the errors as the controller read them (with the sensors on).
+    pub show_measured: bool,
     /// The time plots zoomed on one sampling instant: the prediction of Fig. 2.1.
     pub show_cycle: bool,
     /// The flexible pair's mode animated on the arm.
@@ -73,6 +75,7 @@ impl Default for ViewOptions {
             show_map: true,
             measure: Measure::Rho,
             log_errors: false,
+            show_measured: false,
             show_cycle: false,
             show_swing: false,
             tab: Tab::Run,

@@ -85,3 +85,41 @@ test('a real robot: a coarse encoder has a best δ, a fine one not; the controll
     await shot.close();
   }
 });
+
+// "What the controller reads": the switch in "A real robot" adds the measured errors (held over
+// each period) to the error plots and says so in the key; the torque limit is drawn on the torques
+// and keyed. Screenshots of the figure at the three sizes: screenshots/sensors-measured-*.png.
+test('a real robot: the measured errors and the torque limit in the figure', { timeout: 180000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, `${REAL}&torque=1`);
+  const key = () => page.evaluate(() => document.getElementById('figure-key')?.textContent ?? '');
+  await page.waitForFunction(() => /limit ±150 N m/.test(document.getElementById('figure-key')?.textContent ?? ''), null, { timeout: 20000 });
+  assert.doesNotMatch(await key(), /as measured/);
+  // The switch sits in "A real robot".
+  await page.evaluate(() => { /** @type {HTMLDetailsElement} */ (document.getElementById('sensors-details')).open = true; });
+  const box = page.locator('#sensors-group [data-param="measured"] input[type="checkbox"]');
+  assert.equal(await box.count(), 1);
+  assert.equal(await box.isChecked(), false);
+  await box.check();
+  await page.waitForFunction(() => new URL(location.href).searchParams.get('measured') === '1', null, { timeout: 10000 });
+  await page.waitForFunction(() => /What the controller reads.*e1 as measured/.test(document.getElementById('figure-key')?.textContent ?? ''), null, { timeout: 10000 });
+  assert.match(await key(), /limit ±150 N m/);
+  // The perfect robot: nothing to compare, and said so.
+  await page.locator('button.try', { hasText: "Back to the paper's perfect robot" }).click();
+  await page.waitForFunction(() => /sensors off: the controller reads the true state/.test(document.getElementById('figure-key')?.textContent ?? ''), null, { timeout: 10000 });
+  assert.doesNotMatch(await key(), /limit ±/);
+  assert.deepEqual(problems, []);
+  await close();
+
+  for (const [name, size] of Object.entries(SIZES)) {
+    const shot = await openPage(env.browser, env.server.base, `${REAL}&torque=1&measured=1&window=2`, size);
+    await shot.page.waitForTimeout(3000);
+    await shot.page.screenshot({ path: path.join(shots, `sensors-measured-${name}.png`) });
+    if (name !== 'phone') {
+      await shot.page.evaluate(() => document.getElementById('figure-key')?.scrollIntoView({ block: 'center' }));
+      await shot.page.waitForTimeout(300);
+      await shot.page.screenshot({ path: path.join(shots, `sensors-measured-key-${name}.png`) });
+    }
+    assert.deepEqual(shot.problems, [], name);
+    await shot.close();
+  }
+});

@@ -46,6 +46,8 @@ fn at(t: f64) -> Snapshot {
         v: [0.0; 2],
         xf_hat: [0.0; 2],
         w: [0.0; 2],
+        error_meas: [0.0; 2],
+        qdot_est: [0.0; 3],
     }
 }
 

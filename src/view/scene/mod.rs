@@ -137,6 +137,7 @@ impl Scene {
             measure: v.measure,
             show_torque: v.torque,
             log_errors: v.log,
+            show_measured: v.measured,
             show_cycle: v.predict,
             show_swing: v.swing,
             tab: v.tab,

@@ -18,7 +18,8 @@ use series::{
 use split::{SplitBuffers, SPLIT_SERIES};
 use zoom::{Zoom, ZOOM_VERTEX_BUDGET};
 
-use crate::control::Traces;
+use crate::control::sensing::SensorModel;
+use crate::control::{Column, Traces};
 use crate::model::reference::Reference;
 use crate::plot::ticks::Decades;
 use crate::plot::{palette, Color};
@@ -34,6 +35,42 @@ use crate::view::time_window::TimeWindow;
 
 /// Least distance between log-axis labels along y, CSS px (a label's height).
 const LOG_LABEL_SPACING: f64 = 17.0;
+
+/// Width of the measured errors' light staircase under the true errors, CSS px.
+const MEASURED_WIDTH: f64 = 3.5;
+
+/// Run A's sensors as of the latest frame (None before it has a configuration).
+fn sensors(frame: &Frame) -> Option<SensorModel> {
+    frame.runs[0].config.map(|c| c.sensors)
+}
+
+/// Run A's torque limit, N m, if its motors have one.
+fn torque_limit(frame: &Frame) -> Option<f64> {
+    sensors(frame).and_then(|s| s.limit())
+}
+
+/// The switch "what the controller reads" is on and run A's controller reads sensors (off, it
+/// reads the true state: nothing to compare).
+fn measured_shown(frame: &Frame) -> bool {
+    frame.options.show_measured && !frame.zoomed() && sensors(frame).is_some_and(|s| s.is_digital())
+}
+
+/// The error as the controller read it, and its colour, if `kind`'s plot draws it.
+fn measured_series(frame: &Frame, kind: PanelKind) -> Option<(Column, Color)> {
+    if !measured_shown(frame) {
+        return None;
+    }
+    match kind {
+        PanelKind::Error1 => Some((Column::E1Meas, palette::MEASURED1)),
+        PanelKind::Error2 => Some((Column::E2Meas, palette::MEASURED2)),
+        _ => None,
+    }
+}
+
+/// The key's words for the torque limit ±`limit`.
+fn limit_text(limit: f64) -> String {
+    format!("limit ±{} N m", crate::plot::format::number(limit))
+}
 
 /// The time plots ([`PanelKind::Error1`], [`PanelKind::Error2`], [`PanelKind::Torque`]) and what
 /// they keep between frames: their autoscales, the zoom's, the split's buffers and whether the
@@ -153,6 +190,16 @@ impl TimePlots {
                 data_max = data_max.max(values.get(range.clone()).map_or(0.0, max_abs));
             }
         }
+        let measured = measured_series(frame, panel.kind);
+        if let Some((column, _)) = measured {
+            let range = window.indices(runs.a.traces.t());
+            data_max = data_max.max(runs.a.traces.column(column).get(range).map_or(0.0, max_abs));
+        }
+        let limit = torque_limit(frame).filter(|_| panel.kind == PanelKind::Torque);
+        if let Some(l) = limit {
+            // The scale shows the limit, so that a torque at it is seen to be at it.
+            data_max = data_max.max(l);
+        }
         let log = self.log_plot(frame, panel.kind);
         let Some(index) = scale_index(panel.kind) else { return };
         let y = self.scales[index].update(data_max, frame.time);
@@ -174,6 +221,12 @@ impl TimePlots {
                 draw_series_within(painter, &plot, &t[..m], &values[..m], CURVE_WIDTH * dpr, palette::GHOST_TRACE);
             }
         }
+        // What run A's controller read, a light staircase under the true error.
+        if let Some((column, color)) = measured {
+            let (t, values) = (a.traces.t(), a.traces.column(column));
+            let m = t.len().min(values.len());
+            draw_series(painter, &plot, &t[..m], &values[..m], MEASURED_WIDTH * dpr, color);
+        }
         for (run, state) in runs.each().iter().enumerate() {
             let Some(state) = state else { continue };
             let traces = state.traces;
@@ -192,6 +245,13 @@ impl TimePlots {
             }
             if log && !frame.options.hide_prediction {
                 draw_predicted_slope(painter, &plot, state, panel.kind, run, dpr);
+            }
+        }
+        if let Some(l) = limit {
+            let r = plot.rect;
+            for v in [l, -l] {
+                let y = plot.y(v);
+                painter.dashed_line([r.x, y], [r.right(), y], 1.5 * dpr, 8.0 * dpr, 5.0 * dpr, palette::TORQUE_LIMIT);
             }
         }
         if let Some(c) = frame.cursor.filter(|c| *c >= window.start && *c <= window.end) {
@@ -227,6 +287,18 @@ impl TimePlots {
             }
         } else {
             info.y_ticks = y_ticks.collect();
+        }
+        let note = match panel.kind {
+            PanelKind::Torque => torque_limit(frame).map(|l| format!("dashed: {}", limit_text(l))),
+            PanelKind::Error1 if frame.options.show_measured => Some(if measured_shown(frame) {
+                "light: as measured, held over each period".to_string()
+            } else {
+                "sensors off: the controller reads the true errors".to_string()
+            }),
+            _ => None,
+        };
+        if let Some(note) = note {
+            info.note = if info.note.is_empty() { note } else { format!("{}; {note}", info.note) };
         }
     }
 }
@@ -286,10 +358,12 @@ impl PanelView for TimePlots {
         let runs = frame.run_count();
         // Each run's curves, the ghost's, and a predicted slope per run.
         let per_run = plot_series(panel.kind, &Traces::default(), 0).iter().flatten().count();
-        let series = per_run * (runs + 1) + SPLIT_SERIES;
+        // … and the measured error under run A's.
+        let series = per_run * (runs + 1) + SPLIT_SERIES + usize::from(frame.options.show_measured);
         let (x_ticks, y_ticks) = plot_tick_counts(panel.rect);
         vertex_budget(frame.layout.to_physical(panel.rect).w, series, x_ticks + y_ticks + LOG_DECADES as usize + 4)
             + runs * DASHED_LINE_BUDGET
+            + 2 * DASHED_LINE_BUDGET // the torque limit ±L
             + 6 // the cursor
             + if frame.options.show_cycle { ZOOM_VERTEX_BUDGET } else { 0 }
     }
@@ -369,6 +443,38 @@ impl PanelView for TimePlots {
                     ),
                     item(Glyph::Line, palette::SPLIT_REST, "the rest of the error, without the swing"),
                 ],
+                scale: None,
+            });
+        }
+        if frame.options.show_measured && !frame.zoomed() && kinds.contains(&PanelKind::Error1) {
+            let items = if measured_shown(frame) {
+                vec![
+                    item(
+                        Glyph::Line,
+                        palette::MEASURED1,
+                        "e1 as measured: m1 − q_d1 read at each sampling instant (a whole number of encoder counts, \
+                         plus noise), held over the period — what the controller integrates",
+                    ),
+                    item(Glyph::Line, palette::MEASURED2, "e2 as measured, likewise"),
+                ]
+            } else {
+                vec![item(
+                    Glyph::Line,
+                    palette::ERROR1,
+                    "sensors off: the controller reads the true state, so e1, e2 as measured are the errors drawn \
+                     (nothing to compare; turn on an encoder, noise or differenced velocities)",
+                )]
+            };
+            groups.push(LegendGroup { title: "What the controller reads", items, scale: None });
+        }
+        if let Some(l) = torque_limit(frame).filter(|_| kinds.contains(&PanelKind::Torque)) {
+            groups.push(LegendGroup {
+                title: "Torque limit",
+                items: vec![item(
+                    Glyph::Dashed,
+                    palette::TORQUE_LIMIT,
+                    &format!("{}: the motors apply at most this, |T1|, |T2| ≤ L", limit_text(l)),
+                )],
                 scale: None,
             });
         }
