@@ -58,6 +58,19 @@ test('a real robot: a coarse encoder has a best δ, a fine one not; the controll
   // The run's status says what ρ is with sensors on: the same ρ as the prediction's.
   const rhoLine = await page.locator('#verdict-rho').textContent();
   assert.match(rhoLine ?? '', /the digital loop without its sensors' error\): ρ = 0\.9841 < 1/);
+  // Under it, what limits the error: the encoder, through the differenced velocity, with the
+  // prediction's own numbers.
+  const limits = (await page.locator('#verdict-limits').textContent()) ?? '';
+  assert.ok(await page.locator('#verdict-limits').isVisible());
+  assert.match(limits, /^What limits the error: the 1024-count encoder through the velocities differenced over δ/);
+  const e1 = /RMS e1 ([^ ]+) rad/.exec(s.prediction)?.[1];
+  assert.ok(e1 && limits.includes(`${e1} rad RMS`), `${limits} | ${s.prediction}`);
+  // The velocity filtered: the smallest δ no longer markedly worse, and the status says the filter.
+  await page.locator('button.try', { hasText: 'Try: the real encoder with its velocity filtered' }).click();
+  await page.waitForFunction(() => new URL(location.href).searchParams.get('velocity_filter') === '0.002', null, { timeout: 10000 });
+  const filtered = await study(page, /filtered with τ_v = 0\.002 s/);
+  assert.doesNotMatch(filtered.findings.join(' '), /A best δ exists/);
+  assert.match((await page.locator('#verdict-limits').textContent()) ?? '', /differenced over δ and filtered \(τ_v = 0\.002 s\)/);
   // A finer encoder: no best δ above the smallest studied.
   await page.locator('button.try', { hasText: 'Try: a finer one (16384 counts)' }).click();
   await page.waitForFunction(() => new URL(location.href).searchParams.get('encoder') === '16384', null, { timeout: 10000 });
@@ -71,6 +84,7 @@ test('a real robot: a coarse encoder has a best δ, a fine one not; the controll
   const paper = await study(page, /perfect sensors/);
   assert.match(paper.summary, /perfect sensors, unlimited torque/);
   assert.match(paper.prediction, /no noise to predict/);
+  assert.ok(await page.locator('#verdict-limits').isHidden(), 'nothing limits the perfect robot');
   assert.deepEqual(problems, []);
   await close();
 
