@@ -204,6 +204,6 @@ fn the_real_robot_row_is_the_codes() {
     s.read("preset=real-encoder", flexarm::session::Source::CommandLine).unwrap();
     let v = Session::new(s).unwrap().sensor_study_step(1000).unwrap();
     let cell = |d: &str, i: usize| v.table.iter().find(|row| row[0] == d).unwrap()[i].clone();
-    assert!(r.contains(&format!("best at δ = 0.005 s (max \\|e\\| {} rad; {} rad at 0.002 s", cell("0.005", 1), cell("0.002", 1))));
-    assert!(r.contains(&format!("limit {} of the time", cell("0.002", 6))));
+    assert!(r.contains(&format!("best at δ = 0.005 s (max \\|e\\| {} rad; {} rad at 0.002 s", cell("0.005", 2), cell("0.002", 2))));
+    assert!(r.contains(&format!("limit {} of the time", cell("0.002", 7))));
 }

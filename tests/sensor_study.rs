@@ -95,10 +95,10 @@ fn the_lessons_numbers_are_the_studys() {
     let v = study("preset=real-encoder");
     let row = |delta: &str| v.table.iter().skip(1).find(|r| r[0] == delta).unwrap().clone();
     let [r10, r5, r2] = [row("0.01"), row("0.005"), row("0.002")];
-    // Columns: δ, error with the sensors, with perfect ones, …, time at the limit, predicted T1.
+    // Columns: δ, ρ, error with the sensors, with perfect ones, …, time at the limit, predicted T1.
     let said = format!(
         "{} rad at δ = 0.01 s, {} rad at 0.005 s and {} rad at 0.002 s, against {}, {} and {} rad with perfect sensors",
-        r10[1], r5[1], r2[1], r10[2], r5[2], r2[2]
+        r10[2], r5[2], r2[2], r10[3], r5[3], r2[3]
     );
     assert!(step.contains(&said), "the lesson should say: {said}");
     let last = r10.len() - 1;
@@ -228,7 +228,7 @@ fn the_status_says_what_limits_the_error_with_the_numbers_of_the_prediction() {
     let noise = format!("the angle noise σ = {} rad —", significant(1e-4, 2));
     for (query, source) in [
         ("encoder=1024&velocity=difference", "the 1024-count encoder through the velocities differenced"),
-        ("encoder=4096&velocity=difference&velocity_filter=0.002", "the 4096-count encoder through the velocities differenced over δ and filtered"),
+        ("encoder=4096&velocity=difference&velocity_filter=0.002", "the 4096-count encoder through the velocities differenced over δ and filtered (τᵥ = 0.002 s)"),
         ("noise=0.0001", noise.as_str()),
     ] {
         let (run, config) = status(query);
@@ -245,4 +245,33 @@ fn the_status_says_what_limits_the_error_with_the_numbers_of_the_prediction() {
     }
     // Exact angles, differenced: digital, but no error from the sensors.
     assert!(status("velocity=difference").0.limits.contains("reads exact angles"));
+    // The headline's promise: with an error in the readings the errors settle at its floor, not
+    // at rest; without one they shrink to rest.
+    let floor = "down to the floor the sensors' error leaves";
+    assert!(status("pf=paper&encoder=1024&velocity=difference").0.detail.contains(floor));
+    assert!(!status("pf=paper").0.detail.contains(floor));
+    assert!(!status("pf=paper&velocity=difference").0.detail.contains(floor));
+}
+
+#[test]
+fn a_delta_unstable_by_rho_is_never_the_best_even_before_its_run_diverges() {
+    // Without K_pr the paper's loop is unstable at small δ (Fig. 5.3): a 3-s run may not have
+    // diverged yet, but ρ ≥ 1 says its errors grow; the study must not call such a δ best.
+    for query in ["pf=off", "pf=off&encoder=4096&velocity=difference"] {
+        let v = study(query);
+        let unstable: Vec<f64> = v.study.rows.iter().filter(|r| r.unstable()).map(|r| r.sampling_period).collect();
+        assert!(unstable.contains(&0.002) && unstable.contains(&0.01), "{query}: {unstable:?}");
+        match v.study.best {
+            Best::Inside { index } | Best::Smallest { index } => {
+                assert!(!v.study.rows[index].unstable(), "{query}: best at an unstable δ")
+            }
+            b => panic!("{query}: {b:?}"),
+        }
+        let said = v.summary.join(" ");
+        assert!(said.contains("By ρ the loop is unstable at δ = 0.002"), "{query}: {said}");
+        assert!(!said.contains("sampling faster still helps"), "{query}: {said}");
+        // The table shows ρ beside each δ.
+        assert_eq!(v.table[0][1], "ρ");
+        assert!(v.table[1][1].parse::<f64>().unwrap() >= 1.0, "{query}: {:?}", v.table[1]);
+    }
 }

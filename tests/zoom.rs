@@ -6,26 +6,38 @@ mod common;
 use common::{play, session};
 
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use flexarm::plot::{palette, Color};
 use flexarm::view::{PanelKind, Scene, ViewOptions};
 
-/// Counts the allocations of this test binary (its tests run one at a time: see `ALLOCATIONS`).
+/// Counts the allocations of each thread of this test binary: the test harness and the other
+/// tests allocate on their own threads at any time (a shared counter saw them under load).
 struct Counting;
 
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+thread_local! {
+    static ALLOCATIONS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+fn note_allocation() {
+    // A const-initialized Cell has no destructor: `try_with` only fails during thread teardown.
+    let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
+}
+
+/// This thread's allocations so far.
+fn allocations() -> usize {
+    ALLOCATIONS.with(|c| c.get())
+}
 
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        note_allocation();
         unsafe { System.alloc(layout) }
     }
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
         unsafe { System.dealloc(ptr, layout) }
     }
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        note_allocation();
         unsafe { System.realloc(ptr, layout, new_size) }
     }
 }
@@ -165,9 +177,9 @@ fn a_frame_of_the_zoom_allocates_nothing_once_warm_live_or_looking_back() {
             s.step_back();
         }
         scene.set_clock(frame as f64 / 60.0);
-        let before = ALLOCATIONS.load(Ordering::Relaxed);
+        let before = allocations();
         scene.draw_session(&s);
-        let after = ALLOCATIONS.load(Ordering::Relaxed);
+        let after = allocations();
         assert_eq!(after - before, 0, "frame {frame} allocated");
         most = most.max(scene.vertices().len());
     }

@@ -273,8 +273,9 @@ impl From<Prediction> for Headline {
 /// The prediction under the headline.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Detail {
-    /// ρ's own verdict, at `rate` = ln ρ/δ.
-    Prediction { rho: f64, rate: f64, prediction: Prediction },
+    /// ρ's own verdict, at `rate` = ln ρ/δ; `noisy`: the controller reads its angles with an
+    /// error (an encoder, noise), so the errors settle at that error's floor, not at rest.
+    Prediction { rho: f64, rate: f64, prediction: Prediction, noisy: bool },
     /// Under a headline the simulation decided against ρ: what the linear analysis predicts.
     Predicted { rho: f64, rate: f64, prediction: Prediction },
     /// ρ holds with the friction cancelled, not for this run: the simulation decides.
@@ -310,9 +311,9 @@ pub struct Judgement {
 /// The judgement of the linear analysis alone (no run: `analyze`, `sweep` without `--simulate`):
 /// ρ's prediction as the headline, and the sentence under it — the headline and detail [`judge`]
 /// gives a run where nothing the simulation saw overrides ρ. None where ρ is not finite.
-pub fn judge_analysis(report: &StabilityReport) -> Option<(Headline, Detail)> {
+pub fn judge_analysis(report: &StabilityReport, noisy: bool) -> Option<(Headline, Detail)> {
     let (prediction, rate) = Prediction::of_report(report)?;
-    Some((prediction.into(), Detail::Prediction { rho: report.spectral_radius, rate, prediction }))
+    Some((prediction.into(), Detail::Prediction { rho: report.spectral_radius, rate, prediction, noisy }))
 }
 
 /// Whether a limit cycle the simulation sees can stand against ρ: always where ρ does not describe
@@ -463,7 +464,12 @@ pub fn judge(
     let detail = match predicted {
         Some((rho, _)) if !applies => Detail::SimulationDecides { rho },
         Some((rho, rate)) if overridden => Detail::Predicted { rho, rate, prediction: Prediction::of_rate(rate) },
-        Some((rho, rate)) => Detail::Prediction { rho, rate, prediction: Prediction::of_rate(rate) },
+        Some((rho, rate)) => Detail::Prediction {
+            rho,
+            rate,
+            prediction: Prediction::of_rate(rate),
+            noisy: config.sensors.angle_variance() > 0.0,
+        },
         None => Detail::AnalysisFailed(analysis_error.unwrap_or("no report").to_string()),
     };
     let rho = match report {

@@ -23,6 +23,24 @@ pub struct StudyRow {
     /// The linear prediction of the noise (None where the digital loop is unstable or the
     /// sensors read exactly).
     pub predicted: Option<NoiseFloor>,
+    /// ρ of the settings' loop at this δ (the digital loop's with sensors on), None if the
+    /// analysis failed. ρ ≥ 1: the errors grow in the long run, even where a short run has not
+    /// diverged yet — such a row is never the best.
+    pub spectral_radius: Option<f64>,
+}
+
+impl StudyRow {
+    /// True where ρ says the loop is unstable (ρ ≥ 1).
+    pub fn unstable(&self) -> bool {
+        self.spectral_radius.is_some_and(|r| r >= 1.0)
+    }
+}
+
+/// What the linear analysis says at one δ of the study: computed once per study.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LinearRow {
+    pub spectral_radius: Option<f64>,
+    pub predicted: Option<NoiseFloor>,
 }
 
 /// Where the tracking error is smallest, once every run is in.
@@ -39,6 +57,8 @@ pub enum Best {
     Smallest { index: usize },
     /// The largest δ tracks best (the sensors' error outweighs the sampling everywhere).
     Largest,
+    /// No δ studied tracks: at every one ρ ≥ 1 or the run diverges.
+    Nowhere,
 }
 
 /// The smallest δ tracks "markedly worse" than the best when its error exceeds the least by this
@@ -60,19 +80,25 @@ pub struct SensorStudy {
 }
 
 impl SensorStudy {
-    /// The linear prediction for `config`'s sensors at each δ of `deltas` (None where there is
-    /// none: sensors off, or an unstable loop). Computed once per study, not per look at it.
-    pub fn predictions(config: &SimulationConfig, deltas: &[f64]) -> Vec<Option<NoiseFloor>> {
-        let model = config
-            .sensors
-            .is_digital()
-            .then(|| LoopModel::new(&LinearSettings::of(config, None)).ok())
-            .flatten();
-        deltas.iter().map(|&d| model.as_ref().and_then(|m| noise_floor(m, d, &config.sensors).ok())).collect()
+    /// ρ and the linear prediction for `config`'s sensors at each δ of `deltas` (the prediction
+    /// None where there is none: sensors off, or an unstable loop). Computed once per study, not
+    /// per look at it.
+    pub fn linear(config: &SimulationConfig, deltas: &[f64]) -> Vec<LinearRow> {
+        let Ok(model) = LoopModel::new(&LinearSettings::of(config, None)) else {
+            return vec![LinearRow::default(); deltas.len()];
+        };
+        let digital = config.sensors.is_digital();
+        deltas
+            .iter()
+            .map(|&d| LinearRow {
+                spectral_radius: model.spectral_radius(d).ok(),
+                predicted: digital.then(|| noise_floor(&model, d, &config.sensors).ok()).flatten(),
+            })
+            .collect()
     }
 
-    /// The facts of `sweep` so far, with `predicted` ([`Self::predictions`]) at each of its δ.
-    pub fn of(sweep: &SensorSweep, predicted: &[Option<NoiseFloor>]) -> Self {
+    /// The facts of `sweep` so far, with `linear` ([`Self::linear`]) at each of its δ.
+    pub fn of(sweep: &SensorSweep, linear: &[LinearRow]) -> Self {
         let rows: Vec<StudyRow> = sweep
             .deltas()
             .iter()
@@ -81,7 +107,8 @@ impl SensorStudy {
                 sampling_period: d,
                 real: sweep.real.get(i).copied(),
                 ideal: sweep.ideal.get(i).copied(),
-                predicted: predicted.get(i).copied().flatten(),
+                predicted: linear.get(i).and_then(|l| l.predicted),
+                spectral_radius: linear.get(i).and_then(|l| l.spectral_radius),
             })
             .collect();
         let (best, smallest_excess) = match sweep.is_done() {
@@ -100,6 +127,15 @@ impl SensorStudy {
     }
 }
 
+/// The error a row is judged by: its run's [`tracking_error`], ∞ where ρ ≥ 1 (unstable in the
+/// long run whatever the short run showed) or not yet simulated.
+pub fn judged_error(r: &StudyRow) -> f64 {
+    match r.real {
+        Some(p) if !r.unstable() => tracking_error(&p),
+        _ => f64::INFINITY,
+    }
+}
+
 /// The tracking error during the slew that the study minimizes: max |e1|, |e2| while the
 /// reference moves (∞ for a run that diverged), rad.
 pub fn tracking_error(p: &SweepPoint) -> f64 {
@@ -111,10 +147,14 @@ pub fn tracking_error(p: &SweepPoint) -> f64 {
 }
 
 fn best_of(rows: &[StudyRow]) -> (Best, Option<f64>) {
-    let errors: Vec<f64> = rows.iter().map(|r| r.real.as_ref().map_or(f64::INFINITY, tracking_error)).collect();
+    let errors: Vec<f64> = rows.iter().map(judged_error).collect();
     let Some((index, &least)) = errors.iter().enumerate().min_by(|a, b| a.1.total_cmp(b.1)) else {
         return (Best::Pending, None);
     };
+    if !least.is_finite() {
+        // Every row unstable or diverged: nothing tracks.
+        return (Best::Nowhere, None);
+    }
     let excess = (errors[0].is_finite() && least > 0.0).then(|| errors[0] / least);
     // A smallest δ that diverges is as markedly worse as can be.
     let worse = excess.is_some_and(|x| x > MARKEDLY_WORSE) || (index > 0 && errors[0].is_infinite());

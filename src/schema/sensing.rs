@@ -90,7 +90,7 @@ pub const VELOCITY: Param = Param {
     kind: Kind::Choice {
         options: &[
             Choice { value: "exact", label: "exact (the paper's assumption)" },
-            Choice { value: "difference", label: "differences of the measured angles over δ" },
+            Choice { value: "difference", label: "differences of readings over δ" },
         ],
         default: "exact",
     },

@@ -27,7 +27,7 @@ impl Session {
         let job = &mut self.sensor_study;
         if job.key != Some(key) || job.sweep.is_none() {
             job.sweep = Some(SensorSweep::new(key, &STUDY_DELTAS)?);
-            job.predicted = SensorStudy::predictions(&key, &STUDY_DELTAS);
+            job.linear = SensorStudy::linear(&key, &STUDY_DELTAS);
             job.key = Some(key);
         }
         let sweep = job.sweep.as_mut().ok_or(Error::Analysis("no study"))?;
@@ -36,7 +36,7 @@ impl Session {
                 break;
             }
         }
-        let study = SensorStudy::of(sweep, &job.predicted);
+        let study = SensorStudy::of(sweep, &job.linear);
         let delta = config.controller.sampling_period;
         // The same floor as the status under the verdict: run A's analysis, scaled.
         let floor = self.a.analysis().unit_floor().map(|f| f.scaled(config.sensors.angle_variance().sqrt()));
@@ -54,6 +54,7 @@ impl Session {
                 _ => None,
             },
             current_row,
+            deltas: STUDY_DELTAS.to_vec(),
             summary: study_summary(&study, &config.sensors),
             prediction: prediction_text(delta, floor.as_ref(), &config.sensors),
             done: sweep.is_done(),

@@ -1,7 +1,6 @@
 //! The sensor study's job and what the page sees of it (the session's `sensor_study` runs it).
 
-use crate::analysis::noise::NoiseFloor;
-use crate::analysis::sensor_study::SensorStudy;
+use crate::analysis::sensor_study::{LinearRow, SensorStudy};
 use crate::control::config::SimulationConfig;
 use crate::control::sensor_sweep::SensorSweep;
 
@@ -11,8 +10,8 @@ pub struct StudyJob {
     /// Run A's configuration with δ normalized away.
     pub(super) key: Option<SimulationConfig>,
     pub(super) sweep: Option<SensorSweep>,
-    /// The linear prediction at each δ studied, computed with the sweep.
-    pub(super) predicted: Vec<Option<NoiseFloor>>,
+    /// ρ and the linear prediction at each δ studied, computed with the sweep.
+    pub(super) linear: Vec<LinearRow>,
 }
 
 /// The study as the page shows it: facts, and the words and table rendered from them.
@@ -33,6 +32,8 @@ pub struct SensorStudyView {
     pub best_row: Option<usize>,
     /// The row nearest run A's δ.
     pub current_row: usize,
+    /// Each row's δ, s: what choosing the row sets.
+    pub deltas: Vec<f64>,
     pub summary: Vec<String>,
     /// The linear prediction at run A's δ.
     pub prediction: String,

@@ -97,8 +97,13 @@ pub fn detail(d: &Detail) -> String {
     match d {
         // ρ with four decimals, as the analysis line prints it (five where it is nearly 1). ρ is a
         // rate in the long run, not a bound per period: say so.
-        Detail::Prediction { rho, rate, prediction } => match prediction {
+        Detail::Prediction { rho, rate, prediction, noisy } => match prediction {
             Prediction::Unstable => format!("ρ = {rho:.4} > 1 — in the long run the errors grow {}", e_folding(*rate)),
+            // The sensors' error keeps feeding the loop: what shrinks is the error above its floor.
+            Prediction::Stable if *noisy => format!(
+                "ρ = {rho:.4} < 1 — in the long run the errors shrink {} down to the floor the sensors' error leaves",
+                e_folding(*rate)
+            ),
             Prediction::Stable => format!("ρ = {rho:.4} < 1 — in the long run the errors shrink {}", e_folding(*rate)),
             Prediction::Borderline => format!(
                 "ρ = {rho:.5} ≈ 1, just {} 1 — the errors change too slowly to see ({})",

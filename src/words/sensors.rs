@@ -21,7 +21,7 @@ pub fn sensors_text(s: &SensorModel) -> String {
         parts.push("velocities differenced over δ".to_string());
     }
     if s.velocity_filter > 0.0 {
-        parts.push(format!("filtered with τ_v = {} s", number(s.velocity_filter)));
+        parts.push(format!("filtered with τᵥ = {} s", number(s.velocity_filter)));
     }
     if let Some(limit) = s.limit() {
         parts.push(format!("torque at most {} N m", number(limit)));
@@ -39,6 +39,7 @@ pub fn study_table(study: &SensorStudy, sensors: &SensorModel) -> Vec<Vec<String
     let limited = sensors.limit().is_some();
     let mut header = vec![
         "δ [s]".to_string(),
+        "ρ".to_string(),
         "max |e|, slew [rad]".to_string(),
         "perfect sensors [rad]".to_string(),
         "RMS e, rest [rad]".to_string(),
@@ -46,7 +47,7 @@ pub fn study_table(study: &SensorStudy, sensors: &SensorModel) -> Vec<Vec<String
         "peak T1 [N m]".to_string(),
     ];
     if limited {
-        header.push("at the limit".to_string());
+        header.push("time at the limit".to_string());
     }
     header.push("predicted T1 noise [N m]".to_string());
     let mut table = vec![header];
@@ -56,6 +57,7 @@ pub fn study_table(study: &SensorStudy, sensors: &SensorModel) -> Vec<Vec<String
         };
         let mut row = vec![
             number(r.sampling_period),
+            r.spectral_radius.map_or("—".to_string(), crate::words::numbers::rho),
             sim(&|p| error_cell(tracking_error(p)), r.real),
             sim(&|p| error_cell(tracking_error(p)), r.ideal),
             sim(&|p| significant(p.rms_error_rest[0].max(p.rms_error_rest[1]), 2), r.real),
@@ -73,17 +75,19 @@ pub fn study_table(study: &SensorStudy, sensors: &SensorModel) -> Vec<Vec<String
 
 /// What the table's columns are, in one paragraph under it.
 pub fn table_note(sensors: &SensorModel) -> String {
-    let mut s = "max |e|, slew: the largest error of either link while the arm slews; perfect sensors: the same \
+    let mut s = "ρ: the linear analysis of this loop at each δ (≥ 1: unstable — its errors grow in the long run, \
+                 even where the short run has not diverged; such a row is never the best); max |e|, slew: the \
+                 largest error of either link while the arm slews; perfect sensors: the same \
                  slew with the paper's exact readings and no torque limit; RMS e and T1 noise at rest: over the 2 s \
                  after the slew (T1 noise is the motor torque's RMS about its mean); peak T1: the largest motor \
                  torque"
         .to_string();
     if let Some(limit) = sensors.limit() {
-        s += &format!("; at the limit: the share of the time a motor sits at its {} N m", number(limit));
+        s += &format!("; time at the limit: the share of the time a motor sits at its {} N m", number(limit));
     }
     s + "; predicted T1 noise: the linear prediction with each reading's error as white noise, valid while the \
          arm moves (— where the digital loop is unstable or reads exactly). The highlighted row has the least \
-         error; ▸ marks the δ of the run shown."
+         error of the stable δ; ▸ marks the δ of the run shown; choose a δ to run the arm at it."
 }
 
 fn error_cell(e: f64) -> String {
@@ -131,7 +135,16 @@ pub fn study_summary(study: &SensorStudy, sensors: &SensorModel) -> Vec<String> 
         }
         Best::Inside { index } | Best::Smallest { index } => &study.rows[index],
         Best::Largest => last,
+        Best::Nowhere => {
+            out.push(
+                "No δ studied tracks: at every one the loop is unstable by ρ (ρ ≥ 1) or the run diverges.".to_string(),
+            );
+            return out;
+        }
     };
+    if let Some(s) = unstable_rows(study) {
+        out.push(s);
+    }
     let at = |r: &StudyRow| format!("{} s", number(r.sampling_period));
     out.push(match study.best {
         Best::Inside { .. } => format!(
@@ -142,7 +155,8 @@ pub fn study_summary(study: &SensorStudy, sensors: &SensorModel) -> Vec<String> 
             at(first),
             match study.smallest_excess {
                 Some(x) => format!("{}× worse", significant(x, 2)),
-                None => "the run diverges".to_string(),
+                None if first.real.is_some_and(|p| p.diverged) => "the run diverges".to_string(),
+                None => "the loop is unstable by ρ".to_string(),
             }
         ),
         Best::Smallest { index: 0 } => format!(
@@ -165,7 +179,7 @@ pub fn study_summary(study: &SensorStudy, sensors: &SensorModel) -> Vec<String> 
             significant(real(best), 2)
         ),
     });
-    if let Best::Inside { .. } = study.best {
+    if let (Best::Inside { .. }, false) = (study.best, first.unstable()) {
         out.push(below_best(first, best, sensors));
     }
     if let Some(s) = above_best(study, best, &real, &ideal) {
@@ -184,6 +198,7 @@ fn at_rest(study: &SensorStudy, best: &StudyRow) -> Option<String> {
         study
             .rows
             .iter()
+            .filter(|r| !r.unstable())
             .filter_map(|r| r.real.filter(|p| !p.diverged).map(|p| (r.sampling_period, f(&p))))
             .filter(|(_, v)| v.is_finite())
             .min_by(|a, b| a.1.total_cmp(&b.1))
@@ -197,17 +212,19 @@ fn at_rest(study: &SensorStudy, best: &StudyRow) -> Option<String> {
             number(here)
         ));
     }
-    let mut parts = Vec::new();
+    let (mut parts, mut purposes) = (Vec::new(), Vec::new());
     if error_at != here {
         parts.push(format!("the error is least at δ = {} s ({} rad RMS)", number(error_at), significant(error, 2)));
+        purposes.push("for holding still");
     }
     if torque_at != here {
         parts.push(format!("T1's noise at δ = {} s ({} N m RMS)", number(torque_at), significant(torque, 2)));
+        purposes.push("for a quiet motor");
     }
     Some(format!(
-        "That δ is judged by the error during the slew. At rest {}: a δ chosen for holding still or for the \
-         motor can differ.",
-        parts.join(", and ")
+        "That δ is judged by the error during the slew. At rest {}: a δ chosen {} differs.",
+        parts.join(", and "),
+        purposes.join(" or ")
     ))
 }
 
@@ -308,14 +325,16 @@ pub fn limits_text(floor: Option<&NoiseFloor>, sensors: &SensorModel) -> String 
     let path = match (sensors.velocity, sensors.velocity_filter > 0.0) {
         (VelocitySource::Difference, false) => " through the velocities differenced over δ".to_string(),
         (VelocitySource::Difference, true) => format!(
-            " through the velocities differenced over δ and filtered (τ_v = {} s)",
+            " through the velocities differenced over δ and filtered (τᵥ = {} s)",
             number(sensors.velocity_filter)
         ),
         (VelocitySource::Exact, _) => String::new(),
     };
     format!(
-        "What limits the error: {source}{path} — by the linear prediction an error floor of about {} rad RMS on \
-         link 1 and {} N m RMS of noise on T1 while the arm moves. ρ is the loop without that error.",
+        "The sensors' noise: {source}{path} — by the linear prediction, about {} rad RMS of error on link 1 and \
+         {} N m RMS of noise on T1 while the arm moves. The quantizer at rest, the friction's stick and slip and \
+         the torque limit add what only the simulation shows: the table in A real robot compares each δ with \
+         perfect sensors. ρ is the loop without the sensors' error.",
         significant(f.rms_error[0], 2),
         significant(f.rms_torque[0], 2)
     )
@@ -356,4 +375,32 @@ pub fn prediction_text(delta: f64, floor: Option<&NoiseFloor>, sensors: &SensorM
         );
     }
     s
+}
+
+/// The rows ρ calls unstable, as ranges of δ: "By ρ the loop is unstable at δ = 0.002–0.03 s …"
+/// (None when every row is stable).
+fn unstable_rows(study: &SensorStudy) -> Option<String> {
+    let mut ranges: Vec<(f64, f64)> = Vec::new();
+    let mut open = false;
+    for r in &study.rows {
+        match (r.unstable(), open, ranges.last_mut()) {
+            (true, true, Some(last)) => last.1 = r.sampling_period,
+            (true, _, _) => ranges.push((r.sampling_period, r.sampling_period)),
+            _ => {}
+        }
+        open = r.unstable();
+    }
+    if ranges.is_empty() {
+        return None;
+    }
+    let text: Vec<String> = ranges
+        .iter()
+        .map(|&(a, b)| if a == b { format!("{} s", number(a)) } else { format!("{}–{} s", number(a), number(b)) })
+        .collect();
+    Some(format!(
+        "By ρ the loop is unstable at δ = {}: its errors grow in the long run, even where the {}-s run has not \
+         diverged yet, so those rows are never the best.",
+        text.join(" and "),
+        number(SWEEP_SECONDS)
+    ))
 }

@@ -62,15 +62,21 @@ test('a real robot: a coarse encoder has a best δ, a fine one not; the controll
   // prediction's own numbers.
   const limits = (await page.locator('#verdict-limits').textContent()) ?? '';
   assert.ok(await page.locator('#verdict-limits').isVisible());
-  assert.match(limits, /^What limits the error: the 1024-count encoder through the velocities differenced over δ/);
+  assert.match(limits, /^The sensors' noise: the 1024-count encoder through the velocities differenced over δ/);
+  // The headline's promise with sensors: the errors shrink to the floor their error leaves.
+  assert.match((await page.locator('#verdict-detail').textContent()) ?? '', /down to the floor the sensors' error leaves/);
   const e1 = /RMS e1 ([^ ]+) rad/.exec(s.prediction)?.[1];
   assert.ok(e1 && limits.includes(`${e1} rad RMS`), `${limits} | ${s.prediction}`);
   // The velocity filtered: the smallest δ no longer markedly worse, and the status says the filter.
   await page.locator('button.try', { hasText: 'Try: the real encoder with its velocity filtered' }).click();
   await page.waitForFunction(() => new URL(location.href).searchParams.get('velocity_filter') === '0.002', null, { timeout: 10000 });
-  const filtered = await study(page, /filtered with τ_v = 0\.002 s/);
+  const filtered = await study(page, /filtered with τᵥ = 0\.002 s/);
   assert.doesNotMatch(filtered.findings.join(' '), /A best δ exists/);
-  assert.match((await page.locator('#verdict-limits').textContent()) ?? '', /differenced over δ and filtered \(τ_v = 0\.002 s\)/);
+  assert.match((await page.locator('#verdict-limits').textContent()) ?? '', /differenced over δ and filtered \(τᵥ = 0\.002 s\)/);
+  // Choosing a row's δ runs the arm at it: the ▸ moves there.
+  await page.locator('#sensors-table button.row-delta', { hasText: /^0\.005$/ }).click();
+  await page.waitForFunction(() => new URL(location.href).searchParams.get('delta') === '0.005', null, { timeout: 10000 });
+  await page.waitForFunction(() => document.querySelector('#sensors-table tr.current th')?.textContent === '0.005', null, { timeout: 10000 });
   // A finer encoder: no best δ above the smallest studied.
   await page.locator('button.try', { hasText: 'Try: a finer one (16384 counts)' }).click();
   await page.waitForFunction(() => new URL(location.href).searchParams.get('encoder') === '16384', null, { timeout: 10000 });

@@ -83,6 +83,7 @@ async function main() {
   const sensors = createSensors({
     study: (runs) => guard('Sensor study', () => session.sensorStudy(runs), null),
     processor: () => guard('Controller time', () => session.controllerTime().text, null),
+    setDelta: (delta) => change(() => session.set('delta', String(delta))),
   });
   wireOutputs({ session, guard });
   const canvas = /** @type {HTMLCanvasElement} */ (byId('canvas'));

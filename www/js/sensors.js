@@ -6,14 +6,15 @@ import { byId, setSymbols, setText } from './dom.js';
 
 /**
  * @typedef {{ sensors: string, table: string[][], table_note: string, best_row: number | null, current_row: number,
- *   summary: string[], prediction: string, done: boolean, progress: number }} SensorStudy
+ *   deltas: number[], summary: string[], prediction: string, done: boolean, progress: number }} SensorStudy
  */
 
 /** Milliseconds of simulation per frame while the study fills. */
 const BUDGET_MS = 40;
 
 /**
- * @param {{ study: (runs: number) => SensorStudy | null, processor: () => string | null }} on
+ * @param {{ study: (runs: number) => SensorStudy | null, processor: () => string | null,
+ *   setDelta: (delta: number) => void }} on
  */
 export function createSensors(on) {
   const details = /** @type {HTMLDetailsElement} */ (byId('sensors-details'));
@@ -48,8 +49,20 @@ export function createSensors(on) {
       if (i === s.current_row) tr.classList.add('current');
       row.forEach((cell, j) => {
         const td = document.createElement(j === 0 ? 'th' : 'td');
-        if (j === 0) td.setAttribute('scope', 'row');
-        setSymbols(td, cell);
+        if (j === 0) {
+          td.setAttribute('scope', 'row');
+          // The row's δ is a button: choosing it runs the arm at that δ.
+          const delta = s.deltas[i];
+          const button = document.createElement('button');
+          button.type = 'button';
+          button.className = 'row-delta';
+          button.textContent = cell;
+          button.setAttribute('aria-label', `Run at δ = ${cell} s`);
+          if (delta !== undefined) button.addEventListener('click', () => on.setDelta(delta));
+          td.append(button);
+        } else {
+          setSymbols(td, cell);
+        }
         tr.append(td);
       });
       tbody.append(tr);

@@ -78,7 +78,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         &flexarm::control::feedback::twist_parts(&gain),
     );
     // The verdict every command and the page give these settings, in the same words.
-    let (headline, detail) = judge_analysis(&report)
+    let (headline, detail) = judge_analysis(&report, config.sensors.angle_variance() > 0.0)
         .ok_or_else(|| Failure(format!("the linear analysis gave ρ = {}, not a number", report.spectral_radius), 2))?;
     let verdict = words::judgement::verdict(headline, &detail);
     // Section 3's structure for the arm shown: V*, Ā1, A4, the index, k at and below it.

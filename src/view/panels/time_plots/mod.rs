@@ -452,8 +452,9 @@ impl PanelView for TimePlots {
                     item(
                         Glyph::Line,
                         palette::MEASURED1,
-                        "e1 as measured: m1 − q_d1 read at each sampling instant (a whole number of encoder counts, \
-                         plus noise), held over the period — what the controller integrates",
+                        "e1 as measured: the encoder's reading of q1 (to the nearest count, plus any noise) minus \
+                         the reference, taken at each sampling instant and held over the period — what the \
+                         controller sees and integrates",
                     ),
                     item(Glyph::Line, palette::MEASURED2, "e2 as measured, likewise"),
                 ]
