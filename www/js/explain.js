@@ -42,10 +42,11 @@ export function parseTry(spec) {
 }
 
 /**
- * Wires every `button.try`.
+ * Wires every `button.try`. `after(stay)`: `stay` for a button marked `data-try-stay`, whose result
+ * shows beside it (the sensors' table), not in the figure.
  * @param {{ preset: (id: string) => void, set: (key: string, value: string) => void,
  *   sets: (pairs: [string, string][]) => void, state: (query: string) => void,
- *   map: (side: string, delta: number, alpha: number) => void, after: () => void }} on
+ *   map: (side: string, delta: number, alpha: number) => void, after: (stay: boolean) => void }} on
  */
 export function wireTryButtons(on) {
   for (const button of document.querySelectorAll('button.try')) {
@@ -57,7 +58,7 @@ export function wireTryButtons(on) {
       else if (action.kind === 'sets') on.sets(action.pairs);
       else if (action.kind === 'state') on.state(action.query);
       else on.map(action.side, action.delta, action.alpha);
-      on.after();
+      on.after(/** @type {HTMLElement} */ (button).dataset.tryStay !== undefined);
     });
   }
 }

@@ -144,8 +144,9 @@ function wireTry(session, { change, unlinkAlpha }, sheet) {
       session.set('map', '1');
       session.setFromMap(side, delta, alpha);
     }),
-    after: () => {
+    after: (stay) => {
       store.dispatch({ type: 'play' });
+      if (stay) return;
       // On a phone the sheet would cover what the button changed.
       sheet.open(false);
       showFigure();
