@@ -168,8 +168,9 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   // words, the controller timed); 1.022 MB with what the controller read in the run (+3.0 kB:
   // five more trace columns, the switch, the measured errors and the torque limit drawn and
   // keyed); 1.025 MB with the velocity filter (+3.1 kB: the digital loop at 16 states, the
-  // status's sentence on what limits the error): the 0.9-MB goal is not met.
-  assert.ok(gzip <= 1.026e6, `wasm gzip -9 ${gzip} bytes: over the 1.026-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
+  // status's sentence on what limits the error); 1.028 MB with the velocity panel (+2.7 kB: a
+  // panel kind, its scale, the clamped estimate, its key and figure): the 0.9-MB goal is not met.
+  assert.ok(gzip <= 1.029e6, `wasm gzip -9 ${gzip} bytes: over the 1.029-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));
