@@ -240,6 +240,9 @@ fn panels_lie_inside_the_canvas_and_do_not_overlap() {
         if options.show_torque {
             want.push(PanelKind::Torque);
         }
+        if options.show_velocity {
+            want.push(PanelKind::Velocity);
+        }
         if options.show_poles {
             want.push(if options.z_plane { PanelKind::ZPlane } else { PanelKind::Poles });
         }
