@@ -167,8 +167,12 @@ use flexarm::plot::{palette, Color};
 use flexarm::view::{PanelKind, Scene, ViewOptions};
 
 fn drawn(query: &str) -> Scene {
+    drawn_after(query, 1.5)
+}
+
+fn drawn_after(query: &str, seconds: f64) -> Scene {
     let mut s = session(query);
-    play(&mut s, 1.5);
+    play(&mut s, seconds);
     s.refresh();
     let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
     scene.draw_session(&s);
@@ -251,4 +255,124 @@ fn the_svg_figures_draw_what_the_canvas_draws() {
     let mut plain = session("mode=full&torque=1");
     play(&mut plain, 1.0);
     assert!(!figure_svg(&plain, "torque", false).unwrap().svg.contains("limit ±"));
+}
+
+// ---------------------------------------------------------------- the velocity panel
+
+fn velocity_panel(scene: &Scene) -> Option<flexarm::view::layout::Panel> {
+    scene.layout().panel(PanelKind::Velocity).copied()
+}
+
+#[test]
+fn the_velocity_panel_is_laid_out_only_with_the_switch_on_and_a_digital_controller() {
+    let on = drawn("preset=real-encoder&measured=1");
+    assert!(velocity_panel(&on).is_some(), "{:?}", on.layout().panels);
+    let info = on.panel_info().into_iter().find(|p| p.id == PanelKind::Velocity.id()).expect("described");
+    assert_eq!(info.y_label, "q̇1 [rad/s]");
+    assert!(info.note.contains("as estimated"), "{}", info.note);
+    assert!(paints(&on, palette::VELOCITY1) && paints(&on, palette::VELOCITY1_EST));
+    assert!(
+        key_texts(&on).iter().any(|t| t.starts_with("What the controller reads: q̇1 as estimated")),
+        "{:?}",
+        key_texts(&on)
+    );
+    // The switch off, or the sensors off (the controller reads the true state): the layout of
+    // today, no velocity drawn or keyed.
+    for query in ["preset=real-encoder", "measured=1", "mode=full&measured=1"] {
+        let off = drawn(query);
+        assert!(velocity_panel(&off).is_none(), "{query}");
+        assert!(!paints(&off, palette::VELOCITY1_EST), "{query}");
+        assert!(!key_texts(&off).iter().any(|t| t.contains("q̇1 as estimated")), "{query}");
+        let plain = drawn(&query.replace("measured=1", "measured=0"));
+        assert_eq!(off.layout().panels, plain.layout().panels, "{query}: the layout as without the switch");
+    }
+    // A phone stacks it under the errors on the run's tab.
+    let mut s = session("preset=real-encoder&measured=1&mode=full");
+    play(&mut s, 1.0);
+    let mut phone = Scene::new(ViewOptions::default(), 390.0, 700.0, 3.0);
+    phone.draw_session(&s);
+    let (e2, v) = (phone.layout().panel(PanelKind::Error2).unwrap().rect, velocity_panel(&phone).expect("on a phone").rect);
+    assert!(v.y > e2.bottom(), "below e2: {e2:?} {v:?}");
+}
+
+#[test]
+fn the_velocity_estimate_is_clipped_to_its_panel_and_said_to_be() {
+    const SECONDS: f64 = 1.5;
+    // Differenced over 2 ms, one count of a 256-count encoder is 2π/256/0.002 ≈ 12.3 rad/s: beyond
+    // the scale the slew's velocity sets (1.5 × its ≈ 4 rad/s, rounded up to 10).
+    let scene = drawn_after("preset=real-encoder&delta=0.002&encoder=256&measured=1", SECONDS);
+    let panel = scene.layout().to_physical(velocity_panel(&scene).expect("shown").rect);
+    let estimate: Vec<_> = scene.vertices().iter().filter(|v| v.color == palette::VELOCITY1_EST.0).collect();
+    assert!(!estimate.is_empty());
+    for v in &estimate {
+        let [x, y] = [v.position[0] as f64, v.position[1] as f64];
+        // Along x the stroke may reach half its width past the window's last sample.
+        assert!(x >= panel.x - 2.0 && x <= panel.right() + 2.0, "x {x} outside {panel:?}");
+        assert!(y >= panel.y - 1e-3 && y <= panel.bottom() + 1e-3, "y {y} outside {panel:?}");
+    }
+    let info = scene.panel_info().into_iter().find(|p| p.id == PanelKind::Velocity.id()).unwrap();
+    let top = estimate.iter().map(|v| v.position[1]).fold(f32::INFINITY, f32::min);
+    assert!(info.note.contains("clipped"), "{} {:?} top {top} {panel:?}", info.note, info.y_range);
+    // The scale is the true velocity's, not the estimate's.
+    let true_max = drawn_true_max(&scene);
+    assert!(info.y_range[1] <= (1.5 * true_max).max(0.2) * 2.0 + 1e-9, "{:?} for |q̇1| ≤ {true_max}", info.y_range);
+}
+
+/// The largest |q̇1| the true curve reaches on screen, in rad/s, from its vertices' extent.
+fn drawn_true_max(scene: &Scene) -> f64 {
+    let info = scene.panel_info().into_iter().find(|p| p.id == PanelKind::Velocity.id()).unwrap();
+    let panel = scene.layout().to_physical(scene.layout().panel(PanelKind::Velocity).unwrap().rect);
+    let [lo, hi] = info.y_range;
+    scene
+        .vertices()
+        .iter()
+        .filter(|v| v.color == palette::VELOCITY1.0)
+        .map(|v| (hi - (v.position[1] as f64 - panel.y) / panel.h * (hi - lo)).abs())
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn a_velocity_filter_bounds_the_differenced_velocitys_noise() {
+    let rms = |filter: f64| {
+        let sensors = SensorModel {
+            encoder_counts: 1024.0,
+            velocity: VelocitySource::Difference,
+            velocity_filter: filter,
+            ..SensorModel::default()
+        };
+        let mut c = SimulationConfig { sensors, ..Default::default() };
+        c.controller.sampling_period = 0.002;
+        c.output_interval = 1e-3;
+        let traces = simulate(&c, 3.0).unwrap().traces;
+        let (t, v, est) = (traces.t(), traces.column(Column::Q1Dot), traces.column(Column::Q1DotEst));
+        let (mut sum, mut n) = (0.0, 0usize);
+        for i in 0..t.len() {
+            if (1.0..=3.0).contains(&t[i]) {
+                sum += (est[i] - v[i]).powi(2);
+                n += 1;
+            }
+        }
+        assert!(n > 1000, "{n} rows in 1–3 s");
+        (sum / n as f64).sqrt()
+    };
+    let (raw, filtered) = (rms(0.0), rms(0.02));
+    // One count over δ is 2π/1024/0.002 ≈ 3.1 rad/s: the raw difference's error is of that order.
+    eprintln!("rms of the estimate's error: raw {raw}, filtered {filtered}");
+    assert!(raw > 0.05, "raw {raw}");
+    assert!(filtered < 0.5 * raw, "filtered {filtered} vs raw {raw}");
+}
+
+#[test]
+fn the_svg_figure_of_the_velocity() {
+    use flexarm::view::figure::{figure_choices, figure_svg};
+    let mut s = session("preset=real-encoder&mode=full&measured=1");
+    play(&mut s, 1.0);
+    assert!(figure_choices(&s).iter().any(|c| c.id == "velocity"));
+    let svg = figure_svg(&s, "velocity", false).unwrap().svg;
+    assert!(svg.contains("q̇1 as estimated"), "keyed");
+    assert!(svg.contains(&palette::VELOCITY1_EST.css()) && svg.contains(&palette::VELOCITY1.css()), "drawn");
+    let mut plain = session("preset=real-encoder&mode=full");
+    play(&mut plain, 1.0);
+    assert!(!figure_choices(&plain).iter().any(|c| c.id == "velocity"));
+    assert!(figure_svg(&plain, "velocity", false).is_err());
 }

@@ -191,7 +191,7 @@ const SIZES: [(f64, f64); 8] = [
 /// Every combination of the panel options (the arm and the errors on and off too, as an embed
 /// may ask), on each tab.
 fn all_options() -> impl Iterator<Item = LayoutOptions> {
-    (0..768u16).map(|bits| LayoutOptions {
+    (0..1536u16).map(|bits| LayoutOptions {
         show_torque: bits & 1 != 0,
         show_poles: bits & 2 != 0,
         show_map: bits & 4 != 0,
@@ -201,6 +201,7 @@ fn all_options() -> impl Iterator<Item = LayoutOptions> {
         tab: Tab::ALL[((bits >> 6) & 3) as usize % 3],
         show_arm: bits & 256 == 0,
         show_errors: bits & 512 == 0,
+        show_velocity: bits & 1024 != 0,
     })
 }
 
@@ -238,6 +239,9 @@ fn panels_lie_inside_the_canvas_and_do_not_overlap() {
         }
         if options.show_torque {
             want.push(PanelKind::Torque);
+        }
+        if options.show_velocity {
+            want.push(PanelKind::Velocity);
         }
         if options.show_poles {
             want.push(if options.z_plane { PanelKind::ZPlane } else { PanelKind::Poles });

@@ -187,6 +187,28 @@ fn a_frame_of_the_zoom_allocates_nothing_once_warm_live_or_looking_back() {
 }
 
 #[test]
+fn a_frame_of_the_velocity_panel_allocates_nothing_once_warm() {
+    // What the controller reads, with a coarse encoder whose differenced velocity is clamped to
+    // the true velocity's scale (tests/measured_traces.rs): the clamping allocates nothing either.
+    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let mut s = session("preset=real-encoder&delta=0.002&encoder=256&measured=1&mode=full&torque=1");
+    play(&mut s, 1.0);
+    let mut scene = Scene::new(ViewOptions::default(), 1920.0, 1080.0, 2.0);
+    for _ in 0..20 {
+        s.advance(1.0 / 60.0).unwrap();
+        scene.draw_session(&s);
+    }
+    assert!(scene.layout().panel(PanelKind::Velocity).is_some());
+    for frame in 0..120 {
+        s.advance(1.0 / 60.0).unwrap();
+        let before = allocations();
+        scene.draw_session(&s);
+        assert_eq!(allocations() - before, 0, "frame {frame} allocated");
+    }
+    assert!(count(&scene, palette::VELOCITY1_EST) > 0);
+}
+
+#[test]
 fn nothing_non_finite_reaches_the_renderer_when_the_zoomed_run_diverges() {
     let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
     for query in ["preset=fig5.3&mode=full&predict=1&swing=1", "delta=0.002&pf=off&alpha=5&mode=full&predict=1"] {

@@ -104,6 +104,9 @@ pub mod palette {
     /// e1, e2 as the controller read them (the sensors' staircase), lighter, under the true ones.
     pub const MEASURED1: Color = Color::hex(0x8fb8ee);
     pub const MEASURED2: Color = Color::hex(0xf3a985);
+    /// Link 1's velocity q̇1 (dark teal) and the controller's estimate of it, lighter, under it.
+    pub const VELOCITY1: Color = Color::hex(0x0f6e69);
+    pub const VELOCITY1_EST: Color = Color::hex(0x8ed1c9);
     /// The motors' torque limit ±L.
     pub const TORQUE_LIMIT: Color = Color::hex(0xa1261d);
 

@@ -18,6 +18,9 @@ pub enum PanelKind {
     Error2,
     /// Applied torques T1, T2 over time.
     Torque,
+    /// Link 1's velocity q̇1 over time, true and as the digital controller estimated it (with the
+    /// `measured` switch on and the sensors digital).
+    Velocity,
     /// The sampled loop's eigenvalues as s = ln λ / δ, with the δ → 0 pair A4.
     Poles,
     /// The sampled loop's eigenvalues λ themselves, with the unit circle.
@@ -31,12 +34,13 @@ pub enum PanelKind {
 }
 
 impl PanelKind {
-    pub const ALL: [PanelKind; 10] = [
+    pub const ALL: [PanelKind; 11] = [
         PanelKind::Arm,
         PanelKind::ArmB,
         PanelKind::Error1,
         PanelKind::Error2,
         PanelKind::Torque,
+        PanelKind::Velocity,
         PanelKind::Poles,
         PanelKind::ZPlane,
         PanelKind::RhoCurve,
@@ -57,6 +61,7 @@ impl PanelKind {
             PanelKind::Error1 => "e1",
             PanelKind::Error2 => "e2",
             PanelKind::Torque => "torque",
+            PanelKind::Velocity => "velocity",
             PanelKind::Poles => "poles",
             PanelKind::ZPlane => "z-plane",
             PanelKind::RhoCurve => "rho-curve",
@@ -78,6 +83,7 @@ impl PanelKind {
             PanelKind::Error1 => "e1",
             PanelKind::Error2 => "e2",
             PanelKind::Torque => "the torques",
+            PanelKind::Velocity => "link 1's velocity",
             PanelKind::Poles => "the pole plot",
             PanelKind::ZPlane => "the z-plane",
             PanelKind::RhoCurve => "ρ(δ)",
@@ -88,7 +94,7 @@ impl PanelKind {
 
     /// True for panels that plot quantities against time.
     pub fn is_time_plot(self) -> bool {
-        matches!(self, PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque)
+        matches!(self, PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque | PanelKind::Velocity)
     }
 
     /// True for the arm pictures.

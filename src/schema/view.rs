@@ -145,15 +145,17 @@ pub const LOG: Param = switch(
 );
 
 /// What the controller reads (issue 36): the measured errors, held over each period, beside the
-/// true ones.
+/// true ones, and link 1's velocity beside its estimate.
 pub const MEASURED: Param = switch(
     "measured",
-    "What the controller reads: the measured errors, held over each period",
+    "What the controller reads: the measured errors and the estimated velocity",
     false,
     "With a real robot's sensors on, the error plots add e1, e2 as the controller read them (m − q_d at the \
-     sampling instant, held over the period: steps a count high), light under the true errors; with the sensors \
-     off the controller reads the true state and there is nothing to compare. The CSV always has the measured \
-     errors and the velocity estimates (e1_meas … theta_dot_est).",
+     sampling instant, held over the period: steps a count high), light under the true errors, and a velocity \
+     panel shows link 1's true velocity q̇1 with the controller's estimate of it (the angle differenced over a \
+     period, filtered if τ_v > 0, held: a count over δ is its noise), clipped to the true velocity's scale; with \
+     the sensors off the controller reads the true state and there is nothing to compare. The CSV always has the \
+     measured errors and the velocity estimates (e1_meas … theta_dot_est).",
 );
 
 /// The paper's Fig. 2.1 at one sampling instant: the time plots zoomed on it.

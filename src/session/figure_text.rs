@@ -16,6 +16,9 @@ impl Session {
         if v.torque {
             kinds.push(PanelKind::Torque);
         }
+        if v.measured && !v.predict && self.run(0).is_some_and(|r| r.closed_loop().config().sensors.is_digital()) {
+            kinds.push(PanelKind::Velocity);
+        }
         if v.poles {
             kinds.push(if v.z_plane { PanelKind::ZPlane } else { PanelKind::Poles });
         }

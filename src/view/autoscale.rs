@@ -24,6 +24,10 @@ impl AutoscaleSettings {
     /// Errors in rad: floor 1e-6 rad.
     pub const ERROR: AutoscaleSettings =
         AutoscaleSettings { floor: 1e-6, headroom: 1.1, shrink_below: 1.0 / 3.0, shrink_after: 1.0 };
+    /// Link 1's velocity in rad/s: Y is 1.5 × the true velocity's largest |value| (the estimate,
+    /// however noisy, does not set it), at least 0.2 rad/s.
+    pub const VELOCITY: AutoscaleSettings =
+        AutoscaleSettings { floor: 0.2, headroom: 1.5, shrink_below: 1.0 / 3.0, shrink_after: 1.0 };
     /// Torques in N m: floor 1e-3 N m.
     pub const TORQUE: AutoscaleSettings =
         AutoscaleSettings { floor: 1e-3, headroom: 1.1, shrink_below: 1.0 / 3.0, shrink_after: 1.0 };

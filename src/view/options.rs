@@ -163,11 +163,14 @@ impl ViewOptions {
         Ok(())
     }
 
-    pub(crate) fn layout_options(&self, pair: bool) -> LayoutOptions {
+    /// The panels these options ask for; `digital`: run A's controller reads sensors (the
+    /// `measured` switch then adds the velocity panel, except zoomed on one instant).
+    pub(crate) fn layout_options(&self, pair: bool, digital: bool) -> LayoutOptions {
         LayoutOptions {
             show_arm: self.show_arm,
             show_errors: self.show_errors,
             show_torque: self.show_torque || (self.show_cycle && !self.exact_panels),
+            show_velocity: self.show_measured && digital && !self.show_cycle,
             show_poles: self.show_poles,
             z_plane: self.z_plane,
             show_rho: self.show_rho,

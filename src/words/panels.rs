@@ -70,6 +70,7 @@ pub fn spoken(kind: PanelKind, rate: bool) -> Option<&'static str> {
         PanelKind::Arm => "the arm (top view)",
         PanelKind::Error1 => "the tracking errors e1, e2 over time",
         PanelKind::Torque => "the torques",
+        PanelKind::Velocity => "link 1's velocity q̇1, true and as the controller estimated it",
         PanelKind::Poles => "the pole plot s = ln λ / δ",
         PanelKind::ZPlane => "the loop's eigenvalues λ with the unit circle",
         PanelKind::RhoCurve if rate => "the rate ln ρ/δ along δ",

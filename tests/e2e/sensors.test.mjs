@@ -123,10 +123,15 @@ test('a real robot: the measured errors and the torque limit in the figure', { t
   await page.waitForFunction(() => new URL(location.href).searchParams.get('measured') === '1', null, { timeout: 10000 });
   await page.waitForFunction(() => /What the controller reads.*e1 as measured/.test(document.getElementById('figure-key')?.textContent ?? ''), null, { timeout: 10000 });
   assert.match(await key(), /limit ±150 N m/);
+  // The digital controller's velocity estimate beside the true q̇1, in a panel of its own.
+  assert.match(await key(), /q̇1 as estimated/);
+  await page.waitForFunction(() => window.flexarm.lastLayout?.panels?.some((/** @type {{id: string}} */ p) => p.id === 'velocity'), null, { timeout: 10000 });
   // The perfect robot: nothing to compare, and said so.
   await page.locator('button.try', { hasText: "Back to the paper's perfect robot" }).click();
   await page.waitForFunction(() => /sensors off: the controller reads the true state/.test(document.getElementById('figure-key')?.textContent ?? ''), null, { timeout: 10000 });
   assert.doesNotMatch(await key(), /limit ±/);
+  assert.doesNotMatch(await key(), /q̇1 as estimated/);
+  await page.waitForFunction(() => !window.flexarm.lastLayout?.panels?.some((/** @type {{id: string}} */ p) => p.id === 'velocity'), null, { timeout: 10000 });
   assert.deepEqual(problems, []);
   await close();
 

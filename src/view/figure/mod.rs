@@ -52,6 +52,9 @@ pub enum FigurePanel {
     E1,
     E2,
     Torque,
+    /// Link 1's velocity, true and as the controller estimated it (the `measured` switch with
+    /// digital sensors).
+    Velocity,
     /// The pole plot in the s-plane.
     Poles,
     ZPlane,
@@ -63,13 +66,14 @@ pub enum FigurePanel {
 }
 
 impl FigurePanel {
-    pub const ALL: [FigurePanel; 12] = [
+    pub const ALL: [FigurePanel; 13] = [
         FigurePanel::Arm,
         FigurePanel::ArmB,
         FigurePanel::Errors,
         FigurePanel::E1,
         FigurePanel::E2,
         FigurePanel::Torque,
+        FigurePanel::Velocity,
         FigurePanel::Poles,
         FigurePanel::ZPlane,
         FigurePanel::Rho,
@@ -87,6 +91,7 @@ impl FigurePanel {
             FigurePanel::E1 => "e1",
             FigurePanel::E2 => "e2",
             FigurePanel::Torque => "torque",
+            FigurePanel::Velocity => "velocity",
             FigurePanel::Poles => "poles",
             FigurePanel::ZPlane => "zplane",
             FigurePanel::Rho => "rho",
@@ -125,6 +130,7 @@ impl FigurePanel {
             FigurePanel::E1 => &[PanelKind::Error1],
             FigurePanel::E2 => &[PanelKind::Error2],
             FigurePanel::Torque => &[PanelKind::Torque],
+            FigurePanel::Velocity => &[PanelKind::Velocity],
             FigurePanel::Poles => &[PanelKind::Poles],
             FigurePanel::ZPlane => &[PanelKind::ZPlane],
             FigurePanel::Rho => &[PanelKind::RhoCurve],
@@ -174,6 +180,9 @@ pub fn figure_choices(session: &Session) -> Vec<FigureChoice> {
     if v.torque {
         add(FigurePanel::Torque, "Torques".into());
     }
+    if velocity_shown(session) {
+        add(FigurePanel::Velocity, "Velocity q̇1, true and estimated".into());
+    }
     if v.poles && v.z_plane {
         add(FigurePanel::ZPlane, "z-plane".into());
     } else if v.poles {
@@ -188,6 +197,13 @@ pub fn figure_choices(session: &Session) -> Vec<FigureChoice> {
         add(FigurePanel::Maps, "Both maps".into());
     }
     out
+}
+
+/// True if the session's view draws the velocity panel: the `measured` switch on (not zoomed on
+/// one instant) and run A's controller digital.
+fn velocity_shown(session: &Session) -> bool {
+    let v = session.drawn_view();
+    v.measured && !v.predict && session.run(0).is_some_and(|r| r.closed_loop().config().sensors.is_digital())
 }
 
 /// The figure `panel` of the session as it is now: light, or in the dark scheme if `dark`.
@@ -206,6 +222,12 @@ pub fn figure_svg_captioned(session: &Session, state: &str, panel: &str, dark: b
     }
     if panel == FigurePanel::ArmB && session.run(1).is_none() {
         return Err(Error::NotReady("there is no run B: compare two runs to draw run B's arm"));
+    }
+    if panel == FigurePanel::Velocity && !velocity_shown(session) {
+        return Err(Error::NotReady(
+            "the velocity is drawn with 'What the controller reads' on and a digital controller (an encoder, noise \
+             or differenced velocities)",
+        ));
     }
     if panel.is_map() && !MapSide::BOTH.iter().all(|&s| session.maps().shown(s).is_some_and(|e| e.is_done())) {
         return Err(Error::NotReady(

@@ -33,6 +33,9 @@ pub struct LayoutOptions {
     pub show_errors: bool,
     /// Adds the torque panel below the error panels.
     pub show_torque: bool,
+    /// Adds link 1's velocity, true and as estimated, below them (the `measured` switch with
+    /// digital sensors).
+    pub show_velocity: bool,
     /// Adds the pole plot to the analysis row.
     pub show_poles: bool,
     /// The pole plot shows λ in the z-plane instead of s = ln λ / δ.
@@ -55,6 +58,7 @@ impl Default for LayoutOptions {
             show_arm: true,
             show_errors: true,
             show_torque: false,
+            show_velocity: false,
             show_poles: true,
             z_plane: false,
             show_rho: true,
@@ -99,6 +103,9 @@ impl LayoutOptions {
         }
         if self.show_torque {
             plots.push(PanelKind::Torque);
+        }
+        if self.show_velocity {
+            plots.push(PanelKind::Velocity);
         }
         let mut analysis = Vec::new();
         if self.show_poles {

@@ -98,6 +98,8 @@ pub const WRAPPED_ANALYSIS_ROW_WEIGHT: f64 = 1.25;
 /// A time plot's or analysis panel's data area is kept at least this tall (CSS px) when the
 /// canvas has room for it, by shrinking the other rows towards the same minimum.
 pub const MIN_PLOT_HEIGHT: f64 = 60.0;
+/// The least data height a stacked time plot is given, when the stage can make room for it, CSS px.
+const MIN_STACKED_PLOT: f64 = 16.0;
 /// The top band's share of the height that the band layout tries, from … to … in steps.
 const BAND_SHARES: [f64; 10] = [0.40, 0.44, 0.48, 0.52, 0.56, 0.60, 0.64, 0.68, 0.72, 0.76];
 
@@ -261,7 +263,15 @@ fn stacked(inner: Rect, stage: &[PanelKind], plots: &[PanelKind], analysis: &[Pa
         return;
     }
     let share = if analysis.is_empty() { STAGE_HEIGHT_SHARE } else { STAGE_HEIGHT_SHARE_WITH_ANALYSIS };
-    let stage_h = (inner.h * share).round();
+    let mut stage_h = (inner.h * share).round();
+    if plots.contains(&PanelKind::Velocity) {
+        // A fourth time plot on a small canvas: the stage gives up height until each plot keeps
+        // a readable strip (at most down to a quarter of the canvas). Only with the velocity
+        // panel, so that every other layout stays as it was.
+        let needed = plots.len() as f64 * (margins::PLOT_TOP + margins::PLOT_BOTTOM + MIN_STACKED_PLOT)
+            + if analysis.is_empty() { 0.0 } else { MIN_PLOT_HEIGHT + margins::ANALYSIS_TOP + margins::ANALYSIS_BOTTOM };
+        stage_h = stage_h.min((inner.h - margins::GAP - needed).round()).max((inner.h * 0.25).round());
+    }
     stage_panels(Rect::new(inner.x, inner.y, inner.w, stage_h), stage, out);
     plot_column(inner.inset(0.0, stage_h + margins::GAP, 0.0, 0.0), plots, analysis, out);
 }

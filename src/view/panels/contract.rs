@@ -240,6 +240,12 @@ impl Frame {
         Some(TimeWindow { start: t - (1.0 + ZOOM_MARGIN) * d, end: t + (2.0 + ZOOM_MARGIN) * d })
     }
 
+    /// True if run A's controller reads sensors (a digital controller): what it estimated then
+    /// differs from the true state, and the `measured` switch has something to show.
+    pub fn digital(&self) -> bool {
+        self.runs[0].config.is_some_and(|c| c.sensors.is_digital())
+    }
+
     /// True while the time plots are zoomed on one sampling instant.
     pub fn zoomed(&self) -> bool {
         self.cycle_window().is_some()

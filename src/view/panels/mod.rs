@@ -58,7 +58,7 @@ macro_rules! dispatch {
                 let $p = &$panels.arm;
                 $call
             }
-            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
+            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque | PanelKind::Velocity => {
                 let $p = &$panels.time_plots;
                 $call
             }
@@ -98,7 +98,7 @@ impl Panels {
     pub fn draw(&mut self, frame: &Frame, runs: &Runs<'_>, panel: &Panel, painter: &mut Painter) {
         match panel.kind {
             PanelKind::Arm | PanelKind::ArmB => self.arm.draw(frame, runs, panel, painter),
-            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque => {
+            PanelKind::Error1 | PanelKind::Error2 | PanelKind::Torque | PanelKind::Velocity => {
                 self.time_plots.draw(frame, runs, panel, painter)
             }
             PanelKind::Poles => self.pole_plot.draw(frame, runs, panel, painter),

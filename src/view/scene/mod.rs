@@ -50,19 +50,22 @@ pub struct Scene {
     static_generation: u64,
     /// Increases whenever [`Scene::panel_info`] would describe the frame differently.
     info_generation: u64,
-    info_signature: [f64; 6],
+    info_signature: [f64; 8],
     /// The canvas as the page has it: CSS width and height, device-pixel ratio; and the screen's
     /// height (CSS px), which presentation mode's text size follows.
     page: [f64; 3],
     screen_height: f64,
     /// Page CSS px per layout px: the text scale ([`crate::view::text_size::text_scale`]).
     scale: f64,
+    /// Whether run A's controller was digital when the panels were laid out (the `measured`
+    /// switch then adds the velocity panel).
+    digital: bool,
 }
 
 impl Scene {
     /// A scene for a canvas of the given CSS size and device-pixel ratio.
     pub fn new(options: ViewOptions, css_width: f64, css_height: f64, device_pixel_ratio: f64) -> Self {
-        let layout = Layout::compute(css_width, css_height, device_pixel_ratio, &options.layout_options(false));
+        let layout = Layout::compute(css_width, css_height, device_pixel_ratio, &options.layout_options(false, false));
         let mut scene = Self {
             frame: Frame {
                 options,
@@ -81,10 +84,11 @@ impl Scene {
             static_painter: Painter::new(),
             static_generation: 0,
             info_generation: 0,
-            info_signature: [f64::NAN; 6],
+            info_signature: [f64::NAN; 8],
             page: [css_width, css_height, device_pixel_ratio],
             screen_height: f64::NAN,
             scale: 1.0,
+            digital: false,
         };
         scene.relayout();
         scene
@@ -106,7 +110,7 @@ impl Scene {
     /// The panels the view asks for that this layout does not show (on a narrow canvas, those
     /// of the other tabs): an embed announces them rather than dropping them silently.
     pub fn hidden_panels(&self) -> Vec<PanelKind> {
-        self.frame.layout.hidden(&self.frame.options.layout_options(self.frame.pair))
+        self.frame.layout.hidden(&self.frame.options.layout_options(self.frame.pair, self.digital))
     }
 
     /// True if the latest frame compared two runs.
@@ -180,7 +184,8 @@ impl Scene {
         let options = &self.frame.options;
         self.scale = crate::view::text_size::text_scale(options.text, options.present, screen);
         let dpr = if dpr.is_finite() && dpr > 0.0 { dpr } else { 1.0 };
-        let asked = options.layout_options(self.frame.pair);
+        self.digital = self.frame.digital();
+        let asked = options.layout_options(self.frame.pair, self.digital);
         self.frame.layout = Layout::compute(w / self.scale, h / self.scale, dpr * self.scale, &asked);
         self.reserve();
     }
@@ -314,6 +319,10 @@ impl Scene {
         };
         if changed {
             self.info_generation += 1;
+            if self.frame.digital() != self.digital && self.frame.options.show_measured {
+                // The sensors turned digital or off: the velocity panel comes or goes.
+                self.relayout();
+            }
         }
         self.update_windows(a.windows);
         let time_of = |r: &RunState<'_>| if r.snapshot.time.is_finite() { r.snapshot.time } else { f64::NAN };

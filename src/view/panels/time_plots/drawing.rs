@@ -133,6 +133,39 @@ pub fn draw_series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], valu
     series(painter, frame, times, values, width, color);
 }
 
+/// Like [`draw_series`], but every value held within the plot's range, the stroke's half width
+/// inside its top and bottom edges: a curve far noisier than the scale (a differenced velocity)
+/// runs along the edges instead of off the panel. True if any sample in the window was held.
+pub fn draw_series_clamped(
+    painter: &mut Painter,
+    frame: &PlotFrame,
+    times: &[f64],
+    values: &[f64],
+    width: f64,
+    color: Color,
+) -> bool {
+    let n = times.len().min(values.len());
+    let range = frame.window.indices(&times[..n]);
+    let columns = frame.rect.w.ceil().max(1.0) as usize;
+    let dense = range.len() > 2 * columns;
+    // The stroke's half width in the data's unit, so that its edges stay inside the frame.
+    let margin = (0.5 * width / frame.rect.h.max(1e-9) * (frame.y_hi - frame.y_lo)).min(0.5 * (frame.y_hi - frame.y_lo));
+    let (lo, hi) = (frame.y_lo + margin, frame.y_hi - margin);
+    let mut clamped = false;
+    let mut feed = Feed { stroke: painter.stroke(width, color, false), frame, columns, dense, column: None };
+    for i in range {
+        let (t, v) = (times[i], values[i]);
+        if v.is_finite() {
+            clamped |= v < frame.y_lo || v > frame.y_hi;
+            feed.to(t, v.clamp(lo, hi));
+        } else {
+            feed.lift();
+        }
+    }
+    feed.lift();
+    clamped
+}
+
 /// How many plot ranges beyond an edge a clipped curve may go before it is no longer followed
 /// ([`draw_series_within`]).
 const FAR: f64 = 10.0;

@@ -2,7 +2,10 @@
 //! ([`drawing`], [`series`]), with the previous run faint under them; as log |e| with the slope
 //! ln ρ/δ the analysis predicts and the error split into the swing and the rest ([`split`]), by
 //! choice or by themselves when two compared runs differ by a decade ([`compare`]); or zoomed on
-//! one sampling instant, the paper's Fig. 2.1 ([`zoom`]).
+//! one sampling instant, the paper's Fig. 2.1 ([`zoom`]). With the `measured` switch and digital
+//! sensors, link 1's velocity q̇1 beside the controller's estimate of it (differenced, perhaps
+//! filtered, held over each period), on a scale the true velocity sets: the estimate is clamped
+//! to it.
 
 pub mod compare;
 pub mod drawing;
@@ -11,7 +14,9 @@ pub mod split;
 pub mod zoom;
 
 use compare::{largest_error, wants_log, AUTO_LOG_KEY, AUTO_LOG_NOTE};
-use drawing::{draw_background, draw_frame, draw_series, draw_series_within, max_abs, vertex_budget, PlotFrame};
+use drawing::{
+    draw_background, draw_frame, draw_series, draw_series_clamped, draw_series_within, max_abs, vertex_budget, PlotFrame,
+};
 use series::{
     plot_series, plot_tick_counts, plot_ticks, y_label, CURVE_WIDTH, CURVE_WIDTH_B, DASHED_LINE_BUDGET, LOG_DECADES,
 };
@@ -24,7 +29,7 @@ use crate::model::reference::Reference;
 use crate::plot::ticks::Decades;
 use crate::plot::{palette, Color};
 use crate::schema::PanelKind;
-use crate::view::autoscale::Autoscale;
+use crate::view::autoscale::{Autoscale, AutoscaleSettings};
 use crate::view::layout::Panel;
 use crate::view::legend::{item, Glyph, LegendGroup};
 use crate::view::painter::Painter;
@@ -52,7 +57,7 @@ fn torque_limit(frame: &Frame) -> Option<f64> {
 /// The switch "what the controller reads" is on and run A's controller reads sensors (off, it
 /// reads the true state: nothing to compare).
 fn measured_shown(frame: &Frame) -> bool {
-    frame.options.show_measured && !frame.zoomed() && sensors(frame).is_some_and(|s| s.is_digital())
+    frame.options.show_measured && !frame.zoomed() && frame.digital()
 }
 
 /// The error as the controller read it, and its colour, if `kind`'s plot draws it.
@@ -63,6 +68,7 @@ fn measured_series(frame: &Frame, kind: PanelKind) -> Option<(Column, Color)> {
     match kind {
         PanelKind::Error1 => Some((Column::E1Meas, palette::MEASURED1)),
         PanelKind::Error2 => Some((Column::E2Meas, palette::MEASURED2)),
+        PanelKind::Velocity => Some((Column::Q1DotEst, palette::VELOCITY1_EST)),
         _ => None,
     }
 }
@@ -79,6 +85,10 @@ fn limit_text(limit: f64) -> String {
 pub struct TimePlots {
     /// e1, e2, the torques.
     scales: [Autoscale; 3],
+    /// Link 1's velocity (set by the true one).
+    velocity: Autoscale,
+    /// The latest frame clamped the velocity's estimate to the scale somewhere in the window.
+    velocity_clamped: bool,
     zoom: Zoom,
     split: SplitBuffers,
     auto_log: bool,
@@ -86,7 +96,14 @@ pub struct TimePlots {
 
 impl Default for TimePlots {
     fn default() -> Self {
-        Self { scales: Autoscale::time_plots(), zoom: Zoom::default(), split: SplitBuffers::default(), auto_log: false }
+        Self {
+            scales: Autoscale::time_plots(),
+            velocity: Autoscale::new(AutoscaleSettings::VELOCITY),
+            velocity_clamped: false,
+            zoom: Zoom::default(),
+            split: SplitBuffers::default(),
+            auto_log: false,
+        }
     }
 }
 
@@ -106,12 +123,24 @@ impl TimePlots {
         for s in &mut self.scales {
             s.reset();
         }
+        self.velocity.reset();
         self.zoom.reset();
     }
 
     /// The half-range a plot shows now (0 for other panels).
     pub fn limit(&self, kind: PanelKind) -> f64 {
-        scale_index(kind).map_or(0.0, |i| self.scales[i].limit())
+        match kind {
+            PanelKind::Velocity => self.velocity.limit(),
+            _ => scale_index(kind).map_or(0.0, |i| self.scales[i].limit()),
+        }
+    }
+
+    /// The scale of a plot, if `kind` is a time plot.
+    fn scale_mut(&mut self, kind: PanelKind) -> Option<&mut Autoscale> {
+        match kind {
+            PanelKind::Velocity => Some(&mut self.velocity),
+            _ => scale_index(kind).map(|i| &mut self.scales[i]),
+        }
     }
 
     /// True while the error plots are log |e| because the compared runs differ by a decade.
@@ -137,7 +166,7 @@ impl TimePlots {
     /// What the time plots' description depends on besides the layout: their scales and first
     /// time tick, the window's width, one run or two (or, zoomed, the zoom's scales and whether
     /// the jump to consistency is off the scale). The scene re-describes the frame when it changes.
-    pub fn signature(&self, frame: &Frame, window: TimeWindow) -> [f64; 6] {
+    pub fn signature(&self, frame: &Frame, window: TimeWindow) -> [f64; 8] {
         let first_tick = frame
             .layout
             .panels
@@ -154,6 +183,8 @@ impl TimePlots {
                 if self.zoom.jump_off_scale(frame) { 1.0 } else { 0.0 },
                 window.width(),
                 3.0,
+                0.0,
+                0.0,
             ]
         } else {
             [
@@ -163,6 +194,8 @@ impl TimePlots {
                 first_tick,
                 window.width(),
                 if frame.pair { 2.0 } else { 1.0 },
+                self.velocity.limit(),
+                if self.velocity_clamped { 1.0 } else { 0.0 },
             ]
         }
     }
@@ -191,7 +224,9 @@ impl TimePlots {
             }
         }
         let measured = measured_series(frame, panel.kind);
-        if let Some((column, _)) = measured {
+        let velocity = panel.kind == PanelKind::Velocity;
+        // The velocity's scale is the true velocity's: a differenced estimate can be far noisier.
+        if let Some((column, _)) = measured.filter(|_| !velocity) {
             let range = window.indices(runs.a.traces.t());
             data_max = data_max.max(runs.a.traces.column(column).get(range).map_or(0.0, max_abs));
         }
@@ -201,8 +236,8 @@ impl TimePlots {
             data_max = data_max.max(l);
         }
         let log = self.log_plot(frame, panel.kind);
-        let Some(index) = scale_index(panel.kind) else { return };
-        let y = self.scales[index].update(data_max, frame.time);
+        let Some(scale) = self.scale_mut(panel.kind) else { return };
+        let y = scale.update(data_max, frame.time);
         let dpr = frame.layout.device_pixel_ratio;
         let [y_lo, y_hi] = self.plot_range(frame, panel.kind, y);
         let plot = PlotFrame { rect: frame.layout.to_physical(panel.rect), window, y_lo, y_hi, log };
@@ -225,7 +260,12 @@ impl TimePlots {
         if let Some((column, color)) = measured {
             let (t, values) = (a.traces.t(), a.traces.column(column));
             let m = t.len().min(values.len());
-            draw_series(painter, &plot, &t[..m], &values[..m], MEASURED_WIDTH * dpr, color);
+            if velocity {
+                self.velocity_clamped =
+                    draw_series_clamped(painter, &plot, &t[..m], &values[..m], MEASURED_WIDTH * dpr, color);
+            } else {
+                draw_series(painter, &plot, &t[..m], &values[..m], MEASURED_WIDTH * dpr, color);
+            }
         }
         for (run, state) in runs.each().iter().enumerate() {
             let Some(state) = state else { continue };
@@ -290,6 +330,11 @@ impl TimePlots {
         }
         let note = match panel.kind {
             PanelKind::Torque => torque_limit(frame).map(|l| format!("dashed: {}", limit_text(l))),
+            PanelKind::Velocity => Some(if self.velocity_clamped {
+                "light: as estimated, held; clipped to the scale".to_string()
+            } else {
+                "light: as estimated, held over each period".to_string()
+            }),
             PanelKind::Error1 if frame.options.show_measured => Some(if measured_shown(frame) {
                 "light: as measured, held over each period".to_string()
             } else {
@@ -370,7 +415,7 @@ impl PanelView for TimePlots {
 
     fn draw(&mut self, frame: &Frame, runs: &Runs<'_>, panel: &Panel, painter: &mut Painter) {
         let window = frame.window();
-        if frame.zoomed() {
+        if frame.zoomed() && panel.kind != PanelKind::Velocity {
             self.zoom.draw(frame, panel, window, &runs.a, painter);
         } else {
             self.draw_plot(frame, panel, window, runs, painter);
@@ -382,7 +427,7 @@ impl PanelView for TimePlots {
         let mut info = PanelInfo::new(panel.kind.id(), r.x, r.y, r.w, r.h);
         info.scrolls = true;
         let window = frame.window();
-        if frame.zoomed() {
+        if frame.zoomed() && panel.kind != PanelKind::Velocity {
             self.zoom.describe(frame, panel, window, &mut info);
         } else {
             self.describe_plot(frame, panel, window, &mut info);
@@ -446,8 +491,11 @@ impl PanelView for TimePlots {
                 scale: None,
             });
         }
-        if frame.options.show_measured && !frame.zoomed() && kinds.contains(&PanelKind::Error1) {
-            let items = if measured_shown(frame) {
+        let velocity = kinds.contains(&PanelKind::Velocity);
+        if frame.options.show_measured && !frame.zoomed() && (kinds.contains(&PanelKind::Error1) || velocity) {
+            let mut items = if !kinds.contains(&PanelKind::Error1) {
+                Vec::new()
+            } else if measured_shown(frame) {
                 vec![
                     item(
                         Glyph::Line,
@@ -466,6 +514,16 @@ impl PanelView for TimePlots {
                      (nothing to compare; turn on an encoder, noise or differenced velocities)",
                 )]
             };
+            if velocity && measured_shown(frame) {
+                items.push(item(Glyph::Line, palette::VELOCITY1, "q̇1, link 1's true velocity"));
+                items.push(item(
+                    Glyph::Line,
+                    palette::VELOCITY1_EST,
+                    "q̇1 as estimated: what the controller uses for link 1's velocity — the encoder's angle \
+                     differenced over one period (filtered if τ_v > 0), held over the period; a count's step over \
+                     δ is its noise, clipped to the scale the true velocity sets",
+                ));
+            }
             groups.push(LegendGroup { title: "What the controller reads", items, scale: None });
         }
         if let Some(l) = torque_limit(frame).filter(|_| kinds.contains(&PanelKind::Torque)) {
@@ -487,9 +545,12 @@ impl PanelView for TimePlots {
             [PanelKind::Error1, PanelKind::Error2] => "Tracking errors e1, e2",
             [PanelKind::Error1] => "Tracking error e1 (link 1)",
             [PanelKind::Error2] => "Tracking error e2 (link 2)",
+            [PanelKind::Velocity] => "Link 1's velocity q̇1, true and as the controller estimated it",
             _ => "Torques T1, T2",
         };
-        if frame.options.show_cycle {
+        if kinds == [PanelKind::Velocity] {
+            what.to_string()
+        } else if frame.options.show_cycle {
             format!("{what}, zoomed on one sampling instant tₙ (Fig. 2.1)")
         } else if frame.options.log_errors {
             format!("{what}, log |e| with the slope ln ρ/δ the analysis predicts")
@@ -507,6 +568,8 @@ pub fn figure_curves(kinds: &[PanelKind]) -> &'static [(Color, &'static str)] {
         }
         [PanelKind::Error1] => &[(palette::ERROR1, "e1 = q1 − q_d1, link 1's tracking error")],
         [PanelKind::Error2] => &[(palette::ERROR2, "e2 = q2 − q_d2, link 2's tracking error")],
+        // Keyed with the estimate under "What the controller reads".
+        [PanelKind::Velocity] => &[],
         _ => &[
             (palette::ERROR1, "e1 = q1 − q_d1, link 1's tracking error"),
             (palette::ERROR2, "e2 = q2 − q_d2, link 2's tracking error"),

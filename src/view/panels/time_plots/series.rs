@@ -25,6 +25,7 @@ pub fn y_label(kind: PanelKind) -> &'static str {
         PanelKind::Error1 => "e1 [rad]",
         PanelKind::Error2 => "e2 [rad]",
         PanelKind::Torque => "T1, T2 [N m]",
+        PanelKind::Velocity => "q̇1 [rad/s]",
         _ => "",
     }
 }
@@ -41,6 +42,7 @@ pub fn plot_series(kind: PanelKind, traces: &Traces, run: usize) -> [Option<(&[f
             Some((traces.torque1(), pick(palette::TORQUE1, palette::RUN_B))),
             Some((traces.torque2(), pick(palette::TORQUE2, palette::RUN_B_LIGHT))),
         ],
+        PanelKind::Velocity => [Some((traces.q1_dot(), pick(palette::VELOCITY1, palette::RUN_B))), None],
         _ => [None, None],
     }
 }
