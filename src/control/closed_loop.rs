@@ -10,7 +10,7 @@
 //! where the compensation is the observer output x̂f(t) (continuous), x̂f(t_ρ) (held) or 0.
 //! The controller's integrators w are integrated with the plant from the measured error.
 //!
-//! The same [`ClosedLoop`] value serves batch runs ([`simulate`]) and live animation
+//! The same [`ClosedLoop`] value serves batch runs ([`super::batch::simulate`]) and live animation
 //! ([`ClosedLoop::advance`]); a new configuration takes effect at the next sampling instant.
 
 use nalgebra::Vector2;
@@ -27,47 +27,6 @@ use crate::error::{ConfigError, Error};
 use crate::model::friction::FrictionObserver;
 use crate::model::plant::{Plant, PlantState};
 use crate::model::reference::Reference;
-
-/// A whole run's result.
-#[derive(Clone, Debug, PartialEq)]
-pub struct RunReport {
-    pub config: SimulationConfig,
-    pub metrics: Metrics,
-    pub traces: Traces,
-}
-
-/// Runs `config` from rest on the reference for `duration` seconds (or until it diverges).
-pub fn simulate(config: &SimulationConfig, duration: f64) -> Result<RunReport, Error> {
-    let mut sim = ClosedLoop::new(*config)?;
-    sim.advance(duration)?;
-    Ok(RunReport { config: *config, metrics: sim.metrics(), traces: sim.traces().clone() })
-}
-
-/// Runs `config` from rest for `duration` seconds (or until it diverges) in chunks of at most
-/// `chunk` simulated seconds, handing each chunk's traces and the fraction done to `on_chunk`
-/// and then dropping them: the memory does not grow with the duration (the metrics are online).
-pub fn simulate_in_chunks<E: From<Error>>(
-    config: &SimulationConfig,
-    duration: f64,
-    chunk: f64,
-    mut on_chunk: impl FnMut(&Traces, f64) -> Result<(), E>,
-) -> Result<Metrics, E> {
-    let mut sim = ClosedLoop::new(*config)?;
-    if !(duration.is_finite() && duration >= 0.0) {
-        return Err(Error::InvalidDuration(duration).into());
-    }
-    let chunk = if chunk > 0.0 { chunk } else { duration.max(1.0) };
-    loop {
-        // The last chunk ends on the duration itself (advance rounds to whole plant steps).
-        let left = duration - sim.time();
-        sim.advance(left.clamp(0.0, chunk))?;
-        on_chunk(sim.traces(), (sim.time() / duration).min(1.0))?;
-        sim.traces_mut().clear();
-        if left <= chunk || sim.is_finished() {
-            return Ok(sim.metrics());
-        }
-    }
-}
 
 /// Derived settings that follow from the configuration.
 #[derive(Clone, Copy, Debug)]

@@ -3,10 +3,11 @@
 //! and the sampled loop of Fig. 2.1 that records traces, metrics and a verdict; `timing`, one
 //! sampling instant's prediction as work to be timed against δ ("faster than real-time").
 //!
-//! Module graph (no cycles): `config` ← `predictive` ← `linear` ← `feedback` ← `closed_loop`
-//! (with `traces` and `metrics`). Architecture invariant: `control` knows nothing of the
+//! Module graph (no cycles): `config` ← `predictive` ← `linear` ← `feedback` ← `closed_loop` ←
+//! `batch` (with `traces` and `metrics`). Architecture invariant: `control` knows nothing of the
 //! stability analysis of the sampled loop, the session or the page.
 
+pub mod batch;
 pub mod closed_loop;
 pub mod config;
 pub mod cycle;
@@ -22,7 +23,8 @@ pub mod timing;
 pub mod traces;
 pub mod work;
 
-pub use closed_loop::{simulate, simulate_in_chunks, ClosedLoop, RunReport};
+pub use batch::{simulate, simulate_in_chunks, RunReport};
+pub use closed_loop::ClosedLoop;
 pub use config::{ControllerParameters, FrictionCompensation, InnerLoop, PreliminaryFeedbackChoice, SimulationConfig};
 pub use cycle::Cycle;
 pub use history::{History, LoopState};

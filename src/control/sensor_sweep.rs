@@ -4,7 +4,7 @@
 //! growing. The linear prediction of the same noise is `analysis::noise`; this module only
 //! simulates (the analysis never runs the nonlinear simulation).
 
-use super::closed_loop::simulate;
+use super::batch::simulate;
 use super::config::SimulationConfig;
 use super::metrics::Metrics;
 use super::sensing::SensorModel;
