@@ -4,21 +4,10 @@
 //! log |e| stays chosen.
 
 mod common;
-use common::{play, session};
+use common::{drawn_after, session};
 
 use flexarm::view::panels::time_plots::compare::{wants_log, AUTO_LOG_NOTE};
-use flexarm::view::{PanelKind, Scene, ViewOptions};
-
-fn drawn(query: &str, seconds: f64) -> Scene {
-    let mut s = session(query);
-    play(&mut s, seconds);
-    s.refresh();
-    let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
-    // Two frames, as the page draws them: the decision is the frame's.
-    scene.draw_session(&s);
-    scene.draw_session(&s);
-    scene
-}
+use flexarm::view::{PanelKind, Scene};
 
 fn e1_scale(scene: &Scene) -> (&'static str, String) {
     let e1 = scene.panel_info().into_iter().find(|p| p.id == PanelKind::Error1.id()).expect("e1 shown");
@@ -29,7 +18,7 @@ fn e1_scale(scene: &Scene) -> (&'static str, String) {
 fn a_growing_run_beside_a_settling_one_is_shown_on_log_axes() {
     // Fig. 5.3 grows as ρⁿ with ρ = 1.024 per 0.01 s (e^{2.36 t}); Fig. 5.2 settles: by 6 s the
     // slew's errors of A are more than ten times B's.
-    let scene = drawn("preset=fig5.3&mode=full&compare=1&b_pf=paper", 6.0);
+    let scene = drawn_after("preset=fig5.3&mode=full&compare=1&b_pf=paper", 6.0);
     assert!(scene.auto_log(), "Fig. 5.3 beside Fig. 5.2 at 6 s should turn log");
     let (scale, note) = e1_scale(&scene);
     assert_eq!(scale, "log");
@@ -40,15 +29,15 @@ fn a_growing_run_beside_a_settling_one_is_shown_on_log_axes() {
 #[test]
 fn close_runs_stay_linear_and_a_chosen_log_stays_chosen() {
     // Both stable with K_pr, δ = 0.01 and 0.02 s: errors of the same order.
-    let scene = drawn("preset=fig5.2&mode=full&compare=1&b_pf=paper&b_delta=0.02", 6.0);
+    let scene = drawn_after("preset=fig5.2&mode=full&compare=1&b_pf=paper&b_delta=0.02", 6.0);
     assert!(!scene.auto_log());
     assert_eq!(e1_scale(&scene).0, "linear");
     // One run alone never turns by itself, however it grows.
-    let alone = drawn("preset=fig5.3&mode=full", 6.0);
+    let alone = drawn_after("preset=fig5.3&mode=full", 6.0);
     assert!(!alone.auto_log());
     assert_eq!(e1_scale(&alone).0, "linear");
     // log=1 chosen: log, without the automatic note.
-    let chosen = drawn("preset=fig5.3&mode=full&compare=1&b_pf=paper&log=1", 6.0);
+    let chosen = drawn_after("preset=fig5.3&mode=full&compare=1&b_pf=paper&log=1", 6.0);
     assert!(!chosen.auto_log());
     let (scale, note) = e1_scale(&chosen);
     assert_eq!(scale, "log");

@@ -161,23 +161,13 @@ fn the_csv_names_the_measured_columns_at_its_end() {
 // ---------------------------------------------------------------- in the view
 
 mod common;
-use common::{play, session};
+use common::{drawn_after, play, session};
 
 use flexarm::plot::{palette, Color};
 use flexarm::view::{PanelKind, Scene, ViewOptions};
 
 fn drawn(query: &str) -> Scene {
     drawn_after(query, 1.5)
-}
-
-fn drawn_after(query: &str, seconds: f64) -> Scene {
-    let mut s = session(query);
-    play(&mut s, seconds);
-    s.refresh();
-    let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
-    scene.draw_session(&s);
-    scene.draw_session(&s);
-    scene
 }
 
 fn paints(scene: &Scene, color: Color) -> bool {

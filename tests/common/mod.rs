@@ -5,6 +5,7 @@ pub mod lag;
 pub mod visit;
 
 use flexarm::session::Session;
+use flexarm::view::{Scene, ViewOptions};
 pub use visit::Visit;
 
 /// The page's session for `query`, which must read without notices.
@@ -28,4 +29,16 @@ pub fn play(s: &mut Session, seconds: f64) {
     {
         s.advance(0.05).unwrap();
     }
+}
+
+/// The page's scene at 1280 × 800 after playing `query` for `seconds`, drawn twice as the page
+/// draws its frames (some decisions, the scales' and the log switch's, are the frame's).
+pub fn drawn_after(query: &str, seconds: f64) -> Scene {
+    let mut s = session(query);
+    play(&mut s, seconds);
+    s.refresh();
+    let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
+    scene.draw_session(&s);
+    scene.draw_session(&s);
+    scene
 }

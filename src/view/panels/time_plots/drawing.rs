@@ -130,7 +130,7 @@ pub fn draw_frame(painter: &mut Painter, frame: &PlotFrame, dpr: f64) {
 /// maximum in the order they occur, so spikes survive and a 10 000-sample window costs no
 /// more than the plot is wide. Non-finite samples leave a gap.
 pub fn draw_series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], values: &[f64], width: f64, color: Color) {
-    series(painter, frame, times, values, width, color);
+    series(painter, frame, times, values, width, color, None);
 }
 
 /// Like [`draw_series`], but every value held within the plot's range, the stroke's half width
@@ -144,26 +144,9 @@ pub fn draw_series_clamped(
     width: f64,
     color: Color,
 ) -> bool {
-    let n = times.len().min(values.len());
-    let range = frame.window.indices(&times[..n]);
-    let columns = frame.rect.w.ceil().max(1.0) as usize;
-    let dense = range.len() > 2 * columns;
     // The stroke's half width in the data's unit, so that its edges stay inside the frame.
     let margin = (0.5 * width / frame.rect.h.max(1e-9) * (frame.y_hi - frame.y_lo)).min(0.5 * (frame.y_hi - frame.y_lo));
-    let (lo, hi) = (frame.y_lo + margin, frame.y_hi - margin);
-    let mut clamped = false;
-    let mut feed = Feed { stroke: painter.stroke(width, color, false), frame, columns, dense, column: None };
-    for i in range {
-        let (t, v) = (times[i], values[i]);
-        if v.is_finite() {
-            clamped |= v < frame.y_lo || v > frame.y_hi;
-            feed.to(t, v.clamp(lo, hi));
-        } else {
-            feed.lift();
-        }
-    }
-    feed.lift();
-    clamped
+    series(painter, frame, times, values, width, color, Some([frame.y_lo + margin, frame.y_hi - margin]))
 }
 
 /// How many plot ranges beyond an edge a clipped curve may go before it is no longer followed
@@ -310,21 +293,36 @@ impl Feed<'_, '_> {
     }
 }
 
-fn series(painter: &mut Painter, frame: &PlotFrame, times: &[f64], values: &[f64], width: f64, color: Color) {
+/// The series over the frame's window, each value held within `hold` if given; true if any
+/// sample in the window lay outside the plot's range there.
+fn series(
+    painter: &mut Painter,
+    frame: &PlotFrame,
+    times: &[f64],
+    values: &[f64],
+    width: f64,
+    color: Color,
+    hold: Option<[f64; 2]>,
+) -> bool {
     let n = times.len().min(values.len());
     let range = frame.window.indices(&times[..n]);
     let columns = frame.rect.w.ceil().max(1.0) as usize;
     let dense = range.len() > 2 * columns;
+    let mut held = false;
     let mut feed = Feed { stroke: painter.stroke(width, color, false), frame, columns, dense, column: None };
     for i in range {
         let (t, v) = (times[i], values[i]);
-        if v.is_finite() {
-            feed.to(t, v);
-        } else {
+        if !v.is_finite() {
             feed.lift();
+        } else if let Some([lo, hi]) = hold {
+            held |= v < frame.y_lo || v > frame.y_hi;
+            feed.to(t, v.clamp(lo, hi));
+        } else {
+            feed.to(t, v);
         }
     }
     feed.lift();
+    held
 }
 
 fn point(frame: &PlotFrame, t: f64, v: f64) -> Point {
