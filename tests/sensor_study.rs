@@ -274,4 +274,10 @@ fn a_delta_unstable_by_rho_is_never_the_best_even_before_its_run_diverges() {
         assert_eq!(v.table[0][1], "ρ");
         assert!(v.table[1][1].parse::<f64>().unwrap() >= 1.0, "{query}: {:?}", v.table[1]);
     }
+    // The heavier motor under the paper's K_pr: the digital loop is unstable at small δ, so the
+    // bound below is ρ's, and the best-δ sentence must not blame the sensors for it.
+    let v = study("preset=real-encoder&arm=heavier");
+    assert!(v.study.rows[0].unstable());
+    let said = v.summary.join(" ");
+    assert!(said.contains("not the sensors' noise, rules δ out") && !said.contains("exists with these sensors"), "{said}");
 }

@@ -147,6 +147,15 @@ pub fn study_summary(study: &SensorStudy, sensors: &SensorModel) -> Vec<String> 
     }
     let at = |r: &StudyRow| format!("{} s", number(r.sampling_period));
     out.push(match study.best {
+        // Below the best the noise-free loop itself is unstable: ρ, not the sensors' noise, bounds δ.
+        Best::Inside { .. } if first.unstable() => format!(
+            "A best δ exists among the δ studied: the error during the slew is smallest at δ = {} ({} rad); at {} \
+             {} — there ρ of the noise-free loop, not the sensors' noise, rules δ out.",
+            at(best),
+            significant(real(best), 2),
+            at(first),
+            if first.real.is_some_and(|p| p.diverged) { "the run diverges" } else { "the loop is unstable by ρ" }
+        ),
         Best::Inside { .. } => format!(
             "A best δ exists with these sensors: the error during the slew is smallest at δ = {} ({} rad), and \
              both faster and slower sampling track worse — at {}, {}.",
@@ -210,6 +219,15 @@ fn at_rest(study: &SensorStudy, best: &StudyRow) -> Option<String> {
         return Some(format!(
             "That δ is judged by the slew; at rest, too, the error and T1's noise are least at {} s.",
             number(here)
+        ));
+    }
+    if error_at == torque_at {
+        return Some(format!(
+            "That δ is judged by the error during the slew. At rest both the error ({} rad RMS) and T1's noise ({} N \
+             m RMS) are least at δ = {} s: a δ chosen for holding still or for a quiet motor differs.",
+            significant(error, 2),
+            significant(torque, 2),
+            number(error_at)
         ));
     }
     let (mut parts, mut purposes) = (Vec::new(), Vec::new());
