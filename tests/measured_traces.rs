@@ -281,7 +281,8 @@ fn the_velocity_panel_is_laid_out_only_with_the_switch_on_and_a_digital_controll
     play(&mut s, 1.0);
     let mut phone = Scene::new(ViewOptions::default(), 390.0, 700.0, 3.0);
     phone.draw_session(&s);
-    let (e2, v) = (phone.layout().panel(PanelKind::Error2).unwrap().rect, velocity_panel(&phone).expect("on a phone").rect);
+    let (e2, v) =
+        (phone.layout().panel(PanelKind::Error2).unwrap().rect, velocity_panel(&phone).expect("on a phone").rect);
     assert!(v.y > e2.bottom(), "below e2: {e2:?} {v:?}");
 }
 

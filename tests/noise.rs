@@ -77,7 +77,8 @@ fn with_exact_velocities_rho_is_the_sampled_inner_loops() {
     let sampled = LinearSettings::of(&c, Some(0.0));
     assert_eq!(sampled.sensing, None, "exact velocities without noise are the paper's loop");
     let rho_sampled = LoopModel::new(&sampled).unwrap().spectral_radius(delta).unwrap();
-    let digital = LinearSettings { sensing: Some(VelocityEstimator { source: VelocitySource::Exact, filter: 0.0 }), ..sampled };
+    let digital =
+        LinearSettings { sensing: Some(VelocityEstimator { source: VelocitySource::Exact, filter: 0.0 }), ..sampled };
     let model = LoopModel::new(&digital).unwrap();
     let rho_digital = model.spectral_radius(delta).unwrap();
     assert!((rho_digital - rho_sampled).abs() < 1e-3, "digital {rho_digital} vs sampled {rho_sampled}");
@@ -99,9 +100,15 @@ fn an_encoder_makes_the_settings_digital() {
     let mut c = SimulationConfig::default();
     assert_eq!(LinearSettings::of(&c, None).sensing, None);
     c.sensors.encoder_counts = 4096.0;
-    assert_eq!(LinearSettings::of(&c, None).sensing, Some(VelocityEstimator { source: VelocitySource::Exact, filter: 0.0 }));
+    assert_eq!(
+        LinearSettings::of(&c, None).sensing,
+        Some(VelocityEstimator { source: VelocitySource::Exact, filter: 0.0 })
+    );
     c.sensors = SensorModel { velocity: VelocitySource::Difference, ..SensorModel::default() };
-    assert_eq!(LinearSettings::of(&c, None).sensing, Some(VelocityEstimator { source: VelocitySource::Difference, filter: 0.0 }));
+    assert_eq!(
+        LinearSettings::of(&c, None).sensing,
+        Some(VelocityEstimator { source: VelocitySource::Difference, filter: 0.0 })
+    );
     // ρ of the configuration follows.
     let digital = spectral_radius(&c, None).unwrap();
     c.sensors = SensorModel::default();

@@ -40,16 +40,17 @@ fn runs(delta: f64, sensors: SensorModel, seconds: f64) -> (Traces, Traces, Nois
 /// RMS of the difference of column `col` between two runs over [from, to) s.
 fn rms_difference(a: &Traces, b: &Traces, col: Column, [from, to]: [f64; 2]) -> f64 {
     let t = a.column(Column::T);
-    let d: Vec<f64> = (0..t.len())
-        .filter(|&i| t[i] >= from && t[i] < to)
-        .map(|i| a.column(col)[i] - b.column(col)[i])
-        .collect();
+    let d: Vec<f64> =
+        (0..t.len()).filter(|&i| t[i] >= from && t[i] < to).map(|i| a.column(col)[i] - b.column(col)[i]).collect();
     (d.iter().map(|x| x * x).sum::<f64>() / d.len() as f64).sqrt()
 }
 
 fn within(simulated: f64, predicted: f64, tolerance: f64, what: &str) {
     let ratio = simulated / predicted;
-    assert!((ratio - 1.0).abs() < tolerance, "{what}: simulated {simulated:.3e}, predicted {predicted:.3e} ({ratio:.2})");
+    assert!(
+        (ratio - 1.0).abs() < tolerance,
+        "{what}: simulated {simulated:.3e}, predicted {predicted:.3e} ({ratio:.2})"
+    );
 }
 
 #[test]
@@ -77,7 +78,8 @@ fn an_encoder_on_a_moving_arm_costs_the_torque_the_prediction_says() {
     // white and uniform over a count, variance Δ²/12. The middle of the slew, 0.2–0.8 s.
     for counts in [1024.0, 4096.0, 16384.0] {
         for delta in [0.002, 0.005, 0.01, 0.02] {
-            let s = SensorModel { encoder_counts: counts, velocity: VelocitySource::Difference, ..SensorModel::default() };
+            let s =
+                SensorModel { encoder_counts: counts, velocity: VelocitySource::Difference, ..SensorModel::default() };
             let (a, b, p) = runs(delta, s, 1.0);
             let slew = [0.2, 0.8];
             let what = format!("T1 with {counts} counts at δ = {delta} s");
@@ -90,7 +92,8 @@ fn an_encoder_on_a_moving_arm_costs_the_torque_the_prediction_says() {
 fn halving_the_counts_doubles_the_torque_noise_in_the_simulation() {
     for delta in [0.002, 0.01] {
         let slew_noise = |counts: f64| {
-            let s = SensorModel { encoder_counts: counts, velocity: VelocitySource::Difference, ..SensorModel::default() };
+            let s =
+                SensorModel { encoder_counts: counts, velocity: VelocitySource::Difference, ..SensorModel::default() };
             let (a, b, _) = runs(delta, s, 1.0);
             rms_difference(&a, &b, Column::Torque1, [0.2, 0.8])
         };
@@ -112,7 +115,11 @@ fn at_rest_the_quantizer_is_not_white_noise_and_the_prediction_does_not_apply() 
     let rest = [2.0, 6.0];
     let e1 = rms_difference(&a, &b, Column::E1, rest);
     let t1 = rms_difference(&a, &b, Column::Torque1, rest);
-    assert!(e1 > 2.0 * p.rms_error[0], "the error at rest exceeds the white-noise floor: {e1:.2e} vs {:.2e}", p.rms_error[0]);
+    assert!(
+        e1 > 2.0 * p.rms_error[0],
+        "the error at rest exceeds the white-noise floor: {e1:.2e} vs {:.2e}",
+        p.rms_error[0]
+    );
     assert!(t1 < 0.5 * p.rms_torque[0], "the torque at rest stays below it: {t1:.2} vs {:.2}", p.rms_torque[0]);
     let count = std::f64::consts::TAU / counts;
     assert!(e1 < count, "but within a count: {e1:.2e} vs {count:.2e}");

@@ -193,7 +193,10 @@ fn the_real_robot_row_is_the_codes() {
         })
         .collect();
     let rho: Vec<String> = floors.iter().map(|f| format!("{:.4}", f.spectral_radius)).collect();
-    assert!(r.contains(&format!("{} at δ = 0.002 s, {} at 0.01 s, {} at 0.04 s", rho[0], rho[1], rho[2])), "{rho:?}\n{r}");
+    assert!(
+        r.contains(&format!("{} at δ = 0.002 s, {} at 0.01 s, {} at 0.04 s", rho[0], rho[1], rho[2])),
+        "{rho:?}\n{r}"
+    );
     let sci = |v: f64| format!("{v:.2e}");
     let e: Vec<String> = floors.iter().map(|f| sci(f.rms_error[0])).collect();
     assert!(r.contains(&format!("RMS e1 {}, {}, {} rad", e[0], e[1], e[2])), "{e:?}");
@@ -204,6 +207,10 @@ fn the_real_robot_row_is_the_codes() {
     s.read("preset=real-encoder", flexarm::session::Source::CommandLine).unwrap();
     let v = Session::new(s).unwrap().sensor_study_step(1000).unwrap();
     let cell = |d: &str, i: usize| v.table.iter().find(|row| row[0] == d).unwrap()[i].clone();
-    assert!(r.contains(&format!("best at δ = 0.005 s (max \\|e\\| {} rad; {} rad at 0.002 s", cell("0.005", 2), cell("0.002", 2))));
+    assert!(r.contains(&format!(
+        "best at δ = 0.005 s (max \\|e\\| {} rad; {} rad at 0.002 s",
+        cell("0.005", 2),
+        cell("0.002", 2)
+    )));
     assert!(r.contains(&format!("limit {} of the time", cell("0.002", 7))));
 }

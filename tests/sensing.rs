@@ -108,7 +108,8 @@ fn the_motors_never_exceed_their_limit_and_the_run_says_how_long_they_sat_at_it(
 
 #[test]
 fn a_run_continued_from_a_kept_instant_reads_the_same_noise() {
-    let s = SensorModel { encoder_counts: 4096.0, noise: 2e-4, velocity: VelocitySource::Difference, ..Default::default() };
+    let s =
+        SensorModel { encoder_counts: 4096.0, noise: 2e-4, velocity: VelocitySource::Difference, ..Default::default() };
     let mut sim = ClosedLoop::new(config(0.01, s)).unwrap();
     sim.keep_history(10.0);
     sim.advance(2.0).unwrap();

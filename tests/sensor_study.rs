@@ -3,7 +3,7 @@
 //! values, on more than one arm and α, so that the page's sentences about it are tested.
 
 use flexarm::analysis::sensor_study::Best;
-use flexarm::session::{Session, SensorStudyView, Settings, Source};
+use flexarm::session::{SensorStudyView, Session, Settings, Source};
 
 fn study(query: &str) -> SensorStudyView {
     let mut s = Settings::default();
@@ -60,10 +60,8 @@ fn a_coarse_encoder_has_a_best_delta_and_a_fine_one_does_not() {
 #[test]
 fn a_lower_torque_limit_makes_fast_sampling_cost_more() {
     let limits = [105.0, 120.0, 150.0, 200.0, 0.0];
-    let excesses: Vec<f64> = limits
-        .iter()
-        .map(|l| excess(&study(&format!("encoder=1024&velocity=difference&torque_limit={l}"))))
-        .collect();
+    let excesses: Vec<f64> =
+        limits.iter().map(|l| excess(&study(&format!("encoder=1024&velocity=difference&torque_limit={l}")))).collect();
     // The limit rises left to right (0: none).
     let reversed: Vec<f64> = excesses.iter().rev().copied().collect();
     for w in reversed.windows(2) {
@@ -188,7 +186,11 @@ fn a_velocity_filter_takes_away_the_cost_of_sampling_fast_and_its_lag_costs_trac
 fn the_summary_says_where_the_columns_at_rest_point() {
     // The best δ is judged by the slew; the rest columns may disagree, and the sentence that says
     // so names the δ where each is least, read from the rows.
-    for query in ["encoder=1024&velocity=difference&torque_limit=150", "encoder=512&velocity=difference", "encoder=16384&velocity=difference"] {
+    for query in [
+        "encoder=1024&velocity=difference&torque_limit=150",
+        "encoder=512&velocity=difference",
+        "encoder=16384&velocity=difference",
+    ] {
         let v = study(query);
         let sentence = v.summary.iter().find(|s| s.starts_with("That δ is judged")).expect(query);
         let argmin = |f: &dyn Fn(&flexarm::control::sensor_sweep::SweepPoint) -> f64| {
@@ -228,20 +230,35 @@ fn the_status_says_what_limits_the_error_with_the_numbers_of_the_prediction() {
     let noise = format!("the angle noise σ = {} rad —", significant(1e-4, 2));
     for (query, source) in [
         ("encoder=1024&velocity=difference", "the 1024-count encoder through the velocities differenced"),
-        ("encoder=4096&velocity=difference&velocity_filter=0.002", "the 4096-count encoder through the velocities differenced over δ and filtered (τᵥ = 0.002 s)"),
+        (
+            "encoder=4096&velocity=difference&velocity_filter=0.002",
+            "the 4096-count encoder through the velocities differenced over δ and filtered (τᵥ = 0.002 s)",
+        ),
         ("noise=0.0001", noise.as_str()),
     ] {
         let (run, config) = status(query);
         let floor = noise_floor_of(&config).unwrap().unwrap();
         assert!(run.limits.contains(source), "{query}: {}", run.limits);
         // The same numbers as the prediction of the same settings (one source, scaled).
-        assert!(run.limits.contains(&format!("{} rad RMS", significant(floor.rms_error[0], 2))), "{query}: {}", run.limits);
-        assert!(run.limits.contains(&format!("{} N m RMS", significant(floor.rms_torque[0], 2))), "{query}: {}", run.limits);
+        assert!(
+            run.limits.contains(&format!("{} rad RMS", significant(floor.rms_error[0], 2))),
+            "{query}: {}",
+            run.limits
+        );
+        assert!(
+            run.limits.contains(&format!("{} N m RMS", significant(floor.rms_torque[0], 2))),
+            "{query}: {}",
+            run.limits
+        );
         // And the study's prediction line says the same numbers.
         let mut s = Settings::default();
         s.read(query, Source::CommandLine).unwrap();
         let view = Session::new(s).unwrap().sensor_study_step(0).unwrap();
-        assert!(view.prediction.contains(&format!("RMS e1 {} rad", significant(floor.rms_error[0], 2))), "{}", view.prediction);
+        assert!(
+            view.prediction.contains(&format!("RMS e1 {} rad", significant(floor.rms_error[0], 2))),
+            "{}",
+            view.prediction
+        );
     }
     // Exact angles, differenced: digital, but no error from the sensors.
     assert!(status("velocity=difference").0.limits.contains("reads exact angles"));
@@ -279,5 +296,8 @@ fn a_delta_unstable_by_rho_is_never_the_best_even_before_its_run_diverges() {
     let v = study("preset=real-encoder&arm=heavier");
     assert!(v.study.rows[0].unstable());
     let said = v.summary.join(" ");
-    assert!(said.contains("not the sensors' noise, rules δ out") && !said.contains("exists with these sensors"), "{said}");
+    assert!(
+        said.contains("not the sensors' noise, rules δ out") && !said.contains("exists with these sensors"),
+        "{said}"
+    );
 }

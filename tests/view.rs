@@ -191,17 +191,18 @@ const SIZES: [(f64, f64); 8] = [
 /// Every combination of the panel options (the arm and the errors on and off too, as an embed
 /// may ask), on each tab.
 fn all_options() -> impl Iterator<Item = LayoutOptions> {
-    (0..1536u16).map(|bits| LayoutOptions {
+    (0..3072u16).map(|bits| LayoutOptions {
         show_torque: bits & 1 != 0,
         show_poles: bits & 2 != 0,
         show_map: bits & 4 != 0,
         pair: bits & 8 != 0,
         z_plane: bits & 16 != 0,
         show_rho: bits & 32 != 0,
-        tab: Tab::ALL[((bits >> 6) & 3) as usize % 3],
+        tab: Tab::ALL[((bits >> 6) & 3) as usize % Tab::ALL.len()],
         show_arm: bits & 256 == 0,
         show_errors: bits & 512 == 0,
         show_velocity: bits & 1024 != 0,
+        show_study: bits & 2048 != 0,
     })
 }
 
@@ -249,6 +250,9 @@ fn panels_lie_inside_the_canvas_and_do_not_overlap() {
         if options.show_rho {
             want.push(PanelKind::RhoCurve);
         }
+        if options.show_study {
+            want.extend([PanelKind::StudyError, PanelKind::StudyTorque]);
+        }
         if options.show_map {
             want.extend([PanelKind::MapOff, PanelKind::MapOn]);
         }
@@ -256,6 +260,7 @@ fn panels_lie_inside_the_canvas_and_do_not_overlap() {
             Tab::Run => k.is_stage() || k.is_time_plot(),
             Tab::Poles => k.is_pole_plot() || k == PanelKind::RhoCurve,
             Tab::Maps => k.is_map(),
+            Tab::Study => k.is_study(),
         };
         let requested = want.clone();
         match layout.tab {

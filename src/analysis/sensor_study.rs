@@ -34,6 +34,64 @@ impl StudyRow {
     pub fn unstable(&self) -> bool {
         self.spectral_radius.is_some_and(|r| r >= 1.0)
     }
+
+    /// True where the run with the settings' sensors diverged.
+    pub fn diverged(&self) -> bool {
+        self.real.is_some_and(|p| p.diverged)
+    }
+
+    /// The study's quantities at this δ, each None until its run is in or where that run
+    /// diverged (its figures stop there and describe no slew and no rest): what the table
+    /// prints and the panels draw, from one place.
+    /// max |e1|, |e2| during the slew with the settings' sensors, rad.
+    pub fn slew_error(&self) -> Option<f64> {
+        simulated(self.real, tracking_error)
+    }
+
+    /// The same with perfect sensors and no torque limit, rad.
+    pub fn ideal_slew_error(&self) -> Option<f64> {
+        simulated(self.ideal, tracking_error)
+    }
+
+    /// RMS e at rest (the larger link's), rad.
+    pub fn rest_error(&self) -> Option<f64> {
+        simulated(self.real, |p| p.rms_error_rest[0].max(p.rms_error_rest[1]))
+    }
+
+    /// T1's RMS about its mean at rest, N m.
+    pub fn torque_noise(&self) -> Option<f64> {
+        simulated(self.real, |p| p.torque_fluctuation_rest[0])
+    }
+
+    /// The same with perfect sensors, N m.
+    pub fn ideal_torque_noise(&self) -> Option<f64> {
+        simulated(self.ideal, |p| p.torque_fluctuation_rest[0])
+    }
+
+    /// max |T1|, N m.
+    pub fn peak_torque(&self) -> Option<f64> {
+        simulated(self.real, |p| p.max_torque[0])
+    }
+
+    /// The share of the time either motor sat at its limit, 0 … 1.
+    pub fn saturated(&self) -> Option<f64> {
+        simulated(self.real, |p| p.saturated[0].max(p.saturated[1]))
+    }
+
+    /// The linear prediction's RMS error (the larger link's), rad.
+    pub fn predicted_error(&self) -> Option<f64> {
+        self.predicted.map(|f| f.rms_error[0].max(f.rms_error[1]))
+    }
+
+    /// The linear prediction's RMS of T1, N m.
+    pub fn predicted_torque(&self) -> Option<f64> {
+        self.predicted.map(|f| f.rms_torque[0])
+    }
+}
+
+/// A run's figure, None until the run is in or where it diverged.
+fn simulated(p: Option<SweepPoint>, f: fn(&SweepPoint) -> f64) -> Option<f64> {
+    p.filter(|p| !p.diverged).map(|p| f(&p)).filter(|v| v.is_finite())
 }
 
 /// What the linear analysis says at one δ of the study: computed once per study.

@@ -8,8 +8,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::{finite, positive, ConfigError};
 use super::sensing::SensorModel;
+use crate::error::{finite, positive, ConfigError};
 use crate::model::params::{PlantParameters, SlewParameters};
 use crate::schema;
 

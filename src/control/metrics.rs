@@ -270,14 +270,7 @@ pub(crate) struct ErrorStats {
 impl ErrorStats {
     /// Records the errors `e` and the applied `torque` at `t` (every plant step); `limit` is the
     /// motors' torque limit, if any.
-    pub(crate) fn record(
-        &mut self,
-        t: f64,
-        e: &Vector2<f64>,
-        torque: &Vector2<f64>,
-        moving: bool,
-        limit: Option<f64>,
-    ) {
+    pub(crate) fn record(&mut self, t: f64, e: &Vector2<f64>, torque: &Vector2<f64>, moving: bool, limit: Option<f64>) {
         for i in 0..2 {
             let a = e[i].abs();
             let slot = if moving { &mut self.max_slew[i] } else { &mut self.max_after[i] };

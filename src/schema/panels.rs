@@ -27,6 +27,11 @@ pub enum PanelKind {
     ZPlane,
     /// ρ over δ at the current α, with the stable windows.
     RhoCurve,
+    /// The sensor study (issue 36): the slew's error and the error at rest against δ, with the
+    /// settings' sensors and with perfect ones, and the linear prediction.
+    StudyError,
+    /// The sensor study: T1's noise at rest and its peak against δ, with the torque limit.
+    StudyTorque,
     /// ρ over (δ, α) without preliminary feedback.
     MapOff,
     /// ρ over (δ, α) with preliminary feedback.
@@ -34,7 +39,7 @@ pub enum PanelKind {
 }
 
 impl PanelKind {
-    pub const ALL: [PanelKind; 11] = [
+    pub const ALL: [PanelKind; 13] = [
         PanelKind::Arm,
         PanelKind::ArmB,
         PanelKind::Error1,
@@ -44,6 +49,8 @@ impl PanelKind {
         PanelKind::Poles,
         PanelKind::ZPlane,
         PanelKind::RhoCurve,
+        PanelKind::StudyError,
+        PanelKind::StudyTorque,
         PanelKind::MapOff,
         PanelKind::MapOn,
     ];
@@ -65,6 +72,8 @@ impl PanelKind {
             PanelKind::Poles => "poles",
             PanelKind::ZPlane => "z-plane",
             PanelKind::RhoCurve => "rho-curve",
+            PanelKind::StudyError => "study-error",
+            PanelKind::StudyTorque => "study-torque",
             PanelKind::MapOff => "map-off",
             PanelKind::MapOn => "map-on",
         }
@@ -87,6 +96,8 @@ impl PanelKind {
             PanelKind::Poles => "the pole plot",
             PanelKind::ZPlane => "the z-plane",
             PanelKind::RhoCurve => "ρ(δ)",
+            PanelKind::StudyError => "the error against δ",
+            PanelKind::StudyTorque => "T1 against δ",
             PanelKind::MapOff => "the map without K_pr",
             PanelKind::MapOn => "the map with K_pr",
         }
@@ -111,8 +122,19 @@ impl PanelKind {
     pub fn is_analysis(self) -> bool {
         matches!(
             self,
-            PanelKind::Poles | PanelKind::ZPlane | PanelKind::RhoCurve | PanelKind::MapOff | PanelKind::MapOn
+            PanelKind::Poles
+                | PanelKind::ZPlane
+                | PanelKind::RhoCurve
+                | PanelKind::StudyError
+                | PanelKind::StudyTorque
+                | PanelKind::MapOff
+                | PanelKind::MapOn
         )
+    }
+
+    /// True for the sensor study's two panels.
+    pub fn is_study(self) -> bool {
+        matches!(self, PanelKind::StudyError | PanelKind::StudyTorque)
     }
 
     /// True for the two pictures of the loop's eigenvalues.
@@ -126,6 +148,8 @@ impl PanelKind {
             Tab::Run
         } else if self.is_map() {
             Tab::Maps
+        } else if self.is_study() {
+            Tab::Study
         } else {
             Tab::Poles
         }
@@ -143,10 +167,12 @@ pub enum Tab {
     Poles,
     /// The two stability maps.
     Maps,
+    /// The sensor study's error and torque against δ.
+    Study,
 }
 
 impl Tab {
-    pub const ALL: [Tab; 3] = [Tab::Run, Tab::Poles, Tab::Maps];
+    pub const ALL: [Tab; 4] = [Tab::Run, Tab::Poles, Tab::Study, Tab::Maps];
 
     /// The word in the state string (`tab=poles`).
     pub const fn id(self) -> &'static str {
@@ -154,6 +180,7 @@ impl Tab {
             Tab::Run => "run",
             Tab::Poles => "poles",
             Tab::Maps => "maps",
+            Tab::Study => "study",
         }
     }
 
@@ -163,6 +190,7 @@ impl Tab {
             Tab::Run => "Arm and errors",
             Tab::Poles => "Poles and ρ(δ)",
             Tab::Maps => "Stability maps",
+            Tab::Study => "Error against δ",
         }
     }
 

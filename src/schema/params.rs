@@ -562,6 +562,7 @@ pub const PARAMS: &[&Param] = &[
     &super::TORQUE,
     &super::LOG,
     &super::MEASURED,
+    &super::STUDY,
     &super::PREDICT,
     &super::SWING,
     &super::ANSWERS,

@@ -126,13 +126,7 @@ pub const TORQUE_LIMIT: Param = Param {
     symbol: "T_max",
     unit: "N m",
     name: "torque limit (torque_limit)",
-    kind: Kind::Number(from_zero(
-        1e6,
-        [10.0, 1000.0],
-        Scale::Log,
-        false,
-        "must be from 0 (no limit) to 1e6 N m",
-    )),
+    kind: Kind::Number(from_zero(1e6, [10.0, 1000.0], Scale::Log, false, "must be from 0 (no limit) to 1e6 N m")),
     scope: Scope::Run,
     help: "The motors deliver at most this torque; beyond it they saturate (0: unlimited, the paper's \
            assumption). On the paper's arm the slew itself needs about 97 N m on T1; another arm needs its own.",

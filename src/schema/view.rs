@@ -34,12 +34,14 @@ pub const TAB: Param = Param {
         options: &[
             Choice { value: Tab::Run.id(), label: Tab::Run.label() },
             Choice { value: Tab::Poles.id(), label: Tab::Poles.label() },
+            Choice { value: Tab::Study.id(), label: Tab::Study.label() },
             Choice { value: Tab::Maps.id(), label: Tab::Maps.label() },
         ],
         default: "run",
     },
     scope: Scope::Page,
-    help: "A phone shows one view at a time: the arm and its errors, the poles and ρ(δ), or the stability maps.",
+    help: "A phone shows one view at a time: the arm and its errors, the poles and ρ(δ), the error against δ \
+           (with a real robot's sensors and the study drawn), or the stability maps.",
 };
 
 /// The page embedded in another (an iframe in a course page): the canvas and a strip of controls.
@@ -156,6 +158,18 @@ pub const MEASURED: Param = switch(
      period, filtered if τ_v > 0, held: a count over δ is its noise), clipped to the true velocity's scale; with \
      the sensors off the controller reads the true state and there is nothing to compare. The CSV always has the \
      measured errors and the velocity estimates (e1_meas … theta_dot_est).",
+);
+
+/// What bounds δ from below with these sensors (issue 36), drawn: the study's curves over δ
+/// beside ρ(δ).
+pub const STUDY: Param = switch(
+    "study",
+    "Draw the error and T1's noise against δ, with these sensors and with perfect ones",
+    false,
+    "Two panels beside ρ(δ) (with a real robot's sensors on): over the same δ axis, the slew's largest error and \
+     the error at rest, and T1's noise at rest, its peak and the torque limit — each simulated with the sensors \
+     (solid) and with perfect ones (grey), and the linear prediction of the noise (dotted). The best δ is ringed; \
+     a δ where ρ ≥ 1 is crossed out. The study simulates the slew at 11 δ, a few at a time.",
 );
 
 /// The paper's Fig. 2.1 at one sampling instant: the time plots zoomed on it.

@@ -20,6 +20,7 @@ fn panel_of(key: &str, view: &ViewSettings) -> Option<PanelKind> {
         "log" => (v.log, PanelKind::Error1),
         "predict" => (v.predict, PanelKind::Error1),
         "swing" => (v.swing, PanelKind::Arm),
+        "study" => (v.study, PanelKind::StudyError),
         // An embed's list: its first analysis panel.
         "views" => return panel_of("poles", view).or_else(|| panel_of("rho", view)).or_else(|| panel_of("map", view)),
         _ => return None,
@@ -63,6 +64,7 @@ pub fn tab_has_panels(tab: Tab, view: &ViewSettings) -> bool {
     match tab {
         Tab::Poles => v.poles || v.rho,
         Tab::Maps => v.map,
+        Tab::Study => v.study,
         Tab::Run => true,
     }
 }

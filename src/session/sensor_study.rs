@@ -19,6 +19,22 @@ fn study_key(config: &SimulationConfig) -> SimulationConfig {
 }
 
 impl Session {
+    /// True if the figure draws the study (the `study` switch, with run A's sensors digital): the
+    /// page then runs it whether or not its section is open.
+    pub fn study_drawn(&self) -> bool {
+        self.drawn_view().study && self.settings.a.config().sensors.is_digital()
+    }
+
+    /// The study's generation (it moves with every start and every run done) and, if it is run
+    /// A's current one, its facts so far: what the figure draws. None before it starts or after
+    /// run A's settings other than δ changed (until the next step starts it over).
+    pub fn study_facts(&self) -> (u64, Option<SensorStudy>) {
+        let job = &self.sensor_study;
+        let current = job.key == Some(study_key(&self.settings.a.config()));
+        let facts = job.sweep.as_ref().filter(|_| current).map(|sweep| SensorStudy::of(sweep, &job.linear));
+        (job.generation, facts)
+    }
+
     /// Advances the study of run A's sensors by up to `runs` simulated slews (0: only report),
     /// starting it over if run A's settings other than δ changed; returns where it stands.
     pub fn sensor_study_step(&mut self, runs: usize) -> Result<SensorStudyView, Error> {
@@ -29,12 +45,14 @@ impl Session {
             job.sweep = Some(SensorSweep::new(key, &STUDY_DELTAS)?);
             job.linear = SensorStudy::linear(&key, &STUDY_DELTAS);
             job.key = Some(key);
+            job.generation += 1;
         }
         let sweep = job.sweep.as_mut().ok_or(Error::Analysis("no study"))?;
         for _ in 0..runs {
             if !sweep.step()? {
                 break;
             }
+            job.generation += 1;
         }
         let study = SensorStudy::of(sweep, &job.linear);
         let delta = config.controller.sampling_period;

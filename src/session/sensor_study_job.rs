@@ -12,6 +12,9 @@ pub struct StudyJob {
     pub(super) sweep: Option<SensorSweep>,
     /// ρ and the linear prediction at each δ studied, computed with the sweep.
     pub(super) linear: Vec<LinearRow>,
+    /// Counts the study's changes (a start, each run done): the figure copies the facts only
+    /// when this moved.
+    pub(super) generation: u64,
 }
 
 /// The study as the page shows it: facts, and the words and table rendered from them.
@@ -39,4 +42,3 @@ pub struct SensorStudyView {
     pub prediction: String,
     pub done: bool,
 }
-

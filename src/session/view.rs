@@ -28,6 +28,8 @@ pub struct ViewSettings {
     pub log: bool,
     /// The errors as the controller read them, beside the true ones.
     pub measured: bool,
+    /// The sensor study's curves over δ beside ρ(δ).
+    pub study: bool,
     /// The time plots zoomed on one sampling instant (Fig. 2.1).
     pub predict: bool,
     /// The flexible pair's shape animated on the arm.
@@ -51,7 +53,7 @@ pub struct ViewSettings {
 }
 
 /// The view parameters, in the order the state string writes them.
-pub(super) const VIEW_PARAMS: [&Param; 22] = [
+pub(super) const VIEW_PARAMS: [&Param; 23] = [
     &schema::MODE,
     &schema::EMBED,
     &schema::WINDOW,
@@ -66,6 +68,7 @@ pub(super) const VIEW_PARAMS: [&Param; 22] = [
     &schema::TORQUE,
     &schema::LOG,
     &schema::MEASURED,
+    &schema::STUDY,
     &schema::PREDICT,
     &schema::SWING,
     &schema::ANSWERS,
@@ -91,6 +94,7 @@ impl Default for ViewSettings {
             torque: false,
             log: false,
             measured: false,
+            study: false,
             predict: false,
             swing: false,
             tab: Tab::Run,
@@ -127,6 +131,7 @@ impl ViewSettings {
             "torque" => Value::Switch(self.torque),
             "log" => Value::Switch(self.log),
             "measured" => Value::Switch(self.measured),
+            "study" => Value::Switch(self.study),
             "predict" => Value::Switch(self.predict),
             "swing" => Value::Switch(self.swing),
             "answers" => Value::Choice(if self.answers_hidden { "hidden" } else { "shown" }),
@@ -156,6 +161,7 @@ impl ViewSettings {
             ("torque", Value::Switch(b)) => self.torque = b,
             ("log", Value::Switch(b)) => self.log = b,
             ("measured", Value::Switch(b)) => self.measured = b,
+            ("study", Value::Switch(b)) => self.study = b,
             ("predict", Value::Switch(b)) => self.predict = b,
             ("swing", Value::Switch(b)) => self.swing = b,
             ("answers", Value::Choice(a)) => self.answers_hidden = a == "hidden",
@@ -224,6 +230,7 @@ impl ViewSettings {
                 rho: false,
                 map: false,
                 torque: false,
+                study: false,
                 predict: false,
                 swing: false,
                 ..*self

@@ -44,6 +44,8 @@ pub struct ViewOptions {
     pub log_errors: bool,
     /// The error plots add the errors as the controller read them (with the sensors on).
     pub show_measured: bool,
+    /// The sensor study's curves over δ beside ρ(δ) (with the sensors on).
+    pub show_study: bool,
     /// The time plots zoomed on one sampling instant: the prediction of Fig. 2.1.
     pub show_cycle: bool,
     /// The flexible pair's mode animated on the arm.
@@ -76,6 +78,7 @@ impl Default for ViewOptions {
             measure: Measure::Rho,
             log_errors: false,
             show_measured: false,
+            show_study: false,
             show_cycle: false,
             show_swing: false,
             tab: Tab::Run,
@@ -164,13 +167,15 @@ impl ViewOptions {
     }
 
     /// The panels these options ask for; `digital`: run A's controller reads sensors (the
-    /// `measured` switch then adds the velocity panel, except zoomed on one instant).
+    /// `measured` switch then adds the velocity panel, except zoomed on one instant; the `study`
+    /// switch the study's two panels).
     pub(crate) fn layout_options(&self, pair: bool, digital: bool) -> LayoutOptions {
         LayoutOptions {
             show_arm: self.show_arm,
             show_errors: self.show_errors,
             show_torque: self.show_torque || (self.show_cycle && !self.exact_panels),
             show_velocity: self.show_measured && digital && !self.show_cycle,
+            show_study: self.show_study && digital,
             show_poles: self.show_poles,
             z_plane: self.z_plane,
             show_rho: self.show_rho,

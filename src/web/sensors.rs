@@ -15,4 +15,11 @@ impl WebSession {
         let view = self.session_mut().sensor_study_step(runs as usize).map_err(js_error)?;
         to_js(&view)
     }
+
+    /// True if the figure draws the study (the `study` switch with digital sensors): the page then
+    /// runs it whether or not its section is open.
+    #[wasm_bindgen(js_name = studyDrawn)]
+    pub fn study_drawn(&self) -> bool {
+        self.session().study_drawn()
+    }
 }

@@ -77,7 +77,10 @@ pub fn spoken(kind: PanelKind, rate: bool) -> Option<&'static str> {
         PanelKind::RhoCurve => "ρ along δ",
         PanelKind::MapOff if rate => "the stability maps coloured by ln ρ/δ",
         PanelKind::MapOff => "the stability maps ρ(δ, α)",
-        PanelKind::ArmB | PanelKind::Error2 | PanelKind::MapOn => return None,
+        PanelKind::StudyError => {
+            "the tracking error and T1's noise against δ, with these sensors and with perfect ones"
+        }
+        PanelKind::ArmB | PanelKind::Error2 | PanelKind::StudyTorque | PanelKind::MapOn => return None,
     })
 }
 

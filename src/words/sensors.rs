@@ -52,22 +52,32 @@ pub fn study_table(study: &SensorStudy, sensors: &SensorModel) -> Vec<Vec<String
     header.push("predicted T1 noise [N m]".to_string());
     let mut table = vec![header];
     for r in &study.rows {
-        let sim = |f: &dyn Fn(&crate::control::sensor_sweep::SweepPoint) -> String, p: Option<_>| {
-            p.as_ref().map_or("…".to_string(), f)
+        // A cell: "…" until the run is in, "—" where it diverged (the slew's columns say so).
+        let cell = |v: Option<f64>, digits: usize| match v {
+            Some(v) => significant(v, digits),
+            None if r.real.is_none() => "…".to_string(),
+            None => "—".to_string(),
         };
+        let slew = |v: Option<f64>, ran: bool, diverged: bool| match v {
+            Some(v) => significant(v, 2),
+            None if diverged => "diverged".to_string(),
+            None if ran => "—".to_string(),
+            None => "…".to_string(),
+        };
+        let ideal_diverged = r.ideal.is_some_and(|p| p.diverged);
         let mut row = vec![
             number(r.sampling_period),
             r.spectral_radius.map_or("—".to_string(), crate::words::numbers::rho),
-            sim(&|p| error_cell(tracking_error(p)), r.real),
-            sim(&|p| error_cell(tracking_error(p)), r.ideal),
-            sim(&|p| significant(p.rms_error_rest[0].max(p.rms_error_rest[1]), 2), r.real),
-            sim(&|p| significant(p.torque_fluctuation_rest[0], 2), r.real),
-            sim(&|p| significant(p.max_torque[0], 3), r.real),
+            slew(r.slew_error(), r.real.is_some(), r.diverged()),
+            slew(r.ideal_slew_error(), r.ideal.is_some(), ideal_diverged),
+            cell(r.rest_error(), 2),
+            cell(r.torque_noise(), 2),
+            cell(r.peak_torque(), 3),
         ];
         if limited {
-            row.push(sim(&|p| percent(p.saturated[0].max(p.saturated[1])), r.real));
+            row.push(r.saturated().map_or_else(|| cell(None, 0), percent));
         }
-        row.push(r.predicted.map_or("—".to_string(), |f| significant(f.rms_torque[0], 2)));
+        row.push(r.predicted_torque().map_or("—".to_string(), |v| significant(v, 2)));
         table.push(row);
     }
     table
@@ -294,11 +304,7 @@ fn above_best(
     real: &dyn Fn(&StudyRow) -> f64,
     ideal: &dyn Fn(&StudyRow) -> f64,
 ) -> Option<String> {
-    let top = study
-        .rows
-        .iter()
-        .rev()
-        .find(|r| r.sampling_period > best.sampling_period && real(r).is_finite())?;
+    let top = study.rows.iter().rev().find(|r| r.sampling_period > best.sampling_period && real(r).is_finite())?;
     let (e, ei) = (real(top), ideal(top));
     let mut s = format!(
         "At δ = {} s the error is {} rad, and {} rad with perfect sensors",
@@ -309,10 +315,8 @@ fn above_best(
     if ei.is_finite() && ei > 0.3 * e {
         s += ": there the sampling itself sets it";
     }
-    let diverged = study
-        .rows
-        .iter()
-        .find(|r| r.sampling_period > top.sampling_period && r.real.is_some_and(|p| p.diverged));
+    let diverged =
+        study.rows.iter().find(|r| r.sampling_period > top.sampling_period && r.real.is_some_and(|p| p.diverged));
     if let Some(d) = diverged {
         s += &format!("; from δ = {} s the run with these sensors diverges", number(d.sampling_period));
     }

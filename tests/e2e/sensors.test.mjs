@@ -148,3 +148,39 @@ test('a real robot: the measured errors and the torque limit in the figure', { t
     await shot.close();
   }
 });
+
+test('a real robot: the study drawn against δ beside ρ(δ), filled with its section closed; a click runs the arm at a δ', { timeout: 180000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, `${REAL}&study=1`, SIZES.large);
+  // The section stays closed: the figure asks for the study, and the page runs it for the figure.
+  assert.equal(await page.evaluate(() => /** @type {HTMLDetailsElement} */ (document.getElementById('sensors-details')).open), false);
+  const panel = (/** @type {string} */ id) => page.evaluate((i) => window.flexarm.lastLayout?.panels?.find((/** @type {{id: string}} */ p) => p.id === i) ?? null, id);
+  await page.waitForFunction(() => ['study-error', 'study-torque'].every((id) => window.flexarm.lastLayout?.panels?.some((/** @type {{id: string}} */ p) => p.id === id)), null, { timeout: 20000 });
+  await page.waitForFunction(() => window.flexarm.lastLayout?.panels?.find((/** @type {{id: string}} */ p) => p.id === 'study-error')?.note === 'the error against δ', null, { timeout: 90000, polling: 200 });
+  const since = await page.evaluate(() => performance.now());
+  console.log(`# the study against δ drawn complete within ${since.toFixed(0)} ms of the navigation, the page's load included (11 δ × 2 slews of 3 s; polled every 200 ms)`);
+  const error = await panel('study-error');
+  assert.equal(error.x_scale, 'log');
+  assert.equal(error.y_scale, 'log');
+  assert.match(error.x_label, /δ \[s\]/);
+  assert.match(error.y_label, /rad/);
+  assert.match((await panel('study-torque')).y_label, /N m/);
+  const key = await page.evaluate(() => document.getElementById('figure-key')?.textContent ?? '');
+  for (const needle of ['max |e| during the slew, these sensors', 'perfect sensors', 'the best δ', 'torque limit']) assert.ok(key.includes(needle), needle);
+  // A click over δ = 0.02 s on the error panel runs the arm at the row's δ.
+  const canvas = await page.locator('#canvas').boundingBox();
+  const [lo, hi] = error.x_range;
+  const x = canvas.x + error.x + error.width * Math.log(0.02 / lo) / Math.log(hi / lo);
+  await page.mouse.click(x, canvas.y + error.y + error.height / 2);
+  await page.waitForFunction(() => new URL(location.href).searchParams.get('delta') === '0.02', null, { timeout: 10000 });
+  assert.deepEqual(problems, []);
+  await close();
+
+  for (const [name, size] of Object.entries(SIZES)) {
+    const shot = await openPage(env.browser, env.server.base, `${REAL}&study=1${name === 'phone' ? '&tab=study' : ''}`, size);
+    await shot.page.waitForFunction(() => window.flexarm.lastLayout?.panels?.find((/** @type {{id: string}} */ p) => p.id === 'study-error')?.note === 'the error against δ', null, { timeout: 90000, polling: 200 });
+    await shot.page.waitForTimeout(500);
+    await shot.page.screenshot({ path: path.join(shots, `sensors-study-${name}.png`) });
+    assert.deepEqual(shot.problems, [], name);
+    await shot.close();
+  }
+});

@@ -201,6 +201,11 @@ export class Page {
     return this.#session.sensorStudy(runs);
   }
 
+  /** True if the figure draws the sensor study (the page then runs it). @returns {boolean} */
+  studyDrawn() {
+    return this.#session.studyDrawn();
+  }
+
   /**
    * The controller's time per sample in this browser, against run A's δ (Rust's words).
    * @returns {{ secondsPerSample: number, samplingPeriod: number, share: number, text: string }}

@@ -84,6 +84,8 @@ async function main() {
     study: (runs) => guard('Sensor study', () => session.sensorStudy(runs), null),
     processor: () => guard('Controller time', () => session.controllerTime().text, null),
     setDelta: (delta) => change(() => session.set('delta', String(delta))),
+    drawn: () => guard('Sensor study', () => session.studyDrawn(), false) ?? false,
+    touch,
   });
   wireOutputs({ session, guard });
   const canvas = /** @type {HTMLCanvasElement} */ (byId('canvas'));

@@ -55,7 +55,7 @@ export function createPointer(on) {
     on.showTip(probe);
     canvas.classList.toggle('over-pole', probe.kind === 'pole');
     canvas.classList.toggle('over-handle', last !== null && on.onHandle(last.x, last.y, REACH.mouse));
-    canvas.classList.toggle('over-map', probe.kind === 'map' || probe.kind === 'rho');
+    canvas.classList.toggle('over-map', probe.kind === 'map' || picksDelta(probe));
   }
 
   /** The z-plane's gestures: one pointer drags the plane, two pinch it; true if the event was one.
@@ -132,8 +132,8 @@ export function createPointer(on) {
     // Dragging on ρ(δ) picks δ, and on a map (δ, α), as the pointer moves.
     if (ev.type === 'pointermove' && ev.buttons === 1) {
       const drag = on.probe(x, y, 0);
-      if (drag && (drag.kind === 'rho' || drag.kind === 'map')) {
-        if (drag.kind === 'rho') on.pickDelta(drag.delta);
+      if (drag && (picksDelta(drag) || drag.kind === 'map')) {
+        if (picksDelta(drag)) on.pickDelta(drag.delta);
         else on.pick(drag.map, drag.delta, drag.alpha);
         show(on.probe(x, y, 0) ?? drag);
         return;
@@ -153,7 +153,7 @@ export function createPointer(on) {
   function onClick(ev) {
     const { x, y } = at(ev);
     const probe = on.probe(x, y, 0);
-    if (!probe || (probe.kind !== 'map' && probe.kind !== 'rho')) return;
+    if (!probe || (probe.kind !== 'map' && !picksDelta(probe))) return;
     if (probe.kind === 'map') on.pick(probe.map, probe.delta, probe.alpha);
     else on.pickDelta(probe.delta);
     const mouse = !ev.pointerType || ev.pointerType === 'mouse';
@@ -206,4 +206,10 @@ export function createPointer(on) {
     if (pinned && ev.target !== canvas && !(ev.target instanceof Element && ev.target.closest('.panel-focus'))) hide();
   });
   return { hide, attach, last: () => last };
+}
+
+/** True for a readout over δ alone (ρ(δ), the sensor study's panels): a click or a drag runs at its δ.
+ * @param {{ kind: string }} probe */
+function picksDelta(probe) {
+  return probe.kind === 'rho' || probe.kind === 'study';
 }

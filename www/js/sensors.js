@@ -14,7 +14,7 @@ const BUDGET_MS = 40;
 
 /**
  * @param {{ study: (runs: number) => SensorStudy | null, processor: () => string | null,
- *   setDelta: (delta: number) => void }} on
+ *   setDelta: (delta: number) => void, drawn: () => boolean, touch: () => void }} on
  */
 export function createSensors(on) {
   const details = /** @type {HTMLDetailsElement} */ (byId('sensors-details'));
@@ -80,8 +80,10 @@ export function createSensors(on) {
 
   function tick() {
     scheduled = false;
-    if (!details.open) return;
-    if (retime) {
+    // The study runs while its section is open or the figure draws it (Rust says which).
+    const drawn = on.drawn();
+    if (!details.open && !drawn) return;
+    if (retime && details.open) {
       retime = false;
       setText(processor, on.processor() ?? '');
     }
@@ -91,6 +93,7 @@ export function createSensors(on) {
     while (s && !s.done && performance.now() - start < BUDGET_MS) s = on.study(1);
     if (!s) return;
     render(s);
+    if (drawn) on.touch();
     if (!s.done) schedule();
   }
 
@@ -108,7 +111,7 @@ export function createSensors(on) {
     /** The settings changed: the study (if shown) starts over, the summary follows. */
     changed() {
       retime = true;
-      const s = details.open ? null : on.study(0);
+      const s = details.open || on.drawn() ? null : on.study(0);
       if (s) setText(summary, s.sensors);
       schedule();
     },

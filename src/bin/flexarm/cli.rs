@@ -212,11 +212,9 @@ pub fn read_settings_of(m: &ArgMatches, keys: &[&str], uses_page_keys: bool) -> 
     if let Some(id) = m.get_one::<String>("arm") {
         settings.set_arm(id).map_err(lib_error)?;
     }
-    for p in
-        schema::PARAMS.iter().filter(|p| {
-            keys.contains(&p.key) || schema::is_arm(p.key) || schema::is_sensor(p.key) || p.key == schema::MODEL.key
-        })
-    {
+    for p in schema::PARAMS.iter().filter(|p| {
+        keys.contains(&p.key) || schema::is_arm(p.key) || schema::is_sensor(p.key) || p.key == schema::MODEL.key
+    }) {
         let text = match p.kind {
             Kind::Switch { .. } => m.get_flag(p.key).then(|| "1".to_string()),
             _ => m.get_one::<String>(p.key).cloned(),

@@ -201,7 +201,8 @@ fn simulation_text(c: &SimulationConfig, duration: f64, m: &Metrics, linear: &Li
     s += &format!("  max |T1|, |T2|              {:.3}, {:.3} N m\n", m.max_torque[0], m.max_torque[1]);
     if c.sensors != flexarm::control::sensing::SensorModel::default() {
         s += &format!("  RMS e1, e2 at rest          {}\n", pair(m.rms_error_rest, "rad"));
-        s += &format!("  T1, T2 fluctuation at rest  {} (standard deviation)\n", pair(m.torque_fluctuation_rest, "N m"));
+        s +=
+            &format!("  T1, T2 fluctuation at rest  {} (standard deviation)\n", pair(m.torque_fluctuation_rest, "N m"));
         if c.sensors.limit().is_some() {
             s += &format!(
                 "  time at the torque limit    {:.1} %, {:.1} % (T1, T2)\n",

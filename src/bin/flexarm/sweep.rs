@@ -146,7 +146,8 @@ pub fn run(m: &ArgMatches) -> Res<String> {
                 let report = analysis::analyze(&c, Some(q2)).map_err(lib_error)?;
                 let judgement = in_words(&judge(&m, Some(&report), None, &c, m.error));
                 let verdict = judgement.verdict;
-                let linear = Linear { rho: Some(rho), q2, describes: analysis::describes(&c), judgement, processor: None };
+                let linear =
+                    Linear { rho: Some(rho), q2, describes: analysis::describes(&c), judgement, processor: None };
                 row["simulation"] = simulation_json(&point, &c, duration, &m, &linear);
                 let [s1, s2] = m.max_error_slew;
                 let [a1, a2] = m.max_error_after;

@@ -63,10 +63,13 @@ pub enum FigurePanel {
     MapOn,
     /// Both maps side by side.
     Maps,
+    /// The sensor study's two panels side by side: the error and T1 against δ (the `study`
+    /// switch with digital sensors).
+    Study,
 }
 
 impl FigurePanel {
-    pub const ALL: [FigurePanel; 13] = [
+    pub const ALL: [FigurePanel; 14] = [
         FigurePanel::Arm,
         FigurePanel::ArmB,
         FigurePanel::Errors,
@@ -80,6 +83,7 @@ impl FigurePanel {
         FigurePanel::MapOff,
         FigurePanel::MapOn,
         FigurePanel::Maps,
+        FigurePanel::Study,
     ];
 
     /// The name in `flexarm figure --panel NAME`, the page's choice and the file's name.
@@ -98,6 +102,7 @@ impl FigurePanel {
             FigurePanel::MapOff => "map-off",
             FigurePanel::MapOn => "map-on",
             FigurePanel::Maps => "maps",
+            FigurePanel::Study => "study",
         }
     }
 
@@ -137,6 +142,7 @@ impl FigurePanel {
             FigurePanel::MapOff => &[PanelKind::MapOff],
             FigurePanel::MapOn => &[PanelKind::MapOn],
             FigurePanel::Maps => &[PanelKind::MapOff, PanelKind::MapOn],
+            FigurePanel::Study => &[PanelKind::StudyError, PanelKind::StudyTorque],
         }
     }
 
@@ -191,6 +197,9 @@ pub fn figure_choices(session: &Session) -> Vec<FigureChoice> {
     if v.rho {
         add(FigurePanel::Rho, format!("{} along δ", v.measure.symbol()));
     }
+    if session.study_drawn() {
+        add(FigurePanel::Study, "Error and T1 against δ".into());
+    }
     if v.map {
         add(FigurePanel::MapOff, "Map without Kₚᵣ".into());
         add(FigurePanel::MapOn, "Map with Kₚᵣ".into());
@@ -227,6 +236,12 @@ pub fn figure_svg_captioned(session: &Session, state: &str, panel: &str, dark: b
         return Err(Error::NotReady(
             "the velocity is drawn with 'What the controller reads' on and a digital controller (an encoder, noise \
              or differenced velocities)",
+        ));
+    }
+    if panel == FigurePanel::Study && !session.study_drawn() {
+        return Err(Error::NotReady(
+            "the study against δ is drawn with 'Draw the error and T1's noise against δ' on and a digital controller \
+             (an encoder, noise or differenced velocities)",
         ));
     }
     if panel.is_map() && !MapSide::BOTH.iter().all(|&s| session.maps().shown(s).is_some_and(|e| e.is_done())) {

@@ -36,6 +36,9 @@ pub struct LayoutOptions {
     /// Adds link 1's velocity, true and as estimated, below them (the `measured` switch with
     /// digital sensors).
     pub show_velocity: bool,
+    /// Adds the sensor study's two panels (error, torque against δ) after ρ(δ) (the `study`
+    /// switch with digital sensors).
+    pub show_study: bool,
     /// Adds the pole plot to the analysis row.
     pub show_poles: bool,
     /// The pole plot shows λ in the z-plane instead of s = ln λ / δ.
@@ -59,6 +62,7 @@ impl Default for LayoutOptions {
             show_errors: true,
             show_torque: false,
             show_velocity: false,
+            show_study: false,
             show_poles: true,
             z_plane: false,
             show_rho: true,
@@ -113,6 +117,9 @@ impl LayoutOptions {
         }
         if self.show_rho {
             analysis.push(PanelKind::RhoCurve);
+        }
+        if self.show_study {
+            analysis.extend([PanelKind::StudyError, PanelKind::StudyTorque]);
         }
         if self.show_map {
             analysis.extend([PanelKind::MapOff, PanelKind::MapOn]);

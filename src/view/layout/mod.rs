@@ -269,7 +269,11 @@ fn stacked(inner: Rect, stage: &[PanelKind], plots: &[PanelKind], analysis: &[Pa
         // a readable strip (at most down to a quarter of the canvas). Only with the velocity
         // panel, so that every other layout stays as it was.
         let needed = plots.len() as f64 * (margins::PLOT_TOP + margins::PLOT_BOTTOM + MIN_STACKED_PLOT)
-            + if analysis.is_empty() { 0.0 } else { MIN_PLOT_HEIGHT + margins::ANALYSIS_TOP + margins::ANALYSIS_BOTTOM };
+            + if analysis.is_empty() {
+                0.0
+            } else {
+                MIN_PLOT_HEIGHT + margins::ANALYSIS_TOP + margins::ANALYSIS_BOTTOM
+            };
         stage_h = stage_h.min((inner.h - margins::GAP - needed).round()).max((inner.h * 0.25).round());
     }
     stage_panels(Rect::new(inner.x, inner.y, inner.w, stage_h), stage, out);

@@ -11,6 +11,7 @@
 //! | [`pole_plot`] | the loop's eigenvalues as s = ln λ/δ, with A4 |
 //! | [`z_plane`] | the loop's eigenvalues λ against the unit circle |
 //! | [`rho_curve`] | ρ(δ) at this α, with the stable windows |
+//! | [`sensor_study`] | the error and T1 against δ with a real robot's sensors (issue 36) |
 //! | [`stability_maps`] | ρ over (δ, α) without and with the preliminary feedback |
 //!
 //! Architecture invariant: no panel imports another (`tests/architecture.rs`); what two share is
@@ -20,6 +21,7 @@ pub mod arm;
 pub mod contract;
 pub mod pole_plot;
 pub mod rho_curve;
+pub mod sensor_study;
 pub mod stability_maps;
 pub mod time_plots;
 pub mod z_plane;
@@ -34,6 +36,7 @@ use arm::Arm;
 use contract::{Frame, PanelView, Runs};
 use pole_plot::PolePlot;
 use rho_curve::RhoCurve;
+use sensor_study::StudyPanels;
 use stability_maps::StabilityMaps;
 use time_plots::TimePlots;
 use z_plane::ZPlane;
@@ -46,6 +49,7 @@ pub struct Panels {
     pub pole_plot: PolePlot,
     pub z_plane: ZPlane,
     pub rho_curve: RhoCurve,
+    pub study: StudyPanels,
     pub maps: StabilityMaps,
 }
 
@@ -74,6 +78,10 @@ macro_rules! dispatch {
                 let $p = &$panels.rho_curve;
                 $call
             }
+            PanelKind::StudyError | PanelKind::StudyTorque => {
+                let $p = &$panels.study;
+                $call
+            }
             PanelKind::MapOff | PanelKind::MapOn => {
                 let $p = &$panels.maps;
                 $call
@@ -83,8 +91,15 @@ macro_rules! dispatch {
 }
 
 /// One kind of each panel type, in the order their keys are listed.
-const ONE_OF_EACH: [PanelKind; 6] =
-    [PanelKind::Arm, PanelKind::Error1, PanelKind::Poles, PanelKind::ZPlane, PanelKind::RhoCurve, PanelKind::MapOff];
+const ONE_OF_EACH: [PanelKind; 7] = [
+    PanelKind::Arm,
+    PanelKind::Error1,
+    PanelKind::Poles,
+    PanelKind::ZPlane,
+    PanelKind::RhoCurve,
+    PanelKind::StudyError,
+    PanelKind::MapOff,
+];
 
 impl Panels {
     pub fn vertex_budget(&self, frame: &Frame, panel: &Panel) -> usize {
@@ -104,6 +119,7 @@ impl Panels {
             PanelKind::Poles => self.pole_plot.draw(frame, runs, panel, painter),
             PanelKind::ZPlane => self.z_plane.draw(frame, runs, panel, painter),
             PanelKind::RhoCurve => self.rho_curve.draw(frame, runs, panel, painter),
+            PanelKind::StudyError | PanelKind::StudyTorque => self.study.draw(frame, runs, panel, painter),
             PanelKind::MapOff | PanelKind::MapOn => self.maps.draw(frame, runs, panel, painter),
         }
     }

@@ -142,6 +142,7 @@ impl Scene {
             show_torque: v.torque,
             log_errors: v.log,
             show_measured: v.measured,
+            show_study: v.study,
             show_cycle: v.predict,
             show_swing: v.swing,
             tab: v.tab,
@@ -319,8 +320,9 @@ impl Scene {
         };
         if changed {
             self.info_generation += 1;
-            if self.frame.digital() != self.digital && self.frame.options.show_measured {
-                // The sensors turned digital or off: the velocity panel comes or goes.
+            let switched = self.frame.options.show_measured || self.frame.options.show_study;
+            if self.frame.digital() != self.digital && switched {
+                // The sensors turned digital or off: the velocity panel or the study's come or go.
                 self.relayout();
             }
         }

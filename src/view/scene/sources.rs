@@ -22,11 +22,25 @@ impl Scene {
         }
     }
 
+    /// Copies the session's sensor study when it moved (a start, a run done, another limit).
+    fn sync_study(&mut self, session: &Session) {
+        let (generation, study) = session.study_facts();
+        let limit = session.run(0).and_then(|a| a.closed_loop().config().sensors.limit());
+        if generation == self.panels.study.generation() && limit == self.panels.study.limit() {
+            return;
+        }
+        if self.panels.study.follow(generation, study.as_ref(), limit) {
+            self.rebuild_static();
+            self.info_generation += 1;
+        }
+    }
+
     /// Builds the frame for a session: run A, and run B beside it when comparing, with their
     /// analyses, and the session's maps (copied only when they have new rows).
     pub fn draw_session(&mut self, session: &Session) -> &[Vertex] {
         self.follow_view(&session.drawn_view());
         self.sync_maps(session);
+        self.sync_study(session);
         let a = session.run(0).expect("a session always has run A");
         self.frame.cursor = session.viewing();
         let sa = session.shown_snapshot(0).unwrap_or_else(|| a.closed_loop().snapshot());

@@ -145,7 +145,8 @@ pub fn draw_series_clamped(
     color: Color,
 ) -> bool {
     // The stroke's half width in the data's unit, so that its edges stay inside the frame.
-    let margin = (0.5 * width / frame.rect.h.max(1e-9) * (frame.y_hi - frame.y_lo)).min(0.5 * (frame.y_hi - frame.y_lo));
+    let margin =
+        (0.5 * width / frame.rect.h.max(1e-9) * (frame.y_hi - frame.y_lo)).min(0.5 * (frame.y_hi - frame.y_lo));
     series(painter, frame, times, values, width, color, Some([frame.y_lo + margin, frame.y_hi - margin]))
 }
 

@@ -15,7 +15,8 @@ pub mod zoom;
 
 use compare::{largest_error, wants_log, AUTO_LOG_KEY, AUTO_LOG_NOTE};
 use drawing::{
-    draw_background, draw_frame, draw_series, draw_series_clamped, draw_series_within, max_abs, vertex_budget, PlotFrame,
+    draw_background, draw_frame, draw_series, draw_series_clamped, draw_series_within, max_abs, vertex_budget,
+    PlotFrame,
 };
 use series::{
     plot_series, plot_tick_counts, plot_ticks, y_label, CURVE_WIDTH, CURVE_WIDTH_B, DASHED_LINE_BUDGET, LOG_DECADES,
