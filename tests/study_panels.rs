@@ -139,5 +139,5 @@ fn the_panels_read_out_what_the_table_prints_and_the_torque_noise_grows_as_delta
     }
     let perfect = common::session("mode=full&study=1");
     let refused = flexarm::view::figure::figure_svg(&perfect, "study", false).unwrap_err().to_string();
-    assert!(refused.contains("digital controller"), "{refused}");
+    assert!(refused.contains("a real robot's sensors"), "{refused}");
 }

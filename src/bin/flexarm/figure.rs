@@ -89,13 +89,10 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         };
         while session.maps_mut().work(&mut now, 1e9) {}
     }
-    // The study against δ: drawn whatever the switch says (the panel was asked for by name), run
-    // to its end (one simulated slew per δ, with the sensors and with perfect ones).
-    if panel == FigurePanel::Study {
-        session.set("study", "1").map_err(lib_error)?;
-        if session.study_drawn() {
-            while !session.sensor_study_step(1).map_err(lib_error)?.done {}
-        }
+    // The study against δ (asked for by name, whatever the page's switch says), run to its end:
+    // one simulated slew per δ with the sensors and one with perfect ones.
+    if panel == FigurePanel::Study && session.run(0).is_some_and(|r| r.closed_loop().config().sensors.is_digital()) {
+        while !session.sensor_study_step(1).map_err(lib_error)?.done {}
     }
     let figure = figure_svg(&session, panel.id(), m.get_flag("dark")).map_err(lib_error)?;
     match m.get_one::<String>("svg") {

@@ -238,10 +238,10 @@ pub fn figure_svg_captioned(session: &Session, state: &str, panel: &str, dark: b
              or differenced velocities)",
         ));
     }
-    if panel == FigurePanel::Study && !session.study_drawn() {
+    if panel == FigurePanel::Study && !session.run(0).is_some_and(|r| r.closed_loop().config().sensors.is_digital()) {
         return Err(Error::NotReady(
-            "the study against δ is drawn with 'Draw the error and T1's noise against δ' on and a digital controller \
-             (an encoder, noise or differenced velocities)",
+            "the study against δ needs a real robot's sensors: a digital controller (an encoder, noise or differenced \
+             velocities)",
         ));
     }
     if panel.is_map() && !MapSide::BOTH.iter().all(|&s| session.maps().shown(s).is_some_and(|e| e.is_done())) {

@@ -226,7 +226,8 @@ impl PanelView for StudyPanels {
     fn figure_title(&self, _frame: &Frame, kinds: &[PanelKind]) -> String {
         match kinds {
             [PanelKind::StudyTorque] => "T1's noise and peak against δ".into(),
-            _ => "The tracking error against δ".into(),
+            [PanelKind::StudyError] => "The tracking error against δ".into(),
+            _ => "The tracking error and T1 against δ, with these sensors and with perfect ones".into(),
         }
     }
 }
