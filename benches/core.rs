@@ -3,7 +3,8 @@
 //! `cargo bench --bench core` times one controller sample (k = 12 Newton-solved backward-Euler
 //! steps), the same from the middle of the slew as `flexarm simulate` times it (issue 36, "the
 //! processor": k = 12 and k = 4, as a share of δ = 10 ms and 2 ms), a 10-s closed-loop run at δ = 0.01 s (and as the page runs it), one spectral-radius evaluation, an arm change
-//! to ρ, A4 and the windows, and both maps after it, and prints medians over repeated batches. `cargo bench --bench core -- --python` also runs the
+//! to ρ, A4 and the windows, and both maps after it, a real robot's sensors in that run, the
+//! sensor study's prediction and the whole study (issue 36), and prints medians over repeated batches. `cargo bench --bench core -- --python` also runs the
 //! Python/NumPy/SciPy baseline of the same loop (bench/run_python.sh) and reports the ratio.
 
 use std::hint::black_box;
@@ -75,6 +76,33 @@ fn main() {
         sim.keep_sweep(true);
         sim.advance(10.0).unwrap();
         black_box(sim.snapshot());
+    });
+
+    // Issue 36: the sensor model's cost in a 10-s run (a 1024-count encoder, velocities
+    // differenced, seeded angle noise, a 150-N m limit: the controller digital) against the same
+    // run with the paper's perfect sensors, timed right after it; the study's linear
+    // prediction at its 11 δ (what a change of a sensor setting recomputes); the whole simulated
+    // study (11 δ × the slew with these sensors and with perfect ones).
+    let sensed = {
+        let mut c = config;
+        let mut s = flexarm::session::Settings::default();
+        s.read("encoder=1024&velocity=difference&noise=1e-5&torque_limit=150", flexarm::session::Source::CommandLine).unwrap();
+        c.sensors = s.a.config().sensors;
+        c
+    };
+    let (plain_med, _) = time_it(11, 3, || {
+        black_box(simulate(&config, 10.0).unwrap());
+    });
+    let (sensed_med, sensed_min) = time_it(11, 3, || {
+        black_box(simulate(&sensed, 10.0).unwrap());
+    });
+    let deltas = flexarm::analysis::sensor_study::STUDY_DELTAS;
+    let (linear_med, linear_min) = time_it(11, 3, || {
+        black_box(flexarm::analysis::sensor_study::SensorStudy::linear(&sensed, &deltas));
+    });
+    let (study_med, study_min) = time_it(5, 1, || {
+        let (mut s, _) = flexarm::session::Session::open("preset=real-encoder");
+        black_box(s.sensor_study_step(1000).unwrap());
     });
 
     let (rho_med, rho_min) = time_it(21, 200, || {
@@ -201,6 +229,23 @@ fn main() {
         history_med * 1e3,
         100.0 * (history_med / run_med - 1.0),
         history_min * 1e3
+    );
+    println!(
+        "| the same 10-s run with a real robot's sensors (1024 counts, differenced, noise, 150 N m) | {:.2} ms ({:+.1} % against {:.2} ms without, timed just before it; goal ≤ +10 %) | {:.2} ms |",
+        sensed_med * 1e3,
+        100.0 * (sensed_med / plain_med - 1.0),
+        plain_med * 1e3,
+        sensed_min * 1e3
+    );
+    println!(
+        "| the sensor study's linear prediction at its 11 δ (ρ and the noise floor of the 16-state loop; per change of a sensor setting) | {:.2} ms (goal ≤ 16 ms) | {:.2} ms |",
+        linear_med * 1e3,
+        linear_min * 1e3
+    );
+    println!(
+        "| the whole sensor study (11 δ × the slew with the sensors and with perfect ones, 3 s each) | {:.0} ms (the page's goal ≤ 2 s) | {:.0} ms |",
+        study_med * 1e3,
+        study_min * 1e3
     );
     println!(
         "| one spectral radius ρ (10×10 loop, k-step pencil sweep, expm, eig) | {:.1} µs | {:.1} µs |",

@@ -68,7 +68,7 @@ export function createStatus() {
   const embedVerdict = byId('embed-verdict');
   /** @param {Status} s @param {number} now */
   function render(s, now) {
-    setText(showing, s.showing);
+    setSymbols(showing, s.showing);
     // The phone's strip over the figure: the same verdict, in a line.
     if (strip.dataset.verdict !== s.runs[0].verdict) strip.dataset.verdict = s.runs[0].verdict;
     setText(byId('strip-word'), s.runs[0].headline);
