@@ -86,7 +86,8 @@ fn main() {
     let sensed = {
         let mut c = config;
         let mut s = flexarm::session::Settings::default();
-        s.read("encoder=1024&velocity=difference&noise=1e-5&torque_limit=150", flexarm::session::Source::CommandLine).unwrap();
+        s.read("encoder=1024&velocity=difference&noise=1e-5&torque_limit=150", flexarm::session::Source::CommandLine)
+            .unwrap();
         c.sensors = s.a.config().sensors;
         c
     };

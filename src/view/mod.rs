@@ -9,6 +9,7 @@
 //! | [`layout`] | [`Layout`]: where the panels go for a canvas size; [`LayoutOptions`]: which panels are asked for, and the notice of those not in view |
 //! | [`loop_poles`] | what the s-plane pole plot and the z-plane share: markers, their readouts |
 //! | [`rho_readout`] | ρ read out in a tooltip (ρ(δ) and the maps) |
+//! | [`delta_axis`] | the log δ axis and grid that ρ(δ) and the sensor study's panels share |
 //! | [`labels`] | where every text over the canvas goes (ticks, titles, notes), without overlaps |
 //! | [`legend`] | the key's groups and the maps' colour bar |
 //! | [`figure`] | every figure as SVG (the page's, `flexarm figure`, `simulate --svg`, `map --svg`): its panels laid out alone, drawn and written |
@@ -22,6 +23,7 @@
 //! Architecture invariant: `view` reads the session and draws; it computes no physics.
 
 pub mod autoscale;
+pub mod delta_axis;
 pub mod figure;
 pub mod labels;
 pub mod layout;

@@ -9,6 +9,7 @@ use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
 use crate::plot::color::Measure;
 use crate::plot::ticks::log_ticks;
 use crate::plot::{palette, Color, Ticks};
+use crate::view::delta_axis::DeltaAxis;
 use crate::view::painter::{Painter, Point};
 use crate::view::rect::Rect;
 
@@ -32,10 +33,14 @@ pub struct RhoFrame {
 }
 
 impl RhoFrame {
+    /// The δ axis, shared with the sensor study's panels.
+    pub fn axis(&self) -> DeltaAxis {
+        DeltaAxis { rect: self.rect, range: self.x_range }
+    }
+
     /// Horizontal pixel of δ (not clamped).
     pub fn x(&self, delta: f64) -> f64 {
-        let [a, b] = self.x_range;
-        self.rect.x + self.rect.w * (delta / a).ln() / (b / a).ln()
+        self.axis().x(delta)
     }
 
     /// Vertical pixel of a value (ρ or ln ρ/δ), clamped to the data area.
@@ -46,9 +51,7 @@ impl RhoFrame {
 
     /// δ at horizontal pixel `x`, within the range.
     pub fn delta_at(&self, x: f64) -> f64 {
-        let [a, b] = self.x_range;
-        let f = ((x - self.rect.x) / self.rect.w).clamp(0.0, 1.0);
-        a * (b / a).powf(f)
+        self.axis().delta_at(x)
     }
 }
 
@@ -124,17 +127,7 @@ pub fn draw_rho_static(
             painter.rect(Rect::new(x0, r.y, x1 - x0, r.h), palette::WINDOW_BAND);
         }
     }
-    let grid = dpr.max(1.0);
-    for &d in ticks.0 {
-        let x = frame.x(d);
-        if x > r.x + grid && x < r.right() - grid {
-            painter.line([x, r.y], [x, r.bottom()], grid, palette::GRID);
-        }
-    }
-    for &v in ticks.1 {
-        let y = frame.y(v);
-        painter.line([r.x, y], [r.right(), y], grid, palette::GRID);
-    }
+    frame.axis().draw_grid(painter, ticks.0, ticks.1.iter().map(|&v| frame.y(v)), dpr);
     let y1 = frame.y(measure.border());
     painter.line([r.x, y1], [r.right(), y1], 1.5 * dpr, palette::CONTOUR);
     let mut stroke = painter.stroke(2.0 * dpr, palette::ERROR1, true);

@@ -5,6 +5,7 @@ use crate::analysis::sensor_study::StudyRow;
 use crate::plot::ticks::log_ticks;
 use crate::plot::{palette, Color};
 use crate::schema::PanelKind;
+use crate::view::delta_axis::DeltaAxis;
 use crate::view::painter::Painter;
 use crate::view::rect::Rect;
 
@@ -123,34 +124,20 @@ pub fn series_of(kind: PanelKind) -> impl Iterator<Item = &'static Series> {
 /// bottom edge.
 pub const MAX_DECADES: f64 = 4.0;
 
-/// A study panel's data area: log δ across (the same range as ρ(δ), so that a δ sits at the same
-/// x in both), a log value up.
+/// A study panel's data area: the δ axis of ρ(δ) across (so that a δ sits at the same x in
+/// both), a log value up.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StudyFrame {
-    pub rect: Rect,
-    pub x_range: [f64; 2],
+    pub axis: DeltaAxis,
     pub y_range: [f64; 2],
 }
 
 impl StudyFrame {
-    /// Horizontal pixel of δ (not clamped).
-    pub fn x(&self, delta: f64) -> f64 {
-        let [a, b] = self.x_range;
-        self.rect.x + self.rect.w * (delta / a).ln() / (b / a).ln()
-    }
-
     /// Vertical pixel of a value, clamped to the data area (values ≤ 0 at the bottom).
     pub fn y(&self, v: f64) -> f64 {
         let [a, b] = self.y_range;
         let f = if v > 0.0 { (v / a).ln() / (b / a).ln() } else { 0.0 };
-        self.rect.bottom() - self.rect.h * f.clamp(0.0, 1.0)
-    }
-
-    /// δ at horizontal pixel `x`, within the range.
-    pub fn delta_at(&self, x: f64) -> f64 {
-        let [a, b] = self.x_range;
-        let f = ((x - self.rect.x) / self.rect.w).clamp(0.0, 1.0);
-        a * (b / a).powf(f)
+        self.axis.rect.bottom() - self.axis.rect.h * f.clamp(0.0, 1.0)
     }
 }
 
@@ -178,7 +165,7 @@ pub fn value_range(kind: PanelKind, rows: &[StudyRow], limit: Option<f64>, fallb
 pub fn study_ticks(rect_css: Rect, frame: &StudyFrame) -> (Vec<f64>, Vec<f64>) {
     let nx = (rect_css.w / 46.0).floor().clamp(1.0, 20.0) as usize;
     let ny = (rect_css.h / 22.0).floor().clamp(2.0, 10.0) as usize;
-    (log_ticks(frame.x_range[0], frame.x_range[1], nx), log_ticks(frame.y_range[0], frame.y_range[1], ny))
+    (log_ticks(frame.axis.range[0], frame.axis.range[1], nx), log_ticks(frame.y_range[0], frame.y_range[1], ny))
 }
 
 /// The curves, the limit, the best δ ringed and the δ where ρ ≥ 1 crossed out (along the top):
@@ -193,27 +180,15 @@ pub fn draw_study(
     ticks: (&[f64], &[f64]),
     dpr: f64,
 ) {
-    let r = frame.rect;
+    let (r, axis) = (frame.axis.rect, frame.axis);
     painter.rect(r, palette::PANEL);
-    let grid = dpr.max(1.0);
-    for &d in ticks.0 {
-        let x = frame.x(d);
-        if x > r.x + grid && x < r.right() - grid {
-            painter.line([x, r.y], [x, r.bottom()], grid, palette::GRID);
-        }
-    }
-    for &v in ticks.1 {
-        let y = frame.y(v);
-        if y > r.y + grid && y < r.bottom() - grid {
-            painter.line([r.x, y], [r.right(), y], grid, palette::GRID);
-        }
-    }
+    axis.draw_grid(painter, ticks.0, ticks.1.iter().map(|&v| frame.y(v)), dpr);
     if let Some(l) = limit.filter(|_| kind == PanelKind::StudyTorque) {
         let y = frame.y(l);
         painter.dashed_line([r.x, y], [r.right(), y], 1.5 * dpr, 6.0 * dpr, 4.0 * dpr, palette::TORQUE_LIMIT);
     }
     for s in series_of(kind) {
-        let points = rows.iter().map(|row| (s.value)(row).map(|v| [frame.x(row.sampling_period), frame.y(v)]));
+        let points = rows.iter().map(|row| (s.value)(row).map(|v| [axis.x(row.sampling_period), frame.y(v)]));
         let width = if s.stroke == Stroke::Solid { 2.0 } else { 1.5 } * dpr;
         let mut last: Option<[f64; 2]> = None;
         for p in points {
@@ -233,13 +208,13 @@ pub fn draw_study(
     // The best δ, ringed on the curve it is judged by (the slew's error).
     if let Some(row) = best.and_then(|i| rows.get(i)).filter(|_| kind == PanelKind::StudyError) {
         if let Some(v) = row.slew_error() {
-            painter.ring([frame.x(row.sampling_period), frame.y(v)], 7.0 * dpr, 2.0 * dpr, palette::WINDOW_MARK);
+            painter.ring([axis.x(row.sampling_period), frame.y(v)], 7.0 * dpr, 2.0 * dpr, palette::WINDOW_MARK);
         }
     }
     // Where ρ ≥ 1 or the run diverged: crossed out along the top, whatever the short run showed.
     for row in rows {
         if row.unstable() || row.diverged() {
-            let c = [frame.x(row.sampling_period), r.y + 7.0 * dpr];
+            let c = [axis.x(row.sampling_period), r.y + 7.0 * dpr];
             painter.cross(c, 4.5 * dpr, 2.0 * dpr, palette::POLE_UNSTABLE);
         }
     }

@@ -12,6 +12,7 @@ use drawing::{draw_study, series_of, study_ticks, value_range, StudyFrame};
 use crate::analysis::sensor_study::{Best, SensorStudy, StudyRow};
 use crate::plot::{format, palette};
 use crate::schema::PanelKind;
+use crate::view::delta_axis::DeltaAxis;
 use crate::view::layout::Panel;
 use crate::view::legend::{item, Glyph, LegendGroup};
 use crate::view::painter::Painter;
@@ -81,7 +82,8 @@ impl StudyPanels {
         let rect = if physical { frame.layout.to_physical(panel.rect) } else { panel.rect };
         let x_range = frame.windows.as_ref().map_or(crate::schema::DELTA_SPEC.control, |w| w.range);
         let fallback = if panel.kind == PanelKind::StudyTorque { TORQUE_FALLBACK } else { ERROR_FALLBACK };
-        StudyFrame { rect, x_range, y_range: value_range(panel.kind, &self.rows, self.limit, fallback) }
+        let axis = DeltaAxis { rect, range: x_range };
+        StudyFrame { axis, y_range: value_range(panel.kind, &self.rows, self.limit, fallback) }
     }
 
     /// The row nearest δ (in log scale).
@@ -113,11 +115,11 @@ impl PanelView for StudyPanels {
     fn draw(&mut self, frame: &Frame, _runs: &Runs<'_>, panel: &Panel, painter: &mut Painter) {
         let dpr = frame.layout.device_pixel_ratio;
         let study = self.frame(frame, panel, true);
-        let r = study.rect;
+        let r = study.axis.rect;
         for run in (0..frame.run_count()).rev() {
             let Some(config) = &frame.runs[run].config else { continue };
             let color = if run == 0 { palette::MAP_MARKER } else { palette::RUN_B };
-            let x = study.x(config.controller.sampling_period).clamp(r.x, r.right());
+            let x = study.axis.x(config.controller.sampling_period).clamp(r.x, r.right());
             painter.line([x, r.y], [x, r.bottom()], 1.5 * dpr, color.with_alpha(0.6));
         }
         painter.rect_outline(r, dpr.max(1.0), palette::FRAME);
@@ -131,7 +133,7 @@ impl PanelView for StudyPanels {
         let torque = panel.kind == PanelKind::StudyTorque;
         info.x_label = "δ [s]".into();
         info.y_label = if torque { "T1 [N m]" } else { "error [rad]" };
-        info.x_range = study.x_range;
+        info.x_range = study.axis.range;
         info.y_range = study.y_range;
         info.x_labels = log_labels(&x_ticks, info.x_range, r.w, LOG_LABEL_SPACING);
         info.y_labels = log_labels(&y_ticks, info.y_range, r.h, 16.0);
@@ -161,7 +163,7 @@ impl PanelView for StudyPanels {
             return None;
         }
         let study = self.frame(frame, panel, false);
-        let delta = study.delta_at(x);
+        let delta = study.axis.delta_at(x);
         let mut lines = Vec::new();
         let row = self.row_near(delta);
         match row {
