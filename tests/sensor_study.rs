@@ -301,3 +301,30 @@ fn a_delta_unstable_by_rho_is_never_the_best_even_before_its_run_diverges() {
         "{said}"
     );
 }
+
+#[test]
+fn where_only_the_digital_loop_is_unstable_the_study_says_how_it_reads_makes_the_difference() {
+    // With K_pr at α = 2 the paper's loop is stable up to past 0.1 s (the paper's Fig. 5.2
+    // settings); read through a differenced encoder and held over δ, the same controller is
+    // unstable at 0.07 and 0.1 s. ρ has no noise in it, so the study must not blame the noise.
+    let said = "The paper's loop — exact readings, the preliminary feedback and the friction observer acting \
+                continuously";
+    let v = study("pf=paper&encoder=1024&velocity=difference");
+    let unstable: Vec<&flexarm::analysis::sensor_study::StudyRow> =
+        v.study.rows.iter().filter(|r| r.unstable()).collect();
+    assert!(!unstable.is_empty());
+    for r in &unstable {
+        // The paper's loop at that δ, analysed apart from the study.
+        let mut s = Settings::default();
+        s.read(&format!("pf=paper&delta={}", r.sampling_period), Source::CommandLine).unwrap();
+        let paper = flexarm::analysis::spectral_radius(&s.a.config(), None).unwrap();
+        assert!(paper < 1.0, "δ = {}: the paper's loop ρ = {paper}", r.sampling_period);
+        assert_eq!(r.ideal_spectral_radius, Some(paper));
+    }
+    let line = v.summary.iter().find(|l| l.contains(said)).unwrap_or_else(|| panic!("{:?}", v.summary));
+    assert!(line.contains("differenced over δ (half a period late)") && line.contains("not the noise"), "{line}");
+    // Without K_pr the paper's loop is itself unstable at small δ: no such sentence.
+    let off = study("pf=off&encoder=4096&velocity=difference");
+    assert!(off.study.rows.iter().any(|r| r.unstable() && r.ideal_spectral_radius.is_some_and(|p| p >= 1.0)));
+    assert!(!off.summary.iter().any(|l| l.contains(said)), "{:?}", off.summary);
+}

@@ -80,7 +80,11 @@ fn the_panels_read_out_what_the_table_prints_and_the_torque_noise_grows_as_delta
                 &[
                     ("T1 noise at rest (RMS about its mean), these sensors", "T1 noise, rest [N m]"),
                     ("peak |T1|, these sensors", "peak T1 [N m]"),
-                    ("T1 noise predicted (linear, white noise, while the arm moves)", "predicted T1 noise [N m]"),
+                    (
+                        "the sensors' noise in T1, predicted (RMS; the linear model with white noise, valid while the \
+                         arm moves)",
+                        "predicted T1 noise [N m]",
+                    ),
                 ]
             };
             for (label, col) in pairs {

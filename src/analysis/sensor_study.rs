@@ -27,6 +27,10 @@ pub struct StudyRow {
     /// analysis failed. ρ ≥ 1: the errors grow in the long run, even where a short run has not
     /// diverged yet — such a row is never the best.
     pub spectral_radius: Option<f64>,
+    /// ρ of the paper's loop at this δ — the same settings with exact readings, what the
+    /// controller computes applied continuously — None if that analysis failed: what the
+    /// perfect-sensors column runs.
+    pub ideal_spectral_radius: Option<f64>,
 }
 
 impl StudyRow {
@@ -99,6 +103,8 @@ fn simulated(p: Option<SweepPoint>, f: fn(&SweepPoint) -> f64) -> Option<f64> {
 pub struct LinearRow {
     pub spectral_radius: Option<f64>,
     pub predicted: Option<NoiseFloor>,
+    /// The paper's loop (perfect sensors).
+    pub ideal_spectral_radius: Option<f64>,
 }
 
 /// Where the tracking error is smallest, once every run is in.
@@ -146,11 +152,17 @@ impl SensorStudy {
             return vec![LinearRow::default(); deltas.len()];
         };
         let digital = config.sensors.is_digital();
+        let ideal = SimulationConfig { sensors: Default::default(), ..*config };
+        let paper = if digital { LoopModel::new(&LinearSettings::of(&ideal, None)).ok() } else { None };
         deltas
             .iter()
-            .map(|&d| LinearRow {
-                spectral_radius: model.spectral_radius(d).ok(),
-                predicted: digital.then(|| noise_floor(&model, d, &config.sensors).ok()).flatten(),
+            .map(|&d| {
+                let spectral_radius = model.spectral_radius(d).ok();
+                LinearRow {
+                    spectral_radius,
+                    predicted: digital.then(|| noise_floor(&model, d, &config.sensors).ok()).flatten(),
+                    ideal_spectral_radius: paper.as_ref().map_or(spectral_radius, |m| m.spectral_radius(d).ok()),
+                }
             })
             .collect()
     }
@@ -167,6 +179,7 @@ impl SensorStudy {
                 ideal: sweep.ideal.get(i).copied(),
                 predicted: linear.get(i).and_then(|l| l.predicted),
                 spectral_radius: linear.get(i).and_then(|l| l.spectral_radius),
+                ideal_spectral_radius: linear.get(i).and_then(|l| l.ideal_spectral_radius),
             })
             .collect();
         let (best, smallest_excess) = match sweep.is_done() {

@@ -149,6 +149,14 @@ pub fn large_error(l: &crate::control::metrics::LargeError) -> String {
 pub fn caveat(c: &Caveat) -> String {
     match *c {
         Caveat::Nonlinear => "the analysis is linearized at rest; far from rest the arm is nonlinear".into(),
+        // With an error in the readings the errors settle at a floor, not at rest: a rate fitted
+        // there is the floor's wandering, which a reader must not take for the loop's growth.
+        Caveat::Sensors(sensors) if sensors.angle_variance() > 0.0 => format!(
+            "ρ is the noise-free loop's; the run also carries {}, whose error keeps the errors at a floor instead of \
+             letting them die out — the linear analysis does not see it, and a rate observed at that floor is the \
+             floor's wandering (the status's line on the sensors gives its size)",
+            crate::words::sensors::sensors_text(&sensors)
+        ),
         Caveat::Sensors(sensors) => format!(
             "ρ is the noise-free loop's; the run also carries {}, which the linear analysis does not see",
             crate::words::sensors::sensors_text(&sensors)

@@ -87,8 +87,10 @@ pub fn study_table(study: &SensorStudy, sensors: &SensorModel) -> Vec<Vec<String
 pub fn table_note(sensors: &SensorModel) -> String {
     let mut s = "ρ: the linear analysis of this loop at each δ (≥ 1: unstable — its errors grow in the long run, \
                  even where the short run has not diverged; such a row is never the best); max |e|, slew: the \
-                 largest error of either link while the arm slews; perfect sensors: the same \
-                 slew with the paper's exact readings and no torque limit; RMS e and T1 noise at rest: over the 2 s \
+                 largest error of either link while the arm slews (each δ's run is one slew from rest; the page's run \
+                 repeats it, and a later slew starts from where the last one left the arm); perfect sensors: the same \
+                 slew in the paper's loop — exact readings, the preliminary feedback and the friction observer acting \
+                 continuously, no torque limit; RMS e and T1 noise at rest: over the 2 s \
                  after the slew (T1 noise is the motor torque's RMS about its mean); peak T1: the largest motor \
                  torque"
         .to_string();
@@ -108,7 +110,8 @@ fn error_cell(e: f64) -> String {
     }
 }
 
-fn percent(share: f64) -> String {
+/// A share of the time as the table and the figure's readout both print it: "0 %", "< 1 %", "3 %".
+pub fn percent(share: f64) -> String {
     if share == 0.0 {
         "0 %".to_string()
     } else if share < 0.01 {
@@ -152,7 +155,7 @@ pub fn study_summary(study: &SensorStudy, sensors: &SensorModel) -> Vec<String> 
             return out;
         }
     };
-    if let Some(s) = unstable_rows(study) {
+    if let Some(s) = unstable_rows(study, sensors) {
         out.push(s);
     }
     let at = |r: &StudyRow| format!("{} s", number(r.sampling_period));
@@ -304,7 +307,13 @@ fn above_best(
     real: &dyn Fn(&StudyRow) -> f64,
     ideal: &dyn Fn(&StudyRow) -> f64,
 ) -> Option<String> {
-    let top = study.rows.iter().rev().find(|r| r.sampling_period > best.sampling_period && real(r).is_finite())?;
+    // The largest δ that tracks: its run did not diverge and ρ < 1 (an unstable row's short run
+    // says nothing of the long run, and the sentence on unstable rows covers it).
+    let top = study
+        .rows
+        .iter()
+        .rev()
+        .find(|r| r.sampling_period > best.sampling_period && real(r).is_finite() && !r.unstable())?;
     let (e, ei) = (real(top), ideal(top));
     let mut s = format!(
         "At δ = {} s the error is {} rad, and {} rad with perfect sensors",
@@ -401,7 +410,7 @@ pub fn prediction_text(delta: f64, floor: Option<&NoiseFloor>, sensors: &SensorM
 
 /// The rows ρ calls unstable, as ranges of δ: "By ρ the loop is unstable at δ = 0.002–0.03 s …"
 /// (None when every row is stable).
-fn unstable_rows(study: &SensorStudy) -> Option<String> {
+fn unstable_rows(study: &SensorStudy, sensors: &SensorModel) -> Option<String> {
     let mut ranges: Vec<(f64, f64)> = Vec::new();
     let mut open = false;
     for r in &study.rows {
@@ -419,10 +428,35 @@ fn unstable_rows(study: &SensorStudy) -> Option<String> {
         .iter()
         .map(|&(a, b)| if a == b { format!("{} s", number(a)) } else { format!("{}–{} s", number(a), number(b)) })
         .collect();
-    Some(format!(
+    let mut s = format!(
         "By ρ the loop is unstable at δ = {}: its errors grow in the long run, even where the {}-s run has not \
          diverged yet, so those rows are never the best.",
         text.join(" and "),
         number(SWEEP_SECONDS)
-    ))
+    );
+    // ρ is the noise-free loop's: where the paper's loop is stable at every one of those δ, what
+    // differs is how this controller reads and acts, not the sensors' noise.
+    let unstable: Vec<&StudyRow> = study.rows.iter().filter(|r| r.unstable()).collect();
+    if unstable.iter().all(|r| r.ideal_spectral_radius.is_some_and(|p| p < 1.0)) {
+        let first = unstable[0];
+        let reads = match (sensors.velocity, sensors.velocity_filter > 0.0) {
+            (VelocitySource::Difference, true) => Some("the velocities differenced over δ and filtered"),
+            (VelocitySource::Difference, false) => Some("the velocities differenced over δ (half a period late)"),
+            (_, true) => Some("the velocities filtered"),
+            _ => None,
+        };
+        let held = "the preliminary feedback and the friction observer held over δ";
+        let cause = match reads {
+            Some(r) => format!("{r}, with {held}, make the difference"),
+            None => format!("{held} make the difference"),
+        };
+        s += &format!(
+            " The paper's loop — exact readings, the preliminary feedback and the friction observer acting \
+             continuously (the perfect-sensors column) — is stable there (ρ = {} at {} s): {cause}, not the noise \
+             (ρ has none).",
+            first.ideal_spectral_radius.map_or("—".to_string(), crate::words::numbers::rho),
+            number(first.sampling_period),
+        );
+    }
+    Some(s)
 }

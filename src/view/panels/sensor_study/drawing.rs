@@ -69,7 +69,8 @@ pub const SERIES: [Series; 8] = [
     },
     Series {
         panel: PanelKind::StudyError,
-        label: "RMS e predicted (linear, white noise, while the arm moves)",
+        label: "the sensors' noise in e, predicted (RMS; the linear model with white noise — the quantizer at rest, \
+                the friction and the limit add what only the simulation shows)",
         color: palette::PREDICTED,
         stroke: Stroke::Dotted,
         dots: false,
@@ -105,7 +106,8 @@ pub const SERIES: [Series; 8] = [
     },
     Series {
         panel: PanelKind::StudyTorque,
-        label: "T1 noise predicted (linear, white noise, while the arm moves)",
+        label:
+            "the sensors' noise in T1, predicted (RMS; the linear model with white noise, valid while the arm moves)",
         color: palette::PREDICTED,
         stroke: Stroke::Dotted,
         dots: false,

@@ -184,9 +184,9 @@ impl PanelView for StudyPanels {
                 }
                 if let (Some(limit), Some(share)) = (self.limit, row.saturated()) {
                     lines.push(TipLine::plain(format!(
-                        "time at the {} N m limit: {:.1} %",
+                        "time at the {} N m limit: {}",
                         format::significant_trimmed(limit, 3),
-                        100.0 * share
+                        crate::words::sensors::percent(share)
                     )));
                 }
             }
