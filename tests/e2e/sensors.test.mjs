@@ -155,7 +155,7 @@ test('a real robot: the study drawn against δ beside ρ(δ), filled with its se
   assert.equal(await page.evaluate(() => /** @type {HTMLDetailsElement} */ (document.getElementById('sensors-details')).open), false);
   const panel = (/** @type {string} */ id) => page.evaluate((i) => window.flexarm.lastLayout?.panels?.find((/** @type {{id: string}} */ p) => p.id === i) ?? null, id);
   await page.waitForFunction(() => ['study-error', 'study-torque'].every((id) => window.flexarm.lastLayout?.panels?.some((/** @type {{id: string}} */ p) => p.id === id)), null, { timeout: 20000 });
-  await page.waitForFunction(() => window.flexarm.lastLayout?.panels?.find((/** @type {{id: string}} */ p) => p.id === 'study-error')?.note === 'the error against δ', null, { timeout: 90000, polling: 200 });
+  await page.waitForFunction(() => window.flexarm.lastLayout?.panels?.find((/** @type {{id: string}} */ p) => p.id === 'study-error')?.note === 'error against δ', null, { timeout: 90000, polling: 200 });
   const since = await page.evaluate(() => performance.now());
   console.log(`# the study against δ drawn complete within ${since.toFixed(0)} ms of the navigation, the page's load included (11 δ × 2 slews of 3 s; polled every 200 ms)`);
   const error = await panel('study-error');
@@ -177,7 +177,7 @@ test('a real robot: the study drawn against δ beside ρ(δ), filled with its se
 
   for (const [name, size] of Object.entries(SIZES)) {
     const shot = await openPage(env.browser, env.server.base, `${REAL}&study=1${name === 'phone' ? '&tab=study' : ''}`, size);
-    await shot.page.waitForFunction(() => window.flexarm.lastLayout?.panels?.find((/** @type {{id: string}} */ p) => p.id === 'study-error')?.note === 'the error against δ', null, { timeout: 90000, polling: 200 });
+    await shot.page.waitForFunction(() => window.flexarm.lastLayout?.panels?.find((/** @type {{id: string}} */ p) => p.id === 'study-error')?.note === 'error against δ', null, { timeout: 90000, polling: 200 });
     await shot.page.waitForTimeout(500);
     await shot.page.screenshot({ path: path.join(shots, `sensors-study-${name}.png`) });
     assert.deepEqual(shot.problems, [], name);

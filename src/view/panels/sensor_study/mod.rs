@@ -148,7 +148,8 @@ impl PanelView for StudyPanels {
         } else {
             String::new()
         };
-        info.note = if torque { format!("T1 against δ{done}") } else { format!("the error against δ{done}") };
+        // Short: on a laptop six analysis panels share a row.
+        info.note = if torque { format!("T1 against δ{done}") } else { format!("error against δ{done}") };
         info.region = Some(Region {
             label: "The study against δ. Left and right arrow keys change δ.",
             keys: "delta",
