@@ -343,7 +343,9 @@ test('the stable windows of δ are stated and drawn on the slider as the session
   assert.ok(Math.abs(pos - windows.bands[0][0]) < 2e-3, `${pos} vs ${windows.bands[0][0]}`);
   // With the preliminary feedback the words change.
   await page.selectOption('#pf', 'paper');
-  await page.waitForFunction(() => /^With paper K_pr/.test(document.querySelector('#delta-windows').textContent), null, { timeout: 10000 });
+  // K_pr written with its subscript, as everywhere on the page.
+  await page.waitForFunction(() => /^With paper Kpr/.test(document.querySelector('#delta-windows').textContent)
+    && document.querySelector('#delta-windows sub')?.textContent === 'pr', null, { timeout: 10000 });
   await page.screenshot({ path: path.join(shots, 'windows-on-the-slider.png') });
   assert.deepEqual(problems, []);
   await close();

@@ -119,7 +119,7 @@ export function createStatus() {
    * they are not known, or while a lesson step keeps them hidden). */
   function renderWindows(/** @type {Status['windows']} */ w) {
     windowsText.hidden = !w;
-    if (w) setText(windowsText, w.text);
+    if (w) setSymbols(windowsText, w.text);
     const slider = /** @type {HTMLInputElement | null} */ (document.getElementById('delta'));
     const key = w ? JSON.stringify(w.bands) : '';
     if (!slider || key === bandsKey) return;
