@@ -1,5 +1,6 @@
 //! The classroom around a session: the guided lesson and its steps ([`lesson`]), the answers a
-//! student hands in ([`answers`]), student mode ([`student`]), a link's moment ([`moment`]) and
+//! student hands in ([`answers`]), student mode ([`student`]), a link's moment ([`moment`]), a
+//! teacher's lesson carried inside a homework link ([`link`]) and
 //! the links and embeds that carry a lesson step ([`embed`]). It works *on* a physics
 //! [`Session`] — a lesson step sets its settings, a goal reads its runs — and tells it what to hide
 //! ([`Session::set_hidden`]); the session knows nothing of lessons. The web handle holds one of
@@ -12,6 +13,7 @@
 pub mod answers;
 pub mod embed;
 pub mod lesson;
+pub mod link;
 pub mod moment;
 pub mod progress;
 pub mod room;

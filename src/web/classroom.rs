@@ -184,4 +184,37 @@ impl WebClassroom {
     pub fn restore_answers(&mut self, session: &mut WebSession, csv: &str) -> Result<(), JsError> {
         change(self, session, |c, _| c.restore_answers_csv(csv)).map_err(js_error)
     }
+
+    /// `{name, text}` of the teacher's lesson loaded now (what a homework link carries), or null
+    /// for the built-in lesson.
+    #[wasm_bindgen(js_name = teacherLesson)]
+    pub fn teacher_lesson(&self) -> Result<JsValue, JsError> {
+        #[derive(serde::Serialize)]
+        struct Lesson<'a> {
+            name: &'a str,
+            text: &'a str,
+        }
+        to_js(&self.inner.teacher_lesson().map(|(name, text)| Lesson { name, text }))
+    }
+}
+
+/// The homework link for the lesson file `name` whose bytes, compressed with raw deflate, are
+/// `compressed`, on the page at `base` (its address without query or fragment); throws with the
+/// size and the reason when the lesson is too long for a link.
+#[wasm_bindgen(js_name = lessonLink)]
+pub fn lesson_link(base: &str, name: &str, compressed: Vec<u8>) -> Result<String, JsError> {
+    crate::classroom::link::lesson_link(base, name, &compressed).map_err(js_error)
+}
+
+/// `{name, bytes}` (bytes compressed with raw deflate) of the lesson a URL fragment carries, null
+/// when it carries none; throws when it carries one the link cut or garbled.
+#[wasm_bindgen(js_name = readLessonFragment)]
+pub fn read_lesson_fragment(fragment: &str) -> Result<JsValue, JsError> {
+    #[derive(serde::Serialize)]
+    struct Carried {
+        name: String,
+        bytes: Vec<u8>,
+    }
+    let carried = crate::classroom::link::read_lesson_fragment(fragment).map_err(js_error)?;
+    to_js(&carried.map(|(name, bytes)| Carried { name, bytes }))
 }

@@ -58,3 +58,47 @@ test('a broken lesson file names its line and changes nothing; markup in a lesso
   assert.deepEqual(problems, []);
   await close();
 });
+
+test('one homework link: the lesson travels inside it, opens in student mode in a fresh browser, and survives a reload', { timeout: 90000 }, async () => {
+  // The teacher: their lesson open, "make a homework link".
+  const teacher = await openPage(env.browser, env.server.base, '?lesson_src=lessons/windows.md&mode=full');
+  await teacher.page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 10000 });
+  await teacher.page.waitForSelector('#lesson-link-row:not([hidden])');
+  await teacher.page.click('#lesson-link-make');
+  await teacher.page.waitForSelector('#lesson-link-out:not([hidden])');
+  const link = await teacher.page.inputValue('#lesson-link');
+  const said = await teacher.page.textContent('#lesson-link-size');
+  assert.match(link, /\?mode=full&answers=hidden&lesson=1#lesson=[A-Za-z0-9_-]+&name=/);
+  assert.match(said ?? '', new RegExp(`^${link.length} characters`));
+  console.log(`# the homework link of lessons/windows.md: ${link.length} characters`);
+  assert.deepEqual(teacher.problems, []);
+  await teacher.close();
+
+  // A student, in a browser that never saw the page: the lesson, in student mode.
+  const url = new URL(link);
+  const student = await openPage(env.browser, env.server.base, `${url.search}${url.hash}`);
+  const { page } = student;
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 10000 });
+  assert.equal(await page.textContent('#lesson-title'), 'Where does the controller alone work?');
+  assert.match(await page.textContent('#lesson-name') ?? '', /Homework: the windows of δ/);
+  const hidden = async () => {
+    await page.waitForFunction(() => /Student mode: .* hidden until you answer/.test(document.querySelector('#hidden-text')?.textContent ?? ''), null, { timeout: 10000 });
+    const verdict = await page.evaluate(() => document.querySelector('#verdict')?.textContent ?? '');
+    assert.doesNotMatch(verdict, /ρ = \d/, verdict);
+    assert.equal(await page.isHidden('#delta-windows'), true);
+  };
+  await hidden();
+  // The address keeps the lesson: a reload opens the same step, still in student mode.
+  await page.reload();
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 10000 });
+  assert.equal(await page.textContent('#lesson-title'), 'Where does the controller alone work?');
+  assert.match(page.url(), /#lesson=/);
+  await hidden();
+  // A cut link says why, and the page still works with its built-in lesson.
+  const cut = await openPage(env.browser, env.server.base, `${url.search}#lesson=Z&name=x.md`);
+  await cut.page.waitForSelector('#url-notice:not([hidden])', { timeout: 10000 });
+  assert.match(await cut.page.textContent('#url-notice-list') ?? '', /homework link's lesson could not be read/);
+  await cut.close();
+  assert.deepEqual(student.problems, []);
+  await student.close();
+});

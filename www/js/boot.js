@@ -10,6 +10,7 @@ import { loadWasm } from './wasm.js';
 import { noticeLines, writeUrl } from './url.js';
 import { offlineFile, readFile, readText } from './files.js';
 import { START_NOTE } from './transport.js';
+import { inflate } from './homework.js';
 
 /** @typedef {import('./wasm.js').Wasm} Wasm */
 /** @typedef {import('../pkg/flexarm.js').Renderer} Renderer */
@@ -54,10 +55,12 @@ export async function openPage(errors) {
   // an offline file, from the files it carries, else the lesson the file carries.
   const offline = offlineFile();
   const query = startQuery(offline);
-  const teacher = (await fetchTeacherLesson(wasm, query)) ?? carriedLesson(offline);
+  // A homework link carries its lesson in the address's fragment (#lesson=…), checked as a file.
+  const linked = await linkedLesson(wasm);
+  const teacher = (await fetchTeacherLesson(wasm, query)) ?? linked.lesson ?? carriedLesson(offline);
   const session = new Page(wasm, query, await lessonText, teacher, offline !== null);
   performance.mark('flexarm:session-ready');
-  showNotices(session.notices());
+  showNotices([...linked.notices, ...session.notices()]);
   return { wasm, session, rendererReady };
 }
 
@@ -100,6 +103,22 @@ function startQuery(offline) {
 function carriedLesson(offline) {
   const lesson = offline?.start.lesson;
   return lesson ? { path: lesson.name, bytes: new TextEncoder().encode(lesson.text), carried: true } : null;
+}
+
+/**
+ * The lesson a homework link carries in the address's fragment, unpacked, as the session takes a
+ * teacher's; and, when the fragment holds one that cannot be read, the notice that says why.
+ * @param {Wasm} wasm
+ */
+async function linkedLesson(wasm) {
+  try {
+    const carried = wasm.readLessonFragment(window.location.hash);
+    if (!carried) return { lesson: null, notices: [] };
+    const bytes = await inflate(new Uint8Array(carried.bytes));
+    return { lesson: { path: carried.name, bytes, carried: true }, notices: [] };
+  } catch (e) {
+    return { lesson: null, notices: [{ key: 'lesson', text: `The homework link's lesson could not be read: ${messageOf(e)}` }] };
+  }
 }
 
 /** The bytes of the lesson file `lesson_src=` names, if it is on this site and loads. @param {Wasm} wasm @param {string} query */

@@ -14,9 +14,9 @@ import { createAnswers } from './answers.js';
  *   guard: <T>(what: string, fn: () => T, fallback?: T) => T | undefined, report: (what: string, e: unknown) => void,
  *   change: (fn: () => void) => void, refresh: () => void, touch: () => void,
  *   openSheet: (open: boolean) => void, showFigure: () => void,
- *   download: (name: string, text: string, type: string) => void }} on
+ *   download: (name: string, text: string, type: string) => void, loaded?: () => void }} on
  */
-export function createClassroom({ session, store, presets, guard, report, change, refresh, touch, openSheet, showFigure, download }) {
+export function createClassroom({ session, store, presets, guard, report, change, refresh, touch, openSheet, showFigure, download, loaded }) {
   /** A lesson action: the settings it makes, played from the start. @param {() => void} fn */
   const lessonDo = (fn) => {
     session.setWallClock(Date.now());
@@ -41,6 +41,7 @@ export function createClassroom({ session, store, presets, guard, report, change
         report('The lesson file could not be used (the lesson stays as it was)', e);
         return;
       }
+      loaded?.();
       lessonDo(() => {});
     },
     answer: (choice) => {

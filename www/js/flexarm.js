@@ -311,6 +311,12 @@ export class Page {
 
   // ------------------------------------------------------------------------------------ the lesson
 
+  /** The teacher's lesson loaded now, as a homework link carries it (null: the built-in one).
+   * @returns {{ name: string, text: string } | null} */
+  teacherLesson() {
+    return this.#classroom.teacherLesson() ?? null;
+  }
+
   /** @param {string} name @param {Uint8Array} bytes */
   loadLesson(name, bytes) {
     this.#classroom.loadLesson(this.#session, name, bytes);

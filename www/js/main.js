@@ -2,6 +2,7 @@
 // (each a module with one job) to the session, the renderer, the frame loop and each other. Every
 // decision about the physics is the session's (Rust); this file only connects.
 
+import { createHomework } from './homework.js';
 import { byId } from './dom.js';
 import { createErrors } from './errors.js';
 import { createStore } from './store.js';
@@ -97,8 +98,10 @@ async function main() {
   wireTry(session, settings, sheet);
 
   // What the session says: the lesson, the figure, the status.
+  const homework = createHomework({ wasm, session, report });
   const { lesson, answers } = createClassroom({
     session, store, presets: wasm.presets(), guard, report, change, refresh: () => refresh(), touch, openSheet: sheet.open, showFigure, download,
+    loaded: () => homework.refresh(),
   });
   // The pair placed by hand: the session answers "" or why not; the status follows at once.
   const placing = (/** @type {() => string} */ fn) => {

@@ -25,6 +25,7 @@ mod cli;
 mod data;
 mod export_python;
 mod figure;
+mod lesson_link;
 mod long_work;
 mod map;
 mod output;
@@ -56,6 +57,7 @@ fn commands() -> Vec<Command> {
         data::command(),
         figure::command(),
         bundle::command(),
+        lesson_link::command(),
     ]
 }
 
@@ -136,7 +138,7 @@ fn run(args: Vec<String>) -> Res<String> {
                 }
                 ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
                     Err(cli::usage_error(
-                        "no command given: use simulate, analyze, sweep, map, export-python, data, figure, bundle or help (see 'flexarm --help')",
+                        "no command given: use simulate, analyze, sweep, map, export-python, data, figure, bundle, lesson-link or help (see 'flexarm --help')",
                     ))
                 }
                 _ => Err(cli::usage_error(one_line(&e, command.as_deref()))),
@@ -156,6 +158,7 @@ fn run(args: Vec<String>) -> Res<String> {
         Some(("data", m)) => data::run(m),
         Some(("figure", m)) => figure::run(m),
         Some(("bundle", m)) => bundle::run(m),
+        Some(("lesson-link", m)) => lesson_link::run(m),
         Some(("help", m)) => match m.get_one::<String>("command") {
             None => Ok(overview()),
             Some(all) if all == "all" => Ok(reference()),
@@ -163,8 +166,8 @@ fn run(args: Vec<String>) -> Res<String> {
                 // Exactly what `flexarm COMMAND --help` prints.
                 Some(c) => run(vec![c.get_name().to_string(), "--help".into()]),
                 None => Err(cli::usage_error(format!(
-                    "unknown command '{name}': use simulate, analyze, sweep, map, export-python, data, figure, bundle \
-                     or all"
+                    "unknown command '{name}': use simulate, analyze, sweep, map, export-python, data, figure, bundle, \
+                     lesson-link or all"
                 ))),
             },
         },

@@ -1,0 +1,53 @@
+// One homework link (issue 35): a teacher's lesson carried inside the page's address, in the
+// fragment, which no server sees. Rust writes and reads the link and checks its size
+// (`classroom::link`); the browser compresses (raw deflate), as it does for the offline file.
+
+import { byId, setText } from './dom.js';
+
+/** The bytes of `text`, compressed with raw deflate. @param {string} text */
+export async function deflate(text) {
+  const stream = new Blob([text]).stream().pipeThrough(new CompressionStream('deflate-raw'));
+  return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+
+/** The bytes `packed` (raw deflate) unpacked. @param {Uint8Array} packed */
+export async function inflate(packed) {
+  const stream = new Blob([/** @type {Uint8Array<ArrayBuffer>} */ (packed)]).stream().pipeThrough(new DecompressionStream('deflate-raw'));
+  return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+
+/**
+ * The teacher's side: with a teacher's lesson open, "make a homework link" writes the link into a
+ * field (and the clipboard, where the browser allows), with its length.
+ * @param {{ wasm: import('./wasm.js').Wasm, session: { teacherLesson: () => { name: string, text: string } | null },
+ *   report: (what: string, e: unknown) => void }} on
+ */
+export function createHomework({ wasm, session, report }) {
+  const row = byId('lesson-link-row');
+  const out = byId('lesson-link-out');
+  const field = /** @type {HTMLInputElement} */ (byId('lesson-link'));
+  const size = byId('lesson-link-size');
+
+  function refresh() {
+    row.hidden = session.teacherLesson() === null;
+    if (row.hidden) out.hidden = true;
+  }
+
+  byId('lesson-link-make').addEventListener('click', async () => {
+    const lesson = session.teacherLesson();
+    if (!lesson) return;
+    try {
+      const packed = await deflate(lesson.text);
+      const link = wasm.lessonLink(`${location.origin}${location.pathname}`, lesson.name, packed);
+      field.value = link;
+      setText(size, `${link.length} characters; the lesson travels inside it, after the #, which no server sees. It opens the lesson's first step in student mode.`);
+      out.hidden = false;
+      field.select();
+      navigator.clipboard?.writeText(link).catch(() => {});
+    } catch (e) {
+      report('No homework link for this lesson', e);
+    }
+  });
+  refresh();
+  return { refresh };
+}
