@@ -76,3 +76,29 @@ fn a_lesson_too_long_for_a_link_and_a_cut_link_are_refused_with_their_reasons() 
     assert_eq!(read_lesson_fragment("#t=3").unwrap(), None);
     assert_eq!(read_lesson_fragment("").unwrap(), None);
 }
+
+#[test]
+fn an_embed_of_a_linked_lessons_step_carries_the_link_on() {
+    let (_, out, _) = lesson_link(&["www/lessons/windows.md"]);
+    let fragment = &out.trim()[out.find('#').unwrap()..];
+    let (name, packed) = read_lesson_fragment(fragment).unwrap().unwrap();
+    let files = LessonFiles {
+        teacher: Some((LessonOrigin::Carried(name.clone()), inflate(&packed))),
+        link: Some(fragment.to_string()),
+        ..LessonFiles::default()
+    };
+    let (session, classroom, _) = Classroom::open(LINK_QUERY, files);
+    let embed = classroom.embed(&session, "https://example.org/flexarm/index.html?x=1#y", "lesson=2").unwrap();
+    assert!(embed.src.starts_with("https://example.org/flexarm/index.html?"), "{}", embed.src);
+    assert!(embed.src.ends_with(fragment), "{}", embed.src);
+    assert!(embed.src.contains("lesson=2") && embed.src.contains("embed=1"), "{}", embed.src);
+    // The embedded page reads it back as the student's page does.
+    let src_fragment = &embed.src[embed.src.find('#').unwrap()..];
+    assert_eq!(read_lesson_fragment(src_fragment).unwrap().unwrap().0, name);
+    // A lesson carried by an offline file (no link) or opened from disk still cannot be embedded.
+    let files =
+        LessonFiles { teacher: Some((LessonOrigin::Carried(name), inflate(&packed))), ..LessonFiles::default() };
+    let (session, classroom, _) = Classroom::open(LINK_QUERY, files);
+    let e = classroom.embed(&session, "https://example.org/", "lesson=2").unwrap_err().to_string();
+    assert!(e.contains("make a homework link"), "{e}");
+}

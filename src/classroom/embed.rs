@@ -46,6 +46,8 @@ impl Classroom {
             settings.view.strip = strip;
         }
         let mut pairs: Vec<String> = Vec::new();
+        // A homework link's lesson travels on in the embed's own fragment.
+        let mut fragment = String::new();
         let title = match c.lesson {
             Some(step) => {
                 // The step sets the run; the link carries only the figures and the strip over it.
@@ -57,9 +59,13 @@ impl Classroom {
                         expected: format!("a step from 1 to {}", lesson.steps.len()),
                     }));
                 };
-                if let Some(path) = source {
-                    pairs.push(format!("lesson_src={}", encode(&path)));
+                if let LessonSource::Path(path) = &source {
+                    pairs.push(format!("lesson_src={}", encode(path)));
                 }
+                fragment = match source {
+                    LessonSource::Link(f) => format!("#{f}"),
+                    _ => String::new(),
+                };
                 pairs.push(format!("lesson={step}"));
                 pairs.push("embed=1".into());
                 pairs.push(format!("views={}", encode(&settings.view.views_list())));
@@ -79,7 +85,7 @@ impl Classroom {
         if c.time > 0.0 {
             pairs.push(format!("t={}", crate::schema::format_number(c.time)));
         }
-        let src = format!("{base}?{}", pairs.join("&"));
+        let src = format!("{base}?{}{fragment}", pairs.join("&"));
         let [width, height] = c.size;
         let html = format!(
             "<iframe src=\"{}\" width=\"{width}\" height=\"{height}\" title=\"{}\" style=\"border:0\" loading=\"lazy\"></iframe>",
@@ -89,17 +95,18 @@ impl Classroom {
         Ok(Embed { html, src, width, height, title })
     }
 
-    /// The lesson a link can embed: its site path if a teacher's file (`lesson_src=`), and its steps.
-    fn lesson_for_embed(&self) -> Result<(Option<String>, crate::lesson::Lesson), Error> {
-        let source = match &self.lesson_origin {
-            LessonOrigin::BuiltIn => None,
-            LessonOrigin::Path(path) => Some(path.clone()),
-            LessonOrigin::File(_) | LessonOrigin::Carried(_) => {
-                return Err(Error::NotReady(
-                    "a lesson opened from your disk cannot be embedded: put the file beside the page and open it with lesson_src=",
-                ))
-            }
-        };
+    /// The lesson a link can embed: where a link finds it, and its steps.
+    fn lesson_for_embed(&self) -> Result<(LessonSource, crate::lesson::Lesson), Error> {
+        let source =
+            match (&self.lesson_origin, &self.link_fragment) {
+                (LessonOrigin::BuiltIn, _) => LessonSource::BuiltIn,
+                (LessonOrigin::Path(path), _) => LessonSource::Path(path.clone()),
+                (LessonOrigin::Carried(_), Some(fragment)) => LessonSource::Link(fragment.clone()),
+                (LessonOrigin::File(_) | LessonOrigin::Carried(_), _) => return Err(Error::NotReady(
+                    "a lesson opened from your disk cannot be embedded: make a homework link of it and open that, or \
+                     put the file beside the page and open it with lesson_src=",
+                )),
+            };
         if let Some(l) = &self.lesson {
             return Ok((source, l.lesson().clone()));
         }
@@ -112,6 +119,14 @@ impl Classroom {
         };
         Ok((source, crate::lesson::parse(text)?))
     }
+}
+
+/// Where an embed's link finds the lesson: every copy of the page has the built-in one; a
+/// teacher's is a file of the site (`lesson_src=`) or travels in the link's fragment.
+enum LessonSource {
+    BuiltIn,
+    Path(String),
+    Link(String),
 }
 
 /// An embed: the `<iframe>` to paste, and its parts (for the builder's live preview).

@@ -38,6 +38,9 @@ pub struct LessonFiles {
     pub teacher: Option<(LessonOrigin, Vec<u8>)>,
     /// The page is an offline file: it can load no lesson by path but the ones it carries.
     pub offline: bool,
+    /// The address's fragment the teacher's lesson came in (a homework link,
+    /// [`super::link`]; with [`LessonOrigin::Carried`]): an embed of its steps carries it on.
+    pub link: Option<String>,
 }
 
 impl LessonFiles {
@@ -65,6 +68,8 @@ pub struct Classroom {
     pub(super) answers_shown: bool,
     /// A link or a lesson step asked to start paused; the page takes it once.
     pub(super) start_paused: bool,
+    /// The homework link's fragment the teacher's lesson came in (without `#`), if it did.
+    pub(super) link_fragment: Option<String>,
 }
 
 impl Classroom {
@@ -116,6 +121,9 @@ impl Classroom {
             match checked(&bytes) {
                 Ok((text, _)) => {
                     classroom.lesson_text = Some(text);
+                    if matches!(origin, LessonOrigin::Carried(_)) {
+                        classroom.link_fragment = files.link.map(|f| f.trim_start_matches('#').to_string());
+                    }
                     classroom.lesson_origin = origin;
                 }
                 Err(e) => notices.push(Notice {

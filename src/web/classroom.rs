@@ -45,8 +45,9 @@ impl WebClassroom {
     /// built-in lesson the page fetched (`lessons/paper.md`; without it the lesson cannot open).
     /// A teacher's lesson, used instead of the built-in one if it reads and passes the checks, by
     /// its path (or name) and bytes: the file `lesson_src=PATH` names, which the page fetched, or
-    /// (`teacher_carried`) the one an offline file carries. `offline`: the page is an offline
-    /// file. Values it could not take are in `notices()`.
+    /// (`teacher_carried`) the one an offline file or a homework link carries (`link_fragment`:
+    /// the link's fragment, which an embed of its steps carries on). `offline`: the page is an
+    /// offline file. Values it could not take are in `notices()`.
     #[wasm_bindgen(constructor)]
     pub fn new(
         session: &mut WebSession,
@@ -56,11 +57,12 @@ impl WebClassroom {
         teacher_bytes: Option<Vec<u8>>,
         teacher_carried: bool,
         offline: bool,
+        link_fragment: Option<String>,
     ) -> WebClassroom {
         let teacher = teacher_path.zip(teacher_bytes).map(|(path, bytes)| {
             (if teacher_carried { LessonOrigin::Carried(path) } else { LessonOrigin::Path(path) }, bytes)
         });
-        let files = LessonFiles { built_in: lesson_text, teacher, offline };
+        let files = LessonFiles { built_in: lesson_text, teacher, offline, link: link_fragment };
         let (inner, notices) = Classroom::open_on(session.session_mut(), query, files);
         WebClassroom { inner, notices }
     }

@@ -64,6 +64,7 @@ impl Visit {
             built_in: lesson_text,
             teacher: teacher.map(|(path, bytes)| (LessonOrigin::Path(path), bytes)),
             offline: false,
+            link: None,
         };
         let (session, classroom, notices) = Classroom::open(query, files);
         (Visit { session, classroom }, notices)

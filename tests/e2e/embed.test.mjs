@@ -229,3 +229,26 @@ test('the builder on a phone: its form and preview fit the screen', { timeout: 1
   assert.deepEqual(problems, []);
   await close();
 });
+
+test('a step of a homework link\'s lesson embeds, the link carried on in the embed\'s address', { timeout: 120000 }, async () => {
+  // The teacher makes the link, then opens it as a student would and builds an embed of step 2.
+  const teacher = await open('?lesson_src=lessons/windows.md&mode=full');
+  await teacher.page.waitForSelector('#lesson-link-row:not([hidden])', { timeout: 20000 });
+  await teacher.page.click('#lesson-link-make');
+  await teacher.page.waitForSelector('#lesson-link-out:not([hidden])');
+  const link = new URL(await teacher.page.inputValue('#lesson-link'));
+  await teacher.close();
+  const { page, problems, close } = await open(`${link.search}${link.hash}`);
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 20000 });
+  await page.click('#embed-snippet');
+  await page.waitForSelector('#embed-builder:not([hidden])');
+  const code = await choose(page, { views: ['arm', 'traces'], size: [760, 480], strip: ['play', 'reset'], lesson: 2 });
+  const src = (await parse(page, code)).src;
+  assert.match(src, /lesson=2/);
+  assert.ok(src.endsWith(link.hash), `the embed carries the link's lesson: ${src.slice(0, 160)}…`);
+  // The embedded step is the teacher's lesson's second step.
+  const frame = page.frames().find((f) => f.parentFrame() === page.mainFrame());
+  await frame.waitForFunction(() => document.querySelector('#lesson-title')?.textContent === 'Find a stable δ', null, { timeout: 30000 });
+  assert.deepEqual(problems, []);
+  await close();
+});

@@ -115,7 +115,7 @@ async function linkedLesson(wasm) {
     const carried = wasm.readLessonFragment(window.location.hash);
     if (!carried) return { lesson: null, notices: [] };
     const bytes = await inflate(new Uint8Array(carried.bytes));
-    return { lesson: { path: carried.name, bytes, carried: true }, notices: [] };
+    return { lesson: { path: carried.name, bytes, carried: true, fragment: window.location.hash }, notices: [] };
   } catch (e) {
     return { lesson: null, notices: [{ key: 'lesson', text: `The homework link's lesson could not be read: ${messageOf(e)}` }] };
   }

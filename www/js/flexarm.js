@@ -23,12 +23,13 @@ export class Page {
    * @param {Wasm} wasm
    * @param {string} query
    * @param {string | undefined} lessonText the built-in lesson (`lessons/paper.md`)
-   * @param {{ path: string, bytes: Uint8Array, carried: boolean } | null | undefined} teacher a teacher's lesson file
+   * @param {{ path: string, bytes: Uint8Array, carried: boolean, fragment?: string } | null | undefined} teacher a
+   *   teacher's lesson file (`fragment`: the homework link's, when it came in one)
    * @param {boolean} [offline] the page is an offline file
    */
   constructor(wasm, query, lessonText, teacher, offline = false) {
     this.#session = new wasm.Session(query);
-    this.#classroom = new wasm.Classroom(this.#session, query, lessonText, teacher?.path, teacher?.bytes, teacher?.carried ?? false, offline);
+    this.#classroom = new wasm.Classroom(this.#session, query, lessonText, teacher?.path, teacher?.bytes, teacher?.carried ?? false, offline, teacher?.fragment);
   }
 
   /** The physics session, which the renderer draws. @returns {RawSession} */
