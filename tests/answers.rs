@@ -9,7 +9,7 @@ use common::play;
 
 use common::Visit;
 use flexarm::analysis::analyze;
-use flexarm::classroom::answers::{split_csv as cells, text_hash, Record, CSV_COLUMNS};
+use flexarm::classroom::answers::{check_csv, split_csv as cells, text_hash, Check, Record, CSV_COLUMNS};
 use flexarm::classroom::progress::LessonOrigin;
 use flexarm::lesson::{parse, LESSON_TEXT};
 
@@ -93,8 +93,22 @@ fn predictions_and_tasks_are_recorded_with_their_state_and_time_and_summed_up() 
     let comment = lines.next().unwrap();
     assert!(comment.starts_with('#') && comment.contains(&lesson.title) && comment.contains(&record.lesson_hash));
     assert_eq!(lines.next().unwrap(), CSV_COLUMNS.join(","));
-    let rows: Vec<Vec<String>> = lines.map(cells).collect();
+    let rows: Vec<Vec<String>> = lines.clone().filter(|l| !l.starts_with('#')).map(cells).collect();
     assert_eq!(rows.len(), record.entries.len());
+    // The last line checks the rows: intact as written; a row edited by hand, or a file cut short,
+    // is told apart.
+    assert!(csv.lines().last().unwrap().starts_with("# check: fnv1a64:"));
+    assert_eq!(check_csv(&csv), Check::Intact);
+    let edited = csv.replacen(",wrong,", ",right,", 1);
+    if edited != csv {
+        assert_eq!(check_csv(&edited), Check::Edited);
+    }
+    assert_eq!(
+        check_csv(&csv.replacen("fnv1a64", "fnv1a64", 1).replace(&record.entries[0].time, "2020-01-01T00:00:00Z")),
+        Check::Edited
+    );
+    let cut: String = csv.lines().take(3).map(|l| format!("{l}\n")).collect();
+    assert_eq!(check_csv(&cut), Check::Missing);
     for (row, e) in rows.iter().zip(&record.entries) {
         assert_eq!(row.len(), CSV_COLUMNS.len(), "{row:?}");
         assert_eq!(

@@ -40,6 +40,8 @@ pub struct Record {
     /// The lesson's number of steps.
     pub steps: usize,
     pub entries: Vec<Entry>,
+    /// Who answered, as the student wrote it ("" if not given).
+    pub student: String,
 }
 
 /// The record as the lesson panel shows it.
@@ -64,6 +66,39 @@ pub struct AnswerRow {
     /// The state string it was made in.
     pub state: String,
     pub time: String,
+}
+
+/// The line that names the student, and the last line, the check over the name and the rows.
+pub const STUDENT_PREFIX: &str = "# student: ";
+pub const CHECK_PREFIX: &str = "# check: ";
+
+/// What the check line of an answers file says of it ([`check_csv`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Check {
+    /// The name and the rows are as the page wrote them.
+    Intact,
+    /// No check line: cut short, or not written by the page.
+    Missing,
+    /// A row or the name differs from what the page wrote: edited by hand.
+    Edited,
+}
+
+/// The check of an answers file's text. It is a hash (FNV-1a, [`text_hash`]), not a signature:
+/// it detects a row or the name edited by hand in the file, and a file cut short; it cannot
+/// detect a student who computes it again for rows of their own making — the page's code, which
+/// every student has, computes it.
+pub fn check_csv(text: &str) -> Check {
+    let text = text.replace("\r\n", "\n");
+    let Some(first_end) = text.find('\n') else { return Check::Missing };
+    let rest = &text[first_end + 1..];
+    let Some(at) = rest.rfind(CHECK_PREFIX) else { return Check::Missing };
+    let (body, line) = rest.split_at(at);
+    let claimed = line[CHECK_PREFIX.len()..].trim();
+    if (at == 0 || body.ends_with('\n')) && claimed == text_hash(body) {
+        Check::Intact
+    } else {
+        Check::Edited
+    }
 }
 
 /// The CSV columns, in order.
@@ -105,7 +140,13 @@ pub fn iso_time(ms: f64) -> String {
 impl Record {
     /// An empty record for a lesson whose text hashes to `lesson_hash`.
     pub fn new(lesson: &Lesson, lesson_hash: String) -> Self {
-        Self { lesson: lesson.title.clone(), lesson_hash, steps: lesson.steps.len(), entries: Vec::new() }
+        Self {
+            lesson: lesson.title.clone(),
+            lesson_hash,
+            steps: lesson.steps.len(),
+            entries: Vec::new(),
+            student: String::new(),
+        }
     }
 
     /// A record kept earlier checked against the lesson open now: the same text (hash), steps
@@ -178,8 +219,12 @@ impl Record {
             self.lesson_hash,
             self.steps
         );
-        out += &CSV_COLUMNS.join(",");
-        out.push('\n');
+        let mut body = String::new();
+        if !self.student.is_empty() {
+            body += &format!("{STUDENT_PREFIX}{}\n", one_line(&self.student));
+        }
+        body += &CSV_COLUMNS.join(",");
+        body.push('\n');
         for e in &self.entries {
             let cells = [
                 quote(&self.lesson),
@@ -193,9 +238,11 @@ impl Record {
                 quote(&e.state),
                 quote(&e.time),
             ];
-            out += &cells.join(",");
-            out.push('\n');
+            body += &cells.join(",");
+            body.push('\n');
         }
+        // The check over everything after the first line: the name, the header and every row.
+        out += &format!("{body}{CHECK_PREFIX}{}\n", text_hash(&body));
         out
     }
 }
@@ -211,7 +258,9 @@ impl Record {
             Some((_, header)) if header == CSV_COLUMNS.join(",") => {}
             _ => return Err(bad(1, "no header line of the answers' columns")),
         }
-        let mut record = Record { lesson: String::new(), lesson_hash: String::new(), steps, entries: Vec::new() };
+        let student = text.lines().find_map(|l| l.strip_prefix(STUDENT_PREFIX)).unwrap_or_default().to_string();
+        let mut record =
+            Record { lesson: String::new(), lesson_hash: String::new(), steps, entries: Vec::new(), student };
         for (i, line) in lines {
             let c = split_csv(line);
             let [lesson, hash, step, step_title, kind, choice, choice_text, result, state, time] =
@@ -259,7 +308,7 @@ pub fn split_csv(line: &str) -> Vec<String> {
 
 /// A CSV cell on one line: quoted (quotes doubled) when it holds a comma or a quote; a line
 /// break (none of the lesson's texts has one) becomes a space.
-fn quote(text: &str) -> String {
+pub(super) fn quote(text: &str) -> String {
     let text = one_line(text);
     if text.contains([',', '"']) {
         format!("\"{}\"", text.replace('"', "\"\""))

@@ -11,6 +11,7 @@
 //! it makes ([`Classroom::follow`] after the session's own).
 
 pub mod answers;
+pub mod class;
 pub mod embed;
 pub mod lesson;
 pub mod link;

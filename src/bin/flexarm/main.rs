@@ -20,6 +20,7 @@
 //! `error: ...` line to stderr and exits with status 2; a failed analysis exits with status 1.
 
 mod analyze;
+mod answers;
 mod bundle;
 mod cli;
 mod data;
@@ -58,6 +59,7 @@ fn commands() -> Vec<Command> {
         figure::command(),
         bundle::command(),
         lesson_link::command(),
+        answers::command(),
     ]
 }
 
@@ -138,7 +140,7 @@ fn run(args: Vec<String>) -> Res<String> {
                 }
                 ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
                     Err(cli::usage_error(
-                        "no command given: use simulate, analyze, sweep, map, export-python, data, figure, bundle, lesson-link or help (see 'flexarm --help')",
+                        "no command given: use simulate, analyze, sweep, map, export-python, data, figure, bundle, lesson-link, answers or help (see 'flexarm --help')",
                     ))
                 }
                 _ => Err(cli::usage_error(one_line(&e, command.as_deref()))),
@@ -159,6 +161,7 @@ fn run(args: Vec<String>) -> Res<String> {
         Some(("figure", m)) => figure::run(m),
         Some(("bundle", m)) => bundle::run(m),
         Some(("lesson-link", m)) => lesson_link::run(m),
+        Some(("answers", m)) => answers::run(m),
         Some(("help", m)) => match m.get_one::<String>("command") {
             None => Ok(overview()),
             Some(all) if all == "all" => Ok(reference()),
@@ -167,7 +170,7 @@ fn run(args: Vec<String>) -> Res<String> {
                 Some(c) => run(vec![c.get_name().to_string(), "--help".into()]),
                 None => Err(cli::usage_error(format!(
                     "unknown command '{name}': use simulate, analyze, sweep, map, export-python, data, figure, bundle, \
-                     lesson-link or all"
+                     lesson-link, answers or all"
                 ))),
             },
         },

@@ -1,0 +1,45 @@
+//! `flexarm answers merge`: the teacher's side of the answers (issue 35) — the answer files of a
+//! class merged into one table per step, every file that cannot count named with its reason
+//! ([`flexarm::classroom::class`]).
+
+use clap::{ArgMatches, Command};
+use flexarm::classroom::class::{merge, AnswerFile};
+
+use crate::cli::{self, option, usage_error, Res};
+
+pub fn command() -> Command {
+    cli::command("answers", "The answers students hand in: merge a class's files into one table")
+        .subcommand_required(true)
+        .subcommand(
+            cli::command(
+                "merge",
+                "Merge answer files (the CSV the page downloads) into one table per step: how many answered, the \
+                 share right at the first try, the wrong choices most made, tasks done or shown; files that fail \
+                 their check (edited by hand, cut short) or answer another lesson text are named and left out",
+            )
+            .arg(
+                clap::Arg::new("files").value_name("FILES").num_args(1..).required(true).help("The answer files (CSV)"),
+            )
+            .arg(option("out", "FILE.csv", "Where to write the class's table (default: print it)")),
+        )
+}
+
+pub fn run(m: &ArgMatches) -> Res<String> {
+    let Some(("merge", m)) = m.subcommand() else {
+        return Err(usage_error("use: flexarm answers merge FILES… [--out class.csv]"));
+    };
+    let mut files = Vec::new();
+    for path in m.get_many::<String>("files").into_iter().flatten() {
+        let text = std::fs::read_to_string(path).map_err(|e| usage_error(format!("could not read '{path}': {e}")))?;
+        files.push(AnswerFile { name: path.clone(), text });
+    }
+    let class = merge(&files);
+    let table = class.to_csv();
+    match m.get_one::<String>("out") {
+        Some(out) => {
+            cli::write_file("--out", out, &table)?;
+            Ok(format!("{}wrote the table to {out}\n", class.summary()))
+        }
+        None => Ok(format!("{table}\n{}", class.summary())),
+    }
+}

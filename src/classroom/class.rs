@@ -1,0 +1,181 @@
+//! The teacher's side of the answers (issue 35): many students' answer files
+//! ([`super::answers::Record::to_csv`]) merged into one table — per step, how many answered, the
+//! share right at the first try, the wrong choices most made; tasks done or shown — with every
+//! file that cannot count named and why: unreadable, of another lesson text, without its check
+//! line, or edited by hand ([`super::answers::check_csv`]).
+
+use super::answers::{check_csv, Check, Record};
+use crate::plot::format::significant;
+
+/// One answers file: its name and text.
+#[derive(Clone, Debug)]
+pub struct AnswerFile {
+    pub name: String,
+    pub text: String,
+}
+
+/// One step of the lesson, over the class.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StepTally {
+    pub step: usize,
+    pub title: String,
+    /// Students who made a prediction here, and of those, right at their first try.
+    pub predicted: usize,
+    pub right: usize,
+    /// The wrong first choices, by text, most made first.
+    pub wrong: Vec<(String, usize)>,
+    /// Students who did the task themselves, and who had it shown.
+    pub done: usize,
+    pub shown: usize,
+}
+
+/// The merged class.
+#[derive(Clone, Debug, Default)]
+pub struct ClassTable {
+    pub lesson: String,
+    pub lesson_hash: String,
+    /// The files that counted, with the name each gives (or "").
+    pub counted: Vec<(String, String)>,
+    /// The files that did not, and why.
+    pub refused: Vec<(String, String)>,
+    pub steps: Vec<StepTally>,
+}
+
+/// Merges the files: the lesson text most of the readable files answer is the class's; files
+/// of another text, unreadable, or failing their check are named and left out.
+pub fn merge(files: &[AnswerFile]) -> ClassTable {
+    let mut class = ClassTable::default();
+    let mut records: Vec<(&AnswerFile, Record)> = Vec::new();
+    for f in files {
+        match Record::from_csv(&f.text, 0) {
+            Err(e) => class.refused.push((f.name.clone(), format!("not an answers file: {e}"))),
+            Ok(r) if r.entries.is_empty() => class.refused.push((f.name.clone(), "no answers in it".into())),
+            Ok(r) => match check_csv(&f.text) {
+                Check::Intact => records.push((f, r)),
+                Check::Missing => {
+                    class.refused.push((f.name.clone(), "no check line: cut short, or not written by the page".into()))
+                }
+                Check::Edited => class
+                    .refused
+                    .push((f.name.clone(), "its check does not match: a row or the name was edited".into())),
+            },
+        }
+    }
+    // The class's lesson text: the one most files answer.
+    let mut hashes: Vec<(&str, usize)> = Vec::new();
+    for (_, r) in &records {
+        match hashes.iter_mut().find(|(h, _)| *h == r.lesson_hash) {
+            Some((_, n)) => *n += 1,
+            None => hashes.push((&r.lesson_hash, 1)),
+        }
+    }
+    let Some(&(hash, _)) = hashes.iter().max_by_key(|(_, n)| *n) else { return class };
+    class.lesson_hash = hash.to_string();
+    for (f, r) in &records {
+        if r.lesson_hash != class.lesson_hash {
+            class.refused.push((f.name.clone(), format!("answers another text of the lesson ({})", r.lesson_hash)));
+            continue;
+        }
+        class.lesson.clone_from(&r.lesson);
+        class.counted.push((f.name.clone(), r.student.clone()));
+        tally(&mut class.steps, r);
+    }
+    class.steps.sort_by_key(|s| s.step);
+    for s in &mut class.steps {
+        s.wrong.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+    }
+    class
+}
+
+/// Adds one student's record: the first prediction per step, the last task result per step.
+fn tally(steps: &mut Vec<StepTally>, r: &Record) {
+    let mut predicted: Vec<usize> = Vec::new();
+    let mut tasks: Vec<(usize, &str)> = Vec::new();
+    for e in &r.entries {
+        let at = match steps.iter().position(|s| s.step == e.step) {
+            Some(i) => i,
+            None => {
+                steps.push(StepTally { step: e.step, title: e.step_title.clone(), ..StepTally::default() });
+                steps.len() - 1
+            }
+        };
+        let s = &mut steps[at];
+        match e.kind.as_str() {
+            "prediction" if !predicted.contains(&e.step) => {
+                predicted.push(e.step);
+                s.predicted += 1;
+                if e.result == "right" {
+                    s.right += 1;
+                } else {
+                    match s.wrong.iter_mut().find(|(t, _)| *t == e.choice_text) {
+                        Some((_, n)) => *n += 1,
+                        None => s.wrong.push((e.choice_text.clone(), 1)),
+                    }
+                }
+            }
+            "task" => match tasks.iter_mut().find(|(step, _)| *step == e.step) {
+                Some((_, result)) => *result = &e.result,
+                None => tasks.push((e.step, &e.result)),
+            },
+            _ => {}
+        }
+    }
+    for (step, result) in tasks {
+        if let Some(s) = steps.iter_mut().find(|s| s.step == step) {
+            match result {
+                "done" => s.done += 1,
+                "shown" => s.shown += 1,
+                _ => {}
+            }
+        }
+    }
+}
+
+impl ClassTable {
+    /// The table as CSV: a `#` line naming the lesson, how many files counted and which did not,
+    /// then one row per step.
+    pub fn to_csv(&self) -> String {
+        let mut out = format!(
+            "# flexarm class answers: {} ({}), {} files counted, {} not\n",
+            self.lesson,
+            self.lesson_hash,
+            self.counted.len(),
+            self.refused.len()
+        );
+        for (name, why) in &self.refused {
+            out += &format!("# not counted: {name}: {why}\n");
+        }
+        out += "step,step_title,predicted,right,share_right,wrong_choices,task_done,task_shown\n";
+        for s in &self.steps {
+            let share =
+                if s.predicted > 0 { significant(s.right as f64 / s.predicted as f64, 2) } else { String::new() };
+            let wrong: Vec<String> = s.wrong.iter().map(|(t, n)| format!("“{t}” ×{n}")).collect();
+            out += &format!(
+                "{},{},{},{},{},{},{},{}\n",
+                s.step,
+                super::answers::quote(&s.title),
+                s.predicted,
+                s.right,
+                share,
+                super::answers::quote(&wrong.join("; ")),
+                s.done,
+                s.shown
+            );
+        }
+        out
+    }
+
+    /// In words, for the command line: the lesson, the counts, the files left out and why.
+    pub fn summary(&self) -> String {
+        let mut s = format!(
+            "{}: {} answer files counted, {} not.\n",
+            if self.lesson.is_empty() { "no lesson" } else { &self.lesson },
+            self.counted.len(),
+            self.refused.len()
+        );
+        for (name, why) in &self.refused {
+            s += &format!("  not counted: {name}: {why}\n");
+        }
+        s
+    }
+}
