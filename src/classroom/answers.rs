@@ -101,6 +101,23 @@ pub fn check_csv(text: &str) -> Check {
     }
 }
 
+/// The longest name a student can give, characters.
+pub const MAX_STUDENT: usize = 80;
+
+/// A student's name as the answers carry it: on one line, trimmed, at most [`MAX_STUDENT`]
+/// characters; an error with the reason otherwise.
+pub fn student_name(text: &str) -> Result<String, Error> {
+    let name = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    if name.chars().count() > MAX_STUDENT {
+        return Err(Error::Parse(crate::error::ParseError {
+            key: "name".into(),
+            text: name.chars().take(20).collect::<String>() + "…",
+            expected: format!("a name (and student id) of at most {MAX_STUDENT} characters"),
+        }));
+    }
+    Ok(name)
+}
+
 /// The CSV columns, in order.
 pub const CSV_COLUMNS: [&str; 10] =
     ["lesson", "lesson_hash", "step", "step_title", "kind", "choice", "choice_text", "result", "state", "time"];

@@ -355,6 +355,16 @@ impl Classroom {
         self.restore_answers(Record::from_csv(csv, steps)?)
     }
 
+    /// Who answers: the name (and student id) the student gives once, written into the answers
+    /// they hand in ([`Record::student`]).
+    pub fn set_student(&mut self, name: &str) -> Result<(), Error> {
+        let name = crate::classroom::answers::student_name(name)?;
+        if let Some(l) = self.lesson.as_mut() {
+            l.record.student = name;
+        }
+        Ok(())
+    }
+
     /// Forgets every answer and task of the lesson (the page's "Clear my answers"); the step shown
     /// stays, from its start.
     pub fn clear_answers(&mut self, session: &mut Session) -> Result<(), Error> {

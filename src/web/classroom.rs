@@ -187,6 +187,13 @@ impl WebClassroom {
         change(self, session, |c, _| c.restore_answers_csv(csv)).map_err(js_error)
     }
 
+    /// Who answers (the name, and the student id if the teacher asks): written into the answers;
+    /// throws with the reason for a name too long.
+    #[wasm_bindgen(js_name = setStudent)]
+    pub fn set_student(&mut self, name: &str) -> Result<(), JsError> {
+        self.inner.set_student(name).map_err(js_error)
+    }
+
     /// `{name, text}` of the teacher's lesson loaded now (what a homework link carries), or null
     /// for the built-in lesson.
     #[wasm_bindgen(js_name = teacherLesson)]

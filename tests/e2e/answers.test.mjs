@@ -38,8 +38,18 @@ test('the answers are summed up at the end, downloaded, kept across a reload and
   await page.locator('#lesson-record').scrollIntoViewIfNeeded();
   await page.screenshot({ path: path.join(shots, 'answers-summary-laptop.png') });
 
-  const csv = (await clickForDownload(page, '#answers-csv')).bytes.toString('utf8').trim().split('\n');
-  assert.match(csv[0], /^# flexarm lesson answers: Homework: the windows of δ \(fnv1a64:[0-9a-f]{16}, 5 steps\)/);
+  // The name, asked once: it goes into the file and its name (a teacher gets 60 files).
+  await page.fill('#student-name', 'Ada Lovelace 12345');
+  await page.press('#student-name', 'Tab');
+  const download = await clickForDownload(page, '#answers-csv');
+  assert.equal(download.name, 'flexarm-answers-homework-the-windows-of-ada-lovelace-12345.csv');
+  const lines = download.bytes.toString('utf8').trim().split('\n');
+  assert.match(lines[0], /^# flexarm lesson answers: Homework: the windows of δ \(fnv1a64:[0-9a-f]{16}, 5 steps\)/);
+  assert.equal(lines[1], '# student: Ada Lovelace 12345');
+  // The last line checks the name and the rows (the teacher's merge finds an edited row by it).
+  assert.match(lines[lines.length - 1], /^# check: fnv1a64:[0-9a-f]{16}$/);
+  const csv = lines.filter((l) => !l.startsWith('#'));
+  csv.unshift(lines[0]);
   assert.equal(csv[1], 'lesson,lesson_hash,step,step_title,kind,choice,choice_text,result,state,time');
   assert.equal(csv.length, 2 + 5);
   for (const row of csv.slice(2)) {
@@ -56,6 +66,7 @@ test('the answers are summed up at the end, downloaded, kept across a reload and
   // A reload gives them back (localStorage, one key per lesson text).
   await page.reload();
   await page.waitForFunction(() => document.querySelector('#lesson-record-summary')?.textContent === 'Your answers (5)', null, { timeout: 15000 });
+  assert.equal(await page.inputValue('#student-name'), 'Ada Lovelace 12345', 'the name is asked once');
   const keys = await page.evaluate(() => Object.keys(localStorage));
   assert.deepEqual(keys.filter((k) => k.startsWith('flexarm.answers.')).length, 1);
 

@@ -10,11 +10,20 @@ export function storageKey(hash) {
   return `flexarm.answers.${hash}`;
 }
 
-/** The download's file name for a lesson title (pure): letters, digits and dashes only. */
-export function answersFileName(/** @type {string} */ title, /** @type {string} */ ext) {
-  const slug = title.toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-+|-+$/g, '').slice(0, 40);
-  return `flexarm-answers-${slug || 'lesson'}.${ext}`;
+/** Letters, digits and dashes only, at most 40 (pure). @param {string} text */
+function slugOf(text) {
+  return text.toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-+|-+$/g, '').slice(0, 40);
 }
+
+/** The download's file name for a lesson title and the student's name (pure): letters, digits
+ * and dashes only, so that a teacher's 60 files do not share one name. */
+export function answersFileName(/** @type {string} */ title, /** @type {string} */ ext, name = '') {
+  const who = slugOf(name);
+  return `flexarm-answers-${slugOf(title) || 'lesson'}${who ? `-${who}` : ''}.${ext}`;
+}
+
+/** Where the student's name is kept: asked once, for every lesson. */
+export const STUDENT_KEY = 'flexarm.student';
 
 /** "05:19:43 UTC" from an ISO 8601 UTC time (pure). @param {string} iso */
 export function clock(iso) {
@@ -89,12 +98,32 @@ export function createAnswers(on) {
     }
   };
 
+  // The name, asked once (kept in this browser for every lesson) and written into the answers.
+  const nameField = /** @type {HTMLInputElement} */ (byId('student-name'));
+  nameField.value = storage()?.getItem(STUDENT_KEY) ?? '';
+  const giveName = () => {
+    try {
+      on.session.setStudent(nameField.value);
+    } catch (e) {
+      on.report('That name cannot go with your answers', e);
+    }
+  };
+  nameField.addEventListener('change', () => {
+    try {
+      storage()?.setItem(STUDENT_KEY, nameField.value.trim());
+    } catch {
+      // Kept for this visit only.
+    }
+    giveName();
+    saved = -1;
+    on.changed();
+  });
   byId('answers-json').addEventListener('click', () => {
     const json = answersJson(on.session.answersCsv());
-    on.download(answersFileName(current?.title ?? '', 'json'), `${JSON.stringify(json, null, 2)}\n`, 'application/json');
+    on.download(answersFileName(current?.title ?? '', 'json', nameField.value), `${JSON.stringify(json, null, 2)}\n`, 'application/json');
   });
   byId('answers-csv').addEventListener('click', () => {
-    on.download(answersFileName(current?.title ?? '', 'csv'), on.session.answersCsv(), 'text/csv');
+    on.download(answersFileName(current?.title ?? '', 'csv', nameField.value), on.session.answersCsv(), 'text/csv');
   });
   // Clearing asks twice, in the button itself (no dialog): a first click arms it for a few seconds.
   const clear = /** @type {HTMLButtonElement} */ (byId('answers-clear'));
@@ -162,6 +191,7 @@ export function createAnswers(on) {
     const { record: r } = lesson;
     if (restored !== r.lesson_hash) {
       restored = r.lesson_hash;
+      if (nameField.value) giveName();
       saved = r.count;
       const text = storage()?.getItem(storageKey(r.lesson_hash));
       if (text) {

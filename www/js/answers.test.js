@@ -10,6 +10,8 @@ test('a lesson text has its own storage key', () => {
 test('the download is named after the lesson, in safe characters', () => {
   assert.equal(answersFileName('Homework: the windows of δ', 'csv'), 'flexarm-answers-homework-the-windows-of.csv');
   assert.equal(answersFileName('<script>', 'json'), 'flexarm-answers-script.json');
+  // With the student's name: 60 files of one lesson do not share a name.
+  assert.equal(answersFileName('Homework: the windows of δ', 'csv', 'Ada Lovelace 12345'), 'flexarm-answers-homework-the-windows-of-ada-lovelace-12345.csv');
   assert.equal(answersFileName('', 'csv'), 'flexarm-answers-lesson.csv');
 });
 

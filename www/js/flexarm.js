@@ -312,6 +312,11 @@ export class Page {
 
   // ------------------------------------------------------------------------------------ the lesson
 
+  /** Who answers: written into the answers handed in. @param {string} name */
+  setStudent(name) {
+    this.#classroom.setStudent(name);
+  }
+
   /** The teacher's lesson loaded now, as a homework link carries it (null: the built-in one).
    * @returns {{ name: string, text: string } | null} */
   teacherLesson() {
