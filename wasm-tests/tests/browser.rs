@@ -248,8 +248,16 @@ fn a_teachers_lesson_and_the_python_script_in_the_page() {
     let homework = include_bytes!("../../www/lessons/windows.md").to_vec();
     let query = "lesson_src=lessons/windows.md&lesson=2";
     let mut session = WebSession::new(query);
-    let classroom =
-        WebClassroom::new(&mut session, query, None, Some("lessons/windows.md".into()), Some(homework), false, false);
+    let classroom = WebClassroom::new(
+        &mut session,
+        query,
+        None,
+        Some("lessons/windows.md".into()),
+        Some(homework),
+        false,
+        false,
+        None,
+    );
     assert_eq!(js_sys::Array::from(&session.notices().map_err(JsValue::from).unwrap()).length(), 0);
     assert_eq!(js_sys::Array::from(&classroom.notices().map_err(JsValue::from).unwrap()).length(), 0);
     let state = classroom.state_string(&session);
@@ -275,7 +283,7 @@ fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
     let teacher = || (Some("lessons/windows.md".to_string()), Some(homework.clone()));
     let mut session = WebSession::new(query);
     let (path, bytes) = teacher();
-    let mut classroom = WebClassroom::new(&mut session, query, None, path, bytes, false, false);
+    let mut classroom = WebClassroom::new(&mut session, query, None, path, bytes, false, false, None);
     let status = session.status().map_err(JsValue::from).unwrap();
     let runs = js_sys::Array::from(&get(&status, "runs"));
     assert_eq!(verdict(&runs.get(0)), "hidden");
@@ -293,11 +301,12 @@ fn answers_are_kept_given_back_and_student_mode_hides_the_verdict() {
 
     let mut again = WebSession::new(query);
     let (path, bytes) = teacher();
-    let mut reloaded = WebClassroom::new(&mut again, query, None, path, bytes, false, false);
+    let mut reloaded = WebClassroom::new(&mut again, query, None, path, bytes, false, false, None);
     reloaded.restore_answers(&mut again, &csv).map_err(JsValue::from).unwrap();
     assert_eq!(reloaded.answers_csv(), csv);
     let mut other_session = WebSession::new("lesson=1");
-    let mut other = WebClassroom::new(&mut other_session, "lesson=1", Some(flexarm_lesson()), None, None, false, false);
+    let mut other =
+        WebClassroom::new(&mut other_session, "lesson=1", Some(flexarm_lesson()), None, None, false, false, None);
     let e = other.restore_answers(&mut other_session, &csv).map_err(error_message).unwrap_err();
     assert!(e.contains("another text of the lesson"), "{e}");
     reloaded.act(&mut again, "show", 0).map_err(JsValue::from).unwrap();
@@ -321,6 +330,7 @@ fn an_offline_file_carries_its_lesson_step_moment_and_student_mode() {
         Some(homework.as_bytes().to_vec()),
         true,
         true,
+        None,
     );
     let state = classroom.state_string(&session);
     assert!(state.contains("lesson=2") && state.contains("answers=hidden") && !state.contains("lesson_src"), "{state}");
@@ -346,7 +356,7 @@ fn an_offline_file_carries_its_lesson_step_moment_and_student_mode() {
     assert!(words.contains("step 2") && words.contains("student mode"), "{words}");
     // Offline, a lesson by path cannot load: said in one notice.
     let mut other = WebSession::new("lesson_src=lessons/mine.md");
-    let refused = WebClassroom::new(&mut other, "lesson_src=lessons/mine.md", None, None, None, false, true);
+    let refused = WebClassroom::new(&mut other, "lesson_src=lessons/mine.md", None, None, None, false, true, None);
     let notices = js_sys::Array::from(&refused.notices().map_err(JsValue::from).unwrap());
     assert_eq!(notices.length(), 1);
     assert!(js_sys::JSON::stringify(&notices.get(0))
@@ -381,4 +391,36 @@ fn an_encoder_keeps_the_loop_stable_but_costs_tracking() {
     let study = session.sensor_study(100).map_err(JsValue::from).unwrap();
     assert_eq!(get(&study, "done").as_bool(), Some(true));
     assert!(get(&study, "best_row").as_f64().is_some_and(|i| i > 0.0), "a best δ above the smallest");
+}
+
+/// One homework link (issue 35), through the page's own exports: the link's fragment reads back
+/// to the name and bytes it was written with, and the lesson it carries opens at its first step
+/// in student mode from the link's query.
+#[wasm_bindgen_test]
+fn a_homework_links_fragment_reads_back_and_its_lesson_opens_in_student_mode() {
+    let packed = vec![0u8, 1, 2, 250, 251, 252, 253, 254, 255];
+    let link = flexarm::web::classroom::lesson_link("https://example.org/flexarm/", "my homework.md", packed.clone())
+        .unwrap_or_else(|_| panic!("a link"));
+    let (query, fragment) = link.split_once('?').unwrap().1.split_once('#').unwrap();
+    assert_eq!(query, "mode=full&answers=hidden&lesson=1");
+    let carried = flexarm::web::classroom::read_lesson_fragment(&format!("#{fragment}"))
+        .unwrap_or_else(|_| panic!("the fragment reads"));
+    assert_eq!(get(&carried, "name").as_string().as_deref(), Some("my homework.md"));
+    let bytes: Vec<u8> = serde_wasm_bindgen::from_value(get(&carried, "bytes")).unwrap();
+    assert_eq!(bytes, packed);
+    // The lesson as the page hands it over once the browser has unpacked it.
+    let homework = include_str!("../../www/lessons/windows.md");
+    let mut session = WebSession::new(query);
+    let classroom = WebClassroom::new(
+        &mut session,
+        query,
+        None,
+        Some("windows.md".into()),
+        Some(homework.as_bytes().to_vec()),
+        true,
+        false,
+        Some(format!("#{fragment}")),
+    );
+    let state = classroom.state_string(&session);
+    assert!(state.contains("lesson=1") && state.contains("answers=hidden"), "{state}");
 }
