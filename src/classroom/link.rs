@@ -72,12 +72,22 @@ const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwx
 
 /// base64url without padding (RFC 4648 §5): safe in a URL as it is.
 pub fn base64url(bytes: &[u8]) -> String {
+    encode_base64(bytes, ALPHABET, false)
+}
+
+/// base64 (RFC 4648) in `alphabet` (the standard one, §4, or the URL's, §5), padded with `=` to
+/// whole groups of four if `pad`: the one encoder of the offline file and the homework link.
+pub fn encode_base64(bytes: &[u8], alphabet: &[u8; 64], pad: bool) -> String {
     let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
     for chunk in bytes.chunks(3) {
         let b = [chunk[0], *chunk.get(1).unwrap_or(&0), *chunk.get(2).unwrap_or(&0)];
         let n = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
-        for i in 0..=chunk.len() {
-            out.push(ALPHABET[((n >> (18 - 6 * i)) & 63) as usize] as char);
+        for i in 0..4 {
+            if i <= chunk.len() {
+                out.push(alphabet[((n >> (18 - 6 * i)) & 63) as usize] as char);
+            } else if pad {
+                out.push('=');
+            }
         }
     }
     out

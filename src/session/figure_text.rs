@@ -16,7 +16,7 @@ impl Session {
         if v.torque {
             kinds.push(PanelKind::Torque);
         }
-        if v.measured && !v.predict && self.run(0).is_some_and(|r| r.closed_loop().config().sensors.is_digital()) {
+        if v.measured && !v.predict && self.reads_sensors() {
             kinds.push(PanelKind::Velocity);
         }
         if v.poles {

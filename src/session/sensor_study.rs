@@ -25,14 +25,25 @@ impl Session {
         self.drawn_view().study && self.settings.a.config().sensors.is_digital()
     }
 
-    /// The study's generation (it moves with every start and every run done) and, if it is run
-    /// A's current one, its facts so far: what the figure draws. None before it starts or after
-    /// run A's settings other than δ changed (until the next step starts it over).
-    pub fn study_facts(&self) -> (u64, Option<SensorStudy>) {
+    /// True if run A's running controller reads sensors (a digital controller): the velocity panel
+    /// and the study have something to show in a figure.
+    pub fn reads_sensors(&self) -> bool {
+        self.run(0).is_some_and(|r| r.closed_loop().config().sensors.is_digital())
+    }
+
+    /// The study's generation: it moves with every start and every run done (cheap; the figure
+    /// asks every frame and takes [`Self::study_facts`] only when it moved).
+    pub fn study_generation(&self) -> u64 {
+        self.sensor_study.generation
+    }
+
+    /// The study's facts so far, if it is run A's current one: what the figure draws. None before
+    /// it starts or after run A's settings other than δ changed (until the next step starts it
+    /// over).
+    pub fn study_facts(&self) -> Option<SensorStudy> {
         let job = &self.sensor_study;
         let current = job.key == Some(study_key(&self.settings.a.config()));
-        let facts = job.sweep.as_ref().filter(|_| current).map(|sweep| SensorStudy::of(sweep, &job.linear));
-        (job.generation, facts)
+        job.sweep.as_ref().filter(|_| current).map(|sweep| SensorStudy::of(sweep, &job.linear))
     }
 
     /// Advances the study of run A's sensors by up to `runs` simulated slews (0: only report),

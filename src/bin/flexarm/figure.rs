@@ -91,7 +91,7 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     }
     // The study against δ (asked for by name, whatever the page's switch says), run to its end:
     // one simulated slew per δ with the sensors and one with perfect ones.
-    if panel == FigurePanel::Study && session.run(0).is_some_and(|r| r.closed_loop().config().sensors.is_digital()) {
+    if panel == FigurePanel::Study && session.reads_sensors() {
         while !session.sensor_study_step(1).map_err(lib_error)?.done {}
     }
     let figure = figure_svg(&session, panel.id(), m.get_flag("dark")).map_err(lib_error)?;

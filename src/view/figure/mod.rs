@@ -212,7 +212,7 @@ pub fn figure_choices(session: &Session) -> Vec<FigureChoice> {
 /// one instant) and run A's controller digital.
 fn velocity_shown(session: &Session) -> bool {
     let v = session.drawn_view();
-    v.measured && !v.predict && session.run(0).is_some_and(|r| r.closed_loop().config().sensors.is_digital())
+    v.measured && !v.predict && session.reads_sensors()
 }
 
 /// The figure `panel` of the session as it is now: light, or in the dark scheme if `dark`.
@@ -238,7 +238,7 @@ pub fn figure_svg_captioned(session: &Session, state: &str, panel: &str, dark: b
              or differenced velocities)",
         ));
     }
-    if panel == FigurePanel::Study && !session.run(0).is_some_and(|r| r.closed_loop().config().sensors.is_digital()) {
+    if panel == FigurePanel::Study && !session.reads_sensors() {
         return Err(Error::NotReady(
             "the study against δ needs a real robot's sensors: a digital controller (an encoder, noise or differenced \
              velocities)",

@@ -24,12 +24,12 @@ impl Scene {
 
     /// Copies the session's sensor study when it moved (a start, a run done, another limit).
     fn sync_study(&mut self, session: &Session) {
-        let (generation, study) = session.study_facts();
+        let generation = session.study_generation();
         let limit = session.run(0).and_then(|a| a.closed_loop().config().sensors.limit());
         if generation == self.panels.study.generation() && limit == self.panels.study.limit() {
             return;
         }
-        if self.panels.study.follow(generation, study.as_ref(), limit) {
+        if self.panels.study.follow(generation, session.study_facts().as_ref(), limit) {
             self.rebuild_static();
             self.info_generation += 1;
         }
