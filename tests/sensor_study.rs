@@ -307,7 +307,7 @@ fn where_only_the_digital_loop_is_unstable_the_study_says_how_it_reads_makes_the
     // With K_pr at α = 2 the paper's loop is stable up to past 0.1 s (the paper's Fig. 5.2
     // settings); read through a differenced encoder and held over δ, the same controller is
     // unstable at 0.07 and 0.1 s. ρ has no noise in it, so the study must not blame the noise.
-    let said = "The paper's loop — exact readings, the preliminary feedback and the friction observer acting \
+    let said = "The same loop with perfect sensors as in the paper — exact readings, the preliminary feedback and the friction observer acting \
                 continuously";
     let v = study("pf=paper&encoder=1024&velocity=difference");
     let unstable: Vec<&flexarm::analysis::sensor_study::StudyRow> =
@@ -327,4 +327,17 @@ fn where_only_the_digital_loop_is_unstable_the_study_says_how_it_reads_makes_the
     let off = study("pf=off&encoder=4096&velocity=difference");
     assert!(off.study.rows.iter().any(|r| r.unstable() && r.ideal_spectral_radius.is_some_and(|p| p >= 1.0)));
     assert!(!off.summary.iter().any(|l| l.contains(said)), "{:?}", off.summary);
+    // On other arms and α the sentence stands exactly where the loop with perfect sensors, analysed
+    // apart, is stable at every δ ρ rules out.
+    for base in ["pf=paper&arm=damped", "pf=paper&arm=heavier", "pf=paper&arm=stiffer", "pf=paper&alpha=5"] {
+        let v = study(&format!("{base}&encoder=1024&velocity=difference"));
+        let perfect_stable = v.study.rows.iter().filter(|r| r.unstable()).all(|r| {
+            let mut s = Settings::default();
+            s.read(&format!("{base}&delta={}", r.sampling_period), Source::CommandLine).unwrap();
+            flexarm::analysis::spectral_radius(&s.a.config(), None).unwrap() < 1.0
+        });
+        let any_unstable = v.study.rows.iter().any(|r| r.unstable());
+        let says = v.summary.iter().any(|l| l.contains(said));
+        assert_eq!(says, any_unstable && perfect_stable, "{base}: {:?}", v.summary);
+    }
 }

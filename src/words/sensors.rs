@@ -451,7 +451,7 @@ fn unstable_rows(study: &SensorStudy, sensors: &SensorModel) -> Option<String> {
             None => format!("{held} make the difference"),
         };
         s += &format!(
-            " The paper's loop — exact readings, the preliminary feedback and the friction observer acting \
+            " The same loop with perfect sensors as in the paper — exact readings, the preliminary feedback and the friction observer acting \
              continuously (the perfect-sensors column) — is stable there (ρ = {} at {} s): {cause}, not the noise \
              (ρ has none).",
             first.ideal_spectral_radius.map_or("—".to_string(), crate::words::numbers::rho),
