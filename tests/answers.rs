@@ -290,3 +290,37 @@ fn a_lessons_header_sets_student_mode_and_a_step_can_show_the_answers() {
     assert!(bad("# T\nanswers: shown\n## S\nstate: x\ntext\n").contains("only 'answers: hidden'"));
     assert!(bad("# T\n## S\nstate: x\nanswers: hidden\ntext\n").contains("only 'answers: shown'"));
 }
+
+/// "Show them" on a step that keeps the windows for its answer (`hide: windows`): ρ(δ) comes
+/// back empty, and says why (issue 35, item 6).
+#[test]
+fn rho_of_delta_says_why_it_is_empty_on_a_step_that_hides_the_windows() {
+    use flexarm::schema::PanelKind;
+    use flexarm::view::options::ViewOptions;
+    use flexarm::view::scene::Scene;
+    let lesson = parse(HOMEWORK).unwrap();
+    let step =
+        lesson.steps.iter().position(|s| s.hide_windows && s.question.is_some()).expect("a step hides the windows");
+    let q = lesson.steps[step].question.as_ref().unwrap();
+    let mut s = homework(&format!("lesson={}&answers=hidden", step + 1));
+    s.show_answers();
+    assert!(!s.answers_hidden() && s.drawn_view().rho, "the student showed the answers: ρ(δ) is drawn");
+    play(&mut s, 0.5);
+    s.refresh();
+    let note = |s: &Visit| {
+        let mut scene = Scene::new(ViewOptions::default(), 1280.0, 800.0, 1.0);
+        scene.follow_view(&s.drawn_view());
+        scene.draw_session(s);
+        let info = scene.panel_info();
+        info.iter().find(|p| p.id == PanelKind::RhoCurve.id()).map(|p| p.note.clone()).expect("ρ(δ) is shown")
+    };
+    assert!(s.cached_windows().is_none());
+    let hidden = note(&s);
+    assert!(hidden.contains("hidden until you answer this step"), "{hidden}");
+    // Answered: the windows are back, and so is the curve's own note.
+    s.lesson_answer(q.correct).unwrap();
+    s.refresh();
+    assert!(s.cached_windows().is_some());
+    let shown = note(&s);
+    assert!(shown.starts_with("ρ(δ) at α") && !shown.contains("hidden"), "{shown}");
+}

@@ -78,6 +78,14 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
         assert_eq!(tally.wrong, vec![(wrong.clone(), 57 - right)], "step {}", i + 1);
         q += 1;
     }
+    // Nobody did a task: each task step was left with Next ▸, and the table says so for every
+    // counted student; a question step answered was not skipped.
+    for (i, step) in lesson.steps.iter().enumerate() {
+        let tally = class.steps.iter().find(|s| s.step == i + 1);
+        let expected =
+            if step.goal.is_some() && step.question.is_none() && i + 1 < lesson.steps.len() { 57 } else { 0 };
+        assert_eq!(tally.map_or(0, |t| t.skipped), expected, "step {} ('{}')", i + 1, step.title);
+    }
     let csv = class.to_csv();
     assert!(csv.contains("# not counted: student-06.csv: its check does not match"), "{csv}");
 
@@ -107,4 +115,46 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
     let rows = |t: &str| t.lines().filter(|l| !l.starts_with('#')).map(str::to_string).collect::<Vec<_>>();
     assert_eq!(rows(&written), rows(&csv));
     println!("{written}");
+}
+
+/// *Next ▸* before the answer: recorded as skipped (the default), or refused where the lesson says
+/// `next: waits` — with the reason, and the button saying it waits.
+#[test]
+fn next_records_a_skip_or_waits_as_the_lesson_says() {
+    use flexarm::classroom::progress::LessonOrigin;
+    let text = |next: &str| {
+        format!("# Quiz\n{next}\n## One\nstate: preset=fig5.3\n\nText.\n\n? Stable?\n+ no\n- yes\n\n= It grows.\n\n## Two\nstate: preset=fig5.1\n\nMore.\n")
+    };
+    // The default: Next goes on, the record says the step was left unanswered, once.
+    let mut s = common::Visit::open("").0;
+    s.load_lesson(LessonOrigin::File("quiz.md".into()), text("").as_bytes()).unwrap();
+    let st = s.status().lesson.unwrap();
+    assert!(st.can_next && !st.waits);
+    s.lesson_next().unwrap();
+    s.lesson_back().unwrap();
+    s.lesson_next().unwrap();
+    let record = s.answers_record().unwrap().clone();
+    let skips: Vec<_> = record.entries.iter().filter(|e| e.kind == "skipped").collect();
+    assert_eq!(skips.len(), 1, "{:?}", record.entries);
+    assert_eq!((skips[0].step, skips[0].result.as_str()), (1, "skipped"));
+    assert!(s.status().lesson.unwrap().record.headline.contains("1 step left without an answer"));
+    // It survives the CSV, and the class table counts it.
+    let files = [AnswerFile { name: "a.csv".into(), text: record.to_csv() }];
+    assert_eq!(merge(&files).steps.iter().find(|t| t.step == 1).map(|t| t.skipped), Some(1));
+
+    // `next: waits`: the button waits, and Next is refused with the reason until the answer.
+    let mut s = common::Visit::open("").0;
+    s.load_lesson(LessonOrigin::File("quiz.md".into()), text("next: waits").as_bytes()).unwrap();
+    let st = s.status().lesson.unwrap();
+    assert!(!st.can_next && st.waits);
+    let e = s.lesson_next().unwrap_err().to_string();
+    assert!(e.contains("waits for each answer"), "{e}");
+    assert_eq!(s.status().lesson.unwrap().index, 0);
+    s.lesson_answer(0).unwrap();
+    assert!(s.status().lesson.unwrap().can_next);
+    s.lesson_next().unwrap();
+    assert!(s.answers_record().unwrap().entries.iter().all(|e| e.kind != "skipped"));
+    // Anything else after `next:` is a mistake, on its line.
+    let e = parse(&text("next: maybe")).unwrap_err().to_string();
+    assert!(e.starts_with("lesson, line 2: 'next: maybe'"), "{e}");
 }

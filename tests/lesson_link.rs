@@ -102,3 +102,34 @@ fn an_embed_of_a_linked_lessons_step_carries_the_link_on() {
     let e = classroom.embed(&session, "https://example.org/", "lesson=2").unwrap_err().to_string();
     assert!(e.contains("make a homework link"), "{e}");
 }
+
+/// A lesson opened from a file moves into the address (the page writes the fragment there): the
+/// URL then names its step, and its steps can be embedded; student mode kept for the lesson comes
+/// back when the address lost `answers=hidden`.
+#[test]
+fn a_lesson_opened_from_a_file_travels_on_in_the_address_and_student_mode_is_kept_for_it() {
+    let (_, out, _) = lesson_link(&["www/lessons/windows.md"]);
+    let fragment = &out.trim()[out.find('#').unwrap() + 1..];
+    let (session, classroom, _) = Classroom::open("", LessonFiles::default());
+    let (mut session, mut classroom) = (session, classroom);
+    classroom.load_lesson(&mut session, LessonOrigin::File("windows.md".into()), HOMEWORK.as_bytes()).unwrap();
+    // From the disk: a link cannot bring it back, nor embed it.
+    assert!(!classroom.state_string(&session).contains("lesson="));
+    assert!(classroom.embed(&session, "https://example.org/", "lesson=2").is_err());
+    classroom.carry_in_link(&mut session, fragment).unwrap();
+    assert!(classroom.state_string(&session).contains("lesson=1"), "{}", classroom.state_string(&session));
+    let embed = classroom.embed(&session, "https://example.org/", "lesson=2").unwrap();
+    assert!(embed.src.ends_with(fragment), "{}", embed.src);
+    // Only a lesson from a file moves (a second call finds it carried already).
+    assert!(classroom.carry_in_link(&mut session, fragment).is_err());
+
+    // Student mode for this lesson, kept by the browser: back on, nothing hidden shown; what the
+    // student answered stays shown.
+    assert!(!classroom.student_mode(&session));
+    classroom.keep_student_mode(&mut session);
+    assert!(classroom.student_mode(&session) && classroom.answers_hidden(&session));
+    assert!(classroom.status(&session).lesson.unwrap().student_mode);
+    assert!(classroom.state_string(&session).contains("answers=hidden"));
+    classroom.lesson_answer(&mut session, 0).unwrap();
+    assert!(!classroom.answers_hidden(&session), "answered: shown");
+}

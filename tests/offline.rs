@@ -16,7 +16,7 @@ use flexarm::offline::{Bundle, OfflineStart, BOOT, ENTRY};
 
 const WWW: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/www");
 const HOMEWORK: &str = include_str!("../www/lessons/windows.md");
-/// A lesson with a mistake in its step (line 3).
+/// A lesson with a mistake in its step's `state:` (line 6).
 const BAD_LESSON: &str = "# T\n\n## S\n\nSome prose.\nstate: delta=banana\n";
 
 /// The wasm-pack output, which `cargo test` runs without: stand-ins (their content is not read).
@@ -172,7 +172,7 @@ fn a_start_is_checked_as_the_page_checks_it() {
     let e = OfflineStart::new("lesson_src=lessons/windows.md", None).unwrap_err().to_string();
     assert!(e.contains("--lesson FILE"), "{e}");
     let e = OfflineStart::new("", Some(("bad.md".into(), BAD_LESSON.as_bytes().to_vec()))).unwrap_err();
-    assert!(e.to_string().starts_with("bad.md: lesson, line 3") && e.to_string().contains("banana"), "{e}");
+    assert!(e.to_string().starts_with("bad.md: lesson, line 6") && e.to_string().contains("banana"), "{e}");
 }
 
 #[test]

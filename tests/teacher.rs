@@ -106,19 +106,22 @@ fn a_broken_lesson_names_its_line_and_the_mistake() {
         e
     };
     let head = "# Mine\n\n## One\nstate: preset=fig5.3\n\nText.\n\n";
-    // An unknown key in a state line: the step's line, the key, the keys there are.
+    // An unknown key in a state line: that line (not the step's title, line 8), the key, the keys there are.
     let e = load(&format!("{head}## Two\nstate: delta=0.02&wobble=3\n\nText.\n"));
-    assert!(e.starts_with("lesson, line 8: step 2 ('Two'): state:"), "{e}");
+    assert!(e.starts_with("lesson, line 9: step 2 ('Two'): state:"), "{e}");
     assert!(e.contains("wobble") && e.contains("delta"), "{e}");
     // A value out of its range.
     let e = load(&format!("{head}## Two\nstate: delta=7\n\nText.\n"));
-    assert!(e.contains("line 8") && e.contains("delta = '7'") && e.contains("0.002–0.25 s"), "{e}");
+    assert!(e.contains("line 9") && e.contains("delta = '7'") && e.contains("0.002–0.25 s"), "{e}");
     // A question with no right answer.
     let e = load(&format!("{head}## Two\nstate: pf=off\n\nText.\n\n? Which?\n- a\n- b\n\n= Because.\n"));
     assert_eq!(e, "lesson, line 8: step 2 ('Two'): no right choice: mark it with '+ '");
     // A goal that can never be met.
     let e = load(&format!("{head}## Two\nstate: pf=off\ntask: Do it.\ngoal: delta=5\n\nText.\n"));
-    assert!(e.contains("line 8") && e.contains("delta=5 can never be met"), "{e}");
+    assert!(e.contains("line 11") && e.contains("delta=5 can never be met"), "{e}");
+    // A 'then:' or 'show:' that does not read: its own line.
+    let e = load(&format!("{head}## Two\nstate: pf=off\ntask: Do it.\ngoal: pf=paper\nshow: pf=maybe\n\nText.\n"));
+    assert!(e.starts_with("lesson, line 12: step 2 ('Two'): show:"), "{e}");
     let e = load(&format!("{head}## Two\nstate: pf=off\ntask: Do it.\ngoal: colour=red\n\nText.\n"));
     assert!(e.contains("'colour' is not a setting"), "{e}");
     let e = load(&format!("{head}## Two\nstate: pf=off\ntask: Do it.\ngoal: verdict=fine\n\nText.\n"));

@@ -22,7 +22,8 @@ pub struct Entry {
     pub choice: Option<usize>,
     /// The choice's text (predictions only).
     pub choice_text: String,
-    /// "right" or "wrong" (a prediction), "done" or "shown" (a task; "shown": by "Show me").
+    /// "right" or "wrong" (a prediction), "done" or "shown" (a task; "shown": by "Show me"),
+    /// "skipped" (left with *Next ▸* before the answer).
     pub result: String,
     /// The settings it was made in (the page's state string).
     pub state: String,
@@ -61,12 +62,15 @@ pub struct AnswersStatus {
 pub struct AnswerRow {
     /// "Step 3, prediction: “It grows” — right".
     pub text: String,
-    /// "right", "wrong", "done" or "shown".
+    /// "right", "wrong", "done", "shown" or "skipped".
     pub result: String,
     /// The state string it was made in.
     pub state: String,
     pub time: String,
 }
+
+/// An entry's kind and result when *Next ▸* left a step without its answer or task.
+pub const SKIPPED: &str = "skipped";
 
 /// The line that names the student, and the last line, the check over the name and the rows.
 pub const STUDENT_PREFIX: &str = "# student: ";
@@ -209,6 +213,11 @@ impl Record {
         if count("answers shown", "") > 0 {
             headline += " You showed the hidden answers.";
         }
+        let skipped = count(SKIPPED, "");
+        if skipped > 0 {
+            let s = if skipped == 1 { "" } else { "s" };
+            headline += &format!(" {skipped} step{s} left without an answer.");
+        }
         let rows = self
             .entries
             .iter()
@@ -217,6 +226,7 @@ impl Record {
                     "prediction" => format!("Step {}, prediction: “{}” — {}", e.step, e.choice_text, e.result),
                     "task" if e.result == "shown" => format!("Step {}, task: shown by “Show me”", e.step),
                     "task" => format!("Step {}, task: done", e.step),
+                    SKIPPED => format!("Step {}: left with Next, not answered", e.step),
                     _ => format!("Step {}: you showed the hidden answers", e.step),
                 },
                 result: e.result.clone(),

@@ -27,6 +27,8 @@ pub struct StepTally {
     /// Students who did the task themselves, and who had it shown.
     pub done: usize,
     pub shown: usize,
+    /// Students who left the step with *Next ▸* and never answered it.
+    pub skipped: usize,
 }
 
 /// The merged class.
@@ -91,6 +93,7 @@ pub fn merge(files: &[AnswerFile]) -> ClassTable {
 fn tally(steps: &mut Vec<StepTally>, r: &Record) {
     let mut predicted: Vec<usize> = Vec::new();
     let mut tasks: Vec<(usize, &str)> = Vec::new();
+    let mut skipped: Vec<usize> = Vec::new();
     for e in &r.entries {
         let at = match steps.iter().position(|s| s.step == e.step) {
             Some(i) => i,
@@ -117,7 +120,16 @@ fn tally(steps: &mut Vec<StepTally>, r: &Record) {
                 Some((_, result)) => *result = &e.result,
                 None => tasks.push((e.step, &e.result)),
             },
+            super::answers::SKIPPED if !skipped.contains(&e.step) => skipped.push(e.step),
             _ => {}
+        }
+    }
+    // Skipped and never answered later (a student may come back to the step).
+    for step in skipped {
+        if !predicted.contains(&step) && !tasks.iter().any(|(s, _)| *s == step) {
+            if let Some(s) = steps.iter_mut().find(|s| s.step == step) {
+                s.skipped += 1;
+            }
         }
     }
     for (step, result) in tasks {
@@ -145,13 +157,13 @@ impl ClassTable {
         for (name, why) in &self.refused {
             out += &format!("# not counted: {name}: {why}\n");
         }
-        out += "step,step_title,predicted,right,share_right,wrong_choices,task_done,task_shown\n";
+        out += "step,step_title,predicted,right,share_right,wrong_choices,task_done,task_shown,skipped\n";
         for s in &self.steps {
             let share =
                 if s.predicted > 0 { significant(s.right as f64 / s.predicted as f64, 2) } else { String::new() };
             let wrong: Vec<String> = s.wrong.iter().map(|(t, n)| format!("“{t}” ×{n}")).collect();
             out += &format!(
-                "{},{},{},{},{},{},{},{}\n",
+                "{},{},{},{},{},{},{},{},{}\n",
                 s.step,
                 super::answers::quote(&s.title),
                 s.predicted,
@@ -159,7 +171,8 @@ impl ClassTable {
                 share,
                 super::answers::quote(&wrong.join("; ")),
                 s.done,
-                s.shown
+                s.shown,
+                s.skipped
             );
         }
         out

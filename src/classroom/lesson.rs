@@ -4,7 +4,7 @@
 //! everything as it is for exploring; a teacher's lesson replaces the built-in one; the answers'
 //! record is given back after a reload or cleared.
 
-use super::answers::{Entry, Record};
+use super::answers::{Entry, Record, SKIPPED};
 use super::progress::{checked, LessonOrigin, LessonProgress, LessonStatus, QuestionStatus};
 use super::room::Classroom;
 use crate::error::Error;
@@ -52,6 +52,18 @@ impl Classroom {
         let (step, count) = self.lesson_position()?;
         if step + 1 >= count {
             return Err(lesson_error("this is the last step"));
+        }
+        let l = self.lesson.as_ref().expect("positioned");
+        if !l.revealed(step) {
+            if l.lesson.next_waits {
+                return Err(lesson_error(WAIT));
+            }
+            // Gone on without the answer or the task: the record says so, once per step.
+            let skipped = l.record.entries.iter().any(|e| e.step == step + 1 && e.kind == SKIPPED);
+            if !skipped {
+                let entry = Entry { kind: SKIPPED.into(), result: SKIPPED.into(), ..task_entry(&l.lesson, step, "") };
+                self.record(session, entry);
+            }
         }
         self.remember_step(session, step);
         self.enter(session, step + 1)?;
@@ -191,8 +203,10 @@ impl Classroom {
             }),
             answer: if revealed { s.answer.clone() } else { Vec::new() },
             can_back: i > 0,
-            can_next: i + 1 < l.lesson.steps.len(),
+            can_next: i + 1 < l.lesson.steps.len() && !(l.lesson.next_waits && !revealed),
+            waits: l.lesson.next_waits && !revealed && i + 1 < l.lesson.steps.len(),
             record: l.record.status(&l.lesson),
+            student_mode: false, // the session's: set by `Classroom::status`
         })
     }
 
@@ -312,9 +326,25 @@ impl Classroom {
     pub fn load_lesson(&mut self, session: &mut Session, origin: LessonOrigin, bytes: &[u8]) -> Result<(), Error> {
         let (text, parsed) = checked(bytes)?;
         self.lesson_origin = origin;
+        // A homework link's lesson, if one was open, is not this one.
+        self.link_fragment = None;
         self.lesson = Some(LessonProgress::new(parsed, &text));
         self.lesson_text = Some(text);
         self.lesson_open(session, 0)
+    }
+
+    /// The teacher's lesson opened from a file travels on in the page's address, as a homework
+    /// link carries it (`fragment`, `lesson=…&name=…`, made by [`super::link::lesson_fragment`]
+    /// from this lesson's text): a reload brings it back at the step the address names, and the
+    /// embed builder's steps carry it.
+    pub fn carry_in_link(&mut self, session: &mut Session, fragment: &str) -> Result<(), Error> {
+        let LessonOrigin::File(name) = &self.lesson_origin else {
+            return Err(lesson_error("only a lesson opened from a file moves into the address"));
+        };
+        self.lesson_origin = LessonOrigin::Carried(name.clone());
+        self.link_fragment = Some(fragment.trim_start_matches('#').to_string());
+        self.sync(session);
+        Ok(())
     }
 
     /// Gives the classroom the wall clock (ms since 1970), for the answers' times.
@@ -397,6 +427,9 @@ fn task_entry(lesson: &Lesson, step: usize, result: &str) -> Entry {
         time: String::new(),
     }
 }
+
+/// Why *Next ▸* waits, in a lesson that says `next: waits`.
+const WAIT: &str = "this lesson waits for each answer: answer this step's question (and do its task) to go on";
 
 fn lesson_error(message: &str) -> Error {
     Error::Lesson { line: 0, message: message.into() }

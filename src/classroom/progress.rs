@@ -62,8 +62,13 @@ pub struct LessonStatus {
     pub answer: Vec<String>,
     pub can_back: bool,
     pub can_next: bool,
+    /// *Next ▸* waits for this step's answer (the lesson says `next: waits`).
+    pub waits: bool,
     /// The answers so far, to hand in (the summary the last step shows).
     pub record: AnswersStatus,
+    /// Student mode is on for this lesson: the page keeps it per lesson in the browser, so that
+    /// a reload shows nothing the lesson hides.
+    pub student_mode: bool,
 }
 
 impl LessonProgress {
@@ -118,11 +123,19 @@ impl LessonProgress {
 
 /// Checks a lesson against the settings it uses: every step's `state:`, `then:` and `show:` reads
 /// as a state string, every goal names settings with values they can take. The built-in lesson and
-/// a teacher's file pass the same checks; a mistake names its step's line.
+/// a teacher's file pass the same checks; a mistake names its own line.
 pub fn validate(lesson: &Lesson) -> Result<(), Error> {
     for (i, step) in lesson.steps.iter().enumerate() {
+        // A mistake names the line it is on (the `state:` line, not the step's title).
         let at = |what: &str, e: &dyn std::fmt::Display| Error::Lesson {
-            line: step.line,
+            line: Some(match what {
+                "state" => step.lines.state,
+                "then" => step.lines.then,
+                "show" => step.lines.show,
+                _ => step.lines.goal,
+            })
+            .filter(|&n| n > 0)
+            .unwrap_or(step.line),
             message: format!("step {} ('{}'): {what}: {e}", i + 1, step.title),
         };
         let mut settings = Settings::page_start();

@@ -28,6 +28,18 @@ impl Classroom {
         self.student_mode(session) && !self.lesson.as_ref().is_some_and(|l| l.answers_revealed_here())
     }
 
+    /// Student mode comes back for a lesson this browser kept it for (the page keeps it per
+    /// lesson text): a reload, or `answers=hidden` deleted from the address, shows nothing the
+    /// lesson hides. What the student already answered stays shown.
+    pub fn keep_student_mode(&mut self, session: &mut Session) {
+        if self.student_mode(session) {
+            return;
+        }
+        self.answers_shown = false;
+        session.keep_student_mode();
+        self.sync(session);
+    }
+
     /// What the page says while the answers are hidden.
     pub fn hidden_status(&self) -> HiddenStatus {
         let hidden =

@@ -26,6 +26,9 @@ pub struct Lesson {
     /// Student mode for the whole lesson (`answers: hidden` under the title): the verdict, ρ and
     /// the stable windows wait for each step's answer, as `answers=hidden` in a link does.
     pub answers_hidden: bool,
+    /// *Next ▸* waits for each step's answer and task (`next: waits` under the title); else it
+    /// goes on and the answers' record says the step was skipped (`next: skips`, the default).
+    pub next_waits: bool,
     pub steps: Vec<Step>,
 }
 
@@ -36,6 +39,9 @@ pub struct Step {
     /// The line of its '## title' (for messages about it).
     #[serde(skip)]
     pub line: usize,
+    /// The lines of its `state:`, `then:`, `show:` and `goal:` (a mistake in one names its own line).
+    #[serde(skip)]
+    pub lines: KeyLines,
     /// The settings the step starts from, as a state string (over the page's defaults).
     pub state: String,
     /// Settings applied once the question is answered (the prediction, then the result).
@@ -57,6 +63,15 @@ pub struct Step {
     pub question: Option<Question>,
     /// Paragraphs shown once the student has answered or met the goal.
     pub answer: Vec<String>,
+}
+
+/// Where a step's settings lines are in the file (0: the step has none).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct KeyLines {
+    pub state: usize,
+    pub then: usize,
+    pub show: usize,
+    pub goal: usize,
 }
 
 /// A term and its definition, shown beside the text that uses it.
@@ -154,6 +169,7 @@ enum Open {
 pub fn parse(text: &str) -> Result<Lesson, Error> {
     let mut title = String::new();
     let mut answers_hidden = false;
+    let mut next_waits = false;
     let mut steps: Vec<Step> = Vec::new();
     let mut open = Open::Nothing;
     let mut in_comment = false;
@@ -202,17 +218,33 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
                         ),
                     ))
                 }
+                Some(("next", v)) => {
+                    next_waits = match v.trim() {
+                        "waits" => true,
+                        "skips" => false,
+                        other => {
+                            return Err(error(
+                                n,
+                                format!(
+                                    "'next: {other}': 'next: waits' (Next waits for each answer) or 'next: skips' \
+                                     (Next goes on and the record says the step was skipped)"
+                                ),
+                            ))
+                        }
+                    };
+                    continue;
+                }
                 _ => return Err(error(n, "text before the first step ('## title')")),
             }
         };
         if let Some((key, value)) = setting_line(line) {
             let value = value.trim().to_string();
             match key {
-                "state" => step.state = value,
-                "then" => step.then = Some(value),
+                "state" => (step.state, step.lines.state) = (value, n),
+                "then" => (step.then, step.lines.then) = (Some(value), n),
                 "task" => step.task = Some(value),
-                "goal" => step.goal = Some(parse_goal(&value).map_err(|m| error(n, m))?),
-                "show" => step.show = Some(value),
+                "goal" => (step.goal, step.lines.goal) = (Some(parse_goal(&value).map_err(|m| error(n, m))?), n),
+                "show" => (step.show, step.lines.show) = (Some(value), n),
                 "hide" if value == "windows" => step.hide_windows = true,
                 "hide" => return Err(error(n, format!("'hide: {value}': only 'hide: windows' is known"))),
                 "answers" if value == "shown" => step.answers_shown = true,
@@ -229,6 +261,7 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
                         value.split_once(" — ").ok_or_else(|| error(n, "a term reads 'term: symbol — definition'"))?;
                     step.terms.push(Term { term: term.trim().into(), definition: definition.trim().into() });
                 }
+                "next" => return Err(error(n, "'next:' goes under the lesson's title, before the first step")),
                 _ => unreachable!("setting_line knows its keys"),
             }
             open = Open::Nothing;
@@ -277,12 +310,12 @@ pub fn parse(text: &str) -> Result<Lesson, Error> {
         return Err(error(text.lines().count(), "an unclosed comment ('<!--' without '-->')"));
     }
     check(&title, &steps)?;
-    Ok(Lesson { title, answers_hidden, steps })
+    Ok(Lesson { title, answers_hidden, next_waits, steps })
 }
 
 /// `key: value` for the keys a step knows.
 fn setting_line(line: &str) -> Option<(&'static str, &str)> {
-    const KEYS: [&str; 8] = ["state", "then", "task", "goal", "show", "hide", "term", "answers"];
+    const KEYS: [&str; 9] = ["state", "then", "task", "goal", "show", "hide", "term", "answers", "next"];
     let (key, value) = line.split_once(':')?;
     KEYS.iter().find(|k| **k == key.trim()).map(|k| (*k, value))
 }

@@ -480,6 +480,11 @@ impl Session {
         self.hidden = hidden;
     }
 
+    /// A lesson step hides the stable windows until its answer (`hide: windows`).
+    pub fn windows_hidden(&self) -> bool {
+        self.hidden.windows
+    }
+
     /// The answers are hidden now (student mode): the verdict, ρ, the analysis' figures.
     pub fn answers_hidden(&self) -> bool {
         self.hidden.answers
@@ -517,6 +522,12 @@ impl Session {
     /// no longer holds.
     pub fn lift_student_mode(&mut self) {
         self.settings.view.answers_hidden = false;
+    }
+
+    /// Student mode back on, as the link's `answers=hidden` sets it: for a lesson this browser
+    /// kept it for ([`crate::classroom::Classroom::keep_student_mode`]).
+    pub fn keep_student_mode(&mut self) {
+        self.settings.view.answers_hidden = true;
     }
 
     /// `flexarm simulate …` reproducing run A up to its current time.

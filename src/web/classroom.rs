@@ -110,7 +110,8 @@ impl WebClassroom {
     /// One of the classroom's changes of the session, named (one export for all: the façade gives
     /// each its typed method): "open" the lesson at step `n` (0-based), "next", "back", "answer"
     /// with choice `n` (0-based), "reveal" the step's result without the task, "leave" the lesson,
-    /// "clear" the answers, "show" what student mode hides. Throws with the reason, or for an
+    /// "clear" the answers, "show" what student mode hides, "keep-student-mode" (a lesson this browser
+    /// kept student mode for). Throws with the reason, or for an
     /// unknown action.
     pub fn act(&mut self, session: &mut WebSession, action: &str, n: usize) -> Result<(), JsError> {
         change(self, session, |c, s| match action {
@@ -122,9 +123,25 @@ impl WebClassroom {
             "leave" => Ok(c.lesson_leave(s)),
             "clear" => c.clear_answers(s),
             "show" => Ok(c.show_answers(s)),
+            "keep-student-mode" => Ok(c.keep_student_mode(s)),
             _ => Err(crate::error::Error::NotReady("no such classroom action")),
         })
         .map_err(js_error)
+    }
+
+    /// The teacher's lesson just opened from a file (`name`, its text compressed with raw deflate:
+    /// `compressed`) moves into the page's address: returns the fragment (without `#`) for the
+    /// address bar; throws with the size and the reason when it is too long for an address.
+    #[wasm_bindgen(js_name = carryInLink)]
+    pub fn carry_in_link(
+        &mut self,
+        session: &mut WebSession,
+        name: &str,
+        compressed: &[u8],
+    ) -> Result<String, JsError> {
+        let fragment = crate::classroom::link::lesson_fragment(name, compressed).map_err(js_error)?;
+        change(self, session, |c, s| c.carry_in_link(s, &fragment)).map_err(js_error)?;
+        Ok(fragment)
     }
 
     /// True once after a link or a lesson step asked to start paused (`paused=1`).

@@ -1,12 +1,14 @@
 // A teacher's own lesson (issue 21): `?lesson_src=lessons/windows.md` opens the homework shipped
 // beside the page; a link to another site is refused with its reason and the built-in lesson
 // stays; a broken file opened from disk names its line and changes nothing; markup in a lesson is
-// shown as text.
+// shown as text. One homework link (issue 35): the lesson travels in the address, student mode is
+// kept per lesson, and a lesson opened from a file moves into the address too.
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { shared, openPage, shots } from './harness.mjs';
+import { readFile } from 'node:fs/promises';
+import { shared, openPage, shots, www } from './harness.mjs';
 
 const env = shared();
 
@@ -42,9 +44,16 @@ test('a broken lesson file names its line and changes nothing; markup in a lesso
   const before = await page.textContent('#lesson-title');
   const broken = '# Mine\n\n## One\nstate: delta=0.02&wobble=3\n\nText.\n';
   await page.setInputFiles('#lesson-file', { name: 'broken.md', mimeType: 'text/markdown', buffer: Buffer.from(broken) });
-  await page.waitForFunction(() => /broken\.md: lesson, line 3/.test(document.body.textContent ?? ''), null, { timeout: 5000 });
-  const text = await page.evaluate(() => document.body.textContent ?? '');
-  assert.match(text, /The lesson file could not be used \(the lesson stays as it was\): broken\.md: lesson, line 3: step 1 \('One'\): state: .*wobble/);
+  // Said beside the button the teacher used, naming the `state:` line (4), not the step's title (3).
+  await page.waitForSelector('#lesson-file-error:not([hidden])', { timeout: 5000 });
+  const text = await page.textContent('#lesson-file-error');
+  assert.match(text ?? '', /^The lesson file could not be used \(the lesson stays as it was\): broken\.md: lesson, line 4: step 1 \('One'\): state: .*wobble/);
+  const near = await page.evaluate(() => {
+    const button = document.querySelector('#lesson-file-open')?.getBoundingClientRect();
+    const said = document.querySelector('#lesson-file-error')?.getBoundingClientRect();
+    return button && said ? { gap: said.top - button.bottom, visible: said.top >= 0 && said.bottom <= innerHeight } : null;
+  });
+  assert.ok(near && near.gap >= 0 && near.gap < 150 && near.visible, `the message is right under the button, in view: ${JSON.stringify(near)}`);
   assert.equal(await page.textContent('#lesson-title'), before);
   await page.screenshot({ path: path.join(shots, 'teacher-broken-laptop.png') });
   // Hostile markup: shown as written, never run.
@@ -94,6 +103,14 @@ test('one homework link: the lesson travels inside it, opens in student mode in 
   assert.equal(await page.textContent('#lesson-title'), 'Where does the controller alone work?');
   assert.match(page.url(), /#lesson=/);
   await hidden();
+  // Student mode is kept for this lesson in the browser: the address without answers=hidden
+  // shows nothing the lesson hides either.
+  const bare = new URL(page.url());
+  bare.searchParams.delete('answers');
+  await page.goto(bare.toString());
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 10000 });
+  await hidden();
+  assert.match(page.url(), /answers=hidden/);
   // A cut link says why, and the page still works with its built-in lesson.
   const cut = await openPage(env.browser, env.server.base, `${url.search}#lesson=Z&name=x.md`);
   await cut.page.waitForSelector('#url-notice:not([hidden])', { timeout: 10000 });
@@ -101,4 +118,25 @@ test('one homework link: the lesson travels inside it, opens in student mode in 
   await cut.close();
   assert.deepEqual(student.problems, []);
   await student.close();
+});
+
+test('a lesson opened from a file moves into the address: a reload keeps it at its step', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, '?mode=full');
+  await page.click('#lesson-start');
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden);
+  const text = await readFile(path.join(www, 'lessons/windows.md'));
+  await page.setInputFiles('#lesson-file', { name: 'windows.md', mimeType: 'text/markdown', buffer: text });
+  await page.waitForFunction(() => /#lesson=/.test(location.hash), null, { timeout: 10000 });
+  await page.waitForFunction(() => /[?&]lesson=1/.test(location.search), null, { timeout: 10000 });
+  await page.click('#lesson-next');
+  await page.waitForFunction(() => /[?&]lesson=2/.test(location.search), null, { timeout: 10000 });
+  const title = await page.textContent('#lesson-title');
+  await page.reload();
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 10000 });
+  assert.equal(await page.textContent('#lesson-title'), title);
+  assert.match(await page.textContent('#lesson-name') ?? '', /Homework: the windows of δ \(from windows\.md\)/);
+  // Step 1 was left with Next before its answer: the record says so.
+  assert.match(await page.textContent('#lesson-record-headline') ?? '', /1 step left without an answer/);
+  assert.deepEqual(problems, []);
+  await close();
 });

@@ -10,6 +10,12 @@ export function storageKey(hash) {
   return `flexarm.answers.${hash}`;
 }
 
+/** Where student mode is kept for a lesson text: once on, a reload (or the address without
+ * `answers=hidden`) keeps it, until "Clear my answers" (pure). @param {string} hash */
+export function studentModeKey(hash) {
+  return `flexarm.student-mode.${hash}`;
+}
+
 /** Letters, digits and dashes only, at most 40 (pure). @param {string} text */
 function slugOf(text) {
   return text.toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-+|-+$/g, '').slice(0, 40);
@@ -146,7 +152,10 @@ export function createAnswers(on) {
       on.report('Clearing the answers failed', e);
       return;
     }
-    if (restored) storage()?.removeItem(storageKey(restored));
+    if (restored) {
+      storage()?.removeItem(storageKey(restored));
+      storage()?.removeItem(studentModeKey(restored));
+    }
     saved = 0;
     on.changed();
   });
@@ -159,7 +168,7 @@ export function createAnswers(on) {
    * Follows the session's status: gives back a record kept earlier when a lesson first shows,
    * keeps the record when it changes, shows the summary (open at the last step) and student
    * mode's notice.
-   * @param {{ lesson_title: string, index: number, steps: string[], record: AnswersStatus } | null} lesson
+   * @param {{ lesson_title: string, index: number, steps: string[], record: AnswersStatus, student_mode: boolean } | null} lesson
    * @param {{ text: string, controls: string[] } | null} hidden
    */
   function sync(lesson, hidden) {
@@ -189,9 +198,13 @@ export function createAnswers(on) {
     if (!lesson) return;
     current = { title: lesson.lesson_title };
     const { record: r } = lesson;
+    const modeKey = studentModeKey(r.lesson_hash);
     if (restored !== r.lesson_hash) {
       restored = r.lesson_hash;
       if (nameField.value) giveName();
+      // Student mode, kept for this lesson: nothing the lesson hides shows after a reload.
+      const keep = !lesson.student_mode && Boolean(storage()?.getItem(modeKey));
+      if (keep) on.session.keepStudentMode();
       saved = r.count;
       const text = storage()?.getItem(storageKey(r.lesson_hash));
       if (text) {
@@ -203,6 +216,17 @@ export function createAnswers(on) {
         } catch (e) {
           on.report('Your saved answers could not be given back (they stay in the browser)', e);
         }
+      }
+      if (keep) {
+        on.changed();
+        return;
+      }
+    }
+    if (lesson.student_mode && !storage()?.getItem(modeKey)) {
+      try {
+        storage()?.setItem(modeKey, '1');
+      } catch {
+        // Kept by the address alone.
       }
     }
     if (r.count !== saved) {

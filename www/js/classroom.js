@@ -5,6 +5,7 @@
 
 import { createLesson } from './lesson.js';
 import { createAnswers } from './answers.js';
+import { messageOf } from './dom.js';
 
 /** @typedef {import('./flexarm.js').Page} Page */
 /** @typedef {ReturnType<typeof import('./store.js').createStore>} Store */
@@ -16,7 +17,7 @@ import { createAnswers } from './answers.js';
  *   openSheet: (open: boolean) => void, showFigure: () => void,
  *   download: (name: string, text: string, type: string) => void, loaded?: () => void }} on
  */
-export function createClassroom({ session, store, presets, guard, report, change, refresh, touch, openSheet, showFigure, download, loaded }) {
+export function createClassroom({ session, store, presets, report, change, refresh, openSheet, showFigure, download, loaded }) {
   /** A lesson action: the settings it makes, played from the start. @param {() => void} fn */
   const lessonDo = (fn) => {
     session.setWallClock(Date.now());
@@ -38,9 +39,13 @@ export function createClassroom({ session, store, presets, guard, report, change
       try {
         session.loadLesson(file.name, bytes);
       } catch (e) {
-        report('The lesson file could not be used (the lesson stays as it was)', e);
+        // Where the teacher acted (beside "open a lesson file…", also for a file dropped on the
+        // page): the file's name, the faulty line and what is wrong with it.
+        const why = 'The lesson file could not be used (the lesson stays as it was)';
+        if (!lesson.fileError(`${why}: ${messageOf(e)}`)) report(why, e);
         return;
       }
+      lesson.fileError('');
       loaded?.();
       lessonDo(() => {});
     },
@@ -60,8 +65,9 @@ export function createClassroom({ session, store, presets, guard, report, change
     presets,
     report,
     download,
+    // Student mode kept or lifted, answers given back: the controls and the address follow.
     changed: () => {
-      touch();
+      change(() => {});
       refresh();
     },
   });

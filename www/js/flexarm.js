@@ -328,6 +328,15 @@ export class Page {
     this.#classroom.loadLesson(this.#session, name, bytes);
   }
 
+  /**
+   * The lesson just opened from a file moves into the address (a reload keeps it): the fragment,
+   * from its text compressed with raw deflate; throws when it is too long for an address.
+   * @param {string} name @param {Uint8Array} compressed @returns {string}
+   */
+  carryInLink(name, compressed) {
+    return this.#classroom.carryInLink(this.#session, name, compressed);
+  }
+
   /** @param {number} step */
   lessonOpen(step) {
     this.#classroom.act(this.#session, 'open', step);
@@ -377,5 +386,10 @@ export class Page {
 
   showAnswers() {
     this.#classroom.act(this.#session, 'show', 0);
+  }
+
+  /** Student mode back on for a lesson this browser kept it for. */
+  keepStudentMode() {
+    this.#classroom.act(this.#session, 'keep-student-mode', 0);
   }
 }

@@ -19,7 +19,8 @@ export async function inflate(packed) {
 /**
  * The teacher's side: with a teacher's lesson open, "make a homework link" writes the link into a
  * field (and the clipboard, where the browser allows), with its length.
- * @param {{ wasm: import('./wasm.js').Wasm, session: { teacherLesson: () => { name: string, text: string } | null },
+ * @param {{ wasm: import('./wasm.js').Wasm, session: { teacherLesson: () => { name: string, text: string } | null,
+ *   carryInLink: (name: string, compressed: Uint8Array) => string },
  *   report: (what: string, e: unknown) => void }} on
  */
 export function createHomework({ wasm, session, report }) {
@@ -48,6 +49,24 @@ export function createHomework({ wasm, session, report }) {
       report('No homework link for this lesson', e);
     }
   });
+  /**
+   * A lesson just opened from a file moves into the address, as a homework link carries it: a
+   * reload brings it back. One too long for an address stays until the page is left, and the
+   * teacher is told so.
+   */
+  async function keepInAddress() {
+    const lesson = session.teacherLesson();
+    if (!lesson) return;
+    try {
+      const fragment = session.carryInLink(lesson.name, await deflate(lesson.text));
+      history.replaceState(null, '', `${location.pathname}${location.search}#${fragment}`);
+    } catch (e) {
+      // An earlier lesson's fragment would bring that lesson back on a reload.
+      if (location.hash) history.replaceState(null, '', `${location.pathname}${location.search}`);
+      report('This lesson stays until you leave the page, not after a reload', e);
+    }
+  }
+
   refresh();
-  return { refresh };
+  return { refresh, keepInAddress };
 }

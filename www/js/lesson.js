@@ -8,7 +8,7 @@ import { byId, make, setText } from './dom.js';
  * @typedef {{ prompt: string, choices: string[], chosen: number | null, correct: number | null }} Question
  * @typedef {{ lesson_title: string, source: string, steps: string[], index: number, title: string, text: string[],
  *   terms: { term: string, definition: string }[], task: string | null, done: boolean,
- *   question: Question | null, answer: string[], can_back: boolean, can_next: boolean,
+ *   question: Question | null, answer: string[], can_back: boolean, can_next: boolean, waits: boolean, student_mode: boolean,
  *   record: import('./answers.js').AnswersStatus }} LessonStatus
  */
 
@@ -71,7 +71,7 @@ export function createLesson(on) {
       return;
     }
     // Another lesson (a teacher's file) is another key, even at the same step.
-    const key = JSON.stringify([s.source, s.lesson_title, s.index, s.title, s.question?.chosen, s.done, s.answer.length]);
+    const key = JSON.stringify([s.source, s.lesson_title, s.index, s.title, s.question?.chosen, s.done, s.answer.length, s.waits]);
     if (key === shownKey) return;
     shownKey = key;
     setText(byId('lesson-count'), `Step ${s.index + 1} of ${s.steps.length}`);
@@ -88,7 +88,8 @@ export function createLesson(on) {
     byId('lesson-answer').replaceChildren(...s.answer.map((p) => make('p', { text: p })));
     back.disabled = !s.can_back;
     next.disabled = !s.can_next;
-    setText(next, s.can_next ? 'Next ▸' : 'Last step');
+    // A lesson that waits for each answer says so on the button (the session decides).
+    setText(next, s.waits ? 'Answer to go on' : s.can_next ? 'Next ▸' : 'Last step');
     if (s.index !== shownStep) {
       shownStep = s.index;
       // A new step: its title takes the focus (screen readers read it) and comes into view; the
@@ -120,5 +121,23 @@ export function createLesson(on) {
     );
   }
 
-  return { render };
+  /**
+   * Says what is wrong with the lesson file just opened, beside its button ('' clears it); false
+   * when the lesson's panel is closed (a file dropped before the lesson was opened), where the
+   * caller says it instead.
+   * @param {string} text
+   */
+  function fileError(text) {
+    const box = byId('lesson-file-error');
+    setText(box, text);
+    box.hidden = !text;
+    if (!text) return true;
+    if (panel.hidden) return false;
+    console.warn(text);
+    // A file dropped anywhere: the message comes into view where the lesson's files are.
+    box.scrollIntoView({ block: 'nearest' });
+    return true;
+  }
+
+  return { render, fileError };
 }

@@ -101,7 +101,14 @@ async function main() {
   const homework = createHomework({ wasm, session, report });
   const { lesson, answers } = createClassroom({
     session, store, presets: wasm.presets(), guard, report, change, refresh: () => refresh(), touch, openSheet: sheet.open, showFigure, download,
-    loaded: () => homework.refresh(),
+    loaded: () => {
+      homework.refresh();
+      // A reload keeps the lesson: it moves into the address, as a homework link carries it.
+      homework.keepInAddress().then(() => {
+        change(() => {}); // the address names its step now
+        refresh();
+      });
+    },
   });
   // The pair placed by hand: the session answers "" or why not; the status follows at once.
   const placing = (/** @type {() => string} */ fn) => {

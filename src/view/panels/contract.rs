@@ -167,6 +167,8 @@ pub struct Frame {
     pub runs: [RunMemory; 2],
     /// Run A's stable windows of δ as of the latest frame (ρ(δ) and the marks on the maps).
     pub windows: Option<StableWindows>,
+    /// The lesson's step hides the windows until its answer (`hide: windows`): ρ(δ) says so.
+    pub windows_hidden: bool,
     /// Simulated time of the latest frame, s (the later of the two runs').
     pub time: f64,
     /// The instant looked back at (a vertical line in the time plots), or None.

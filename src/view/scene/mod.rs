@@ -73,6 +73,7 @@ impl Scene {
                 layout,
                 runs: Default::default(),
                 windows: None,
+                windows_hidden: false,
                 time: 0.0,
                 cursor: None,
                 cycle: Cycle::new(),

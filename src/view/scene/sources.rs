@@ -47,6 +47,11 @@ impl Scene {
         let ra = Reference::new(a.closed_loop().config().reference);
         let mut run_a = run_state(a, &sa, Some(&ra));
         run_a.windows = session.cached_windows();
+        if self.frame.windows_hidden != session.windows_hidden() {
+            // ρ(δ)'s note says why it is empty.
+            self.frame.windows_hidden = session.windows_hidden();
+            self.info_generation += 1;
+        }
         run_a.ghost = session.ghost().map(|g| &g.traces);
         match session.run(1) {
             Some(b) => {

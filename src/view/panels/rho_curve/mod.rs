@@ -99,7 +99,10 @@ impl PanelView for RhoCurve {
             info.x2_labels =
                 turn_ticks(omega, curve.x_range).map(|(value, text)| TickLabel { value, text: text.into() }).collect();
         }
-        info.note = if rate {
+        info.note = if frame.windows_hidden {
+            // Empty on purpose: the lesson's step keeps the windows for its answer.
+            "ρ(δ) is hidden until you answer this step (the lesson keeps the windows of δ back)".into()
+        } else if rate {
             format!("rate at {alpha} 1/s; shaded: < 0")
         } else {
             format!("ρ(δ) at {alpha} 1/s; shaded: ρ < 1")
