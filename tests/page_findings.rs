@@ -156,3 +156,13 @@ fn the_rho_curves_note_says_both_alphas_briefly_and_the_maps_top_alpha_is_labell
     }
     assert!(seen > 0, "the maps were drawn");
 }
+
+/// `present=1&predict=1` shows Fig. 2.1's zoom without `mode=full` (issue 35, item 3); outside
+/// presentation mode the intro still shows the arm and the errors only.
+#[test]
+fn predict_works_in_presentation_mode_without_the_full_view() {
+    let present = common::session("preset=fig5.3&present=1&predict=1");
+    assert!(present.drawn_view().predict && !present.settings().view.full);
+    let intro = common::session("preset=fig5.3&predict=1");
+    assert!(!intro.drawn_view().predict, "the intro keeps to the arm and the errors");
+}

@@ -1,10 +1,12 @@
 //! Presentation mode and the figure's text size (issue 23 item 2): on a projector the smallest
 //! figure text is at least 18 px at 1920 × 1080 and 14 px at 1024 × 768; at every text size no
-//! label overlaps another or the data, and the page's pointer still finds what it points at.
+//! label overlaps another or the data, and the page's pointer still finds what it points at; each
+//! text size is larger than the last there too (issue 35).
 
 mod common;
 use common::{play, session};
 
+use flexarm::view::text_size::{page_text_factor, text_scale, TextSize};
 use flexarm::view::{Label, PanelKind, Rect, Scene, ViewOptions};
 
 /// The presentation bar's height, CSS px (the canvas fills the screen above it).
@@ -112,12 +114,38 @@ fn the_pointer_finds_what_the_page_was_told_at_any_text_size() {
         assert!(!shown.is_empty(), "text={text}: no pole in view");
         for p in shown {
             let (x, y) = (p.x.expect("in view"), p.y.expect("in view"));
-            let probe = scene.page_probe(x, y, 2.0).expect("a pole under the pointer");
+            let probe = scene
+                .page_probe(x, y, 2.0)
+                .unwrap_or_else(|| panic!("text={text}: no pole under the pointer at {p:?}"));
             assert!((probe.x - x).abs() < 1.0 && (probe.y - y).abs() < 1.0, "text={text}: {probe:?} vs ({x}, {y})");
         }
         let e1 = scene.page_panel_info().into_iter().find(|p| p.id == PanelKind::Error1.id()).expect("e1 shown");
         let t = scene.page_time_at(e1.x + e1.width - 1.0, e1.y + e1.height / 2.0).expect("a time at e1's right edge");
         let end = scene.time_window().end;
         assert!((t - end).abs() < 0.05, "text={text}: t = {t} at the right edge, the window ends at {end} s");
+    }
+}
+
+/// Issue 35, item 3: in presentation mode each text size is larger than the last on both
+/// projectors (the floor applies to Normal), the page's own text (bar, verdict, key) with it.
+const SIZES_PRESENTED: [&str; 4] = ["normal", "large", "larger", "largest"];
+/// The projectors' heights, CSS px.
+const SCREENS: [f64; 2] = [1080.0, 768.0];
+
+#[test]
+fn each_text_size_is_larger_than_the_last_on_both_projectors() {
+    for h in SCREENS {
+        let scales: Vec<f64> = SIZES_PRESENTED.iter().map(|s| text_scale(TextSize::from_name(s), true, h)).collect();
+        let page: Vec<f64> =
+            SIZES_PRESENTED.iter().map(|s| page_text_factor(TextSize::from_name(s), true, h)).collect();
+        for (figure, bar) in scales.windows(2).zip(page.windows(2)) {
+            // Visibly: at least 10 % larger each time, the figure's labels and the bar alike.
+            assert!(figure[1] >= figure[0] * 1.1, "{h} lines: {scales:?}");
+            assert!(bar[1] >= bar[0] * 1.1, "{h} lines: the bar {page:?}");
+        }
+        assert_eq!(page[0], 1.0, "Normal is the bar as designed");
+        // Normal meets the floor (18 px ticks at 1080 lines, 14 px at 768).
+        let floor = flexarm::view::text_size::presentation_min_text(h);
+        assert!(scales[0] * 12.0 >= floor - 1e-9, "{h} lines: {scales:?}");
     }
 }

@@ -239,8 +239,9 @@ pub const TEXT: Param = Param {
         default: "normal",
     },
     scope: Scope::Page,
-    help: "The size of the figure's labels: larger for the back of a room. In presentation mode the text is \
-           never smaller than the screen needs (18 px on a 1080-line screen, 14 px on a 768-line one).",
+    help: "The size of the figure's labels: larger for the back of a room. In presentation mode Normal is \
+           what the screen needs (18 px on a 1080-line screen, 14 px on a 768-line one), each larger size larger \
+           again, the bar's text with it.",
 };
 
 /// The z-plane's view: half its shorter side in units of λ (0: the default, around the flexible

@@ -215,8 +215,10 @@ impl ViewSettings {
     }
 
     /// What is drawn: the intro shows the arm and the errors only, whatever the figures' switches
-    /// say; the full view what they say, with the arm and the errors always (it has no control to
-    /// bring them back); an embedded page exactly what they say.
+    /// say — but in presentation mode the zoom on one sampling instant too, when a link asks for
+    /// it (`present=1&predict=1`: a lecturer's Fig. 2.1); the full view what they say, with the
+    /// arm and the errors always (it has no control to bring them back); an embedded page exactly
+    /// what they say.
     pub fn shown(&self) -> Self {
         if self.embed {
             *self
@@ -231,7 +233,7 @@ impl ViewSettings {
                 map: false,
                 torque: false,
                 study: false,
-                predict: false,
+                predict: self.predict && self.present,
                 swing: false,
                 ..*self
             }

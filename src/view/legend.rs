@@ -37,6 +37,9 @@ pub struct LegendItem {
     pub color: String,
     pub dark: String,
     pub text: String,
+    /// The entry's name alone, for the compact key of presentation mode: the text before its
+    /// explanation (before the first ": " or " (").
+    pub short: String,
 }
 
 /// The colour bar of the maps: what it measures, the ramp as CSS gradient stops and its labelled
@@ -63,7 +66,34 @@ pub struct LegendGroup {
 }
 
 pub fn item(glyph: Glyph, color: Color, text: &str) -> LegendItem {
-    LegendItem { glyph, color: color.css(), dark: color.for_dark().css(), text: text.to_string() }
+    LegendItem { glyph, color: color.css(), dark: color.for_dark().css(), text: text.to_string(), short: short(text) }
+}
+
+/// An entry's name without its explanation: without a last parenthesis that ends it, and up to
+/// the first ": " of what is left ("the (δ, α) running now" keeps its parenthesis).
+pub fn short(text: &str) -> String {
+    let base = match text.rfind(" (") {
+        Some(at) if text.ends_with(')') => &text[..at],
+        _ => text,
+    };
+    base.split(": ").next().unwrap_or(base).to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_short_form_is_the_name_before_its_explanation() {
+        use super::short;
+        assert_eq!(short("the reference arm: where the arm should be"), "the reference arm");
+        assert_eq!(short("the motor's angle θ on its disc (grey: the reference's)"), "the motor's angle θ on its disc");
+        assert_eq!(short("Uₖ, the torque at tₙ + kε: the only one used"), "Uₖ, the torque at tₙ + kε");
+        assert_eq!(short("A4 with K_pr"), "A4 with K_pr");
+        assert_eq!(short("the (δ, α) running now"), "the (δ, α) running now");
+        assert_eq!(
+            short("e^(A4 δ), A4 without K_pr: the pair's δ → 0 limit (not a pole of this loop)"),
+            "e^(A4 δ), A4 without K_pr"
+        );
+    }
 }
 
 /// The maps' colour bar for `measure`, from the ramp the maps are drawn with.

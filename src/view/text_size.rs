@@ -43,6 +43,18 @@ impl TextSize {
             TextSize::Largest => 2.0,
         }
     }
+
+    /// In presentation mode, how much larger than the screen's floor: 15 % a step, so that each
+    /// size is visibly larger than the last while the figure still holds its panels (3× on a
+    /// 1080-line screen left no room for the pole plot).
+    fn over_floor(self) -> f64 {
+        match self {
+            TextSize::Normal => 1.0,
+            TextSize::Large => 1.15,
+            TextSize::Larger => 1.32,
+            TextSize::Largest => 1.52,
+        }
+    }
 }
 
 /// The smallest text a projected figure may have, CSS px, on a screen of `css_height` lines: read
@@ -52,16 +64,30 @@ pub fn presentation_min_text(css_height: f64) -> f64 {
     (14.0 + (css_height - 768.0).max(0.0) * (4.0 / 312.0)).min(24.0)
 }
 
-/// The canvas' text scale: the setting's factor; in presentation mode at least what makes the
-/// smallest text ([`font::TICK`]) reach [`presentation_min_text`] of the screen's height
-/// (`screen_height`, CSS px — the whole screen, not the canvas, which a bar of controls shortens).
-/// Never below 1 or above 3.
+/// The canvas' text scale: the setting's factor; in presentation mode at least its step over the
+/// screen's floor — the scale that makes the smallest text ([`font::TICK`]) reach
+/// [`presentation_min_text`] of the screen's height (`screen_height`, CSS px — the whole screen,
+/// not the canvas, which a bar of controls shortens) — so that Normal meets the floor and each
+/// larger size is larger again (a floor that swallowed the choice made Large and Larger look
+/// like Normal on a 1080-line screen). Never below 1 or above 3.
 pub fn text_scale(size: TextSize, present: bool, screen_height: f64) -> f64 {
-    let chosen = size.factor();
-    let scale = if present && screen_height.is_finite() {
-        chosen.max(presentation_min_text(screen_height) / font::TICK)
-    } else {
-        chosen
-    };
+    let floor = present_floor(present, screen_height);
+    let scale = if present { size.factor().max(floor * size.over_floor()) } else { size.factor() };
     scale.clamp(1.0, 3.0)
+}
+
+/// The presentation floor's scale: 1 outside presentation mode.
+fn present_floor(present: bool, screen_height: f64) -> f64 {
+    if present && screen_height.is_finite() {
+        (presentation_min_text(screen_height) / font::TICK).max(1.0)
+    } else {
+        1.0
+    }
+}
+
+/// How much larger than Normal the page's own text in presentation mode is (the bar and the
+/// verdict in it, the key, Fig. 2.1's caption): the canvas' text scale over the floor's, so the
+/// bar grows with the figure's labels, size for size.
+pub fn page_text_factor(size: TextSize, present: bool, screen_height: f64) -> f64 {
+    text_scale(size, present, screen_height) / present_floor(present, screen_height)
 }

@@ -33,6 +33,9 @@ struct LayoutReport {
     /// Page CSS px per layout px: how much larger than normal the figure's text is drawn (the
     /// page scales its HTML tooltips and tabs alike).
     text_scale: f64,
+    /// How much larger than Normal the page's own text in presentation mode is (the bar, its
+    /// verdict, the key, Fig. 2.1's caption): the size chosen, over the screen's floor.
+    page_text: f64,
     /// On a narrow canvas the views it shows one at a time, and which: `[{id, label, selected}]`
     /// (empty when everything is shown at once).
     tabs: Vec<TabInfo>,
@@ -161,6 +164,7 @@ impl Renderer {
             backend: self.gpu.backend().name(),
             labels: self.scene.page_labels(),
             text_scale: self.scene.page_scale(),
+            page_text: self.scene.page_text_factor(),
             legend: self.scene.legend(),
             hidden: self.scene.hidden_panels().into_iter().map(|k| k.id()).collect(),
             hidden_note: crate::words::panels::hidden_note(&self.scene.hidden_panels()),

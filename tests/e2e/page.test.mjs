@@ -586,10 +586,13 @@ test('a link to a moment opens paused there; "Copy link to this moment" writes o
   assert.equal(await page.evaluate(() => window.flexarm.session.time()), t0, 'held there');
   assert.match(await page.textContent('#run-note') ?? '', /Opened paused at this moment/);
   assert.match(await page.textContent('#timeline-text') ?? '', /t = 3\.00 s/);
-  // The page's own address does not keep the moment (a reload would jump), the copied link does.
-  assert.doesNotMatch(await page.evaluate(() => location.search), /(^|[?&])(t|paused)=/);
+  // Paused, the page's own address keeps the moment (a reload opens here again), and so does the
+  // copied link; playing, the address holds the settings only.
+  assert.match(await page.evaluate(() => location.search), /[?&]paused=1&t=3\b/);
   await page.click('#copy-moment');
   assert.match(await page.textContent('#command-line') ?? '', /\?.*delta=0\.01&.*pf=off.*&paused=1&t=3\b/);
+  await page.click('#play');
+  await page.waitForFunction(() => !/(^|[?&])(t|paused)=/.test(location.search), null, { timeout: 5000 });
   assert.deepEqual(problems, []);
   await close();
 });

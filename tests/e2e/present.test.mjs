@@ -27,8 +27,10 @@ async function shoot(page, name) {
 }
 
 for (const [w, h, need] of [[1920, 1080, 18], [1024, 768, 14]]) {
-  test(`presentation mode at ${w} × ${h}: the figure fills the screen, text ≥ ${need} px`, { timeout: 90000 }, async () => {
-    for (const text of ['normal', 'largest']) {
+  test(`presentation mode at ${w} × ${h}: the figure fills the screen, text ≥ ${need} px, each size larger than the last`, { timeout: 180000 }, async () => {
+    /** @type {{ text: string, figure: number, bar: number, verdict: number }[]} */
+    const sizes = [];
+    for (const text of ['normal', 'large', 'larger', 'largest']) {
       const query = `?preset=fig5.3&mode=full&plane=z&present=1&text=${text}&paused=1&t=3`;
       const { page, problems, close } = await openPage(env.browser, env.server.base, query, { viewport: { width: w, height: h } });
       assert.equal(await page.getAttribute('body', 'data-present'), 'true');
@@ -40,16 +42,30 @@ for (const [w, h, need] of [[1920, 1080, 18], [1024, 768, 14]]) {
       // Everything but the bar (two rows below 1280 px: the verdict over the controls) and the
       // tabs, where the canvas shows one view at a time.
       const bar = await page.$eval('#present-bar', (n) => n.getBoundingClientRect().height);
-      assert.ok(bar <= (w < 1280 ? 110 : 64), `the bar is small: ${bar} px`);
-      assert.ok(box.width >= w - 2 && box.bottom >= h - bar - 1 && box.height >= h - bar - 60, `the figure fills the screen: ${JSON.stringify(box)}`);
+      // At Normal the bar is one row (two below 1280 px); the larger sizes may take one more.
+      if (text === 'normal') assert.ok(bar <= (w < 1280 ? 110 : 64), `the bar is small: ${bar} px`);
+      // The compact key sits between the figure and the bar: a line or three, not the page's key.
+      const key = await page.$eval('#figure-key', (n) => n.getBoundingClientRect().height);
+      if (text === 'normal') assert.ok(key > 0 && key <= 0.16 * h, `the key is compact: ${key} px`);
+      assert.ok(box.width >= w - 2 && box.bottom >= h - bar - key - 1 && box.height >= h - bar - key - 60, `the figure fills the screen: ${JSON.stringify(box)}, key ${key} px`);
       const min = await smallestLabel(page);
       assert.ok(min >= need, `text=${text}: smallest figure text ${min} px < ${need} px`);
+      const px = (/** @type {string} */ sel) => page.$eval(sel, (n) => parseFloat(getComputedStyle(n).fontSize));
+      sizes.push({ text, figure: min, bar: await px('#present-play'), verdict: await px('#present-verdict strong') });
       await shoot(page, `present-${text}-${w}x${h}.png`);
       await page.addScriptTag({ path: AXE });
       const axe = await page.evaluate(async () => (await window.axe.run(document, { runOnly: ['wcag2a', 'wcag2aa'] })).violations.map((v) => `${v.id}: ${v.nodes.length}`));
       assert.deepEqual(axe, []);
       assert.deepEqual(problems, []);
       await close();
+    }
+    // Every size visibly larger than the last, in rendered pixels: the figure's smallest text, the
+    // bar's buttons and the verdict.
+    console.log(`# presentation text at ${w} × ${h} (px): ${sizes.map((s) => `${s.text} ${s.figure}/${s.bar}/${s.verdict}`).join(', ')}`);
+    for (let i = 1; i < sizes.length; i++) {
+      for (const part of /** @type {const} */ (['figure', 'bar', 'verdict'])) {
+        assert.ok(sizes[i][part] >= sizes[i - 1][part] * 1.1, `${part}: ${sizes[i].text} is not larger than ${sizes[i - 1].text}: ${JSON.stringify(sizes)}`);
+      }
     }
   });
 }
@@ -96,4 +112,34 @@ test('two compared runs: both verdicts over the figure, and log axes when they a
   await shoot(page, 'compare-log-laptop.png');
   assert.deepEqual(problems, []);
   await close();
+});
+
+test('presentation from a link: a typo is said, Fig. 2.1 and its caption with predict=1, the key, and Copy link keeps the mode and the text size', { timeout: 90000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, '?preset=fig5.3&present=1&predict=1&text=huge&paused=1&t=2', { viewport: { width: 1920, height: 1080 } });
+  // The typo, said over the figure (the normal view says it too).
+  await page.waitForSelector('#url-notice:not([hidden])', { timeout: 10000 });
+  assert.ok(await page.isVisible('#url-notice'));
+  assert.match(await page.textContent('#url-notice-list') ?? '', /text/);
+  // predict=1 works without mode=full: the zoom on one instant, with its caption.
+  await page.waitForSelector('#zoom-caption:not([hidden])', { timeout: 10000 });
+  assert.ok(await page.isVisible('#zoom-caption'), 'Fig. 2.1\'s caption shows in presentation mode');
+  assert.match(await page.textContent('#zoom-caption') ?? '', /\S/);
+  // Paused at the link's moment, the address keeps it; Copy link writes present and text too.
+  await page.selectOption('#present-text', 'larger');
+  await page.waitForFunction(() => /text=larger/.test(location.search));
+  await page.click('#present-link');
+  await page.waitForFunction(() => /present=1/.test(location.search) && /text=larger/.test(location.search) && /paused=1&t=/.test(location.search), null, { timeout: 5000 });
+  assert.match(await page.textContent('#present-link') ?? '', /Copied|address bar/);
+  await shoot(page, 'present-predict-1920x1080.png');
+  assert.deepEqual(problems, []);
+  await close();
+  // The full view's figures keep a compact key in this mode.
+  const full = await openPage(env.browser, env.server.base, '?preset=fig5.3&mode=full&present=1&paused=1&t=3', { viewport: { width: 1920, height: 1080 } });
+  await full.page.waitForSelector('#figure-key:not([hidden])', { timeout: 10000 });
+  assert.ok(await full.page.isVisible('#figure-key'), 'the key shows');
+  const key = await full.page.$eval('#figure-key', (n) => n.getBoundingClientRect().height);
+  assert.ok(key <= 140, `the key is compact: ${key} px`);
+  await shoot(full.page, 'present-key-1920x1080.png');
+  assert.deepEqual(full.problems, []);
+  await full.close();
 });

@@ -89,6 +89,8 @@ export function createFigure({ session, store, overlays, guard, report, change, 
       layout = guard('Renderer layout', () => renderer?.layout(), null);
       layoutGeneration = generation;
       if (layout) {
+        // The bar, its verdict and the key grow with the text size chosen (presentation mode).
+        document.body.style.setProperty('--present-text', String(layout.page_text));
         overlays.update(layout);
         tabs.render(layout.tabs);
         legend.render(layout.legend);

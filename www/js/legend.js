@@ -4,7 +4,7 @@
 import { byId, make } from './dom.js';
 
 /**
- * @typedef {{ glyph: string, color: string, dark: string, text: string }} Item
+ * @typedef {{ glyph: string, color: string, dark: string, text: string, short: string }} Item
  * @typedef {{ name: string, label: string, stops: [number, string][], dark_stops: [number, string][],
  *   ticks: [number, string][] }} Scale
  * @typedef {{ title: string, items: Item[], scale: Scale | null }} Group
@@ -58,7 +58,8 @@ export function createLegend() {
         const items = g.items.map((it) => {
           const glyph = make('span', { class: 'glyph' });
           glyph.innerHTML = glyphSvg(it.glyph, dark ? it.dark : it.color);
-          return make('li', {}, [glyph, make('span', { text: it.text })]);
+          // The compact key of presentation mode shows the name alone (CSS picks one).
+          return make('li', {}, [glyph, make('span', { class: 'key-long', text: it.text }), make('span', { class: 'key-short', text: it.short })]);
         });
         const parts = [make('h3', { text: g.title }), make('ul', {}, items)];
         if (g.scale) {

@@ -80,6 +80,7 @@ async function main() {
     togglePlay,
     reset,
     textChoices: (wasm.schema().find((/** @type {any} */ p) => p.key === 'text')?.options ?? []).map((/** @type {string[]} */ [value, label]) => ({ value, label })),
+    momentQuery: () => session.momentQuery(),
   });
   const sensors = createSensors({
     study: (runs) => guard('Sensor study', () => session.sensorStudy(runs), null),

@@ -36,6 +36,16 @@ function copyCommand(command) {
 }
 
 /**
+ * The page's address with `query` (a moment's): its fragment kept, so that a lesson a homework
+ * link carries goes with it; resolved against the page's address (a file opened from disk has
+ * no origin to prefix).
+ * @param {string} query
+ */
+export function momentLink(query) {
+  return new URL(`?${query}${window.location.hash}`, window.location.href).href;
+}
+
+/**
  * The buttons for the traces' CSV, the Python script, the command line and the moment's link.
  * @param {{ session: Page, guard: <T>(what: string, fn: () => T, fallback?: T) => T | undefined }} on
  */
@@ -51,5 +61,5 @@ export function wireOutputs({ session, guard }) {
   byId('copy-command').addEventListener('click', () => copyCommand(session.commandLine()));
   // The page's address with this moment: it opens paused at the instant shown.
   // (Resolved against the page's address: a file opened from disk has no origin to prefix.)
-  byId('copy-moment').addEventListener('click', () => copyCommand(new URL(`?${session.momentQuery()}`, window.location.href).href));
+  byId('copy-moment').addEventListener('click', () => copyCommand(momentLink(session.momentQuery())));
 }

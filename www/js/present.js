@@ -4,11 +4,14 @@
 // and shows the verdicts over the figure (also when two runs are compared, outside the mode).
 
 import { byId, make, setText } from './dom.js';
+import { momentLink } from './outputs.js';
+import { writeUrl } from './url.js';
 
 /**
  * @typedef {{ run: string, verdict: string, headline: string, detail: string, settings: string }} RunLine
  * @param {{ set: (key: string, value: string) => void, step: (key: string, steps: number) => void,
- *   togglePlay: () => void, reset: () => void, textChoices: { value: string, label: string }[] }} on
+ *   togglePlay: () => void, reset: () => void, textChoices: { value: string, label: string }[],
+ *   momentQuery: () => string }} on
  */
 export function createPresent(on) {
   const body = document.body;
@@ -59,6 +62,24 @@ export function createPresent(on) {
     toggleFullscreen();
   });
   text.addEventListener('change', () => on.set('text', text.value));
+  // A link to this moment as shown: presentation mode, its text size, paused at this instant.
+  // It goes to the clipboard where the browser allows, and to the address bar in any case.
+  const link = byId('present-link');
+  let linkSaid = 0;
+  link.addEventListener('click', async () => {
+    const query = on.momentQuery();
+    writeUrl(query);
+    // Said at once (a clipboard may wait on a permission), and again once it is copied.
+    setText(link, 'In the address bar');
+    window.clearTimeout(linkSaid);
+    linkSaid = window.setTimeout(() => setText(link, 'Copy link'), 2500);
+    try {
+      await navigator.clipboard.writeText(momentLink(query));
+      setText(link, 'Copied ✓');
+    } catch {
+      // Refused: the address bar holds it.
+    }
+  });
   pf.addEventListener('change', () => on.set('pf', pf.checked ? 'paper' : 'off'));
   document.addEventListener('fullscreenchange', () => {
     const full = Boolean(document.fullscreenElement);

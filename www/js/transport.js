@@ -6,6 +6,7 @@
 
 import { byId, setText } from './dom.js';
 import { playAction } from './run.js';
+import { writeUrl } from './url.js';
 import { createTimeline } from './timeline.js';
 
 /** @typedef {import('./flexarm.js').Page} Page */
@@ -42,6 +43,9 @@ export function createTransport({ session, store, guard, change, loop, refresh }
   };
   store.subscribe((s, prev) => {
     if (s.playing !== prev.playing) {
+      // Paused, the address names the moment (`paused=1&t=…`): a reload or a copy of it opens
+      // here; playing, it holds the settings only.
+      guard('Updating the address', () => writeUrl(s.playing ? session.stateString() : session.momentQuery()));
       showPlay();
       if (s.playing && pauseNote(session.status().note)) session.setNote('');
       loop.resync();

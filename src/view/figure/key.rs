@@ -147,12 +147,7 @@ impl Caption {
 /// Keys of the time plots' curves (the page says them in its run blocks): which colour is which
 /// curve, run B's hue, the previous run's ghost.
 pub fn curve_key(curves: &[(Color, &str)], pair: Option<Color>, ghost: Option<Color>) -> Option<LegendGroup> {
-    let item = |c: Color, text: &str| LegendItem {
-        glyph: Glyph::Line,
-        color: c.css(),
-        dark: c.for_dark().css(),
-        text: text.to_string(),
-    };
+    let item = |c: Color, text: &str| crate::view::legend::item(Glyph::Line, c, text);
     let mut items: Vec<LegendItem> = curves.iter().map(|(c, t)| item(*c, t)).collect();
     items.push(LegendItem { glyph: Glyph::Swatch, ..item(palette::MOTION, "shaded: the reference moves (a slew)") });
     if let Some(b) = pair {

@@ -22,6 +22,16 @@ impl Scene {
         self.scale
     }
 
+    /// How much larger than Normal the page's own text in presentation mode is (the bar, its
+    /// verdict, the key): the text size chosen, over the screen's floor
+    /// ([`crate::view::text_size::page_text_factor`]).
+    pub fn page_text_factor(&self) -> f64 {
+        let [_, h, _] = self.page;
+        let screen = if self.screen_height.is_finite() { self.screen_height } else { h };
+        let o = &self.frame.options;
+        crate::view::text_size::page_text_factor(o.text, o.present, screen)
+    }
+
     /// [`Scene::labels`] in page CSS pixels: anchors, font sizes and widths scaled.
     pub fn page_labels(&self) -> Vec<Label> {
         let s = self.scale;

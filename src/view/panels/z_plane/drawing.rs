@@ -110,7 +110,7 @@ impl ZFrame {
 /// Re λ and Im λ ticks of a z-plane whose data area is `rect_css` (CSS px) showing `view`: a
 /// grid line at each, and labels that stay within the panel's sides (a label hanging over the
 /// end would run off the canvas or into the next panel's labels); a few more ticks than usual
-/// where that leaves fewer than two labels.
+/// where that leaves fewer than three labels (a projector's large text leaves small axes).
 pub fn z_ticks(rect_css: Rect, view: ZView) -> (Ticks, Ticks) {
     let frame = ZFrame::new(rect_css, view);
     let ([x0, x1], [y0, y1]) = frame.ranges();
@@ -126,15 +126,16 @@ pub fn label_fits(value: f64, range: [f64; 2], length: f64, extent: f64) -> bool
     at - extent / 2.0 >= 0.0 && at + extent / 2.0 <= length
 }
 
-/// Ticks over [lo, hi], about `count` intervals, with at least two labels that fit if a few
-/// more ticks give them.
+/// Ticks over [lo, hi], about `count` intervals, with at least three labels that fit if a few
+/// more ticks give them (else two).
 fn labelled(lo: f64, hi: f64, count: usize, length: f64, across: bool) -> Ticks {
     let fitting = |t: Ticks| {
         let extent = label_extent(t.step, lo, hi, across);
         t.filter(|&v| label_fits(v, [lo, hi], length, extent)).count()
     };
     let first = Ticks::new(lo, hi, count);
-    (count..=count + 4).map(|n| Ticks::new(lo, hi, n)).find(|t| fitting(*t) >= 2).unwrap_or(first)
+    let more = |least: usize| (count..=count + 4).map(|n| Ticks::new(lo, hi, n)).find(|t| fitting(*t) >= least);
+    more(3).or_else(|| more(2)).unwrap_or(first)
 }
 
 /// A generous estimate of a tick label's length along its axis, CSS px, without writing it:
