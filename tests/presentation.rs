@@ -149,3 +149,26 @@ fn each_text_size_is_larger_than_the_last_on_both_projectors() {
         assert!(scales[0] * 12.0 >= floor - 1e-9, "{h} lines: {scales:?}");
     }
 }
+
+/// Issue 35, item 3: on both projectors and at every text size, every axis with ticks keeps at
+/// least three labels (a short axis gets a few more ticks rather than one or two labels).
+#[test]
+fn every_axis_keeps_three_tick_labels_at_every_presented_size() {
+    let mut short = Vec::new();
+    for view in ["mode=full&plane=z", "mode=full&predict=1", "mode=full&compare=1", "mode=intro"] {
+        for (w, h) in [(1920.0, 1080.0), (1024.0, 768.0)] {
+            for text in SIZES_PRESENTED {
+                let q = format!("{view}&present=1&text={text}");
+                let scene = drawn(&q, w, h - BAR, h);
+                for p in scene.page_panel_info() {
+                    for (axis, ticks, labels) in [("x", &p.x_ticks, &p.x_labels), ("y", &p.y_ticks, &p.y_labels)] {
+                        if !ticks.is_empty() && labels.len() < 3 {
+                            short.push(format!("{q} at {w}×{h}: {} {axis} has {} labels", p.id, labels.len()));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(short.is_empty(), "{}", short.join("\n"));
+}

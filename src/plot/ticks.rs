@@ -70,6 +70,17 @@ impl Ticks {
     }
 }
 
+impl Ticks {
+    /// [`Ticks::new`] with at least `least` ticks where up to four more intervals give them: a
+    /// short axis (a projector's large text) keeps three labels rather than one or two.
+    pub fn at_least(lo: f64, hi: f64, max_count: usize, least: usize) -> Ticks {
+        let first = Ticks::new(lo, hi, max_count);
+        (max_count..=max_count + 4).map(|n| Ticks::new(lo, hi, n)).find(|t| t.len() >= least).unwrap_or(first)
+    }
+}
+
+impl ExactSizeIterator for Ticks {}
+
 impl Iterator for Ticks {
     type Item = f64;
 

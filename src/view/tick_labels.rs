@@ -32,10 +32,16 @@ pub fn offset_labels(ticks: &[f64], room: f64) -> Option<(Vec<TickLabel>, String
     Some((labels, base))
 }
 
-/// Text labels for the log ticks that fit along `length` pixels.
+/// Text labels for the log ticks that fit along `length` pixels; where `spacing` leaves fewer than
+/// three on a short axis, four fifths of it (the spacing is the widest label's: shorter labels
+/// still clear each other, which the layout's no-overlap check confirms).
 pub fn log_labels(ticks: &[f64], range: [f64; 2], length: f64, spacing: f64) -> Vec<TickLabel> {
-    label_log_ticks(ticks, range[0], range[1], length, spacing)
-        .into_iter()
-        .map(|value| TickLabel { value, text: format::log_tick(value) })
-        .collect()
+    let mut values = label_log_ticks(ticks, range[0], range[1], length, spacing);
+    if values.len() < 3 {
+        let closer = label_log_ticks(ticks, range[0], range[1], length, spacing * 0.8);
+        if closer.len() > values.len() {
+            values = closer;
+        }
+    }
+    values.into_iter().map(|value| TickLabel { value, text: format::log_tick(value) }).collect()
 }

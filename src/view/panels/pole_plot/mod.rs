@@ -39,7 +39,7 @@ fn tick_counts(rect_css: Rect) -> (usize, usize) {
 /// range is `im`.
 fn ticks(rect_css: Rect, im: [f64; 2]) -> (Ticks, Ticks) {
     let (x_count, y_count) = tick_counts(rect_css);
-    (Ticks::new(RE_RANGE[0], RE_RANGE[1], x_count), Ticks::new(im[0], im[1], y_count))
+    (Ticks::at_least(RE_RANGE[0], RE_RANGE[1], x_count, 3), Ticks::at_least(im[0], im[1], y_count, 3))
 }
 
 /// The pole plot ([`PanelKind::Poles`]).
@@ -64,7 +64,8 @@ impl PanelView for PolePlot {
 
     fn vertex_budget(&self, frame: &Frame, panel: &Panel) -> usize {
         let (x_ticks, y_ticks) = tick_counts(panel.rect);
-        let background = 6 * (x_ticks + y_ticks + 8) + 2 * 6 + 24 + 2 * DASHED_LINE_BUDGET;
+        // Up to four more intervals each way where the axis is short (`Ticks::at_least`).
+        let background = 6 * (x_ticks + y_ticks + 18) + 2 * 6 + 24 + 2 * DASHED_LINE_BUDGET;
         background + frame.run_count() * RUN_VERTEX_BUDGET
     }
 

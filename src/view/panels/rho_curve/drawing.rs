@@ -78,7 +78,10 @@ pub fn curve_range(windows: Option<&StableWindows>, measure: Measure) -> [f64; 2
 pub fn rho_ticks(rect_css: Rect, frame: &RhoFrame) -> (Vec<f64>, Vec<f64>) {
     let nx = (rect_css.w / 46.0).floor().clamp(1.0, 20.0) as usize;
     let ny = (rect_css.h / 26.0).floor().clamp(2.0, 10.0) as usize;
-    (log_ticks(frame.x_range[0], frame.x_range[1], nx), Ticks::new(frame.y_range[0], frame.y_range[1], ny).collect())
+    (
+        log_ticks(frame.x_range[0], frame.x_range[1], nx),
+        Ticks::at_least(frame.y_range[0], frame.y_range[1], ny, 3).collect(),
+    )
 }
 
 /// The second axis along the top: where the swing turns ωδ = π/8, π/4, …, 8π radians per period

@@ -134,7 +134,8 @@ fn labelled(lo: f64, hi: f64, count: usize, length: f64, across: bool) -> Ticks 
         t.filter(|&v| label_fits(v, [lo, hi], length, extent)).count()
     };
     let first = Ticks::new(lo, hi, count);
-    let more = |least: usize| (count..=count + 4).map(|n| Ticks::new(lo, hi, n)).find(|t| fitting(*t) >= least);
+    let more =
+        |least: usize| (count..=(count + 8).min(16)).map(|n| Ticks::new(lo, hi, n)).find(|t| fitting(*t) >= least);
     more(3).or_else(|| more(2)).unwrap_or(first)
 }
 
