@@ -76,6 +76,10 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
         // The one wrong choice anyone made, counted.
         let wrong = &question.choices[(question.correct + 1) % question.choices.len()];
         assert_eq!(tally.wrong, vec![(wrong.clone(), 57 - right)], "step {}", i + 1);
+        // The page's row says the same in words.
+        let [share, wrongs, _] = flexarm::classroom::class::ClassTable::row_words(tally);
+        assert!(share.starts_with(&format!("{right} of 57, ")), "{share}");
+        assert_eq!(wrongs, format!("“{wrong}” ×{}", 57 - right));
         q += 1;
     }
     // Nobody did a task: each task step was left with Next ▸, and the table says so for every

@@ -239,3 +239,31 @@ fn the_panels_shown_fill_the_canvas() {
         }
     }
 }
+
+/// The embed's strip says the verdict in its short form (issue 35, item 5): the headline and the
+/// detail's first clause, from the same words as the page's verdict — short enough for a 760-px
+/// strip (about 40 characters beside its buttons) for every preset, stable or not.
+#[test]
+fn the_short_verdict_is_the_headline_and_the_details_first_clause() {
+    for preset in flexarm::session::presets::PRESETS {
+        let mut s = common::session(&format!("preset={}", preset.id));
+        common::play(&mut s, 2.0);
+        s.refresh();
+        let r = &s.status().runs[0];
+        assert!(r.short.starts_with(&format!("{}: ", r.headline)), "{}: {}", preset.id, r.short);
+        let clause = &r.short[r.headline.len() + 2..];
+        assert!(r.detail.starts_with(clause), "{}: '{}' is not the start of '{}'", preset.id, clause, r.detail);
+        assert!(r.short.chars().count() <= 40, "{}: {} characters: {}", preset.id, r.short.chars().count(), r.short);
+    }
+}
+
+/// The figure's description for screen readers names only what is drawn (issue 35, item 5): an
+/// embed of ρ(δ) alone says nothing of the arm or the errors.
+#[test]
+fn the_description_covers_only_what_is_shown() {
+    let all = session("preset=fig5.3&embed=1&views=arm,traces,rho").figure_text();
+    assert!(all.contains("the arm") && all.contains("the errors are") && all.contains("ρ along δ"), "{all}");
+    let rho = session("preset=fig5.3&embed=1&views=rho").figure_text();
+    assert!(rho.contains("ρ along δ"), "{rho}");
+    assert!(!rho.contains("arm") && !rho.contains("the errors are") && !rho.contains("e1, e2"), "{rho}");
+}

@@ -15,7 +15,7 @@ pub struct AnswerFile {
 }
 
 /// One step of the lesson, over the class.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
 pub struct StepTally {
     pub step: usize,
     pub title: String,
@@ -32,7 +32,7 @@ pub struct StepTally {
 }
 
 /// The merged class.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, serde::Serialize)]
 pub struct ClassTable {
     pub lesson: String,
     pub lesson_hash: String,
@@ -176,6 +176,25 @@ impl ClassTable {
             );
         }
         out
+    }
+
+    /// One step's row in words, as the page's table shows it: the share right ("47 of 57, 82 %"),
+    /// the wrong choices most made, the tasks.
+    pub fn row_words(s: &StepTally) -> [String; 3] {
+        let right = if s.predicted > 0 {
+            format!("{} of {}, {:.0} %", s.right, s.predicted, 100.0 * s.right as f64 / s.predicted as f64)
+        } else {
+            String::new()
+        };
+        let wrong: Vec<String> = s.wrong.iter().take(3).map(|(t, n)| format!("“{t}” ×{n}")).collect();
+        let mut tasks = Vec::new();
+        if s.done + s.shown > 0 {
+            tasks.push(format!("{} done, {} shown", s.done, s.shown));
+        }
+        if s.skipped > 0 {
+            tasks.push(format!("{} skipped", s.skipped));
+        }
+        [right, wrong.join("; "), tasks.join("; ")]
     }
 
     /// In words, for the command line: the lesson, the counts, the files left out and why.

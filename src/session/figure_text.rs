@@ -12,7 +12,14 @@ impl Session {
     pub fn figure_text(&self) -> String {
         let v = self.drawn_view();
         let hidden = self.answers_hidden();
-        let mut kinds = vec![PanelKind::Arm, PanelKind::Error1];
+        // Only what is drawn: an embed may show the arm or the errors alone, or neither.
+        let mut kinds = Vec::new();
+        if v.picture {
+            kinds.push(PanelKind::Arm);
+        }
+        if v.errors {
+            kinds.push(PanelKind::Error1);
+        }
         if v.torque {
             kinds.push(PanelKind::Torque);
         }
@@ -28,6 +35,9 @@ impl Session {
         if v.map {
             kinds.push(PanelKind::MapOff);
         }
+        if v.study && self.reads_sensors() {
+            kinds.push(PanelKind::StudyError);
+        }
         let mut text = figure_contents(&kinds, v.measure == crate::plot::color::Measure::Rate);
         for (i, run) in self.runs().enumerate() {
             let name = if i == 0 { "A" } else { "B" };
@@ -38,8 +48,8 @@ impl Session {
             let at = self.shown_snapshot(i).map_or(f64::NAN, |snap| snap.time);
             let settings = self.run(1).is_some().then_some(s.settings.as_str());
             let looking_back = self.viewing().is_some();
-            text +=
-                &figure_run(name, settings, s.headline, &s.detail, at, looking_back, &s.readouts.error, &s.observed);
+            let errors = if v.errors { s.readouts.error.as_str() } else { "" };
+            text += &figure_run(name, settings, s.headline, &s.detail, at, looking_back, errors, &s.observed);
         }
         text
     }

@@ -39,6 +39,9 @@ pub struct RunStatus {
     /// The prediction in a sentence: "ρ = 1.0239 > 1 — in the long run the errors grow e-fold every
     /// 0.42 s".
     pub detail: String,
+    /// The headline and the detail's first clause, for a narrow strip (an embed's):
+    /// "Unstable: ρ = 1.0239 > 1" — derived from them, so it never says otherwise.
+    pub short: String,
     /// What the simulation has observed, and whether it agrees.
     pub observed: String,
     /// True once the simulation has measured a growth rate (or diverged).
@@ -101,6 +104,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         verdict,
         headline,
         announce: format!("Run {name}: {headline}. {detail}."),
+        short: short_verdict(headline, &detail),
         detail,
         observed,
         measured,
@@ -135,6 +139,13 @@ fn limit_is(config: &crate::control::SimulationConfig) -> &'static str {
     }
 }
 
+/// "Unstable: ρ = 1.0239 > 1" from the headline and the detail (up to its first " — " or ";").
+pub fn short_verdict(headline: &str, detail: &str) -> String {
+    let first = detail.split(" — ").next().unwrap_or(detail);
+    let first = first.split("; ").next().unwrap_or(first);
+    format!("{headline}: {first}")
+}
+
 /// What a student in student mode (`answers=hidden`) may not see yet: the verdict and ρ, the
 /// observation (it says whether the simulation agrees with ρ), the growth rates and A4. What the
 /// figure shows (the errors, the torques, the time) stays; the words say what is hidden, for the
@@ -144,6 +155,7 @@ pub fn hide_answers(r: &mut RunStatus) {
     r.verdict = "hidden";
     r.headline = "Verdict hidden";
     r.detail = "student mode: the verdict and ρ wait for your answer".into();
+    r.short = short_verdict(r.headline, &r.detail);
     r.observed = if r.finished {
         // What the run did is on screen: say why it stopped, not what ρ says.
         "The run stopped: the errors passed π rad. Restart to watch it again.".into()

@@ -244,3 +244,24 @@ pub fn read_lesson_fragment(fragment: &str) -> Result<JsValue, JsError> {
     let carried = crate::classroom::link::read_lesson_fragment(fragment).map_err(js_error)?;
     to_js(&carried.map(|(name, bytes)| Carried { name, bytes }))
 }
+
+/// A class's answer files (`names[i]`, `texts[i]`: the page's CSV each) merged into one table:
+/// `{lesson, counted, refused: [[name, why]], steps: [{step, title, …}], rows: [[right, wrong,
+/// tasks]], summary, csv}` — the same table as `flexarm answers merge`.
+#[wasm_bindgen(js_name = mergeAnswers)]
+pub fn merge_answers(names: Vec<String>, texts: Vec<String>) -> Result<JsValue, JsError> {
+    use crate::classroom::class::{merge, AnswerFile, ClassTable};
+    #[derive(serde::Serialize)]
+    struct Merged {
+        #[serde(flatten)]
+        table: ClassTable,
+        rows: Vec<[String; 3]>,
+        summary: String,
+        csv: String,
+    }
+    let files: Vec<AnswerFile> = names.into_iter().zip(texts).map(|(name, text)| AnswerFile { name, text }).collect();
+    let table = merge(&files);
+    let rows = table.steps.iter().map(ClassTable::row_words).collect();
+    let (summary, csv) = (table.summary(), table.to_csv());
+    to_js(&Merged { table, rows, summary, csv })
+}

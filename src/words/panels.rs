@@ -106,5 +106,7 @@ pub fn figure_run(
 ) -> String {
     let when = if looking_back { "looking back at" } else { "at" };
     let who = settings.map_or(String::new(), |s| format!("Run {name} ({s}): "));
-    format!(" {who}{headline} — {detail}; {when} t = {at:.2} s the errors are {errors}; {observed}.")
+    // Without the error plots ("" errors), the instant alone.
+    let errors = if errors.is_empty() { String::new() } else { format!(" the errors are {errors}") };
+    format!(" {who}{headline} — {detail}; {when} t = {at:.2} s{errors}; {observed}.")
 }

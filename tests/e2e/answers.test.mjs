@@ -9,6 +9,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { shared, openPage, shots, clickForDownload } from './harness.mjs';
+import { csvCells } from '../../www/js/answers.js';
 
 const env = shared();
 const HOMEWORK = '?lesson_src=lessons/windows.md';
@@ -117,6 +118,55 @@ test('student mode hides the verdict, ρ, the windows and the maps until the ste
   await page.click('#show-answers');
   await page.waitForFunction(() => document.querySelector('#hidden-note')?.hasAttribute('hidden'));
   await page.waitForFunction(() => /You showed the hidden answers/.test(document.querySelector('#lesson-record-headline')?.textContent ?? ''));
+  assert.deepEqual(problems, []);
+  await close();
+});
+
+test('the teacher drops 60 answer files on the page: one table, each step\'s share right, the edited file named', { timeout: 120000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, '?lesson_src=lessons/windows.md&mode=full');
+  await page.waitForFunction(() => !document.querySelector('#lesson').hidden, null, { timeout: 10000 });
+  // 60 students walk the homework in this page's classroom, each naming themselves: student n
+  // picks the first choice of every question when n is a multiple of 3, else the second.
+  const files = await page.evaluate(() => {
+    const s = /** @type {any} */ (window).flexarm.session;
+    const out = [];
+    for (let n = 0; n < 60; n++) {
+      s.lessonOpen(0);
+      s.clearAnswers();
+      s.setStudent(`Student ${String(n).padStart(2, '0')}`);
+      for (;;) {
+        const l = s.status().lesson;
+        if (l.question) s.lessonAnswer(n % 3 === 0 ? 0 : 1);
+        if (!l.can_next) break;
+        s.lessonNext();
+      }
+      out.push({ name: `student-${String(n).padStart(2, '0')}.csv`, text: s.answersCsv() });
+    }
+    return out;
+  }).catch(async () => null);
+  assert.ok(files, 'the students\' files were made');
+  // Student 3 turns a wrong answer right by hand.
+  const edited = files[3].text.replace(',wrong,', ',right,');
+  assert.notEqual(edited, files[3].text);
+  files[3].text = edited;
+  await page.setInputFiles('#class-files', files.map((f) => ({ name: f.name, mimeType: 'text/csv', buffer: Buffer.from(f.text) })));
+  await page.waitForSelector('#class-table:not([hidden])', { timeout: 10000 });
+  assert.equal(await page.textContent('#class-summary'), '59 answer files counted, 1 not.');
+  assert.match(await page.textContent('#class-refused') ?? '', /Not counted: student-03\.csv — its check does not match: a row or the name was edited/);
+  const rows = await page.$$eval('#class-rows tr', (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+  console.log(`# the class table:\n${rows.map((r) => `#   ${r.join(' | ')}`).join('\n')}`);
+  // Each question's share right is what the 59 intact files say, counted here from their rows.
+  const asked = rows.filter((r) => r[1]);
+  assert.ok(asked.length >= 2, JSON.stringify(rows));
+  for (const r of asked) {
+    const step = Number((r[0] ?? '').split('.')[0]);
+    const right = files.filter((f, i) => i !== 3 && f.text.split('\n').some((line) => {
+      const c = csvCells(line);
+      return c[2] === String(step) && c[4] === 'prediction' && c[7] === 'right';
+    })).length;
+    assert.match(r[1] ?? '', new RegExp(`^${right} of 59, `), JSON.stringify(r));
+  }
+  await page.locator('#class-table').screenshot({ path: path.join(shots, 'class-table-laptop.png') });
   assert.deepEqual(problems, []);
   await close();
 });

@@ -97,9 +97,9 @@ const CHOICES = [
   // The eigenvalues on the unit circle and ρ(δ) alone, paused at t = 3 s, with δ and Reset.
   { name: 'z-plane and ρ(δ)', form: { views: ['zplane', 'rho'], size: [760, 480], paused: true, t: '3', strip: ['reset', 'delta'] },
     panels: ['z-plane', 'rho-curve'], strip: ['reset', 'delta'] },
-  // Fig. 5.3's arm and errors with Play and K_pr, from t = 5 s: it has diverged (at 4.1 s).
-  { name: 'Fig. 5.3 diverged', form: { views: ['arm', 'traces'], size: [760, 480], t: '5', strip: ['play', 'pf'] },
-    panels: ['arm', 'e1', 'e2'], strip: ['play', 'pf'] },
+  // Fig. 5.3's arm and errors with Play, Reset and K_pr, from t = 5 s: it has diverged (at 4.1 s).
+  { name: 'Fig. 5.3 diverged', form: { views: ['arm', 'traces'], size: [760, 480], t: '5', strip: ['play', 'reset', 'pf'] },
+    panels: ['arm', 'e1', 'e2'], strip: ['play', 'reset', 'pf'] },
   // Lesson step 4, with its text and buttons beside the arm and errors.
   { name: 'lesson step 4', form: { views: ['arm', 'traces'], size: [760, 480], strip: ['play', 'reset'], lesson: 4 },
     panels: ['arm', 'e1', 'e2'], strip: ['play', 'reset'] },
@@ -172,6 +172,12 @@ test('the builder writes a snippet per choice; in a 760-px course page each embe
     assert.deepEqual(s.strip, c.strip, `${c.name}: exactly the controls chosen`);
     const [sw, sh, iw, ih] = s.scroll;
     assert.ok(sw <= iw && sh <= ih, `${c.name}: fits its frame without scrolling (${sw}×${sh} in ${iw}×${ih})`);
+    // The verdict in the strip, in its short form, whole: not cut by "…" (issue 35).
+    const verdict = await frames[i].evaluate(() => {
+      const v = document.querySelector('#embed-verdict');
+      return v && v.getClientRects().length ? { text: v.textContent, fits: v.scrollWidth <= v.clientWidth + 1 } : null;
+    });
+    if (verdict) assert.ok(verdict.fits && /^[A-Z][a-z ]+: /.test(verdict.text ?? ''), `${c.name}: the verdict fits: ${JSON.stringify(verdict)}`);
   }
   // 1: paused at t = 3 s, and held; its δ slider sets δ.
   const a = frames[0];
@@ -185,6 +191,7 @@ test('the builder writes a snippet per choice; in a 760-px course page each embe
   // 2: diverged, so Play says Restart, and restarts the run.
   const b = frames[1];
   await b.waitForFunction(() => document.querySelector('#embed-play').textContent === '↺ Restart', null, { timeout: 20000 });
+  assert.equal(await b.isVisible('#embed-reset'), false, 'one restart control after divergence, not Restart and Reset');
   await b.click('#embed-play');
   await b.waitForFunction(() => document.querySelector('#embed-play').textContent === '❚❚ Pause', null, { timeout: 5000 });
   assert.ok(await b.evaluate(() => window.flexarm.session.time()) < 2, 'restarted from rest');

@@ -5,6 +5,7 @@
 
 import { createLesson } from './lesson.js';
 import { createAnswers } from './answers.js';
+import { createClassTable } from './class.js';
 import { messageOf } from './dom.js';
 
 /** @typedef {import('./flexarm.js').Page} Page */
@@ -15,9 +16,11 @@ import { messageOf } from './dom.js';
  *   guard: <T>(what: string, fn: () => T, fallback?: T) => T | undefined, report: (what: string, e: unknown) => void,
  *   change: (fn: () => void) => void, refresh: () => void, touch: () => void,
  *   openSheet: (open: boolean) => void, showFigure: () => void,
- *   download: (name: string, text: string, type: string) => void, loaded?: () => void }} on
+ *   download: (name: string, text: string, type: string) => void, loaded?: () => void,
+ *   mergeAnswers: (names: string[], texts: string[]) => import('./class.js').Merged }} on
  */
-export function createClassroom({ session, store, presets, report, change, refresh, openSheet, showFigure, download, loaded }) {
+export function createClassroom({ session, store, presets, report, change, refresh, openSheet, showFigure, download, loaded, mergeAnswers }) {
+  const classTable = createClassTable({ merge: mergeAnswers, download, report });
   /** A lesson action: the settings it makes, played from the start. @param {() => void} fn */
   const lessonDo = (fn) => {
     session.setWallClock(Date.now());
@@ -49,6 +52,7 @@ export function createClassroom({ session, store, presets, report, change, refre
       loaded?.();
       lessonDo(() => {});
     },
+    merge: (files) => classTable.merge(files),
     answer: (choice) => {
       lessonDo(() => session.lessonAnswer(choice));
       showFigure();

@@ -22,7 +22,8 @@ export function choiceMark(/** @type {Question} */ q, /** @type {number} */ i) {
 
 /**
  * @param {{ start: () => void, next: () => void, back: () => void, leave: () => void,
- *   answer: (choice: number) => void, reveal: () => void, open: (file: File) => void }} on
+ *   answer: (choice: number) => void, reveal: () => void, open: (file: File) => void,
+ *   merge: (files: File[]) => void }} on
  */
 export function createLesson(on) {
   const panel = byId('lesson');
@@ -53,11 +54,19 @@ export function createLesson(on) {
   document.addEventListener('dragover', (e) => {
     if (e.dataTransfer?.types.includes('Files')) e.preventDefault();
   });
+  // A class's answer files (several, or CSV): merged; one Markdown file: a lesson.
+  const classFiles = /** @type {HTMLInputElement} */ (byId('class-files'));
+  byId('class-files-open').addEventListener('click', () => classFiles.click());
+  classFiles.addEventListener('change', () => {
+    if (classFiles.files?.length) on.merge([...classFiles.files]);
+    classFiles.value = '';
+  });
   document.addEventListener('drop', (e) => {
-    const dropped = e.dataTransfer?.files?.[0];
-    if (!dropped) return;
+    const dropped = [...(e.dataTransfer?.files ?? [])];
+    if (dropped.length === 0) return;
     e.preventDefault();
-    on.open(dropped);
+    if (dropped.length > 1 || /\.csv$/iu.test(dropped[0].name)) on.merge(dropped);
+    else on.open(dropped[0]);
   });
 
   /** Shows the session's lesson status (null: the lesson is closed). @param {LessonStatus | null} s */

@@ -73,7 +73,9 @@ export function createStatus() {
     if (strip.dataset.verdict !== s.runs[0].verdict) strip.dataset.verdict = s.runs[0].verdict;
     setText(byId('strip-word'), s.runs[0].headline);
     setText(byId('strip-detail'), s.runs[0].detail);
-    setText(embedVerdict, `${s.runs[0].headline}: ${s.runs[0].detail}`);
+    // The embed's strip is narrow: the short form, the whole sentence on hover.
+    setText(embedVerdict, s.runs[0].short);
+    if (embedVerdict.title !== `${s.runs[0].headline}: ${s.runs[0].detail}`) embedVerdict.title = `${s.runs[0].headline}: ${s.runs[0].detail}`;
     const [a, b] = s.runs;
     runs[0].render(a, now);
     bControls.hidden = !b;

@@ -30,6 +30,7 @@ export function createTransport({ session, store, guard, change, loop, refresh }
   const play = byId('play');
   const embedPlay = byId('embed-play');
   const presentPlay = byId('present-play');
+  const embedReset = byId('embed-reset');
   /** Every run has diverged (the session says so): the button restarts them. */
   let finished = false;
   /** The Play buttons (the page's and the embed's) say what a press will do. */
@@ -40,6 +41,8 @@ export function createTransport({ session, store, guard, change, loop, refresh }
       button.setAttribute('aria-pressed', String(next.pressed));
       button.setAttribute('aria-label', next.label);
     }
+    // Once Play restarts, the embed's Reset would be a second button doing the same.
+    embedReset.classList.toggle('same-as-play', next.action === 'restart');
   };
   store.subscribe((s, prev) => {
     if (s.playing !== prev.playing) {

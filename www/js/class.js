@@ -1,0 +1,47 @@
+// The teacher's side of the answers (issue 35): a class's answer files, chosen or dropped on the
+// page, merged into one table — per step the share right at the first try, the wrong choices most
+// made, the tasks — with every file that cannot count named and why. The merge and its words are
+// Rust's (`classroom::class`, the same as `flexarm answers merge`); nothing leaves the browser.
+
+import { byId, make, setText } from './dom.js';
+
+/**
+ * @typedef {{ step: number, title: string }} StepTally
+ * @typedef {{ lesson: string, counted: [string, string][], refused: [string, string][], steps: StepTally[],
+ *   rows: [string, string, string][], summary: string, csv: string }} Merged
+ * @param {{ merge: (names: string[], texts: string[]) => Merged,
+ *   download: (name: string, text: string, type: string) => void, report: (what: string, e: unknown) => void }} on
+ */
+export function createClassTable(on) {
+  const box = byId('class-table');
+  /** @type {Merged | null} */
+  let shown = null;
+  byId('class-download').addEventListener('click', () => {
+    if (shown) on.download('flexarm-class-answers.csv', shown.csv, 'text/csv');
+  });
+
+  /** Reads and merges `files`, and shows the table. @param {File[]} files */
+  async function merge(files) {
+    try {
+      const texts = await Promise.all(files.map((f) => f.text()));
+      shown = on.merge(files.map((f) => f.name), texts);
+    } catch (e) {
+      on.report('The answer files could not be merged', e);
+      return;
+    }
+    const m = shown;
+    setText(byId('class-title'), m.lesson ? `Your class: ${m.lesson}` : 'Your class');
+    setText(byId('class-summary'), `${m.counted.length} answer file${m.counted.length === 1 ? '' : 's'} counted, ${m.refused.length} not.`);
+    byId('class-rows').replaceChildren(
+      ...m.steps.map((s, i) => make('tr', {}, [
+        make('th', { scope: 'row', text: `${s.step}. ${s.title}` }),
+        ...m.rows[i].map((cell) => make('td', { text: cell })),
+      ])),
+    );
+    byId('class-refused').replaceChildren(...m.refused.map(([name, why]) => make('li', { text: `Not counted: ${name} — ${why}` })));
+    box.hidden = false;
+    box.scrollIntoView({ block: 'nearest' });
+  }
+
+  return { merge };
+}
