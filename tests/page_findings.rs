@@ -166,3 +166,14 @@ fn predict_works_in_presentation_mode_without_the_full_view() {
     let intro = common::session("preset=fig5.3&predict=1");
     assert!(!intro.drawn_view().predict, "the intro keeps to the arm and the errors");
 }
+
+/// A download's name says what it shows (issue 35, item 4): the preset, else the key settings.
+#[test]
+fn a_downloads_name_carries_the_preset_or_the_key_settings() {
+    assert_eq!(common::session("preset=fig5.3").file_label(), "fig5.3");
+    assert_eq!(common::session("delta=0.02&alpha=5&pf=off").file_label(), "delta0.02-alpha5-pf-off");
+    assert_eq!(
+        common::session("delta=0.02&alpha1=5&alpha2=2&pf=paper").file_label(),
+        "delta0.02-alpha1-5-alpha2-2-pf-paper"
+    );
+}

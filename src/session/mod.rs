@@ -204,6 +204,15 @@ impl Session {
         std::iter::once(&mut self.a).chain(self.b.as_mut())
     }
 
+    /// What a downloaded file's name says of what it shows: the preset ("fig5.3"), else run A's
+    /// key settings ("delta0.02-alpha5-pf-off"): a teacher's figures no longer share one name.
+    pub fn file_label(&self) -> String {
+        match self.preset() {
+            Some(p) => settings::file_slug(p.id),
+            None => self.settings.file_label(),
+        }
+    }
+
     /// The preset the settings match, if any.
     pub fn preset(&self) -> Option<&'static Preset> {
         PRESETS.iter().find(|p| self.settings.matches(p))

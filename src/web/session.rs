@@ -325,6 +325,12 @@ impl WebSession {
         self.inner.set_z_view([0.0, 0.0], half).map_err(js_error)
     }
 
+    /// What a downloaded file's name says of what it shows: "fig5.3", or "delta0.02-alpha5-pf-off".
+    #[wasm_bindgen(js_name = fileLabel)]
+    pub fn file_label(&self) -> String {
+        self.inner.file_label()
+    }
+
     /// The settings' state string (the classroom's `stateString` adds the lesson step).
     #[wasm_bindgen(js_name = stateString)]
     pub fn state_string(&self) -> String {

@@ -98,8 +98,9 @@ const CHOICES = [
   { name: 'z-plane and ρ(δ)', form: { views: ['zplane', 'rho'], size: [760, 480], paused: true, t: '3', strip: ['reset', 'delta'] },
     panels: ['z-plane', 'rho-curve'], strip: ['reset', 'delta'] },
   // Fig. 5.3's arm and errors with Play, Reset and K_pr, from t = 5 s: it has diverged (at 4.1 s).
+  // Reset was asked for, but once Play restarts it would be a second restart button: it hides.
   { name: 'Fig. 5.3 diverged', form: { views: ['arm', 'traces'], size: [760, 480], t: '5', strip: ['play', 'reset', 'pf'] },
-    panels: ['arm', 'e1', 'e2'], strip: ['play', 'reset', 'pf'] },
+    panels: ['arm', 'e1', 'e2'], strip: ['play', 'pf'] },
   // Lesson step 4, with its text and buttons beside the arm and errors.
   { name: 'lesson step 4', form: { views: ['arm', 'traces'], size: [760, 480], strip: ['play', 'reset'], lesson: 4 },
     panels: ['arm', 'e1', 'e2'], strip: ['play', 'reset'] },

@@ -19,7 +19,7 @@ test('the picture: a PNG of the canvas with its labels and a caption strip', { t
   const { page, problems, close } = await openPage(env.browser, env.server.base, PAGE);
   await page.waitForTimeout(1500);
   const { name, bytes } = await clickForDownload(page, '#export-png');
-  assert.equal(name, 'flexarm-figure.png');
+  assert.equal(name, 'flexarm-fig5.3-figure.png', 'named after what it shows');
   assert.deepEqual(bytes.subarray(0, 8), PNG_SIGNATURE, 'PNG signature');
   const width = bytes.readUInt32BE(16);
   const height = bytes.readUInt32BE(20);
@@ -31,7 +31,7 @@ test('the picture: a PNG of the canvas with its labels and a caption strip', { t
   assert.ok(bytes.length > 20 * 1024, `PNG only ${kB(bytes)}`);
   assert.equal(width, Math.round(css.width * css.dpr));
   assert.ok(height > css.height * css.dpr, `PNG height ${height} leaves no caption under ${css.height}×${css.dpr}`);
-  assert.match(await page.textContent('#export-status'), /flexarm-figure\.png/);
+  assert.match(await page.textContent('#export-status'), /flexarm-fig5\.3-figure\.png/);
   assert.deepEqual(problems, []);
   await close();
 });
@@ -72,7 +72,7 @@ test('the SVG figures: the errors at once, the maps once they are computed', { t
   const traces = await clickForDownload(page, '#export-svg-traces');
   const tracesText = traces.bytes.toString('utf8');
   console.log(`# SVG errors ${kB(traces.bytes)}`);
-  assert.equal(traces.name, 'flexarm-errors.svg');
+  assert.equal(traces.name, 'flexarm-fig5.3-errors.svg');
   assert.ok(tracesText.startsWith('<svg'), tracesText.slice(0, 80));
   assert.match(tracesText, /Tracking errors/);
 
@@ -80,7 +80,7 @@ test('the SVG figures: the errors at once, the maps once they are computed', { t
   const maps = await clickForDownload(page, '#export-svg-maps');
   const mapsText = maps.bytes.toString('utf8');
   console.log(`# SVG maps ${kB(maps.bytes)}`);
-  assert.equal(maps.name, 'flexarm-maps.svg');
+  assert.equal(maps.name, 'flexarm-fig5.3-maps.svg');
   assert.ok(mapsText.startsWith('<svg'), mapsText.slice(0, 80));
   // Both panels name their feedback (the map titles come from src/session/maps.rs).
   assert.match(mapsText, /ρ, no Kₚᵣ/);

@@ -52,12 +52,15 @@ async function everyPanel(page, { save = false, darkSystem = false } = {}) {
   await recordBlobTypes(page);
   const ids = await page.$$eval('#figure-panel option', (os) => os.map((o) => /** @type {HTMLOptionElement} */ (o).value));
   const state = await page.evaluate(() => window.flexarm.session.stateString());
+  // Every file is named after what it shows (the preset of these pages).
+  const label = await page.evaluate(() => window.flexarm.session.fileLabel());
+  assert.equal(label, 'fig5.3');
   for (const id of ids) {
     await page.selectOption('#figure-panel', id);
     await page.selectOption('#figure-format', 'svg');
     assert.equal(await page.isDisabled('#figure-scale'), true, 'the scale is for PNGs');
     const svg = await clickForDownload(page, '#figure-download');
-    assert.equal(svg.name, `flexarm-${id}.svg`);
+    assert.equal(svg.name, `flexarm-${label}-${id}.svg`);
     const types = await page.evaluate(() => /** @type {any} */ (window).blobTypes);
     assert.match(types[types.length - 1], /^image\/svg\+xml/, `${id}: content type`);
     const text = svg.bytes.toString('utf8');
@@ -71,7 +74,7 @@ async function everyPanel(page, { save = false, darkSystem = false } = {}) {
     await page.selectOption('#figure-format', 'png');
     await page.selectOption('#figure-scale', '2');
     const png = await clickForDownload(page, '#figure-download');
-    assert.equal(png.name, `flexarm-${id}@2x.png`);
+    assert.equal(png.name, `flexarm-${label}-${id}@2x.png`);
     assert.deepEqual(png.bytes.subarray(0, 8), PNG_SIGNATURE, `${id}: a PNG`);
     const width = png.bytes.readUInt32BE(16);
     assert.equal(width, 2 * doc.width, `${id}: PNG width ${width} = 2 × ${doc.width}`);
@@ -133,7 +136,7 @@ test('student mode: the analysis panels are neither offered nor given', { timeou
     assert.match(refused, /student mode/, `${id} refused`);
   }
   const svg = await clickForDownload(page, '#figure-download');
-  assert.equal(svg.name, 'flexarm-arm.svg');
+  assert.equal(svg.name, 'flexarm-fig5.3-arm.svg');
   assert.deepEqual(problems, []);
   await close();
 });

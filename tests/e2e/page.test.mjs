@@ -173,8 +173,10 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   // against δ (+6.8 kB: two panel kinds, a tab, their curves, key, readout and figure, the paper
   // loop's ρ per row and its sentence); 1.040 MB with issue 35's homework link and named, checked
   // answers (+4.9 kB: base64url both ways, the fragment read and its size checked, embeds of its
-  // steps, the answers' name and check lines): the 0.9-MB goal is not met.
-  assert.ok(gzip <= 1.042e6, `wasm gzip -9 ${gzip} bytes: over the 1.042-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
+  // steps, the answers' name and check lines); 1.058 MB with the rest of issue 35 so far (+17.6 kB:
+  // the lesson in the address, presentation's text steps, the class table, short verdicts, download
+  // names, the figure's background): the 0.9-MB goal is not met.
+  assert.ok(gzip <= 1.060e6, `wasm gzip -9 ${gzip} bytes: over the 1.060-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));

@@ -122,11 +122,13 @@ export function dataJsonText(csv) {
 export const FIGURE_SCALES = [1, 2, 4];
 
 /**
- * The file name of a figure: `flexarm-zplane.svg`, `flexarm-zplane@2x.png` (pure).
- * @param {string} panel @param {string} format @param {number} scale
+ * The file name of a figure, with what it shows (`label`: the preset or the key settings, the
+ * session's): `flexarm-fig5.3-zplane.svg`, `flexarm-delta0.02-alpha5-pf-off-zplane@2x.png` (pure).
+ * @param {string} panel @param {string} format @param {number} scale @param {string} [label]
  */
-export function figureFileName(panel, format, scale) {
-  return format === 'png' ? `flexarm-${panel}@${scale}x.png` : `flexarm-${panel}.svg`;
+export function figureFileName(panel, format, scale, label = '') {
+  const stem = label ? `flexarm-${label}-${panel}` : `flexarm-${panel}`;
+  return format === 'png' ? `${stem}@${scale}x.png` : `${stem}.svg`;
 }
 
 /**
@@ -261,7 +263,7 @@ export function createExport(on) {
   wireVideo(on, from, say);
   // The errors and the maps as figures: the same SVG as the Figure row's (view/figure in Rust).
   byId('export-svg-traces').addEventListener('click', guarded('Saving the error figure failed', () => {
-    on.download('flexarm-errors.svg', on.session.figureSvg('errors', false), 'image/svg+xml');
+    on.download(figureFileName('errors', 'svg', 1, on.session.fileLabel()), on.session.figureSvg('errors', false), 'image/svg+xml');
     say('Saved flexarm-errors.svg.');
   }));
   byId('export-svg-maps').addEventListener('click', guarded('Saving the map figure failed', () => {
@@ -272,7 +274,7 @@ export function createExport(on) {
       say(messageOf(e)); // not computed yet: an expected state, not an error
       return;
     }
-    on.download('flexarm-maps.svg', svg, 'image/svg+xml');
+    on.download(figureFileName('maps', 'svg', 1, on.session.fileLabel()), svg, 'image/svg+xml');
     say('Saved flexarm-maps.svg.');
   }));
   wireFigure(on, say, guarded);
@@ -287,8 +289,8 @@ export function createExport(on) {
 }
 
 /**
- * Composites the figure and offers it as flexarm-figure.png.
- * @param {{ download: (name: string, data: Blob, type: string) => void }} on
+ * Composites the figure and offers it as flexarm-<what it shows>-figure.png.
+ * @param {{ download: (name: string, data: Blob, type: string) => void, session: { fileLabel: () => string } }} on
  * @param {Parameters<typeof composeFigure>[2]} from @param {(text: string) => void} say
  */
 async function savePng(on, from, say) {
@@ -300,8 +302,9 @@ async function savePng(on, from, say) {
   /** @type {Blob | null} */
   const blob = await new Promise((resolve) => out.toBlob(resolve, 'image/png'));
   if (!blob) throw new Error('the browser made no PNG');
-  on.download('flexarm-figure.png', blob, 'image/png');
-  say(`Saved flexarm-figure.png (${out.width}×${out.height} px).`);
+  const name = `flexarm-${on.session.fileLabel()}-figure.png`;
+  on.download(name, blob, 'image/png');
+  say(`Saved ${name} (${out.width}×${out.height} px).`);
 }
 
 /**
@@ -451,20 +454,20 @@ function wireFigure(on, say, guarded) {
     const id = panel.value;
     let svg;
     try {
-      svg = on.session.figureSvg(id, dark.checked);
+      svg = on.session.figureSvg(id, dark.checked, /** @type {HTMLSelectElement} */ (byId('figure-background')).value);
     } catch (e) {
       say(messageOf(e)); // maps not computed, student mode: expected states, not errors
       return;
     }
     if (format.value !== 'png') {
-      const name = figureFileName(id, 'svg', 1);
+      const name = figureFileName(id, 'svg', 1, on.session.fileLabel());
       on.download(name, svg, 'image/svg+xml');
       say(`Saved ${name}.`);
       return;
     }
     const k = Number(scale.value) || 1;
     const png = await svgToPng(svg, k);
-    const name = figureFileName(id, 'png', k);
+    const name = figureFileName(id, 'png', k, on.session.fileLabel());
     on.download(name, png.blob, 'image/png');
     say(`Saved ${name} (${png.width}×${png.height} px).`);
   }));

@@ -270,9 +270,17 @@ export class Page {
     return this.#session.dataCsv();
   }
 
-  /** A panel's figure, captioned with the whole state string. @param {string} panel @param {boolean} dark @returns {string} */
-  figureSvg(panel, dark) {
-    return this.#session.figureSvg(panel, dark, this.stateString());
+  /** What a download's name says of what it shows: "fig5.3", "delta0.02-alpha5-pf-off". @returns {string} */
+  fileLabel() {
+    return this.#session.fileLabel();
+  }
+
+  /**
+   * A panel's figure, captioned with the whole state string, on the page's paper, white or none.
+   * @param {string} panel @param {boolean} dark @param {string} [background] @returns {string}
+   */
+  figureSvg(panel, dark, background = 'page') {
+    return this.#session.figureSvg(panel, dark, this.stateString(), background);
   }
 
   /** @returns {{ id: string, label: string }[]} */

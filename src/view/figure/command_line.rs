@@ -6,6 +6,7 @@
 
 use super::key::curve_key;
 use super::sheet::{at_time, Figure, Sheet};
+use super::svg::Background;
 use crate::analysis::StabilityMap;
 use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
 use crate::control::{Snapshot, Traces};
@@ -71,7 +72,7 @@ pub fn errors_figure(traces: &Traces, config: &SimulationConfig, about: &str, st
     );
     let mut groups: Vec<LegendGroup> = curve_key(figure_curves(kinds), None, None).into_iter().collect();
     groups.extend(scene.legend());
-    sheet.write(&scene, &groups, &at_time(end, about), state, false)
+    sheet.write(&scene, &groups, &at_time(end, about), state, false, Background::Page)
 }
 
 /// The stability maps `maps` (each with the preliminary feedback it was computed with: none, and
@@ -128,5 +129,5 @@ pub fn maps_figure(
             true
         });
     }
-    Ok(sheet.write(&scene, &groups, about, state, false))
+    Ok(sheet.write(&scene, &groups, about, state, false, Background::Page))
 }

@@ -36,6 +36,7 @@ use crate::view::panels::time_plots::figure_curves;
 use crate::view::scene::{Scene, ViewOptions};
 use key::curve_key;
 use sheet::{at_time, Sheet};
+pub use svg::Background;
 
 #[cfg(not(target_arch = "wasm32"))]
 pub use command_line::{errors_figure, maps_figure, ENVELOPE_ROWS};
@@ -217,12 +218,19 @@ fn velocity_shown(session: &Session) -> bool {
 
 /// The figure `panel` of the session as it is now: light, or in the dark scheme if `dark`.
 pub fn figure_svg(session: &Session, panel: &str, dark: bool) -> Result<Figure, Error> {
-    figure_svg_captioned(session, &session.state_string(), panel, dark)
+    figure_svg_captioned(session, &session.state_string(), panel, dark, Background::Page)
 }
 
 /// [`figure_svg`] captioned with the state string `state` (the session's with the lesson step,
 /// where the classroom has one open).
-pub fn figure_svg_captioned(session: &Session, state: &str, panel: &str, dark: bool) -> Result<Figure, Error> {
+/// `background`: the page's paper, white or none, for a slide.
+pub fn figure_svg_captioned(
+    session: &Session,
+    state: &str,
+    panel: &str,
+    dark: bool,
+    background: Background,
+) -> Result<Figure, Error> {
     let panel = FigurePanel::parse(panel)?;
     if panel.gives_answer_away() && session.answers_hidden() {
         return Err(Error::NotReady(
@@ -270,5 +278,5 @@ pub fn figure_svg_captioned(session: &Session, state: &str, panel: &str, dark: b
     }
     let t = session.run(0).map_or(0.0, |r| r.closed_loop().time());
     let head = at_time(t, &session.status().showing);
-    Ok(sheet.write(&scene, &groups, &head, state, dark))
+    Ok(sheet.write(&scene, &groups, &head, state, dark, background))
 }

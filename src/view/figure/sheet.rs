@@ -8,7 +8,7 @@ use core::fmt::Write as _;
 
 use super::key::{key, Caption};
 use super::layout::{figure_layout, MARGIN};
-use super::svg::{wrap, Doc, INK};
+use super::svg::{wrap, Background, Doc, INK};
 use crate::plot::palette;
 use crate::schema::PanelKind;
 use crate::view::layout::Layout;
@@ -53,7 +53,15 @@ impl Sheet {
 
     /// The figure of `scene` (drawn on this sheet's layout): its panels, their labels, the key
     /// `groups` and a caption — `head` (what it shows, in words) and the whole `state` string.
-    pub fn write(&self, scene: &Scene, groups: &[LegendGroup], head: &str, state: &str, dark: bool) -> Figure {
+    pub fn write(
+        &self,
+        scene: &Scene,
+        groups: &[LegendGroup],
+        head: &str,
+        state: &str,
+        dark: bool,
+        background: Background,
+    ) -> Figure {
         let (width, inner) = (self.width, self.width - 2.0 * MARGIN);
         let key_top = self.panels_bottom + 8.0;
         let key_height = key(None, groups, MARGIN, key_top, inner);
@@ -61,7 +69,7 @@ impl Sheet {
         let caption_top = key_top + key_height + 4.0;
         let height = (caption_top + caption.height() + MARGIN).ceil();
 
-        let mut doc = Doc::new(width, height, &self.title, state, palette::BACKGROUND, dark);
+        let mut doc = Doc::new(width, height, &self.title, state, (palette::BACKGROUND, background), dark);
         for (k, line) in self.title_lines.iter().enumerate() {
             let y = MARGIN + TITLE + k as f64 * TITLE_PITCH;
             doc.text(width / 2.0, y, TITLE, "middle", 700, INK, "figure-title", line);

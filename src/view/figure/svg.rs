@@ -46,9 +46,35 @@ pub fn px(out: &mut String, v: f64) {
     }
 }
 
+/// A figure's background for a slide: the page's paper, white, or none (the slide's own shows).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Background {
+    #[default]
+    Page,
+    White,
+    Transparent,
+}
+
+impl Background {
+    /// From its name ("page", "white", "transparent"); anything else is an error naming them.
+    pub fn parse(name: &str) -> Result<Background, crate::error::Error> {
+        match name {
+            "page" | "" => Ok(Background::Page),
+            "white" => Ok(Background::White),
+            "transparent" => Ok(Background::Transparent),
+            other => Err(crate::error::Error::Parse(crate::error::ParseError {
+                key: "background".into(),
+                text: other.into(),
+                expected: "page, white or transparent".into(),
+            })),
+        }
+    }
+}
+
 impl Doc {
-    /// The document's head: size, title, the state string in its description, the background.
-    pub fn new(width: f64, height: f64, title: &str, state: &str, background: Color, dark: bool) -> Doc {
+    /// The document's head: size, title, the state string in its description, the background
+    /// (`page`: `background` in the scheme; white: white whatever the scheme; transparent: none).
+    pub fn new(width: f64, height: f64, title: &str, state: &str, background: (Color, Background), dark: bool) -> Doc {
         let mut doc = Doc { out: String::with_capacity(256 * 1024), dark };
         let o = &mut doc.out;
         o.push_str("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"");
@@ -61,12 +87,20 @@ impl Doc {
         px(o, height);
         let _ = write!(o, "\" font-family=\"{FONT}\">\n<title>{}</title>\n", escape(title));
         let _ = writeln!(o, "<desc>flexarm state: {}</desc>", escape(state));
+        let (paper, choice) = background;
+        if choice == Background::Transparent {
+            return doc;
+        }
         let _ = write!(o, "<rect id=\"background\" x=\"0\" y=\"0\" width=\"");
         px(o, width);
         o.push_str("\" height=\"");
         px(o, height);
         o.push('"');
-        doc.fill(background);
+        if choice == Background::White {
+            doc.out.push_str(" fill=\"#ffffff\"");
+        } else {
+            doc.fill(paper);
+        }
         doc.out.push_str("/>\n");
         doc
     }
