@@ -12,6 +12,7 @@ pub mod data;
 mod design;
 mod design_cache;
 mod figure_text;
+pub mod file_name;
 pub mod map_cache;
 pub mod named;
 pub mod presets;
@@ -208,7 +209,7 @@ impl Session {
     /// key settings ("delta0.02-alpha5-pf-off"): a teacher's figures no longer share one name.
     pub fn file_label(&self) -> String {
         match self.preset() {
-            Some(p) => settings::file_slug(p.id),
+            Some(p) => file_name::file_slug(p.id),
             None => self.settings.file_label(),
         }
     }

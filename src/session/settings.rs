@@ -352,19 +352,6 @@ impl Settings {
         join_query(&run_pairs(&self.a, false))
     }
 
-    /// What a downloaded file's name says of run A's settings: its key settings as they read in a
-    /// link, "delta0.02-alpha5-pf-off" (α as "alpha1-5-alpha2-2" when they differ).
-    pub fn file_label(&self) -> String {
-        let pairs = run_pairs(&self.a, false);
-        let keys = ["delta", "alpha", "alpha1", "alpha2", "pf"];
-        let parts: Vec<String> = keys
-            .iter()
-            .filter_map(|k| pairs.iter().find(|(key, _)| key == k))
-            .map(|(k, v)| if matches!(*k, "delta" | "alpha") { format!("{k}{v}") } else { format!("{k}-{v}") })
-            .collect();
-        file_slug(&parts.join("-"))
-    }
-
     /// `flexarm simulate …` reproducing run A: every setting that differs from the CLI's
     /// defaults, and δ, α and the preliminary feedback always; `duration` if given (s).
     pub fn command_line(&self, duration: Option<f64>) -> String {
@@ -393,20 +380,7 @@ impl Settings {
 
 /// Run A's pairs in schema order: `alpha` when α1 = α2, else `alpha1` and `alpha2`. With
 /// `changed_only`, settings at their CLI default are left out (except δ, α and K_pr).
-/// Letters, digits, dots and dashes only (a file name on every system).
-pub fn file_slug(text: &str) -> String {
-    let mut out = String::new();
-    for c in text.chars() {
-        if c.is_ascii_alphanumeric() || c == '.' {
-            out.push(c.to_ascii_lowercase());
-        } else if !out.ends_with('-') {
-            out.push('-');
-        }
-    }
-    out.trim_matches('-').to_string()
-}
-
-fn run_pairs(a: &RunSettings, changed_only: bool) -> Vec<(&'static str, String)> {
+pub(super) fn run_pairs(a: &RunSettings, changed_only: bool) -> Vec<(&'static str, String)> {
     let defaults = RunSettings::default();
     let mut out = Vec::new();
     for p in schema::PARAMS.iter().filter(|p| p.scope == Scope::Run) {

@@ -79,23 +79,6 @@ pub fn short(text: &str) -> String {
     base.split(": ").next().unwrap_or(base).to_string()
 }
 
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn the_short_form_is_the_name_before_its_explanation() {
-        use super::short;
-        assert_eq!(short("the reference arm: where the arm should be"), "the reference arm");
-        assert_eq!(short("the motor's angle θ on its disc (grey: the reference's)"), "the motor's angle θ on its disc");
-        assert_eq!(short("Uₖ, the torque at tₙ + kε: the only one used"), "Uₖ, the torque at tₙ + kε");
-        assert_eq!(short("A4 with K_pr"), "A4 with K_pr");
-        assert_eq!(short("the (δ, α) running now"), "the (δ, α) running now");
-        assert_eq!(
-            short("e^(A4 δ), A4 without K_pr: the pair's δ → 0 limit (not a pole of this loop)"),
-            "e^(A4 δ), A4 without K_pr"
-        );
-    }
-}
-
 /// The maps' colour bar for `measure`, from the ramp the maps are drawn with.
 pub fn map_scale(measure: Measure) -> MapScale {
     const STOPS: usize = 17;
@@ -132,4 +115,21 @@ pub fn map_scale(measure: Measure) -> MapScale {
         ticks.iter().map(|t| t.1.as_str()).collect::<Vec<_>>().join(", ")
     );
     MapScale { name: measure.symbol(), label, stops, dark_stops, ticks }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_short_form_is_the_name_before_its_explanation() {
+        use super::short;
+        assert_eq!(short("the reference arm: where the arm should be"), "the reference arm");
+        assert_eq!(short("the motor's angle θ on its disc (grey: the reference's)"), "the motor's angle θ on its disc");
+        assert_eq!(short("Uₖ, the torque at tₙ + kε: the only one used"), "Uₖ, the torque at tₙ + kε");
+        assert_eq!(short("A4 with K_pr"), "A4 with K_pr");
+        assert_eq!(short("the (δ, α) running now"), "the (δ, α) running now");
+        assert_eq!(
+            short("e^(A4 δ), A4 without K_pr: the pair's δ → 0 limit (not a pole of this loop)"),
+            "e^(A4 δ), A4 without K_pr"
+        );
+    }
 }

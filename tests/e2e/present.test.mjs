@@ -127,12 +127,21 @@ test('presentation from a link: a typo is said, Fig. 2.1 and its caption with pr
   // Paused at the link's moment, the address keeps it; Copy link writes present and text too.
   await page.selectOption('#present-text', 'larger');
   await page.waitForFunction(() => /text=larger/.test(location.search));
+  // Running, Copy link pauses first: the address names the moment the screen holds.
+  await page.click('#present-play');
+  await page.waitForFunction(() => document.querySelector('#present-play')?.textContent === '❚❚ Pause');
   await page.click('#present-link');
+  await page.waitForFunction(() => document.querySelector('#present-play')?.textContent === '▶ Play', null, { timeout: 5000 });
   await page.waitForFunction(() => /present=1/.test(location.search) && /text=larger/.test(location.search) && /paused=1&t=/.test(location.search), null, { timeout: 5000 });
   assert.match(await page.textContent('#present-link') ?? '', /Copied|address bar/);
   await shoot(page, 'present-predict-1920x1080.png');
   assert.deepEqual(problems, []);
   await close();
+  // Diverged (Fig. 5.3 at 5 s), Play restarts: one restart control in the bar, not two.
+  const diverged = await openPage(env.browser, env.server.base, '?preset=fig5.3&present=1&t=5', { viewport: { width: 1920, height: 1080 } });
+  await diverged.page.waitForFunction(() => document.querySelector('#present-play')?.textContent === '↺ Restart', null, { timeout: 20000 });
+  assert.equal(await diverged.page.isVisible('#present-reset'), false, 'one restart control');
+  await diverged.close();
   // The full view's figures keep a compact key in this mode.
   const full = await openPage(env.browser, env.server.base, '?preset=fig5.3&mode=full&present=1&paused=1&t=3', { viewport: { width: 1920, height: 1080 } });
   await full.page.waitForSelector('#figure-key:not([hidden])', { timeout: 10000 });

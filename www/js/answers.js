@@ -195,6 +195,8 @@ export function createAnswers(on) {
         if (el && 'disabled' in el) el.disabled = true;
       }
     }
+    // A student's page: the teacher's tools (a lesson file, a homework link, merging) step aside.
+    document.body.classList.toggle('student-mode', Boolean(lesson?.student_mode));
     if (!lesson) return;
     current = { title: lesson.lesson_title };
     const { record: r } = lesson;

@@ -38,6 +38,8 @@ export function createClassTable(on) {
         ...m.rows[i].map((cell) => make('td', { text: cell })),
       ])),
     );
+    // Who counted: the name each file gives (its file name where it gives none).
+    setText(byId('class-counted'), m.counted.length ? `Counted: ${m.counted.map(([file, name]) => name || file).join(', ')}.` : '');
     byId('class-refused').replaceChildren(...m.refused.map(([name, why]) => make('li', { text: `Not counted: ${name} — ${why}` })));
     box.hidden = false;
     box.scrollIntoView({ block: 'nearest' });

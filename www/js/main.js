@@ -81,6 +81,7 @@ async function main() {
     reset,
     textChoices: (wasm.schema().find((/** @type {any} */ p) => p.key === 'text')?.options ?? []).map((/** @type {string[]} */ [value, label]) => ({ value, label })),
     momentQuery: () => session.momentQuery(),
+    pause: () => store.dispatch({ type: 'pause' }),
   });
   const sensors = createSensors({
     study: (runs) => guard('Sensor study', () => session.sensorStudy(runs), null),

@@ -11,7 +11,7 @@ import { writeUrl } from './url.js';
  * @typedef {{ run: string, verdict: string, headline: string, detail: string, settings: string }} RunLine
  * @param {{ set: (key: string, value: string) => void, step: (key: string, steps: number) => void,
  *   togglePlay: () => void, reset: () => void, textChoices: { value: string, label: string }[],
- *   momentQuery: () => string }} on
+ *   momentQuery: () => string, pause: () => void }} on
  */
 export function createPresent(on) {
   const body = document.body;
@@ -67,6 +67,9 @@ export function createPresent(on) {
   const link = byId('present-link');
   let linkSaid = 0;
   link.addEventListener('click', async () => {
+    // A link to a moment is a link to a paused run: the run stops here first, so the address
+    // (which names the moment while paused) says what the screen shows.
+    on.pause();
     const query = on.momentQuery();
     writeUrl(query);
     // Said at once (a clipboard may wait on a permission), and again once it is copied.

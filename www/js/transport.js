@@ -31,6 +31,7 @@ export function createTransport({ session, store, guard, change, loop, refresh }
   const embedPlay = byId('embed-play');
   const presentPlay = byId('present-play');
   const embedReset = byId('embed-reset');
+  const presentReset = byId('present-reset');
   /** Every run has diverged (the session says so): the button restarts them. */
   let finished = false;
   /** The Play buttons (the page's and the embed's) say what a press will do. */
@@ -43,6 +44,7 @@ export function createTransport({ session, store, guard, change, loop, refresh }
     }
     // Once Play restarts, the embed's Reset would be a second button doing the same.
     embedReset.classList.toggle('same-as-play', next.action === 'restart');
+    presentReset.hidden = next.action === 'restart';
   };
   store.subscribe((s, prev) => {
     if (s.playing !== prev.playing) {

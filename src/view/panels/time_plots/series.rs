@@ -58,5 +58,6 @@ pub fn plot_tick_counts(rect_css: Rect) -> (usize, usize) {
 /// Time and value ticks for a plot whose data area is `rect_css` (CSS pixels).
 pub fn plot_ticks(rect_css: Rect, window: TimeWindow, y: f64) -> (Ticks, Ticks) {
     let (x_count, y_count) = plot_tick_counts(rect_css);
-    (Ticks::new(window.start, window.end, x_count), Ticks::new(-y, y, y_count))
+    // Three time labels at least on a short axis (a projector's large text).
+    (Ticks::at_least(window.start, window.end, x_count, 3), Ticks::new(-y, y, y_count))
 }
