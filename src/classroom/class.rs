@@ -182,7 +182,8 @@ impl ClassTable {
     /// the wrong choices most made, the tasks.
     pub fn row_words(s: &StepTally) -> [String; 3] {
         let right = if s.predicted > 0 {
-            format!("{} of {}, {:.0} %", s.right, s.predicted, 100.0 * s.right as f64 / s.predicted as f64)
+            // A no-break space: "68 %" stays on one line in a narrow table.
+            format!("{} of {}, {:.0}\u{a0}%", s.right, s.predicted, 100.0 * s.right as f64 / s.predicted as f64)
         } else {
             String::new()
         };

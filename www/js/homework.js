@@ -43,6 +43,8 @@ export function createHomework({ wasm, session, report }) {
       field.value = link;
       setText(size, `${link.length} characters; the lesson travels inside it, after the #, which no server sees. It opens the lesson's first step in student mode.`);
       out.hidden = false;
+      // Where the teacher looks next: the link, in view.
+      out.scrollIntoView({ block: 'nearest' });
       field.select();
       navigator.clipboard?.writeText(link).catch(() => {});
     } catch (e) {
