@@ -205,20 +205,3 @@ fn the_key_names_every_marker_shown_and_the_maps_colour_bar() {
     let titles: Vec<&str> = scene.legend().iter().map(|g| g.title).collect();
     assert_eq!(titles, ["arm"]);
 }
-
-/// A figure for a slide (issue 35, item 4): on the page's paper, on white, or on nothing.
-#[test]
-fn a_figure_is_on_the_pages_paper_on_white_or_transparent() {
-    use flexarm::view::figure::{figure_svg_captioned, Background};
-    let s = common::session("preset=fig5.3");
-    let svg = |b: Background| figure_svg_captioned(&s, "preset=fig5.3", "errors", false, b).unwrap().svg;
-    let page = svg(Background::Page);
-    let paper = flexarm::plot::palette::BACKGROUND.css();
-    assert!(page.contains(&format!("<rect id=\"background\" x=\"0\" y=\"0\" width=")), "the page's paper");
-    assert!(page.contains(&format!("fill=\"{paper}\"")), "{paper}");
-    let white = svg(Background::White);
-    let rect = white.lines().find(|l| l.starts_with("<rect id=\"background\"")).expect("a background");
-    assert!(rect.contains("fill=\"#ffffff\""), "{rect}");
-    assert!(!svg(Background::Transparent).contains("id=\"background\""), "no background at all");
-    assert!(Background::parse("beige").unwrap_err().to_string().contains("page, white or transparent"));
-}

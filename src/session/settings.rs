@@ -330,8 +330,20 @@ impl Settings {
 
     /// The state string of everything set: every run setting of A, then the page's own keys.
     pub fn to_query(&self) -> String {
+        join_query(&self.query_pairs(true))
+    }
+
+    /// The state string without the view's keys and the playback speed: what decides the runs
+    /// (a slide's caption).
+    pub fn runs_query(&self) -> String {
+        join_query(&self.query_pairs(false))
+    }
+
+    fn query_pairs(&self, view: bool) -> Vec<(&'static str, String)> {
         let mut pairs = run_pairs(&self.a, false);
-        pairs.push(("speed", Value::Number(self.speed).text()));
+        if view {
+            pairs.push(("speed", Value::Number(self.speed).text()));
+        }
         if let Some(b) = &self.b {
             pairs.push(("compare", "1".into()));
             pairs.push(("b_pf", b.pf.name().into()));
@@ -343,8 +355,10 @@ impl Settings {
             }
         }
         // The view's keys only where they differ from the defaults: links stay short.
-        pairs.extend(self.view.query_pairs());
-        join_query(&pairs)
+        if view {
+            pairs.extend(self.view.query_pairs());
+        }
+        pairs
     }
 
     /// The state string of run A alone (what the CLI's `--state` reproduces).

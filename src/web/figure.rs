@@ -6,19 +6,20 @@ use wasm_bindgen::prelude::*;
 
 use super::session::WebSession;
 use super::{js_error, to_js};
-use crate::view::figure::{figure_choices, figure_svg_captioned};
+use crate::view::figure::{figure_choices, figure_svg_with, FigureOptions};
 
 #[wasm_bindgen(js_class = Session)]
 impl WebSession {
     /// The panel `panel` ("arm", "errors", "e1", "poles", "zplane", "rho", "map-off", "maps", …) as
-    /// a standalone SVG figure captioned with `state` (the whole state string, the classroom's):
-    /// light, or in the dark scheme if `dark`, on `background` ("page", "white" or "transparent":
-    /// for a slide). Throws for an unknown panel or background, maps still being computed, or
-    /// (student mode) a figure that gives the answer away.
+    /// a standalone SVG figure captioned with `state` (the whole state string, the classroom's),
+    /// made as `options` ask (`dark=1&background=white&text=large&caption=settings&shape=wide&
+    /// zview=RE,IM,HALF`, every key optional: [`FigureOptions::parse`]). Throws for an unknown
+    /// panel or option, maps still being computed, or (student mode) a figure that gives the
+    /// answer away.
     #[wasm_bindgen(js_name = figureSvg)]
-    pub fn figure_svg(&self, panel: &str, dark: bool, state: &str, background: &str) -> Result<String, JsError> {
-        let background = crate::view::figure::Background::parse(background).map_err(js_error)?;
-        figure_svg_captioned(self.session(), state, panel, dark, background).map(|f| f.svg).map_err(js_error)
+    pub fn figure_svg(&self, panel: &str, state: &str, options: &str) -> Result<String, JsError> {
+        let options = FigureOptions::parse(options).map_err(js_error)?;
+        figure_svg_with(self.session(), state, panel, &options).map(|f| f.svg).map_err(js_error)
     }
 
     /// The figures of the panels shown now: `[{id, label}]`.

@@ -200,6 +200,15 @@ impl Renderer {
         self.take_z_view(session, view)
     }
 
+    /// The z-plane's view as drawn now, `[Re λ, Im λ, half-size]`, or undefined when it is not
+    /// shown: a figure of it shows the same (`figureSvg`'s `zView`).
+    #[wasm_bindgen(js_name = shownZView)]
+    pub fn shown_z_view(&self) -> Option<Vec<f64>> {
+        self.scene.z_panel()?;
+        let v = self.scene.z_view();
+        Some(vec![v.center[0], v.center[1], v.half])
+    }
+
     /// True if (x, y) in CSS pixels of the canvas lies on the z-plane (where the wheel, a pinch
     /// and a drag move its view).
     #[wasm_bindgen(js_name = zAt)]

@@ -15,11 +15,11 @@ const env = shared();
 
 const kB = (/** @type {Buffer} */ b) => `${(b.length / 1024).toFixed(1)} kB`;
 
-test('the picture: a PNG of the canvas with its labels and a caption strip', { timeout: 120000 }, async () => {
+test('the picture: a PNG of the canvas with its labels and the whole caption, at 2×', { timeout: 120000 }, async () => {
   const { page, problems, close } = await openPage(env.browser, env.server.base, PAGE);
   await page.waitForTimeout(1500);
   const { name, bytes } = await clickForDownload(page, '#export-png');
-  assert.equal(name, 'flexarm-fig5.3-figure.png', 'named after what it shows');
+  assert.equal(name, 'flexarm-fig5.3-figure@2x.png', 'named after what it shows and its scale');
   assert.deepEqual(bytes.subarray(0, 8), PNG_SIGNATURE, 'PNG signature');
   const width = bytes.readUInt32BE(16);
   const height = bytes.readUInt32BE(20);
@@ -29,9 +29,16 @@ test('the picture: a PNG of the canvas with its labels and a caption strip', { t
   });
   console.log(`# PNG ${width}×${height} px, ${kB(bytes)} (canvas ${css.width}×${css.height} CSS px at ${css.dpr}×, ${css.labels} labels)`);
   assert.ok(bytes.length > 20 * 1024, `PNG only ${kB(bytes)}`);
-  assert.equal(width, Math.round(css.width * css.dpr));
-  assert.ok(height > css.height * css.dpr, `PNG height ${height} leaves no caption under ${css.height}×${css.dpr}`);
-  assert.match(await page.textContent('#export-status'), /flexarm-fig5\.3-figure\.png/);
+  // Twice the canvas' CSS pixels (this screen is 1×): the figure drawn again at 2×, not scaled up.
+  const scale = Math.max(2, css.dpr);
+  assert.equal(width, Math.round(css.width * scale));
+  assert.ok(height > css.height * scale, `PNG height ${height} leaves no caption under ${css.height}×${scale}`);
+  // The whole state string under it, wrapped rather than cut: at 2× on a 1280-px canvas it takes
+  // two lines or more (one line is 28 CSS px).
+  assert.ok(height >= Math.round((css.height + 28 + 18) * scale), `a caption of one line: ${height} px`);
+  // The canvas, resized to draw the picture at 2×, is back at the screen's pixels.
+  assert.equal(await page.evaluate(() => document.querySelector('#canvas').width), Math.round(css.width * css.dpr));
+  assert.match(await page.textContent('#export-status'), /flexarm-fig5\.3-figure@2x\.png/);
   assert.deepEqual(problems, []);
   await close();
 });

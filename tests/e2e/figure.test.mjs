@@ -107,6 +107,72 @@ test('every panel of the full view at Fig. 5.3 (z-plane) as SVG and as PNG at 2�
   await close();
 });
 
+test('a slide figure: white or transparent, the text size, the caption, 16:9, the z-plane as the screen shows it', { timeout: 300000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, '?preset=fig5.3&mode=full&plane=z&paused=1&t=3', { viewport: { width: 1920, height: 1080 } });
+  await page.focus('#figure-panel');
+  await page.selectOption('#figure-panel', 'zplane');
+  await page.selectOption('#figure-format', 'svg');
+  /** Downloads the figure with the row's choices; its size, paper, ticks and caption. */
+  const take = async (/** @type {Record<string, string>} */ choices) => {
+    for (const [id, value] of Object.entries(choices)) await page.selectOption(`#figure-${id}`, value);
+    const file = await clickForDownload(page, '#figure-download');
+    const text = file.bytes.toString('utf8');
+    const doc = await page.evaluate((text) => {
+      const doc = new DOMParser().parseFromString(text, 'image/svg+xml');
+      const svg = doc.documentElement;
+      const view = (svg.getAttribute('viewBox') ?? '').split(' ').map(Number);
+      const scale = Number(svg.getAttribute('width')) / view[2];
+      const ticks = [...doc.querySelectorAll('text.tick')].map((t) => Number(t.getAttribute('font-size')) * scale);
+      return {
+        error: doc.querySelector('parsererror')?.textContent ?? '',
+        width: Number(svg.getAttribute('width')),
+        height: Number(svg.getAttribute('height')),
+        background: doc.querySelector('#background')?.getAttribute('fill') ?? 'none',
+        tick: Math.min(...ticks),
+        caption: [...doc.querySelectorAll('text.state')].map((t) => t.textContent).join(''),
+        zoom: [...doc.querySelectorAll('text')].map((t) => t.textContent).find((t) => /zoomed ×/.test(t ?? '')) ?? '',
+      };
+    }, text);
+    assert.equal(doc.error, '', 'well-formed');
+    fs.writeFileSync(`${SHOTS}/slide-${Object.values(choices).join('-') || 'default'}.svg`, text);
+    return { ...doc, name: file.name };
+  };
+  const state = await page.evaluate(() => window.flexarm.session.stateString());
+  const plain = await take({});
+  assert.equal(plain.caption, state, 'by default the whole state string');
+  assert.ok(plain.width > plain.height, `the z-plane is landscape: ${plain.width} × ${plain.height}`);
+  // The screen's z-plane states its zoom (in its note, which a narrow panel may shorten on
+  // screen); the figure shows the same view.
+  const screenZoom = await page.evaluate(() => window.flexarm.lastLayout.panels.find((p) => p.id === 'z-plane')?.note ?? '');
+  assert.match(screenZoom, /zoomed ×[\d.]+/);
+  assert.equal(plain.zoom.match(/zoomed ×[\d.]+/)?.[0], screenZoom.match(/zoomed ×[\d.]+/)?.[0], `${plain.zoom} | ${screenZoom}`);
+
+  const white = await take({ background: 'white', caption: 'settings' });
+  assert.equal(white.background, '#ffffff');
+  assert.ok(white.caption.includes('delta=0.01') && !/(^|&)(mode|plane|speed)=/.test(white.caption), white.caption);
+  const bare = await take({ background: 'transparent', caption: 'none' });
+  assert.equal(bare.background, 'none');
+  assert.equal(bare.caption, '');
+  let last = plain.tick;
+  for (const text of ['large', 'larger', 'largest']) {
+    const f = await take({ text });
+    assert.ok(f.tick > 1.1 * last, `${text}: ticks ${f.tick} px after ${last} px`);
+    last = f.tick;
+  }
+  const wide = await take({ text: 'large', shape: 'wide' });
+  assert.ok(Math.abs(wide.width / wide.height - 16 / 9) < 0.02, `16:9: ${wide.width} × ${wide.height}`);
+  // A PNG of it at 2×, named after what it shows.
+  await page.selectOption('#figure-format', 'png');
+  await page.selectOption('#figure-scale', '2');
+  const png = await clickForDownload(page, '#figure-download');
+  assert.equal(png.name, 'flexarm-fig5.3-zplane@2x.png');
+  assert.equal(png.bytes.readUInt32BE(16), 2 * wide.width);
+  fs.writeFileSync(`${SHOTS}/slide-zplane-wide@2x.png`, png.bytes);
+  console.log(`# slide z-plane: ${plain.width} × ${plain.height} natural, ${wide.width} × ${wide.height} at 16:9; ticks ${plain.tick} → ${last} px; ${screenZoom}`);
+  assert.deepEqual(problems, []);
+  await close();
+});
+
 test('the s-plane with the system in dark mode: the PNGs stay light', { timeout: 300000 }, async () => {
   const { page, problems, close } = await openPage(env.browser, env.server.base, '?preset=fig5.3&mode=full&torque=1&paused=1&t=3', { colorScheme: 'dark' });
   assert.equal(await page.evaluate(() => matchMedia('(prefers-color-scheme: dark)').matches), true);
@@ -114,7 +180,7 @@ test('the s-plane with the system in dark mode: the PNGs stay light', { timeout:
   const ids = await everyPanel(page, { darkSystem: true });
   assert.ok(ids.includes('poles') && !ids.includes('zplane'), ids.join(' '));
   // The pole plot, saved beside the z-plane's.
-  const poles = await page.evaluate(() => window.flexarm.session.figureSvg('poles', false));
+  const poles = await page.evaluate(() => window.flexarm.session.figureSvg('poles'));
   fs.writeFileSync(`${SHOTS}/figure-poles.svg`, poles);
   assert.deepEqual(problems, []);
   await close();
@@ -127,7 +193,7 @@ test('student mode: the analysis panels are neither offered nor given', { timeou
   for (const id of ['poles', 'zplane', 'rho', 'map-off', 'maps']) {
     const refused = await page.evaluate((id) => {
       try {
-        window.flexarm.session.figureSvg(id, false);
+        window.flexarm.session.figureSvg(id);
         return '';
       } catch (e) {
         return String(e.message ?? e);

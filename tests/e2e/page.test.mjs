@@ -175,8 +175,10 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   // answers (+4.9 kB: base64url both ways, the fragment read and its size checked, embeds of its
   // steps, the answers' name and check lines); 1.058 MB with the rest of issue 35 so far (+17.6 kB:
   // the lesson in the address, presentation's text steps, the class table, short verdicts, download
-  // names, the figure's background): the 0.9-MB goal is not met.
-  assert.ok(gzip <= 1.060e6, `wasm gzip -9 ${gzip} bytes: over the 1.060-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
+  // names, the figure's background); 1.061 MB with slide figures (+3.5 kB: their options read as
+  // a state string is — serde's reader cost twice that —, text sizes, captions, 16:9, key columns,
+  // the screen's z-plane view): the 0.9-MB goal is not met.
+  assert.ok(gzip <= 1.065e6, `wasm gzip -9 ${gzip} bytes: over the 1.065-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));

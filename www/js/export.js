@@ -5,10 +5,13 @@
 
 import { byId, messageOf, setText } from './dom.js';
 
-/** Height of the caption strip under the figure, CSS px. */
+/** Height of a one-line caption strip under the figure, and of each further line, CSS px. */
 const CAPTION_PX = 28;
+const CAPTION_LINE_PX = 18;
 /** The caption's font size, CSS px. */
 const CAPTION_FONT_PX = 13;
+/** "Save the picture" draws at least this many pixels per CSS px (a slide wants more than 1×). */
+export const PICTURE_SCALE = 2;
 /** Frames per second of the recorded video. */
 const VIDEO_FPS = 30;
 /** A recording stops by itself after this long, ms. */
@@ -43,6 +46,27 @@ export function fitText(text, maxWidth, measure) {
   return lo === 0 ? '…' : `${chars.slice(0, lo).join('').trimEnd()}…`;
 }
 
+/**
+ * `text` broken into lines that each `measure` at most `maxWidth`, after a space or an `&` (the
+ * state string's breaks); nothing is cut: put together, the lines are `text` (pure).
+ * @param {string} text @param {number} maxWidth @param {(s: string) => number} measure
+ */
+export function wrapText(text, maxWidth, measure) {
+  /** @type {string[]} */
+  const lines = [];
+  let line = '';
+  for (const piece of text.split(/(?<=[ &])/)) {
+    if (line && measure(line + piece) > maxWidth) {
+      lines.push(line);
+      line = piece;
+    } else {
+      line += piece;
+    }
+  }
+  if (line || lines.length === 0) lines.push(line);
+  return lines;
+}
+
 /** The first of `types` that `supported` accepts, or '' for none. @param {string[]} types @param {(t: string) => boolean} supported */
 export function firstSupported(types, supported) {
   return types.find((t) => supported(t)) ?? '';
@@ -54,13 +78,18 @@ export function formatElapsed(ms) {
   return `${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}`;
 }
 
+/** The caption strip's height for `lines` lines, CSS px. @param {number} lines */
+export function captionHeight(lines) {
+  return CAPTION_PX + Math.max(0, lines - 1) * CAPTION_LINE_PX;
+}
+
 /**
  * The pixel size of a composite of a canvas `cssWidth`×`cssHeight` CSS px at `scale` px per CSS
- * px, with the caption strip below.
- * @param {number} cssWidth @param {number} cssHeight @param {number} scale
+ * px, with the caption strip of `lines` lines below.
+ * @param {number} cssWidth @param {number} cssHeight @param {number} scale @param {number} [lines]
  */
-export function figureSize(cssWidth, cssHeight, scale) {
-  return { width: Math.max(1, Math.round(cssWidth * scale)), height: Math.max(1, Math.round((cssHeight + CAPTION_PX) * scale)) };
+export function figureSize(cssWidth, cssHeight, scale, lines = 1) {
+  return { width: Math.max(1, Math.round(cssWidth * scale)), height: Math.max(1, Math.round((cssHeight + captionHeight(lines)) * scale)) };
 }
 
 /**
@@ -140,6 +169,14 @@ export function figurePngSize(width, height, scale) {
 }
 
 /**
+ * A figure's options as Rust reads them, `key=value` joined by `&`, leaving out those not chosen
+ * (pure). @param {Record<string, string>} choices
+ */
+export function figureOptionsText(choices) {
+  return Object.entries(choices).filter(([, v]) => v !== '').map(([k, v]) => `${k}=${v}`).join('&');
+}
+
+/**
  * The options of the figure list, as Rust lists the panels shown, keeping `selected` when it is
  * still among them (pure). @param {{ id: string, label: string }[]} panels @param {string} selected
  */
@@ -162,24 +199,45 @@ function fontOf(s) {
 
 /**
  * Draws the figure into `target` (sized by the caller, `scale` px per CSS px): the wgpu canvas
- * as just rendered, every label shown over it, and the caption. False when nothing was drawn.
+ * as just rendered, every label shown over it, and the caption's `lines`. False when nothing was
+ * drawn.
  * @param {CanvasRenderingContext2D} ctx
  * @param {number} scale
  * @param {{ canvas: HTMLCanvasElement, overlay: HTMLElement, renderNow: () => boolean, caption: () => string }} from
+ * @param {string[]} lines
  */
-export function composeFigure(ctx, scale, from) {
+export function composeFigure(ctx, scale, from, lines) {
   const box = from.canvas.getBoundingClientRect();
   const page = getComputedStyle(document.body);
   const surface = getComputedStyle(from.canvas.parentElement ?? document.body).backgroundColor;
   ctx.setTransform(scale, 0, 0, scale, 0, 0);
   ctx.fillStyle = isTransparent(surface) ? '#ffffff' : surface;
-  ctx.fillRect(0, 0, box.width, box.height + CAPTION_PX);
+  ctx.fillRect(0, 0, box.width, box.height + captionHeight(lines.length));
   // Rendered and copied in the same task: the drawing buffer is still the frame's.
   if (!from.renderNow()) return false;
   ctx.drawImage(from.canvas, 0, 0, box.width, box.height);
   drawLabels(ctx, from.overlay, box);
-  drawCaption(ctx, box, from.caption(), page);
+  drawCaption(ctx, box, lines, page);
   return true;
+}
+
+/** The caption's font on this page. @param {CSSStyleDeclaration} page */
+function captionFont(page) {
+  return `400 ${CAPTION_FONT_PX}px ${page.fontFamily}`;
+}
+
+/**
+ * The caption's lines for a figure `width` CSS px wide: the whole text, wrapped (`whole`), or cut
+ * to one line with … (a video's frames keep one size).
+ * @param {string} text @param {number} width @param {boolean} whole
+ */
+function captionLines(text, width, whole) {
+  const ctx = document.createElement('canvas').getContext('2d');
+  if (!ctx) return [text];
+  ctx.font = captionFont(getComputedStyle(document.body));
+  const measure = (/** @type {string} */ t) => ctx.measureText(t).width;
+  const room = width - 2 * CAPTION_PAD;
+  return whole ? wrapText(text, room, measure) : [fitText(text, room, measure)];
 }
 
 /** Every label shown over the canvas, where it is on screen. @param {CanvasRenderingContext2D} ctx @param {HTMLElement} overlay @param {DOMRect} box */
@@ -209,23 +267,27 @@ function drawLabels(ctx, overlay, box) {
   }
 }
 
-/** The caption strip under the figure. @param {CanvasRenderingContext2D} ctx @param {DOMRect} box @param {string} text @param {CSSStyleDeclaration} page */
-function drawCaption(ctx, box, text, page) {
-  const pad = 8;
+/** The caption's side margin, CSS px. */
+const CAPTION_PAD = 8;
+
+/** The caption strip under the figure. @param {CanvasRenderingContext2D} ctx @param {DOMRect} box @param {string[]} lines @param {CSSStyleDeclaration} page */
+function drawCaption(ctx, box, lines, page) {
   ctx.fillStyle = page.color || '#1b2330';
   ctx.fillRect(0, box.height, box.width, 1);
-  ctx.font = `400 ${CAPTION_FONT_PX}px ${page.fontFamily}`;
+  ctx.font = captionFont(page);
   ctx.textAlign = 'left';
   ctx.textBaseline = 'middle';
-  const line = fitText(text, box.width - 2 * pad, (t) => ctx.measureText(t).width);
-  ctx.fillText(line, pad, box.height + CAPTION_PX / 2);
+  lines.forEach((line, k) => ctx.fillText(line, CAPTION_PAD, box.height + CAPTION_PX / 2 + k * CAPTION_LINE_PX));
 }
 
-/** A 2D canvas sized for the figure at `scale`. @param {HTMLCanvasElement} canvas @param {number} scale */
-function figureCanvas(canvas, scale) {
+/**
+ * A 2D canvas sized for the figure at `scale` with a caption of `lines` lines.
+ * @param {HTMLCanvasElement} canvas @param {number} scale @param {number} lines
+ */
+function figureCanvas(canvas, scale, lines) {
   const box = canvas.getBoundingClientRect();
   const out = document.createElement('canvas');
-  Object.assign(out, figureSize(box.width, box.height, scale));
+  Object.assign(out, figureSize(box.width, box.height, scale, lines));
   const ctx = out.getContext('2d');
   if (!ctx) throw new Error('this browser has no 2D canvas');
   return { out, ctx };
@@ -235,6 +297,7 @@ function figureCanvas(canvas, scale) {
 
 /**
  * @param {{ session: import('./flexarm.js').Page, canvas: HTMLCanvasElement, overlay: HTMLElement, renderNow: () => boolean,
+ *   renderer: () => import('../pkg/flexarm.js').Renderer | null, touch: () => void,
  *   download: (name: string, data: BlobPart | null | undefined, type: string) => void,
  *   report: (what: string, e: unknown) => void }} on
  */
@@ -263,19 +326,21 @@ export function createExport(on) {
   wireVideo(on, from, say);
   // The errors and the maps as figures: the same SVG as the Figure row's (view/figure in Rust).
   byId('export-svg-traces').addEventListener('click', guarded('Saving the error figure failed', () => {
-    on.download(figureFileName('errors', 'svg', 1, on.session.fileLabel()), on.session.figureSvg('errors', false), 'image/svg+xml');
-    say('Saved flexarm-errors.svg.');
+    const name = figureFileName('errors', 'svg', 1, on.session.fileLabel());
+    on.download(name, on.session.figureSvg('errors'), 'image/svg+xml');
+    say(`Saved ${name}.`);
   }));
   byId('export-svg-maps').addEventListener('click', guarded('Saving the map figure failed', () => {
     let svg;
     try {
-      svg = on.session.figureSvg('maps', false);
+      svg = on.session.figureSvg('maps');
     } catch (e) {
       say(messageOf(e)); // not computed yet: an expected state, not an error
       return;
     }
-    on.download(figureFileName('maps', 'svg', 1, on.session.fileLabel()), svg, 'image/svg+xml');
-    say('Saved flexarm-maps.svg.');
+    const name = figureFileName('maps', 'svg', 1, on.session.fileLabel());
+    on.download(name, svg, 'image/svg+xml');
+    say(`Saved ${name}.`);
   }));
   wireFigure(on, say, guarded);
   byId('export-data-json').addEventListener('click', guarded('Saving the data failed', () => {
@@ -289,20 +354,37 @@ export function createExport(on) {
 }
 
 /**
- * Composites the figure and offers it as flexarm-<what it shows>-figure.png.
- * @param {{ download: (name: string, data: Blob, type: string) => void, session: { fileLabel: () => string } }} on
+ * Composites the figure and offers it as flexarm-<what it shows>-figure.png: drawn again at
+ * [`PICTURE_SCALE`] pixels per CSS px or the screen's, whichever is more (the renderer resized
+ * for the one frame, then back), with the whole caption wrapped under it.
+ * @param {{ download: (name: string, data: Blob, type: string) => void, session: { fileLabel: () => string },
+ *   renderer: () => import('../pkg/flexarm.js').Renderer | null, touch: () => void }} on
  * @param {Parameters<typeof composeFigure>[2]} from @param {(text: string) => void} say
  */
 async function savePng(on, from, say) {
-  const { out, ctx } = figureCanvas(from.canvas, window.devicePixelRatio || 1);
-  if (!composeFigure(ctx, window.devicePixelRatio || 1, from)) {
+  const dpr = window.devicePixelRatio || 1;
+  const scale = Math.max(PICTURE_SCALE, dpr);
+  const box = from.canvas.getBoundingClientRect();
+  const lines = captionLines(from.caption(), box.width, true);
+  const { out, ctx } = figureCanvas(from.canvas, scale, lines.length);
+  const renderer = on.renderer();
+  const [w, h] = [Math.round(box.width), Math.round(box.height)];
+  let drawn;
+  try {
+    if (renderer && scale !== dpr) renderer.resize(w, h, scale, window.innerHeight);
+    drawn = composeFigure(ctx, scale, from, lines);
+  } finally {
+    if (renderer && scale !== dpr) renderer.resize(w, h, dpr, window.innerHeight);
+    on.touch();
+  }
+  if (!drawn) {
     say('Nothing to save: the figure is not drawn in this browser.');
     return;
   }
   /** @type {Blob | null} */
   const blob = await new Promise((resolve) => out.toBlob(resolve, 'image/png'));
   if (!blob) throw new Error('the browser made no PNG');
-  const name = `flexarm-${on.session.fileLabel()}-figure.png`;
+  const name = `flexarm-${on.session.fileLabel()}-figure@${scale}x.png`;
   on.download(name, blob, 'image/png');
   say(`Saved ${name} (${out.width}×${out.height} px).`);
 }
@@ -366,10 +448,11 @@ function wireVideo(on, from, say) {
 function record(type, from, to) {
   const box = from.canvas.getBoundingClientRect();
   const scale = Math.min(window.devicePixelRatio || 1, VIDEO_MAX_WIDTH / Math.max(1, box.width));
-  const { out, ctx } = figureCanvas(from.canvas, scale);
+  const { out, ctx } = figureCanvas(from.canvas, scale, 1);
   const draw = () => {
-    // The canvas may have changed size: the figure keeps the video's width.
-    composeFigure(ctx, out.width / Math.max(1, from.canvas.getBoundingClientRect().width), from);
+    // The canvas may have changed size: the figure keeps the video's width, its caption one line.
+    const width = Math.max(1, from.canvas.getBoundingClientRect().width);
+    composeFigure(ctx, out.width / width, from, captionLines(from.caption(), width, false));
   };
   draw();
   const stream = out.captureStream(VIDEO_FPS);
@@ -419,8 +502,10 @@ function record(type, from, to) {
 
 /**
  * The Figure row: which panel (those shown, listed by Rust), SVG or PNG at 1×, 2× or 4×, light
- * or dark. The SVG is Rust's; a PNG is that SVG drawn into a canvas at the scale.
- * @param {{ session: import('./flexarm.js').Page, download: (name: string, data: BlobPart | null | undefined, type: string) => void }} on
+ * or dark, the paper, the text size, the caption and the shape (Rust reads and checks them). The
+ * SVG is Rust's; a PNG is that SVG drawn into a canvas at the scale.
+ * @param {{ session: import('./flexarm.js').Page, renderer: () => import('../pkg/flexarm.js').Renderer | null,
+ *   download: (name: string, data: BlobPart | null | undefined, type: string) => void }} on
  * @param {(text: string) => void} say
  * @param {(what: string, fn: () => void | Promise<void>) => () => Promise<void>} guarded
  */
@@ -429,6 +514,16 @@ function wireFigure(on, say, guarded) {
   const format = /** @type {HTMLSelectElement} */ (byId('figure-format'));
   const scale = /** @type {HTMLSelectElement} */ (byId('figure-scale'));
   const dark = /** @type {HTMLInputElement} */ (byId('figure-dark'));
+  const value = (/** @type {string} */ id) => /** @type {HTMLSelectElement} */ (byId(id)).value;
+  /** The row's choices as the figure's options; the z-plane as the screen shows it. @param {ArrayLike<number> | undefined} zView */
+  const figureChoices = (zView) => figureOptionsText({
+    dark: dark.checked ? '1' : '0',
+    background: value('figure-background'),
+    text: value('figure-text'),
+    caption: value('figure-caption'),
+    shape: value('figure-shape'),
+    zview: zView ? Array.from(zView).join(',') : '',
+  });
   let listed = '';
   const refresh = () => {
     const panels = on.session.figurePanels();
@@ -454,7 +549,7 @@ function wireFigure(on, say, guarded) {
     const id = panel.value;
     let svg;
     try {
-      svg = on.session.figureSvg(id, dark.checked, /** @type {HTMLSelectElement} */ (byId('figure-background')).value);
+      svg = on.session.figureSvg(id, figureChoices(on.renderer()?.shownZView()));
     } catch (e) {
       say(messageOf(e)); // maps not computed, student mode: expected states, not errors
       return;

@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { VIDEO_TYPES, baselineIn, captionText, dataJsonFromCsv, dataJsonText, figureSize, firstSupported, fitText, formatElapsed, isTransparent } from './export.js';
+import { VIDEO_TYPES, baselineIn, captionText, dataJsonFromCsv, dataJsonText, figureSize, firstSupported, fitText, formatElapsed, figureOptionsText, isTransparent, wrapText } from './export.js';
 
 /** A monospace measure: 7 px a character. */
 const mono = (/** @type {string} */ s) => 7 * Array.from(s).length;
@@ -85,4 +85,28 @@ test('the data as JSON: one table per quantity, rows and columns as written, non
   const text = dataJsonText(csv);
   assert.ok(text.endsWith('}\n'));
   assert.deepEqual(JSON.parse(text), JSON.parse(JSON.stringify(data)));
+});
+
+test('a long caption is wrapped whole, after a space or an &, each line fitting', () => {
+  const long = captionText('Fig. 5.3: δ = 0.01 s without preliminary feedback', 'delta=0.01&alpha=2&pf=off&friction=continuous&inner=continuous&repeat=0&k=12&eps_ratio=8&speed=1&mode=full');
+  const lines = wrapText(long, 300, mono);
+  assert.ok(lines.length >= 3, `${lines.length} lines`);
+  assert.equal(lines.join(''), long, 'nothing cut');
+  for (const l of lines) assert.ok(mono(l) <= 300 || !/[ &]/.test(l.slice(0, -1)), `fits: ${l}`);
+  assert.ok(lines.slice(0, -1).every((l) => l.endsWith(' ') || l.endsWith('&')), 'broken after a space or &');
+  assert.deepEqual(wrapText('short', 300, mono), ['short']);
+  assert.deepEqual(wrapText('', 300, mono), ['']);
+});
+
+test('the caption strip grows a line at a time', () => {
+  const one = figureSize(800, 500, 2, 1);
+  const three = figureSize(800, 500, 2, 3);
+  assert.equal(one.width, 1600);
+  assert.ok(three.height > one.height && (three.height - one.height) % 2 === 0, `${one.height} → ${three.height}`);
+});
+
+test('the figure row\'s choices are written as Rust reads them, the unchosen left out', () => {
+  assert.equal(figureOptionsText({ dark: '0', background: 'white', text: '', caption: 'settings', shape: 'wide', zview: '0.98,0.29,0.05' }),
+    'dark=0&background=white&caption=settings&shape=wide&zview=0.98,0.29,0.05');
+  assert.equal(figureOptionsText({ text: '' }), '');
 });

@@ -276,11 +276,13 @@ export class Page {
   }
 
   /**
-   * A panel's figure, captioned with the whole state string, on the page's paper, white or none.
-   * @param {string} panel @param {boolean} dark @param {string} [background] @returns {string}
+   * A panel's figure, its caption with the whole state string (the classroom's), made as `options`
+   * ask: `background=white&text=large&caption=settings&shape=wide&zview=RE,IM,HALF&dark=1`, every
+   * key optional (Rust reads and checks them).
+   * @param {string} panel @param {string} [options] @returns {string}
    */
-  figureSvg(panel, dark, background = 'page') {
-    return this.#session.figureSvg(panel, dark, this.stateString(), background);
+  figureSvg(panel, options = '') {
+    return this.#session.figureSvg(panel, this.stateString(), options);
   }
 
   /** @returns {{ id: string, label: string }[]} */

@@ -92,7 +92,7 @@ async function main() {
   });
   wireOutputs({ session, guard });
   const canvas = /** @type {HTMLCanvasElement} */ (byId('canvas'));
-  createExport({ session, canvas, overlay: byId('axes-overlay'), renderNow: () => figure.render(), download, report });
+  createExport({ session, canvas, overlay: byId('axes-overlay'), renderNow: () => figure.render(), renderer: () => figure.renderer(), touch, download, report });
   createEmbedBuilder({ session });
   createSaveOffline({ wasm, session, paused: () => !store.get().playing, download, report });
   const sheet = createSheet();

@@ -7,7 +7,7 @@ use clap::{ArgMatches, Command};
 use flexarm::control::Work;
 use flexarm::schema;
 use flexarm::session::{Session, Source};
-use flexarm::view::figure::{figure_svg, FigurePanel};
+use flexarm::view::figure::{figure_svg_with, FigureOptions, FigurePanel};
 
 use crate::cli::{self, lib_error, usage_error, write_file, Res};
 use crate::long_work;
@@ -42,6 +42,23 @@ pub fn command() -> Command {
     ))
     .arg(long_work::force_arg())
     .arg(cli::flag("dark", "Draw on a dark background (the page's dark scheme) instead of the light one"))
+    .arg(cli::option(
+        "background",
+        "page|white|transparent",
+        "The paper: the page's (default), white, or none (a slide's own shows)",
+    ))
+    .arg(cli::option(
+        "text",
+        "normal|large|larger|largest",
+        "The text size (default: the state's text=, else normal): larger text on a figure of about the same size",
+    ))
+    .arg(cli::option(
+        "caption",
+        "full|settings|none",
+        "The caption: what it shows and the whole state string (full, the default), the settings of the runs \
+         only (without the view's keys), or none",
+    ))
+    .arg(cli::flag("wide", "A 16:9 figure, a slide's shape: the panels grow to fill it"))
     .args(cli::redirects(REDIRECTS))
 }
 
@@ -94,7 +111,8 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     if panel == FigurePanel::Study && session.reads_sensors() {
         while !session.sensor_study_step(1).map_err(lib_error)?.done {}
     }
-    let figure = figure_svg(&session, panel.id(), m.get_flag("dark")).map_err(lib_error)?;
+    let figure =
+        figure_svg_with(&session, &session.state_string(), panel.id(), &figure_options(m)?).map_err(lib_error)?;
     match m.get_one::<String>("svg") {
         Some(path) => {
             write_file("--svg", path, &figure.svg)?;
@@ -108,4 +126,18 @@ pub fn run(m: &ArgMatches) -> Res<String> {
         }
         None => Ok(figure.svg),
     }
+}
+
+/// The figure's options from the command line, read by the page's reader (one set of names).
+fn figure_options(m: &ArgMatches) -> Res<FigureOptions> {
+    let mut pairs = vec![format!("dark={}", u8::from(m.get_flag("dark")))];
+    if m.get_flag("wide") {
+        pairs.push("shape=wide".into());
+    }
+    for key in ["background", "text", "caption"] {
+        if let Some(v) = m.get_one::<String>(key) {
+            pairs.push(format!("{key}={}", v.replace('&', "")));
+        }
+    }
+    FigureOptions::parse(&pairs.join("&")).map_err(|e| usage_error(lib_error(e).0))
 }

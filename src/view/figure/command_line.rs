@@ -5,7 +5,7 @@
 //! rather than a page session.
 
 use super::key::curve_key;
-use super::sheet::{at_time, Figure, Sheet};
+use super::sheet::{at_time, Figure, Sheet, Words};
 use super::svg::Background;
 use crate::analysis::StabilityMap;
 use crate::control::config::{PreliminaryFeedbackChoice, SimulationConfig};
@@ -27,9 +27,14 @@ pub const ENVELOPE_ROWS: usize = 16_000;
 
 /// The sheet of the panels `kinds` as a scene with `options` shows them (their title says what
 /// the options show: ρ or ln ρ/δ, …), and that scene laid out on it, drawn from nothing yet.
+/// A command line figure's words: captioned with the whole state string, on the page's paper.
+fn page_words<'a>(head: &'a str, state: &'a str) -> Words<'a> {
+    Words { caption: Some((head, state)), state, dark: false, background: Background::Page }
+}
+
 fn sheet_and_scene(kinds: &[PanelKind], options: ViewOptions) -> (Sheet, Scene) {
     let mut scene = Scene::new(options, 800.0, 600.0, 1.0);
-    let (sheet, layout) = Sheet::new(&scene, kinds);
+    let (sheet, layout) = Sheet::new(&scene, kinds, 1.0);
     scene.set_layout(layout);
     (sheet, scene)
 }
@@ -72,7 +77,7 @@ pub fn errors_figure(traces: &Traces, config: &SimulationConfig, about: &str, st
     );
     let mut groups: Vec<LegendGroup> = curve_key(figure_curves(kinds), None, None).into_iter().collect();
     groups.extend(scene.legend());
-    sheet.write(&scene, &groups, &at_time(end, about), state, false, Background::Page)
+    sheet.write(&scene, &groups, page_words(&at_time(end, about), state))
 }
 
 /// The stability maps `maps` (each with the preliminary feedback it was computed with: none, and
@@ -129,5 +134,5 @@ pub fn maps_figure(
             true
         });
     }
-    Ok(sheet.write(&scene, &groups, about, state, false, Background::Page))
+    Ok(sheet.write(&scene, &groups, page_words(about, state)))
 }

@@ -15,6 +15,9 @@ const CAPTION: f64 = 12.0;
 const STATE: f64 = 11.0;
 /// Line pitch of the key's and caption's texts, in ems.
 const PITCH: f64 = 1.35;
+/// A key column's least width and the gap between columns, px.
+const KEY_COLUMN: f64 = 300.0;
+const KEY_COLUMN_GAP: f64 = 16.0;
 /// The colour bar's size, px.
 const BAR: (f64, f64) = (260.0, 12.0);
 
@@ -45,24 +48,35 @@ fn glyph(doc: &mut Doc, g: Glyph, color: &str, x: f64, y: f64) {
 pub fn key(doc: Option<&mut Doc>, groups: &[LegendGroup], x: f64, top: f64, width: f64) -> f64 {
     let mut doc = doc;
     let mut y = top;
-    let text_x = x + 22.0;
     for g in groups {
         y += KEY_TITLE * PITCH;
         if let Some(d) = doc.as_deref_mut() {
             d.text(x, y - 0.3 * KEY_TITLE, KEY_TITLE, "start", 700, INK, "key-title", g.title);
         }
-        for item in &g.items {
-            let lines = wrap(&item.text, width - (text_x - x), KEY_TEXT, false);
-            if let Some(d) = doc.as_deref_mut() {
-                let color = if d.dark { item.dark.as_str() } else { item.color.as_str() };
-                glyph(d, item.glyph, color, x + 2.0, y + 2.0);
-                for (k, line) in lines.iter().enumerate() {
-                    let base = y + KEY_TEXT + k as f64 * KEY_TEXT * PITCH;
-                    d.text(text_x, base, KEY_TEXT, "start", 400, INK, "key", line);
+        // A wide figure (a slide) sets the items in columns, filled top to bottom: the key then
+        // takes less of its height.
+        let columns = ((width / KEY_COLUMN).floor() as usize).clamp(1, 3).min(g.items.len().max(1));
+        let per_column = g.items.len().div_ceil(columns);
+        let column_width = (width - (columns - 1) as f64 * KEY_COLUMN_GAP) / columns as f64;
+        let mut bottom = y;
+        for (c, items) in g.items.chunks(per_column.max(1)).enumerate() {
+            let left = x + c as f64 * (column_width + KEY_COLUMN_GAP);
+            let mut yc = y;
+            for item in items {
+                let lines = wrap(&item.text, column_width - 22.0, KEY_TEXT, false);
+                if let Some(d) = doc.as_deref_mut() {
+                    let color = if d.dark { item.dark.as_str() } else { item.color.as_str() };
+                    glyph(d, item.glyph, color, left + 2.0, yc + 2.0);
+                    for (k, line) in lines.iter().enumerate() {
+                        let base = yc + KEY_TEXT + k as f64 * KEY_TEXT * PITCH;
+                        d.text(left + 22.0, base, KEY_TEXT, "start", 400, INK, "key", line);
+                    }
                 }
+                yc += lines.len() as f64 * KEY_TEXT * PITCH + 3.0;
             }
-            y += lines.len() as f64 * KEY_TEXT * PITCH + 3.0;
+            bottom = bottom.max(yc);
         }
+        y = bottom;
         if let Some(scale) = &g.scale {
             let bar_x = x + 60.0;
             if let Some(d) = doc.as_deref_mut() {

@@ -7,14 +7,19 @@ use crate::view::layout::{gutters, Arrangement, Layout, Panel, PanelKind, Rect};
 /// Space around the figure's content, px.
 pub const MARGIN: f64 = 16.0;
 /// Between two panels side by side (the maps) or stacked (the time plots), px.
-const GAP: f64 = 24.0;
+pub const GAP: f64 = 24.0;
 /// A figure is at least this wide (room for its key and caption), px.
 pub const MIN_WIDTH: f64 = 600.0;
 
 /// The figure's panels below `top`: time plots stacked, anything else side by side, the whole
-/// centred in a figure at least [`MIN_WIDTH`] wide. Returns the layout (CSS px = figure px, one
+/// centred in a figure at least `min_width` wide. Returns the layout (CSS px = figure px, one
 /// device pixel each), the figure's width and the panels' bottom edge (gutters included).
-pub fn figure_layout(kinds: &[PanelKind], top: f64, data_size: impl Fn(PanelKind) -> (f64, f64)) -> (Layout, f64, f64) {
+pub fn figure_layout(
+    kinds: &[PanelKind],
+    top: f64,
+    min_width: f64,
+    data_size: impl Fn(PanelKind) -> (f64, f64),
+) -> (Layout, f64, f64) {
     let cell = |kind: PanelKind| {
         let (w, h) = data_size(kind);
         let [l, t, r, b] = gutters(kind);
@@ -33,7 +38,7 @@ pub fn figure_layout(kinds: &[PanelKind], top: f64, data_size: impl Fn(PanelKind
             height = height.max(h);
         }
     }
-    let figure_width = (width + 2.0 * MARGIN).max(MIN_WIDTH).ceil();
+    let figure_width = (width + 2.0 * MARGIN).max(min_width).ceil();
     let (mut x, mut y) = (((figure_width - width) / 2.0).round(), top);
     let mut panels = Vec::with_capacity(kinds.len());
     for &k in kinds {
@@ -69,7 +74,7 @@ mod tests {
             [&[PanelKind::Error1, PanelKind::Error2][..], &[PanelKind::MapOff, PanelKind::MapOn], &[PanelKind::Arm]]
         {
             let (layout, width, bottom) =
-                figure_layout(kinds, 40.0, |k| crate::view::panels::Panels::default().figure_size(k));
+                figure_layout(kinds, 40.0, MIN_WIDTH, |k| crate::view::panels::Panels::default().figure_size(k));
             for p in &layout.panels {
                 let [l, t, r, b] = gutters(p.kind);
                 assert!(p.rect.x - l >= 0.0 && p.rect.right() + r <= width, "{p:?}");

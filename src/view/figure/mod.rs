@@ -25,6 +25,7 @@
 mod command_line;
 mod key;
 mod layout;
+mod options;
 mod sheet;
 mod svg;
 
@@ -35,7 +36,8 @@ use crate::view::layout::PanelKind;
 use crate::view::panels::time_plots::figure_curves;
 use crate::view::scene::{Scene, ViewOptions};
 use key::curve_key;
-use sheet::{at_time, Sheet};
+pub use options::{CaptionChoice, FigureOptions, Shape, WIDE_RATIO};
+use sheet::{at_time, Sheet, Words};
 pub use svg::Background;
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -218,19 +220,13 @@ fn velocity_shown(session: &Session) -> bool {
 
 /// The figure `panel` of the session as it is now: light, or in the dark scheme if `dark`.
 pub fn figure_svg(session: &Session, panel: &str, dark: bool) -> Result<Figure, Error> {
-    figure_svg_captioned(session, &session.state_string(), panel, dark, Background::Page)
+    figure_svg_with(session, &session.state_string(), panel, &FigureOptions { dark, ..FigureOptions::default() })
 }
 
 /// [`figure_svg`] captioned with the state string `state` (the session's with the lesson step,
-/// where the classroom has one open).
-/// `background`: the page's paper, white or none, for a slide.
-pub fn figure_svg_captioned(
-    session: &Session,
-    state: &str,
-    panel: &str,
-    dark: bool,
-    background: Background,
-) -> Result<Figure, Error> {
+/// where the classroom has one open), made as `options` ask (for a slide: the background, the
+/// text size, the caption, 16:9, the screen's z-plane view).
+pub fn figure_svg_with(session: &Session, state: &str, panel: &str, options: &FigureOptions) -> Result<Figure, Error> {
     let panel = FigurePanel::parse(panel)?;
     if panel.gives_answer_away() && session.answers_hidden() {
         return Err(Error::NotReady(
@@ -260,8 +256,9 @@ pub fn figure_svg_captioned(
     // The title, from the panel as the session shows it now (log |e|, the zoom on tₙ, ρ or ln ρ/δ).
     let mut scene = Scene::new(ViewOptions::default(), 800.0, 600.0, 1.0);
     scene.follow_view(&session.drawn_view());
+    scene.pin_z_view(options.z_view());
     let kinds = panel.kinds();
-    let (sheet, layout) = Sheet::new(&scene, kinds);
+    let (sheet, layout) = Sheet::new(&scene, kinds, options.text_scale(scene.options().text));
 
     // The scene: first as the session's view lays it out (its options, the runs) on a canvas of
     // the figure's size, then on the figure's layout, drawn again.
@@ -269,14 +266,34 @@ pub fn figure_svg_captioned(
     scene.draw_session(session);
     scene.set_layout(layout);
     scene.draw_session(session);
+    let key = |scene: &Scene| {
+        let mut groups = scene.legend();
+        if kinds.iter().any(|k| k.is_time_plot()) {
+            let pair = scene.is_pair().then_some(palette::RUN_B);
+            let ghost = session.ghost().map(|_| palette::GHOST_TRACE);
+            groups.insert(0, curve_key(figure_curves(kinds), pair, ghost).expect("curves"));
+        }
+        groups
+    };
+    let mut groups = key(&scene);
 
-    let mut groups = scene.legend();
-    if kinds.iter().any(|k| k.is_time_plot()) {
-        let pair = scene.is_pair().then_some(palette::RUN_B);
-        let ghost = session.ghost().map(|_| palette::GHOST_TRACE);
-        groups.insert(0, curve_key(figure_curves(kinds), pair, ghost).expect("curves"));
-    }
     let t = session.run(0).map_or(0.0, |r| r.closed_loop().time());
     let head = at_time(t, &session.status().showing);
-    Ok(sheet.write(&scene, &groups, &head, state, dark, background))
+    let settings = session.settings().runs_query();
+    let caption = match options.caption {
+        CaptionChoice::Full => Some((head.as_str(), state)),
+        CaptionChoice::Settings => Some((head.as_str(), settings.as_str())),
+        CaptionChoice::None => None,
+    };
+    let mut sheet = sheet;
+    if options.shape == Shape::Wide {
+        // The key and caption are known now: the panels fill what they leave of a 16:9 sheet.
+        let (wide, layout) = sheet.widen(kinds, &groups, caption);
+        scene.set_layout(layout);
+        scene.draw_session(session);
+        groups = key(&scene);
+        sheet = wide;
+    }
+    let words = Words { caption, state, dark: options.dark, background: options.background };
+    Ok(sheet.write(&scene, &groups, words))
 }

@@ -7,11 +7,12 @@
 use core::fmt::Write as _;
 
 use super::key::{key, Caption};
-use super::layout::{figure_layout, MARGIN};
+use super::layout::{figure_layout, GAP, MARGIN, MIN_WIDTH};
+use super::options::WIDE_RATIO;
 use super::svg::{wrap, Background, Doc, INK};
 use crate::plot::palette;
 use crate::schema::PanelKind;
-use crate::view::layout::Layout;
+use crate::view::layout::{gutters, Layout};
 use crate::view::legend::LegendGroup;
 use crate::view::scene::Scene;
 
@@ -28,48 +29,106 @@ pub struct Figure {
 }
 
 /// Where a figure's parts go around its panels: the title's lines, the figure's width and the
-/// panels' bottom edge (the key starts below it).
+/// panels' bottom edge (the key starts below it), in the figure's units; `scale` px a unit (the
+/// text size); the least height (the wide shape's).
 #[derive(Clone, Debug)]
 pub struct Sheet {
     title: String,
     title_lines: Vec<String>,
     width: f64,
     panels_bottom: f64,
+    scale: f64,
+    min_height: f64,
+}
+
+/// What a figure's sheet says besides its panels: the caption (what it shows, the state line
+/// under it; none for no caption), the whole state string (always in the SVG's description) and
+/// how it is painted.
+#[derive(Clone, Copy, Debug)]
+pub struct Words<'a> {
+    pub caption: Option<(&'a str, &'a str)>,
+    pub state: &'a str,
+    pub dark: bool,
+    pub background: Background,
 }
 
 impl Sheet {
     /// The sheet of the panels `kinds` under `title`, and the panels' layout on it, for a scene to
-    /// draw on ([`Scene::set_layout`]). The title is broken for a first guess of the width (the
-    /// panels go below it), then again for the width the panels give.
-    pub fn new(scene: &Scene, kinds: &[PanelKind]) -> (Sheet, Layout) {
+    /// draw on ([`Scene::set_layout`]), with text `scale` times larger than the page's normal
+    /// (the panels laid out that much smaller, the whole drawn that much larger: the figure keeps
+    /// its size). The title is broken for a first guess of the width (the panels go below it),
+    /// then again for the width the panels give.
+    pub fn new(scene: &Scene, kinds: &[PanelKind], scale: f64) -> (Sheet, Layout) {
+        let scale = if scale.is_finite() && scale >= 1.0 { scale } else { 1.0 };
         let title = scene.figure_title(kinds);
-        let width_guess = 800.0;
+        let width_guess = 800.0 / scale;
         let title_lines = wrap(&title, width_guess - 2.0 * MARGIN, TITLE, true);
         let top = MARGIN + title_lines.len() as f64 * TITLE_PITCH + 6.0;
-        let (layout, width, panels_bottom) = figure_layout(kinds, top, |k| scene.figure_size(k));
+        let (layout, width, panels_bottom) = figure_layout(kinds, top, MIN_WIDTH / scale, |k| {
+            let (w, h) = scene.figure_size(k);
+            (w / scale, h / scale)
+        });
         let title_lines = wrap(&title, width - 2.0 * MARGIN, TITLE, true);
-        (Sheet { title, title_lines, width, panels_bottom }, layout)
+        (Sheet { title, title_lines, width, panels_bottom, scale, min_height: 0.0 }, layout)
+    }
+
+    /// The same panels on a 16:9 sheet (a slide's shape), knowing the key `groups` and the
+    /// caption it will carry: the panels fill what the title, key and caption leave; where that
+    /// would squeeze them below three quarters of their natural height the sheet widens.
+    pub fn widen(&self, kinds: &[PanelKind], groups: &[LegendGroup], caption: Option<(&str, &str)>) -> (Sheet, Layout) {
+        let natural_top = self.top();
+        let natural = self.panels_bottom - natural_top;
+        let mut width = self.width.max(MIN_WIDTH / self.scale);
+        let (mut top, mut panels, mut title_lines);
+        let mut tries = 0;
+        loop {
+            let inner = width - 2.0 * MARGIN;
+            title_lines = wrap(&self.title, inner, TITLE, true);
+            top = MARGIN + title_lines.len() as f64 * TITLE_PITCH + 6.0;
+            let below = below_panels(groups, caption, inner);
+            panels = width / WIDE_RATIO - top - below;
+            tries += 1;
+            if panels >= 0.75 * natural || tries >= 16 {
+                break;
+            }
+            width = (width * 1.1).ceil();
+        }
+        let n = kinds.len().max(1) as f64;
+        let stacked = kinds.iter().all(|k| k.is_time_plot());
+        let inner = width - 2.0 * MARGIN;
+        let (layout, width, panels_bottom) = figure_layout(kinds, top, width, |k| {
+            let [l, t, r, b] = gutters(k);
+            if stacked {
+                (inner - l - r, (panels - GAP * (n - 1.0)) / n - t - b)
+            } else {
+                ((inner - GAP * (n - 1.0)) / n - l - r, panels - t - b)
+            }
+        });
+        let min_height = (width / WIDE_RATIO).round();
+        let sheet =
+            Sheet { title: self.title.clone(), title_lines, width, panels_bottom, scale: self.scale, min_height };
+        (sheet, layout)
+    }
+
+    /// The panels' top edge: under the title.
+    fn top(&self) -> f64 {
+        MARGIN + self.title_lines.len() as f64 * TITLE_PITCH + 6.0
     }
 
     /// The figure of `scene` (drawn on this sheet's layout): its panels, their labels, the key
-    /// `groups` and a caption — `head` (what it shows, in words) and the whole `state` string.
-    pub fn write(
-        &self,
-        scene: &Scene,
-        groups: &[LegendGroup],
-        head: &str,
-        state: &str,
-        dark: bool,
-        background: Background,
-    ) -> Figure {
+    /// `groups` and the caption `words` ask for.
+    pub fn write(&self, scene: &Scene, groups: &[LegendGroup], words: Words<'_>) -> Figure {
         let (width, inner) = (self.width, self.width - 2.0 * MARGIN);
-        let key_top = self.panels_bottom + 8.0;
+        let key_top = self.panels_bottom + KEY_GAP;
         let key_height = key(None, groups, MARGIN, key_top, inner);
-        let caption = Caption::new(head, state, inner);
-        let caption_top = key_top + key_height + 4.0;
-        let height = (caption_top + caption.height() + MARGIN).ceil();
+        let caption = words.caption.map(|(head, state)| Caption::new(head, state, inner));
+        let caption_top = key_top + key_height + CAPTION_GAP;
+        let content = caption_top + caption.as_ref().map_or(0.0, Caption::height) + MARGIN;
+        let height = content.max(self.min_height).ceil();
 
-        let mut doc = Doc::new(width, height, &self.title, state, (palette::BACKGROUND, background), dark);
+        let size = [width, height, self.scale];
+        let paper = (palette::BACKGROUND, words.background);
+        let mut doc = Doc::new(size, &self.title, words.state, paper, words.dark);
         for (k, line) in self.title_lines.iter().enumerate() {
             let y = MARGIN + TITLE + k as f64 * TITLE_PITCH;
             doc.text(width / 2.0, y, TITLE, "middle", 700, INK, "figure-title", line);
@@ -106,11 +165,26 @@ impl Sheet {
         }
         doc.out.push_str("</g>\n<g id=\"key\">\n");
         key(Some(&mut doc), groups, MARGIN, key_top, inner);
-        doc.out.push_str("</g>\n<g id=\"caption\">\n");
-        caption.write(&mut doc, MARGIN, caption_top, inner);
         doc.out.push_str("</g>\n");
-        Figure { svg: doc.finish(), width, height }
+        if let Some(caption) = caption {
+            doc.out.push_str("<g id=\"caption\">\n");
+            caption.write(&mut doc, MARGIN, caption_top, inner);
+            doc.out.push_str("</g>\n");
+        }
+        let [w, h] = [width, height].map(|v| (v * self.scale).round());
+        Figure { svg: doc.finish(), width: w, height: h }
     }
+}
+
+/// Between the panels and the key, the key and the caption, in the figure's units.
+const KEY_GAP: f64 = 8.0;
+const CAPTION_GAP: f64 = 4.0;
+
+/// The height under the panels: the key, the caption (if any) and the margin, for `inner` width.
+fn below_panels(groups: &[LegendGroup], caption: Option<(&str, &str)>, inner: f64) -> f64 {
+    let key_height = key(None, groups, MARGIN, 0.0, inner);
+    let caption = caption.map_or(0.0, |(head, state)| Caption::new(head, state, inner).height());
+    KEY_GAP + key_height + CAPTION_GAP + caption + MARGIN
 }
 
 /// A caption's head for a run at simulated time `t` (s): "flexarm at t = 4.138 s — what".

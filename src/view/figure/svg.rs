@@ -55,32 +55,24 @@ pub enum Background {
     Transparent,
 }
 
-impl Background {
-    /// From its name ("page", "white", "transparent"); anything else is an error naming them.
-    pub fn parse(name: &str) -> Result<Background, crate::error::Error> {
-        match name {
-            "page" | "" => Ok(Background::Page),
-            "white" => Ok(Background::White),
-            "transparent" => Ok(Background::Transparent),
-            other => Err(crate::error::Error::Parse(crate::error::ParseError {
-                key: "background".into(),
-                text: other.into(),
-                expected: "page, white or transparent".into(),
-            })),
-        }
-    }
-}
-
 impl Doc {
-    /// The document's head: size, title, the state string in its description, the background
-    /// (`page`: `background` in the scheme; white: white whatever the scheme; transparent: none).
-    pub fn new(width: f64, height: f64, title: &str, state: &str, background: (Color, Background), dark: bool) -> Doc {
+    /// The document's head: size (`width` × `height` in its own units, `scale` px each: a larger
+    /// text size lays the figure out smaller and draws it that much larger), title, the state
+    /// string in its description, the background (`page`: `background` in the scheme; white:
+    /// white whatever the scheme; transparent: none).
+    pub fn new(
+        [width, height, scale]: [f64; 3],
+        title: &str,
+        state: &str,
+        background: (Color, Background),
+        dark: bool,
+    ) -> Doc {
         let mut doc = Doc { out: String::with_capacity(256 * 1024), dark };
         let o = &mut doc.out;
         o.push_str("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"");
-        px(o, width);
+        px(o, (width * scale).round());
         o.push_str("\" height=\"");
-        px(o, height);
+        px(o, (height * scale).round());
         o.push_str("\" viewBox=\"0 0 ");
         px(o, width);
         o.push(' ');

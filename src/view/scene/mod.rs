@@ -60,6 +60,8 @@ pub struct Scene {
     /// Whether run A's controller was digital when the panels were laid out (the `measured`
     /// switch then adds the velocity panel).
     digital: bool,
+    /// The z-plane's view held whatever the view settings say: a figure's, as the screen shows it.
+    z_pin: Option<ZView>,
 }
 
 impl Scene {
@@ -90,6 +92,7 @@ impl Scene {
             screen_height: f64::NAN,
             scale: 1.0,
             digital: false,
+            z_pin: None,
         };
         scene.relayout();
         scene
@@ -148,7 +151,7 @@ impl Scene {
             show_swing: v.swing,
             tab: v.tab,
             hide_prediction: v.answers_hidden,
-            z_view: z_view_of(&v),
+            z_view: self.z_pin.or_else(|| z_view_of(&v)),
             text: crate::view::text_size::TextSize::from_name(v.text),
             present: v.present,
             time_window: if v.window.is_finite() && v.window > 0.0 {
@@ -409,6 +412,15 @@ impl Scene {
     /// The view the z-plane shows: the page's, or around run A's flexible pair.
     pub fn z_view(&self) -> ZView {
         super::panels::z_plane::gestures::z_view(&self.frame)
+    }
+
+    /// Holds the z-plane at `view` (none: as the view settings say): a figure shows what the
+    /// screen shows, though its panel is larger than the screen's.
+    pub fn pin_z_view(&mut self, view: Option<ZView>) {
+        self.z_pin = view;
+        if view.is_some() {
+            self.set_z_view(view);
+        }
     }
 
     /// Shows `view` (None: the default) at once, before the session's settings reach the next

@@ -33,8 +33,9 @@ use crate::view::tick_labels::{linear_labels, offset_labels};
 pub struct ZPlane;
 
 impl PanelView for ZPlane {
+    /// Landscape, as a slide is: both axes keep one scale, so the wider side shows more of Re λ.
     fn figure_size(&self, _kind: PanelKind) -> (f64, f64) {
-        (440.0, 440.0)
+        (660.0, 360.0)
     }
 
     fn vertex_budget(&self, frame: &Frame, _panel: &Panel) -> usize {
