@@ -93,6 +93,27 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
     let csv = class.to_csv();
     assert!(csv.contains("# not counted: student-06.csv: its check does not match"), "{csv}");
 
+    // One row per student, by name: their own questions right by the rule, their skipped tasks.
+    let questions = lesson.steps.iter().filter(|s| s.question.is_some()).count();
+    let tasks_left = (0..lesson.steps.len())
+        .filter(|&i| lesson.steps[i].goal.is_some() && lesson.steps[i].question.is_none() && i + 1 < lesson.steps.len())
+        .count();
+    assert_eq!(class.students.len(), 57);
+    assert!(class.students.windows(2).all(|w| w[0].name < w[1].name), "sorted by name");
+    for &n in &counted {
+        let row = class.students.iter().find(|r| r.name == format!("Student {n:02}")).expect("a row per student");
+        let right = (0..questions).filter(|&q| !n.is_multiple_of(q + 2)).count();
+        assert_eq!((row.predicted, row.right, row.done, row.shown, row.skipped), (questions, right, 0, 0, tasks_left));
+        assert_eq!(row.file, format!("student-{n:02}.csv"));
+        let [name, file, score, tasks] = flexarm::classroom::class::ClassTable::student_words(row);
+        assert_eq!((name.as_str(), file.as_str()), (row.name.as_str(), row.file.as_str()));
+        assert_eq!(score, format!("{right} of {questions}"));
+        assert_eq!(tasks, format!("{tasks_left} skipped"));
+    }
+    let students_csv = class.students_csv();
+    assert_eq!(students_csv.lines().count(), 1 + 57);
+    assert!(students_csv.lines().nth(1).unwrap().starts_with("Student 00,student-00.csv,3,0,0,"), "{students_csv}");
+
     // The command line writes the same table.
     let dir = std::env::temp_dir().join(format!("flexarm-class-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -109,6 +130,7 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
         .args(["answers", "merge"])
         .args(&paths)
         .args(["--out", out.to_str().unwrap()])
+        .args(["--students", dir.join("students.csv").to_str().unwrap()])
         .output()
         .unwrap();
     assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
@@ -118,6 +140,12 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
     // The same rows (the file names in the `#` lines differ: full paths there).
     let rows = |t: &str| t.lines().filter(|l| !l.starts_with('#')).map(str::to_string).collect::<Vec<_>>();
     assert_eq!(rows(&written), rows(&csv));
+    // The per-student rows name the files as given (full paths here): the counts are the same.
+    let per_student = std::fs::read_to_string(dir.join("students.csv")).unwrap();
+    let counts =
+        |t: &str| t.lines().map(|l| l.rsplitn(7, ',').take(6).collect::<Vec<_>>().join(",")).collect::<Vec<_>>();
+    assert_eq!(counts(&per_student), counts(&students_csv));
+    assert!(said.contains("wrote one row per student (57)"), "{said}");
     println!("{written}");
 }
 

@@ -254,6 +254,8 @@ fn the_short_verdict_is_the_headline_and_the_details_first_clause() {
         let clause = &r.short[r.headline.len() + 2..];
         assert!(r.detail.starts_with(clause), "{}: '{}' is not the start of '{}'", preset.id, clause, r.detail);
         assert!(r.short.chars().count() <= 40, "{}: {} characters: {}", preset.id, r.short.chars().count(), r.short);
+        // Presentation mode's verdict on a short screen: the same clause after the headline.
+        assert_eq!(r.detail_short, clause, "{}", preset.id);
     }
 }
 

@@ -1,8 +1,9 @@
 //! The teacher's side of the answers (issue 35): many students' answer files
 //! ([`super::answers::Record::to_csv`]) merged into one table — per step, how many answered, the
-//! share right at the first try, the wrong choices most made; tasks done or shown — with every
-//! file that cannot count named and why: unreadable, of another lesson text, without its check
-//! line, or edited by hand ([`super::answers::check_csv`]).
+//! share right at the first try, the wrong choices most made; tasks done or shown — and one row
+//! per student (right at the first try, tasks, skips), with every file that cannot count named
+//! and why: unreadable, of another lesson text, without its check line, or edited by hand
+//! ([`super::answers::check_csv`]).
 
 use super::answers::{check_csv, Check, Record};
 use crate::plot::format::significant;
@@ -31,6 +32,21 @@ pub struct StepTally {
     pub skipped: usize,
 }
 
+/// One student over the lesson, from their file.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StudentScore {
+    /// The name the file gives, else the file's name.
+    pub name: String,
+    pub file: String,
+    /// Questions answered, and of those right at the first try.
+    pub predicted: usize,
+    pub right: usize,
+    /// Tasks done, and shown; steps left unanswered with *Next ▸*.
+    pub done: usize,
+    pub shown: usize,
+    pub skipped: usize,
+}
+
 /// The merged class.
 #[derive(Clone, Debug, Default, serde::Serialize)]
 pub struct ClassTable {
@@ -41,6 +57,9 @@ pub struct ClassTable {
     /// The files that did not, and why.
     pub refused: Vec<(String, String)>,
     pub steps: Vec<StepTally>,
+    /// One row per file that counted, by name (the page gets them in words: `student_words`).
+    #[serde(skip)]
+    pub students: Vec<StudentScore>,
 }
 
 /// Merges the files: the lesson text most of the readable files answer is the class's; files
@@ -80,9 +99,11 @@ pub fn merge(files: &[AnswerFile]) -> ClassTable {
         }
         class.lesson.clone_from(&r.lesson);
         class.counted.push((f.name.clone(), r.student.clone()));
-        tally(&mut class.steps, r);
+        let name = if r.student.trim().is_empty() { f.name.clone() } else { r.student.clone() };
+        class.students.push(StudentScore { name, file: f.name.clone(), ..tally(&mut class.steps, r) });
     }
     class.steps.sort_by_key(|s| s.step);
+    class.students.sort_by_key(|s| s.name.to_lowercase());
     for s in &mut class.steps {
         s.wrong.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
     }
@@ -90,7 +111,9 @@ pub fn merge(files: &[AnswerFile]) -> ClassTable {
 }
 
 /// Adds one student's record: the first prediction per step, the last task result per step.
-fn tally(steps: &mut Vec<StepTally>, r: &Record) {
+/// Returns the student's own counts (without their name).
+fn tally(steps: &mut Vec<StepTally>, r: &Record) -> StudentScore {
+    let mut score = StudentScore::default();
     let mut predicted: Vec<usize> = Vec::new();
     let mut tasks: Vec<(usize, &str)> = Vec::new();
     let mut skipped: Vec<usize> = Vec::new();
@@ -107,8 +130,10 @@ fn tally(steps: &mut Vec<StepTally>, r: &Record) {
             "prediction" if !predicted.contains(&e.step) => {
                 predicted.push(e.step);
                 s.predicted += 1;
+                score.predicted += 1;
                 if e.result == "right" {
                     s.right += 1;
+                    score.right += 1;
                 } else {
                     match s.wrong.iter_mut().find(|(t, _)| *t == e.choice_text) {
                         Some((_, n)) => *n += 1,
@@ -129,18 +154,20 @@ fn tally(steps: &mut Vec<StepTally>, r: &Record) {
         if !predicted.contains(&step) && !tasks.iter().any(|(s, _)| *s == step) {
             if let Some(s) = steps.iter_mut().find(|s| s.step == step) {
                 s.skipped += 1;
+                score.skipped += 1;
             }
         }
     }
     for (step, result) in tasks {
         if let Some(s) = steps.iter_mut().find(|s| s.step == step) {
             match result {
-                "done" => s.done += 1,
-                "shown" => s.shown += 1,
+                "done" => (s.done, score.done) = (s.done + 1, score.done + 1),
+                "shown" => (s.shown, score.shown) = (s.shown + 1, score.shown + 1),
                 _ => {}
             }
         }
     }
+    score
 }
 
 impl ClassTable {
@@ -196,6 +223,42 @@ impl ClassTable {
             tasks.push(format!("{} skipped", s.skipped));
         }
         [right, wrong.join("; "), tasks.join("; ")]
+    }
+
+    /// One row per student as CSV: the name and file, questions answered and right at the first
+    /// try, tasks done and shown, steps skipped.
+    pub fn students_csv(&self) -> String {
+        let mut out = String::from("student,file,predicted,right,share_right,task_done,task_shown,skipped\n");
+        for s in &self.students {
+            let share =
+                if s.predicted > 0 { significant(s.right as f64 / s.predicted as f64, 2) } else { String::new() };
+            out += &format!(
+                "{},{},{},{},{},{},{},{}\n",
+                super::answers::quote(&s.name),
+                super::answers::quote(&s.file),
+                s.predicted,
+                s.right,
+                share,
+                s.done,
+                s.shown,
+                s.skipped
+            );
+        }
+        out
+    }
+
+    /// One student's row in words, as the page's table shows it: the name, the file, right at
+    /// the first try ("3 of 4"), and the tasks ("1 done; 1 skipped").
+    pub fn student_words(s: &StudentScore) -> [String; 4] {
+        let right = if s.predicted > 0 { format!("{} of {}", s.right, s.predicted) } else { "—".into() };
+        let mut tasks = Vec::new();
+        if s.done + s.shown > 0 {
+            tasks.push(format!("{} done, {} shown", s.done, s.shown));
+        }
+        if s.skipped > 0 {
+            tasks.push(format!("{} skipped", s.skipped));
+        }
+        [s.name.clone(), s.file.clone(), right, tasks.join("; ")]
     }
 
     /// In words, for the command line: the lesson, the counts, the files left out and why.

@@ -42,6 +42,9 @@ pub struct RunStatus {
     /// The headline and the detail's first clause, for a narrow strip (an embed's):
     /// "Unstable: ρ = 1.0239 > 1" — derived from them, so it never says otherwise.
     pub short: String,
+    /// The detail's first clause alone, "ρ = 1.0239 > 1": after the headline on a short screen
+    /// (presentation mode on a 768-line projector).
+    pub detail_short: String,
     /// What the simulation has observed, and whether it agrees.
     pub observed: String,
     /// True once the simulation has measured a growth rate (or diverged).
@@ -105,6 +108,7 @@ pub fn run_status(name: &'static str, run: &Run) -> RunStatus {
         headline,
         announce: format!("Run {name}: {headline}. {detail}."),
         short: short_verdict(headline, &detail),
+        detail_short: first_clause(&detail).to_owned(),
         detail,
         observed,
         measured,
@@ -141,9 +145,13 @@ fn limit_is(config: &crate::control::SimulationConfig) -> &'static str {
 
 /// "Unstable: ρ = 1.0239 > 1" from the headline and the detail (up to its first " — " or ";").
 pub fn short_verdict(headline: &str, detail: &str) -> String {
+    format!("{headline}: {}", first_clause(detail))
+}
+
+/// A detail up to its first " — " or ";".
+fn first_clause(detail: &str) -> &str {
     let first = detail.split(" — ").next().unwrap_or(detail);
-    let first = first.split("; ").next().unwrap_or(first);
-    format!("{headline}: {first}")
+    first.split("; ").next().unwrap_or(first)
 }
 
 /// What a student in student mode (`answers=hidden`) may not see yet: the verdict and ρ, the
@@ -156,6 +164,7 @@ pub fn hide_answers(r: &mut RunStatus) {
     r.headline = "Verdict hidden";
     r.detail = "student mode: the verdict and ρ wait for your answer".into();
     r.short = short_verdict(r.headline, &r.detail);
+    r.detail_short = first_clause(&r.detail).to_owned();
     r.observed = if r.finished {
         // What the run did is on screen: say why it stopped, not what ρ says.
         "The run stopped: the errors passed π rad. Restart to watch it again.".into()

@@ -166,7 +166,28 @@ test('the teacher drops 60 answer files on the page: one table, each step\'s sha
     })).length;
     assert.match(r[1] ?? '', new RegExp(`^${right} of 59, `), JSON.stringify(r));
   }
-  await page.locator('#class-table').screenshot({ path: path.join(shots, 'class-table-laptop.png') });
+  // Each student's row: the 59 who counted, by name, right at the first try as their own rows say.
+  assert.equal(await page.evaluate(() => /** @type {HTMLDialogElement} */ (document.querySelector('#class-dialog')).open), true, 'the table opens in its own window');
+  const students = await page.$$eval('#class-students tr', (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+  assert.equal(students.length, 59);
+  assert.ok(!students.some((r) => r[0] === 'Student 03'), 'the edited file has no row');
+  for (const n of [0, 1, 42]) {
+    const name = `Student ${String(n).padStart(2, '0')}`;
+    const mine = files[n].text.split('\n').map(csvCells).filter((c) => c[4] === 'prediction');
+    const firsts = new Map();
+    for (const c of mine) if (!firsts.has(c[2])) firsts.set(c[2], c[7]);
+    const right = [...firsts.values()].filter((r) => r === 'right').length;
+    const row = students.find((r) => r[0] === name);
+    assert.equal(row?.[1], `${right} of ${firsts.size}`, `${name}: ${JSON.stringify(row)}`);
+  }
+  // The table's window is as wide as the screen allows, not the side panel's width.
+  const width = await page.$eval('#class-dialog', (d) => d.getBoundingClientRect().width);
+  assert.ok(width > 900, `the class's window is ${width} px wide`);
+  await page.locator('#class-dialog').screenshot({ path: path.join(shots, 'class-table-laptop.png') });
+  await page.click('#class-close');
+  assert.equal(await page.evaluate(() => /** @type {HTMLDialogElement} */ (document.querySelector('#class-dialog')).open), false);
+  await page.click('#class-show');
+  assert.equal(await page.evaluate(() => /** @type {HTMLDialogElement} */ (document.querySelector('#class-dialog')).open), true, 'shown again');
   assert.deepEqual(problems, []);
   await close();
 });

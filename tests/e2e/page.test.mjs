@@ -177,8 +177,9 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   // the lesson in the address, presentation's text steps, the class table, short verdicts, download
   // names, the figure's background); 1.061 MB with slide figures (+3.5 kB: their options read as
   // a state string is — serde's reader cost twice that —, text sizes, captions, 16:9, key columns,
-  // the screen's z-plane view): the 0.9-MB goal is not met.
-  assert.ok(gzip <= 1.065e6, `wasm gzip -9 ${gzip} bytes: over the 1.065-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
+  // the screen's z-plane view); 1.065 MB with each student's row in the class table and the
+  // verdict's first clause (+4.1 kB): the 0.9-MB goal is not met.
+  assert.ok(gzip <= 1.070e6, `wasm gzip -9 ${gzip} bytes: over the 1.070-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));

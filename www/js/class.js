@@ -8,16 +8,30 @@ import { byId, make, setText } from './dom.js';
 /**
  * @typedef {{ step: number, title: string }} StepTally
  * @typedef {{ lesson: string, counted: [string, string][], refused: [string, string][], steps: StepTally[],
- *   rows: [string, string, string][], summary: string, csv: string }} Merged
+ *   rows: [string, string, string][], student_rows: [string, string, string, string][], summary: string,
+ *   csv: string, students_csv: string }} Merged
  * @param {{ merge: (names: string[], texts: string[]) => Merged,
  *   download: (name: string, text: string, type: string) => void, report: (what: string, e: unknown) => void }} on
  */
 export function createClassTable(on) {
   const box = byId('class-table');
+  const dialog = /** @type {HTMLDialogElement} */ (byId('class-dialog'));
   /** @type {Merged | null} */
   let shown = null;
   byId('class-download').addEventListener('click', () => {
     if (shown) on.download('flexarm-class-answers.csv', shown.csv, 'text/csv');
+  });
+  byId('class-download-students').addEventListener('click', () => {
+    if (shown) on.download('flexarm-class-students.csv', shown.students_csv, 'text/csv');
+  });
+  const open = () => {
+    if (!dialog.open) dialog.showModal();
+  };
+  byId('class-close').addEventListener('click', () => dialog.close());
+  byId('class-show').addEventListener('click', open);
+  // A click on the backdrop (outside the table) closes it too.
+  dialog.addEventListener('click', (e) => {
+    if (e.target === dialog) dialog.close();
   });
 
   /** Reads and merges `files`, and shows the table. @param {File[]} files */
@@ -38,11 +52,18 @@ export function createClassTable(on) {
         ...m.rows[i].map((cell) => make('td', { text: cell })),
       ])),
     );
-    // Who counted: the name each file gives (its file name where it gives none).
-    setText(byId('class-counted'), m.counted.length ? `Counted: ${m.counted.map(([file, name]) => name || file).join(', ')}.` : '');
+    // Who counted, by the name each file gives (its file name where it gives none), and how each did.
+    byId('class-students').replaceChildren(
+      ...m.student_rows.map(([name, file, right, tasks]) => make('tr', {}, [
+        make('th', { scope: 'row', text: name, title: file }),
+        make('td', { text: right }),
+        make('td', { text: tasks }),
+      ])),
+    );
     byId('class-refused').replaceChildren(...m.refused.map(([name, why]) => make('li', { text: `Not counted: ${name} — ${why}` })));
     box.hidden = false;
-    box.scrollIntoView({ block: 'nearest' });
+    byId('class-reopen').hidden = false;
+    open();
   }
 
   return { merge };

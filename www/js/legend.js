@@ -66,7 +66,9 @@ export function createLegend() {
           const bar = make('div', { class: 'rho-bar', role: 'img', 'aria-label': g.scale.label });
           bar.style.background = scaleGradient(g.scale, dark);
           const ticks = make('div', { class: 'rho-ticks', 'aria-hidden': 'true' }, g.scale.ticks.map(([p, t]) => {
-            const span = make('span', { text: t });
+            // The end labels ("≤ 0.8", "≥ 1.2") align with the bar's ends, inside its width: centred,
+            // the first sat under the scale's name.
+            const span = make('span', { text: t, class: p <= 0.001 ? 'at-start' : p >= 0.999 ? 'at-end' : '' });
             span.style.left = `${(100 * p).toFixed(1)}%`;
             return span;
           }));

@@ -8,7 +8,7 @@ import { momentLink } from './outputs.js';
 import { writeUrl } from './url.js';
 
 /**
- * @typedef {{ run: string, verdict: string, headline: string, detail: string, settings: string }} RunLine
+ * @typedef {{ run: string, verdict: string, headline: string, detail: string, detail_short: string, settings: string }} RunLine
  * @param {{ set: (key: string, value: string) => void, step: (key: string, steps: number) => void,
  *   togglePlay: () => void, reset: () => void, textChoices: { value: string, label: string }[],
  *   momentQuery: () => string, pause: () => void }} on
@@ -124,8 +124,11 @@ export function createPresent(on) {
               make('strong', { class: `verdict-${r.verdict.replace(' ', '-')}`, text: `${r.run}: ${r.headline}` }),
               ' ',
             ])
-            : [make('strong', { text: runs[0].headline }), ' ', make('span', { text: runs[0].detail })]),
+            // The whole sentence, or (a short screen: present.css) its first clause.
+            : [make('strong', { text: runs[0].headline }), ' ', make('span', { class: 'verdict-long', text: runs[0].detail }),
+              make('span', { class: 'verdict-short', text: runs[0].detail_short })]),
         );
+        barVerdict.title = runs.map((r) => `${runs.length > 1 ? `${r.run}: ` : ''}${r.headline} ${r.detail}`).join('\n');
       }
     }
     const shown = runs.length > 1 && !present;

@@ -10,7 +10,7 @@ export const GROWTH_REFRESH_MS = 1000;
 /**
  * @typedef {{ time: string, error: string, max_slew: string, max_after: string, torque: string,
  *   growth: string, a4: string }} Readouts
- * @typedef {{ run: string, verdict: string, headline: string, detail: string, short: string, observed: string,
+ * @typedef {{ run: string, verdict: string, headline: string, detail: string, short: string, detail_short: string, observed: string,
  *   measured: boolean, finished: boolean, rho: string, announce: string, settings: string,
  *   readouts: Readouts, limits: string }} RunStatus
  */

@@ -20,13 +20,18 @@ pub fn command() -> Command {
             .arg(
                 clap::Arg::new("files").value_name("FILES").num_args(1..).required(true).help("The answer files (CSV)"),
             )
-            .arg(option("out", "FILE.csv", "Where to write the class's table (default: print it)")),
+            .arg(option("out", "FILE.csv", "Where to write the class's table (default: print it)"))
+            .arg(option(
+                "students",
+                "FILE.csv",
+                "Also write one row per student: questions right at the first try, tasks done or shown, steps skipped",
+            )),
         )
 }
 
 pub fn run(m: &ArgMatches) -> Res<String> {
     let Some(("merge", m)) = m.subcommand() else {
-        return Err(usage_error("use: flexarm answers merge FILES… [--out class.csv]"));
+        return Err(usage_error("use: flexarm answers merge FILES… [--out class.csv] [--students students.csv]"));
     };
     let mut files = Vec::new();
     for path in m.get_many::<String>("files").into_iter().flatten() {
@@ -35,11 +40,16 @@ pub fn run(m: &ArgMatches) -> Res<String> {
     }
     let class = merge(&files);
     let table = class.to_csv();
+    let mut said = String::new();
+    if let Some(path) = m.get_one::<String>("students") {
+        cli::write_file("--students", path, &class.students_csv())?;
+        said = format!("wrote one row per student ({}) to {path}\n", class.students.len());
+    }
     match m.get_one::<String>("out") {
         Some(out) => {
             cli::write_file("--out", out, &table)?;
-            Ok(format!("{}wrote the table to {out}\n", class.summary()))
+            Ok(format!("{}wrote the table to {out}\n{said}", class.summary()))
         }
-        None => Ok(format!("{table}\n{}", class.summary())),
+        None => Ok(format!("{table}\n{}{said}", class.summary())),
     }
 }
