@@ -45,7 +45,7 @@ fn the_link_carries_the_file_byte_for_byte_and_opens_it_in_student_mode() {
     let files = LessonFiles { teacher: Some((LessonOrigin::Carried(name), bytes)), ..LessonFiles::default() };
     let (session, classroom, notices) = Classroom::open(LINK_QUERY, files);
     assert!(notices.is_empty(), "{notices:?}");
-    let status = classroom.lesson_status().expect("the lesson is open");
+    let status = classroom.lesson_status(&session).expect("the lesson is open");
     assert_eq!((status.index, status.source.as_str()), (0, "windows.md"));
     assert!(classroom.student_mode(&session));
     // Its state (what the address keeps after the page writes it) still opens the lesson, in

@@ -206,7 +206,7 @@ fn the_file_carries_the_lesson_step_the_moment_and_student_mode_and_reopens_them
     };
     let (mut session, mut classroom, notices) = Classroom::open(&start.query, files);
     assert!(notices.is_empty(), "{notices:?}");
-    let status = classroom.lesson_status().expect("the lesson is open");
+    let status = classroom.lesson_status(&session).expect("the lesson is open");
     assert_eq!((status.index, status.source.as_str()), (1, "lessons/windows.md"));
     assert!(classroom.student_mode(&session));
     assert!(classroom.take_start_paused());

@@ -179,8 +179,9 @@ impl Classroom {
         }
     }
 
-    /// The step shown, for the page (None when the lesson is not open).
-    pub fn lesson_status(&self) -> Option<LessonStatus> {
+    /// The step shown, for the page (None when the lesson is not open), in the session's
+    /// student mode or not.
+    pub fn lesson_status(&self, session: &Session) -> Option<LessonStatus> {
         let l = self.lesson.as_ref().filter(|l| l.active)?;
         let i = l.step;
         let s = &l.lesson.steps[i];
@@ -206,7 +207,7 @@ impl Classroom {
             can_next: i + 1 < l.lesson.steps.len() && !(l.lesson.next_waits && !revealed),
             waits: l.lesson.next_waits && !revealed && i + 1 < l.lesson.steps.len(),
             record: l.record.status(&l.lesson),
-            student_mode: false, // the session's: set by `Classroom::status`
+            student_mode: self.student_mode(session),
         })
     }
 

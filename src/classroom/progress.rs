@@ -126,21 +126,16 @@ impl LessonProgress {
 /// a teacher's file pass the same checks; a mistake names its own line.
 pub fn validate(lesson: &Lesson) -> Result<(), Error> {
     for (i, step) in lesson.steps.iter().enumerate() {
-        // A mistake names the line it is on (the `state:` line, not the step's title).
-        let at = |what: &str, e: &dyn std::fmt::Display| Error::Lesson {
-            line: Some(match what {
-                "state" => step.lines.state,
-                "then" => step.lines.then,
-                "show" => step.lines.show,
-                _ => step.lines.goal,
-            })
-            .filter(|&n| n > 0)
-            .unwrap_or(step.line),
+        // A mistake names the line it is on (the `state:` line, not the step's title): `line`,
+        // else the step's heading where the line is not known (0).
+        let at = |(what, line): (&str, usize), e: &dyn std::fmt::Display| Error::Lesson {
+            line: if line > 0 { line } else { step.line },
             message: format!("step {} ('{}'): {what}: {e}", i + 1, step.title),
         };
+        let goal = ("goal", step.lines.goal);
         let mut settings = Settings::page_start();
-        settings.read(&step.state, Source::Lesson).map_err(|e| at("state", &e))?;
-        for (what, text) in [("then", &step.then), ("show", &step.show)] {
+        settings.read(&step.state, Source::Lesson).map_err(|e| at(("state", step.lines.state), &e))?;
+        for (what, text) in [(("then", step.lines.then), &step.then), (("show", step.lines.show), &step.show)] {
             if let Some(text) = text {
                 let mut next = settings;
                 next.read(text, Source::Lesson).map_err(|e| at(what, &e))?;
@@ -150,7 +145,7 @@ pub fn validate(lesson: &Lesson) -> Result<(), Error> {
         // only the student's Play meets it — a task counts as the student's only if they did it.
         if step.goal.as_ref().is_some_and(|g| g.verdict.is_none() && g.settings.is_empty()) && !settings.start.paused {
             return Err(at(
-                "goal",
+                goal,
                 &"time alone is met by waiting: start the step paused (paused=1 in its state), so that the \
                   student's Play does it",
             ));
@@ -158,12 +153,12 @@ pub fn validate(lesson: &Lesson) -> Result<(), Error> {
         for (key, value) in step.goal.iter().flat_map(|g| g.settings.iter()) {
             let p = schema::param(key).ok_or_else(|| {
                 at(
-                    "goal",
+                    goal,
                     &format!("'{key}' is not a setting (a goal takes verdict=, time= and settings such as pf=off)"),
                 )
             })?;
             // Within the page's control: what a student can set.
-            p.parse(value, true).map_err(|e| at("goal", &format!("{key}={value} can never be met: {e}")))?;
+            p.parse(value, true).map_err(|e| at(goal, &format!("{key}={value} can never be met: {e}")))?;
         }
     }
     Ok(())

@@ -164,7 +164,7 @@ impl Classroom {
     /// The lesson's step and what student mode hides, for the page.
     pub fn status(&self, session: &Session) -> ClassroomStatus {
         ClassroomStatus {
-            lesson: self.lesson_status().map(|l| LessonStatus { student_mode: self.student_mode(session), ..l }),
+            lesson: self.lesson_status(session),
             hidden: self.answers_hidden(session).then(|| self.hidden_status()),
         }
     }

@@ -74,8 +74,13 @@ impl Ticks {
     /// [`Ticks::new`] with at least `least` ticks where up to four more intervals give them: a
     /// short axis (a projector's large text) keeps three labels rather than one or two.
     pub fn at_least(lo: f64, hi: f64, max_count: usize, least: usize) -> Ticks {
-        let first = Ticks::new(lo, hi, max_count);
-        (max_count..=max_count + 4).map(|n| Ticks::new(lo, hi, n)).find(|t| t.len() >= least).unwrap_or(first)
+        Ticks::first_with(lo, hi, max_count, 4, |t| t.len() >= least).unwrap_or(Ticks::new(lo, hi, max_count))
+    }
+
+    /// The first of [`Ticks::new`] for `count`, `count + 1`, … `count + extra` intervals that is
+    /// `enough` (more ticks, smaller steps, until the axis has what it needs), or None.
+    pub fn first_with(lo: f64, hi: f64, count: usize, extra: usize, enough: impl Fn(Ticks) -> bool) -> Option<Ticks> {
+        (count..=count + extra).map(|n| Ticks::new(lo, hi, n)).find(|t| enough(*t))
     }
 }
 

@@ -48,7 +48,7 @@ impl Session {
             let at = self.shown_snapshot(i).map_or(f64::NAN, |snap| snap.time);
             let settings = self.run(1).is_some().then_some(s.settings.as_str());
             let looking_back = self.viewing().is_some();
-            let errors = if v.errors { s.readouts.error.as_str() } else { "" };
+            let errors = v.errors.then_some(s.readouts.error.as_str());
             text += &figure_run(name, settings, s.headline, &s.detail, at, looking_back, errors, &s.observed);
         }
         text

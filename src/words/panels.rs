@@ -93,7 +93,7 @@ pub fn figure_contents(kinds: &[PanelKind], rate: bool) -> String {
 
 /// One run in the figure's description: " Run B (settings): Stable — ρ = …; at t = 3.00 s the
 /// errors are …; observed: …." (`settings` when two runs are compared; `looking_back` at a kept
-/// instant).
+/// instant; `errors` where the error plots are drawn).
 pub fn figure_run(
     name: &str,
     settings: Option<&str>,
@@ -101,12 +101,12 @@ pub fn figure_run(
     detail: &str,
     at: f64,
     looking_back: bool,
-    errors: &str,
+    errors: Option<&str>,
     observed: &str,
 ) -> String {
     let when = if looking_back { "looking back at" } else { "at" };
     let who = settings.map_or(String::new(), |s| format!("Run {name} ({s}): "));
-    // Without the error plots ("" errors), the instant alone.
-    let errors = if errors.is_empty() { String::new() } else { format!(" the errors are {errors}") };
+    // Without the error plots, the instant alone.
+    let errors = errors.map_or(String::new(), |e| format!(" the errors are {e}"));
     format!(" {who}{headline} — {detail}; {when} t = {at:.2} s{errors}; {observed}.")
 }

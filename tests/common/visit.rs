@@ -133,7 +133,7 @@ impl Visit {
     }
 
     pub fn lesson_status(&self) -> Option<LessonStatus> {
-        self.classroom.lesson_status()
+        self.classroom.lesson_status(&self.session)
     }
 
     pub fn load_lesson(&mut self, origin: LessonOrigin, bytes: &[u8]) -> Result<(), Error> {

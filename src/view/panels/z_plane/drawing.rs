@@ -133,10 +133,9 @@ fn labelled(lo: f64, hi: f64, count: usize, length: f64, across: bool) -> Ticks 
         let extent = label_extent(t.step, lo, hi, across);
         t.filter(|&v| label_fits(v, [lo, hi], length, extent)).count()
     };
-    let first = Ticks::new(lo, hi, count);
-    let more =
-        |least: usize| (count..=(count + 8).min(16)).map(|n| Ticks::new(lo, hi, n)).find(|t| fitting(*t) >= least);
-    more(3).or_else(|| more(2)).unwrap_or(first)
+    let extra = (count + 8).min(16).saturating_sub(count);
+    let more = |least: usize| Ticks::first_with(lo, hi, count, extra, |t| fitting(t) >= least);
+    more(3).or_else(|| more(2)).unwrap_or(Ticks::new(lo, hi, count))
 }
 
 /// A generous estimate of a tick label's length along its axis, CSS px, without writing it:
