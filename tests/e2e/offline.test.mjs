@@ -169,3 +169,17 @@ test('"Save for offline" on the served page: its size beside the button, and the
     await server.close();
   }
 });
+
+test('the served page opened from disk says in one sentence why it cannot start and what to do', { timeout: 60000 }, async () => {
+  const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  await page.goto(pathToFileURL(path.join(www, 'index.html')).href);
+  await page.waitForFunction(() => /web server/.test(document.querySelector('#loading-text')?.textContent ?? ''), null, { timeout: 10000 });
+  const said = (await page.textContent('#loading-text')) ?? '';
+  assert.match(said, /^Opened from disk, a browser will not start this page: it needs a web server \(bash scripts\/serve\.sh\), or use the offline file/);
+  assert.equal(said.split(/(?<=\.) /).length, 1, `one sentence: ${said}`);
+  assert.equal(await page.$('#loading .spinner'), null, 'no spinner turning forever');
+  assert.equal(await page.textContent('#verdict-detail'), 'not started: see the message in the figure', 'not "starting…" forever');
+  await page.screenshot({ path: path.join(shots, 'opened-from-disk-laptop.png') });
+  await context.close();
+});
