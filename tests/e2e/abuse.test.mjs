@@ -193,3 +193,25 @@ test('lesson, views and an embedded page with hostile values', { timeout: 60000 
   // An embed shows only the figure and its strip: the notice stays in the page, out of sight.
   await survives(`?embed=1&delta=${enc('<script>alert(1)</script>')}&views=${enc('<svg onload=alert(1)>')}`, { ignored: ['delta', 'views'], embed: true });
 });
+
+test('the page\'s API from a console: a number where a text is expected is taken as its text, never corrupting the module', { timeout: 60000 }, async () => {
+  const { page, problems, close } = await openPage(env.browser, env.server.base, '?preset=fig5.3');
+  const after = await page.evaluate(() => {
+    const s = /** @type {any} */ (window).flexarm.session;
+    s.set('delta', 0.05);
+    s.setStudent(42);
+    // A junk value is refused in words (a typed error), not a trap.
+    let refused = '';
+    try {
+      s.set('delta', {});
+    } catch (e) {
+      refused = String(/** @type {any} */ (e)?.message ?? e);
+    }
+    return { state: s.stateString(), refused, verdict: s.status().runs[0].verdict };
+  });
+  assert.match(after.state, /delta=0\.05/);
+  assert.match(after.refused, /delta/);
+  assert.equal(after.verdict, 'stable', 'Fig. 5.3 at δ = 0.05 s, in its first window, is stable');
+  assert.deepEqual(problems, []);
+  await close();
+});

@@ -77,40 +77,46 @@ export class Page {
   }
 
   // ------------------------------------------------------------------------------------- settings
+  // (Every text handed to the module goes through String(): the module reads strings only, and a
+  // number given where it expects one corrupts its memory rather than throwing.)
 
-  /** @param {string} key @param {string} text */
+  /**
+   * A setting from its text (`set('delta', '0.05')`; a number is taken as its text: the module
+   * reads strings only, and a number handed to it as one corrupts its memory).
+   * @param {string} key @param {string | number} text
+   */
   set(key, text) {
-    this.#change((s) => s.set(key, text));
+    this.#change((s) => s.set(String(key), String(text)));
   }
 
   /** @param {string} key @param {number} position */
   setPosition(key, position) {
-    this.#change((s) => s.setPosition(key, position));
+    this.#change((s) => s.setPosition(String(key), position));
   }
 
   /** @param {string} key @param {number} steps */
   stepValue(key, steps) {
-    this.#change((s) => s.stepValue(key, steps));
+    this.#change((s) => s.stepValue(String(key), steps));
   }
 
   /** @param {string} id */
   applyPreset(id) {
-    this.#change((s) => s.applyPreset(id));
+    this.#change((s) => s.applyPreset(String(id)));
   }
 
   /** @param {string} state @returns {{ key: string, text: string }[]} */
   readState(state) {
-    return this.#change((s) => s.readState(state));
+    return this.#change((s) => s.readState(String(state)));
   }
 
   /** @param {string} side @param {number} delta @param {number} alpha */
   setFromMap(side, delta, alpha) {
-    this.#change((s) => s.setFromMap(side, delta, alpha));
+    this.#change((s) => s.setFromMap(String(side), delta, alpha));
   }
 
   /** @param {string} side @param {number} deltaSteps @param {number} alphaSteps */
   stepOnMap(side, deltaSteps, alphaSteps) {
-    this.#change((s) => s.stepOnMap(side, deltaSteps, alphaSteps));
+    this.#change((s) => s.stepOnMap(String(side), deltaSteps, alphaSteps));
   }
 
   /** @param {number} delta */
@@ -144,7 +150,7 @@ export class Page {
 
   /** @param {string} which "whole" or "pair" */
   zView(which) {
-    this.#change((s) => s.zView(which));
+    this.#change((s) => s.zView(String(which)));
   }
 
   /**
@@ -167,7 +173,7 @@ export class Page {
 
   /** @param {string} note */
   setNote(note) {
-    this.#session.setNote(note);
+    this.#session.setNote(String(note));
   }
 
   // ----------------------------------------------------------------------------------------- time
@@ -282,7 +288,7 @@ export class Page {
    * @param {string} panel @param {string} [options] @returns {string}
    */
   figureSvg(panel, options = '') {
-    return this.#session.figureSvg(panel, this.stateString(), options);
+    return this.#session.figureSvg(String(panel), this.stateString(), String(options));
   }
 
   /** @returns {{ id: string, label: string }[]} */
@@ -324,7 +330,7 @@ export class Page {
 
   /** Who answers: written into the answers handed in. @param {string} name */
   setStudent(name) {
-    this.#classroom.setStudent(name);
+    this.#classroom.setStudent(String(name));
   }
 
   /** The teacher's lesson loaded now, as a homework link carries it (null: the built-in one).
@@ -387,7 +393,7 @@ export class Page {
 
   /** @param {string} csv */
   restoreAnswers(csv) {
-    this.#classroom.restoreAnswers(this.#session, csv);
+    this.#classroom.restoreAnswers(this.#session, String(csv));
   }
 
   clearAnswers() {
