@@ -10,7 +10,7 @@ mod reading;
 
 use flexarm::plot::palette;
 use flexarm::session::Session;
-use flexarm::view::figure::{figure_svg_with, Background, FigureOptions, WIDE_RATIO};
+use flexarm::view::figure::{figure_svg_with, Background, FigureOptions, WIDE_RATIO, WIDE_WIDTH};
 use reading::{assert_wellformed, attr, centroid, texts, triangles, Axes};
 
 const STATE: &str = "preset=fig5.3&mode=full&plane=z&speed=2";
@@ -118,15 +118,39 @@ fn the_caption_is_whole_without_the_view_keys_or_none_and_the_description_keeps_
 fn a_wide_figure_is_16_by_9_with_every_panel_inside() {
     let s = session();
     for panel in ["errors", "e1", "zplane", "poles", "rho", "arm"] {
+        // On a slide the figure is scaled to the slide's width: what counts is text over width.
+        let mut normal_ratio = f64::NAN;
         for text in ["normal", "largest"] {
             let svg = figure(&s, panel, &format!("shape=wide&text={text}"));
             let (w, h, scale) = size(&svg);
             assert!((w / h / WIDE_RATIO - 1.0).abs() < 0.01, "{panel} {text}: {w} × {h}");
+            assert!(w >= WIDE_WIDTH - 1.0, "{panel} {text}: a slide's {WIDE_WIDTH} px at least, {w}");
+            let ratio = tick_px(&svg) / w;
+            if text == "normal" {
+                assert!((w - WIDE_WIDTH).abs() <= 1.0, "{panel}: 1280 × 720 at normal text, {w} × {h}");
+                normal_ratio = ratio;
+            } else {
+                assert!(
+                    ratio >= 1.6 * normal_ratio,
+                    "{panel}: largest text is {:.2}× normal's on the slide",
+                    ratio / normal_ratio
+                );
+            }
             let (vw, vh) = (w / scale, h / scale);
+            // The key's texts: beside the panels (right of every panel) or below them (under every one).
+            let key = svg.split("<g id=\"key\">").nth(1).unwrap().split("</g>\n<g id=").next().unwrap();
+            let key_xy: Vec<[f64; 2]> = key
+                .split("<text class=\"key")
+                .skip(1)
+                .map(|t| [attr(t, "x").parse().unwrap(), attr(t, "y").parse().unwrap()])
+                .collect();
+            assert!(!key_xy.is_empty(), "{panel}: a key");
             for tag in svg.split("data-rect=\"").skip(1) {
                 let r: Vec<f64> = tag.split('"').next().unwrap().split(' ').map(|v| v.parse().unwrap()).collect();
                 assert!(r[2] > 50.0 && r[3] > 50.0, "{panel} {text}: a panel of {r:?}");
                 assert!(r[0] >= 0.0 && r[1] >= 0.0 && r[0] + r[2] <= vw && r[1] + r[3] <= vh, "{panel}: {r:?}");
+                let clear = key_xy.iter().all(|&[x, _]| x > r[0] + r[2]) || key_xy.iter().all(|&[_, y]| y > r[1] + r[3]);
+                assert!(clear, "{panel} {text}: the key overlaps the panel {r:?}");
             }
         }
     }

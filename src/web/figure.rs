@@ -6,7 +6,7 @@ use wasm_bindgen::prelude::*;
 
 use super::session::WebSession;
 use super::{js_error, to_js};
-use crate::view::figure::{figure_choices, figure_svg_with, FigureOptions};
+use crate::view::figure::{caption_head, figure_choices, figure_svg_with, FigureOptions};
 
 #[wasm_bindgen(js_class = Session)]
 impl WebSession {
@@ -20,6 +20,13 @@ impl WebSession {
     pub fn figure_svg(&self, panel: &str, state: &str, options: &str) -> Result<String, JsError> {
         let options = FigureOptions::parse(options).map_err(js_error)?;
         figure_svg_with(self.session(), state, panel, &options).map(|f| f.svg).map_err(js_error)
+    }
+
+    /// The caption under the page's picture: what it shows at which time, and the state string
+    /// `state` (the classroom's): "flexarm at t = 4.138 s — Fig. 5.3: … — state: delta=0.01&…".
+    #[wasm_bindgen(js_name = pictureCaption)]
+    pub fn picture_caption(&self, state: &str) -> String {
+        format!("{} — state: {state}", caption_head(self.session()))
     }
 
     /// The figures of the panels shown now: `[{id, label}]`.

@@ -39,6 +39,11 @@ test('the picture: a PNG of the canvas with its labels and the whole caption, at
   // The canvas, resized to draw the picture at 2×, is back at the screen's pixels.
   assert.equal(await page.evaluate(() => document.querySelector('#canvas').width), Math.round(css.width * css.dpr));
   assert.match(await page.textContent('#export-status'), /flexarm-fig5\.3-figure@2x\.png/);
+  // Its caption says when (a running figure changes by the second) and the whole state string.
+  const caption = await page.evaluate(() => window.flexarm.session.pictureCaption());
+  const state = await page.evaluate(() => window.flexarm.session.stateString());
+  assert.match(caption, /^flexarm at t = [\d.]+ s — Fig\. 5\.3: /);
+  assert.ok(caption.endsWith(` — state: ${state}`), caption);
   assert.deepEqual(problems, []);
   await close();
 });

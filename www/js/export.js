@@ -23,11 +23,6 @@ export const VIDEO_TYPES = ['video/webm;codecs=vp9', 'video/webm;codecs=vp8', 'v
 
 // ---------------------------------------------------------------- pure helpers (unit-tested)
 
-/** The caption line under the figure. @param {string} showing @param {string} state */
-export function captionText(showing, state) {
-  return `flexarm — ${showing} — state: ${state}`;
-}
-
 /**
  * `text`, shortened with … at the end so that `measure` of it is at most `maxWidth`.
  * @param {string} text @param {number} maxWidth @param {(s: string) => number} measure
@@ -308,10 +303,7 @@ export function createExport(on) {
     canvas: on.canvas,
     overlay: on.overlay,
     renderNow: on.renderNow,
-    caption: () => {
-      const s = on.session.status();
-      return captionText(s.showing, on.session.stateString());
-    },
+    caption: () => on.session.pictureCaption(),
   };
   /** A click handler that reports what fails. @param {string} what @param {() => void | Promise<void>} fn */
   const guarded = (what, fn) => async () => {

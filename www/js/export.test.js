@@ -1,17 +1,13 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { VIDEO_TYPES, baselineIn, captionText, dataJsonFromCsv, dataJsonText, figureSize, firstSupported, fitText, formatElapsed, figureOptionsText, isTransparent, wrapText } from './export.js';
+import { VIDEO_TYPES, baselineIn, dataJsonFromCsv, dataJsonText, figureSize, firstSupported, fitText, formatElapsed, figureOptionsText, isTransparent, wrapText } from './export.js';
 
 /** A monospace measure: 7 px a character. */
 const mono = (/** @type {string} */ s) => 7 * Array.from(s).length;
 
-test('the caption names the view and the state string', () => {
-  assert.equal(captionText('Fig. 5.3', 'delta=0.01&pf=off'), 'flexarm — Fig. 5.3 — state: delta=0.01&pf=off');
-});
-
 test('a caption that fits is left alone; a long one ends with … and fits', () => {
   assert.equal(fitText('short', 100, mono), 'short');
-  const long = captionText('run A', 'delta=0.01&alpha=2&pf=off&k=0.5&m=2&inner=pd&speed=2&mode=full');
+  const long = 'flexarm at t = 3 s — run A — state: delta=0.01&alpha=2&pf=off&k=0.5&m=2&inner=pd&speed=2&mode=full';
   const fitted = fitText(long, 200, mono);
   assert.ok(fitted.endsWith('…'), fitted);
   assert.ok(mono(fitted) <= 200, `${mono(fitted)} px`);
@@ -88,7 +84,7 @@ test('the data as JSON: one table per quantity, rows and columns as written, non
 });
 
 test('a long caption is wrapped whole, after a space or an &, each line fitting', () => {
-  const long = captionText('Fig. 5.3: δ = 0.01 s without preliminary feedback', 'delta=0.01&alpha=2&pf=off&friction=continuous&inner=continuous&repeat=0&k=12&eps_ratio=8&speed=1&mode=full');
+  const long = 'flexarm at t = 4.138 s — Fig. 5.3: δ = 0.01 s without preliminary feedback — state: delta=0.01&alpha=2&pf=off&friction=continuous&inner=continuous&repeat=0&k=12&eps_ratio=8&speed=1&mode=full';
   const lines = wrapText(long, 300, mono);
   assert.ok(lines.length >= 3, `${lines.length} lines`);
   assert.equal(lines.join(''), long, 'nothing cut');

@@ -291,6 +291,11 @@ export class Page {
     return this.#session.figureSvg(String(panel), this.stateString(), String(options));
   }
 
+  /** The caption under the page's picture: what it shows at which time, and the state string. @returns {string} */
+  pictureCaption() {
+    return this.#session.pictureCaption(this.stateString());
+  }
+
   /** @returns {{ id: string, label: string }[]} */
   figurePanels() {
     return this.#session.figurePanels();

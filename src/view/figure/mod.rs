@@ -36,7 +36,7 @@ use crate::view::layout::PanelKind;
 use crate::view::panels::time_plots::figure_curves;
 use crate::view::scene::{Scene, ViewOptions};
 use key::curve_key;
-pub use options::{CaptionChoice, FigureOptions, Shape, WIDE_RATIO};
+pub use options::{CaptionChoice, FigureOptions, Shape, WIDE_RATIO, WIDE_WIDTH};
 use sheet::{at_time, Sheet, Words};
 pub use svg::Background;
 
@@ -277,8 +277,7 @@ pub fn figure_svg_with(session: &Session, state: &str, panel: &str, options: &Fi
     };
     let mut groups = key(&scene);
 
-    let t = session.run(0).map_or(0.0, |r| r.closed_loop().time());
-    let head = at_time(t, &session.status().showing);
+    let head = caption_head(session);
     let settings = session.settings().runs_query();
     let caption = match options.caption {
         CaptionChoice::Full => Some((head.as_str(), state)),
@@ -296,4 +295,11 @@ pub fn figure_svg_with(session: &Session, state: &str, panel: &str, options: &Fi
     }
     let words = Words { caption, state, dark: options.dark, background: options.background };
     Ok(sheet.write(&scene, &groups, words))
+}
+
+/// What a figure of the session shows, as its caption begins: "flexarm at t = 4.138 s — Fig. 5.3:
+/// δ = 0.01 s without preliminary feedback (unstable)" (the page's picture says the same).
+pub fn caption_head(session: &Session) -> String {
+    let t = session.run(0).map_or(0.0, |r| r.closed_loop().time());
+    at_time(t, &session.status().showing)
 }

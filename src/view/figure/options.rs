@@ -31,8 +31,10 @@ pub enum Shape {
     Wide,
 }
 
-/// The wide shape's width over height.
+/// The wide shape's width over height, and its width in px at normal text (1280 × 720: a
+/// slide's size; a larger text size lays it out smaller and draws it that much larger).
 pub const WIDE_RATIO: f64 = 16.0 / 9.0;
+pub const WIDE_WIDTH: f64 = 1280.0;
 
 /// Everything a figure's maker chooses; every field has a default (the page's look).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

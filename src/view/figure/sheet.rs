@@ -8,7 +8,7 @@ use core::fmt::Write as _;
 
 use super::key::{key, Caption};
 use super::layout::{figure_layout, GAP, MARGIN, MIN_WIDTH};
-use super::options::WIDE_RATIO;
+use super::options::{WIDE_RATIO, WIDE_WIDTH};
 use super::svg::{wrap, Background, Doc, INK};
 use crate::plot::palette;
 use crate::schema::PanelKind;
@@ -39,6 +39,8 @@ pub struct Sheet {
     panels_bottom: f64,
     scale: f64,
     min_height: f64,
+    /// Where the key goes when not below the panels: [x, top, width].
+    key_box: Option<[f64; 3]>,
 }
 
 /// What a figure's sheet says besides its panels: the caption (what it shows, the state line
@@ -69,44 +71,60 @@ impl Sheet {
             (w / scale, h / scale)
         });
         let title_lines = wrap(&title, width - 2.0 * MARGIN, TITLE, true);
-        (Sheet { title, title_lines, width, panels_bottom, scale, min_height: 0.0 }, layout)
+        (Sheet { title, title_lines, width, panels_bottom, scale, min_height: 0.0, key_box: None }, layout)
     }
 
     /// The same panels on a 16:9 sheet (a slide's shape), knowing the key `groups` and the
-    /// caption it will carry: the panels fill what the title, key and caption leave; where that
-    /// would squeeze them below three quarters of their natural height the sheet widens.
+    /// caption it will carry: [`WIDE_WIDTH`] px wide at normal text, so that a larger text size
+    /// is larger on the slide by its whole factor; the key beside the panels where it fits there
+    /// (else below them), the panels filling what the title, key and caption leave. Where that
+    /// would squeeze the panels below half their natural height, the sheet grows (still 16:9).
     pub fn widen(&self, kinds: &[PanelKind], groups: &[LegendGroup], caption: Option<(&str, &str)>) -> (Sheet, Layout) {
-        let natural_top = self.top();
-        let natural = self.panels_bottom - natural_top;
-        let mut width = self.width.max(MIN_WIDTH / self.scale);
-        let (mut top, mut panels, mut title_lines);
+        let natural = self.panels_bottom - self.top();
+        let mut width = WIDE_WIDTH / self.scale;
         let mut tries = 0;
-        loop {
+        let (top, title_lines, panels_width, panels_height, key_box) = loop {
             let inner = width - 2.0 * MARGIN;
-            title_lines = wrap(&self.title, inner, TITLE, true);
-            top = MARGIN + title_lines.len() as f64 * TITLE_PITCH + 6.0;
-            let below = below_panels(groups, caption, inner);
-            panels = width / WIDE_RATIO - top - below;
+            let title_lines = wrap(&self.title, inner, TITLE, true);
+            let top = MARGIN + title_lines.len() as f64 * TITLE_PITCH + 6.0;
+            let caption_height = caption.map_or(0.0, |(h, st)| CAPTION_GAP + Caption::new(h, st, inner).height());
+            let bottom = width / WIDE_RATIO - MARGIN - caption_height;
+            let key_width = (0.3 * inner).clamp(200.0, 340.0);
+            let beside = key(None, groups, 0.0, 0.0, key_width) <= bottom - top;
+            let (panels_width, panels_height, key_box) = if beside {
+                (inner - key_width - GAP, bottom - top, Some([MARGIN + inner - key_width, top, key_width]))
+            } else {
+                (inner, bottom - top - KEY_GAP - key(None, groups, 0.0, 0.0, inner), None)
+            };
             tries += 1;
-            if panels >= 0.75 * natural || tries >= 16 {
-                break;
+            if panels_height >= 0.5 * natural || tries >= 12 {
+                break (top, title_lines, panels_width, panels_height.max(40.0), key_box);
             }
             width = (width * 1.1).ceil();
-        }
+        };
         let n = kinds.len().max(1) as f64;
         let stacked = kinds.iter().all(|k| k.is_time_plot());
-        let inner = width - 2.0 * MARGIN;
-        let (layout, width, panels_bottom) = figure_layout(kinds, top, width, |k| {
+        // Laid out across the panels' width (from the left margin), on a sheet of the whole width.
+        let (mut layout, _, panels_bottom) = figure_layout(kinds, top, panels_width + 2.0 * MARGIN, |k| {
             let [l, t, r, b] = gutters(k);
             if stacked {
-                (inner - l - r, (panels - GAP * (n - 1.0)) / n - t - b)
+                (panels_width - l - r, (panels_height - GAP * (n - 1.0)) / n - t - b)
             } else {
-                ((inner - GAP * (n - 1.0)) / n - l - r, panels - t - b)
+                ((panels_width - GAP * (n - 1.0)) / n - l - r, panels_height - t - b)
             }
         });
+        let width = width.ceil();
+        layout.css_width = width;
         let min_height = (width / WIDE_RATIO).round();
-        let sheet =
-            Sheet { title: self.title.clone(), title_lines, width, panels_bottom, scale: self.scale, min_height };
+        let sheet = Sheet {
+            title: self.title.clone(),
+            title_lines,
+            width,
+            panels_bottom,
+            scale: self.scale,
+            min_height,
+            key_box,
+        };
         (sheet, layout)
     }
 
@@ -119,10 +137,11 @@ impl Sheet {
     /// `groups` and the caption `words` ask for.
     pub fn write(&self, scene: &Scene, groups: &[LegendGroup], words: Words<'_>) -> Figure {
         let (width, inner) = (self.width, self.width - 2.0 * MARGIN);
-        let key_top = self.panels_bottom + KEY_GAP;
-        let key_height = key(None, groups, MARGIN, key_top, inner);
+        // The key below the panels, or beside them (a wide sheet).
+        let [key_x, key_top, key_width] = self.key_box.unwrap_or([MARGIN, self.panels_bottom + KEY_GAP, inner]);
+        let key_height = key(None, groups, key_x, key_top, key_width);
         let caption = words.caption.map(|(head, state)| Caption::new(head, state, inner));
-        let caption_top = key_top + key_height + CAPTION_GAP;
+        let caption_top = (key_top + key_height).max(self.panels_bottom) + CAPTION_GAP;
         let content = caption_top + caption.as_ref().map_or(0.0, Caption::height) + MARGIN;
         let height = content.max(self.min_height).ceil();
 
@@ -164,7 +183,7 @@ impl Sheet {
             doc.label(&l);
         }
         doc.out.push_str("</g>\n<g id=\"key\">\n");
-        key(Some(&mut doc), groups, MARGIN, key_top, inner);
+        key(Some(&mut doc), groups, key_x, key_top, key_width);
         doc.out.push_str("</g>\n");
         if let Some(caption) = caption {
             doc.out.push_str("<g id=\"caption\">\n");
@@ -179,13 +198,6 @@ impl Sheet {
 /// Between the panels and the key, the key and the caption, in the figure's units.
 const KEY_GAP: f64 = 8.0;
 const CAPTION_GAP: f64 = 4.0;
-
-/// The height under the panels: the key, the caption (if any) and the margin, for `inner` width.
-fn below_panels(groups: &[LegendGroup], caption: Option<(&str, &str)>, inner: f64) -> f64 {
-    let key_height = key(None, groups, MARGIN, 0.0, inner);
-    let caption = caption.map_or(0.0, |(head, state)| Caption::new(head, state, inner).height());
-    KEY_GAP + key_height + CAPTION_GAP + caption + MARGIN
-}
 
 /// A caption's head for a run at simulated time `t` (s): "flexarm at t = 4.138 s — what".
 pub fn at_time(t: f64, what: &str) -> String {
