@@ -105,14 +105,39 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
         let right = (0..questions).filter(|&q| !n.is_multiple_of(q + 2)).count();
         assert_eq!((row.predicted, row.right, row.done, row.shown, row.skipped), (questions, right, 0, 0, tasks_left));
         assert_eq!(row.file, format!("student-{n:02}.csv"));
-        let [name, file, score, tasks] = flexarm::classroom::class::ClassTable::student_words(row);
-        assert_eq!((name.as_str(), file.as_str()), (row.name.as_str(), row.file.as_str()));
-        assert_eq!(score, format!("{right} of {questions}"));
-        assert_eq!(tasks, format!("{tasks_left} skipped"));
+        // The page's row: the name, the file, the score, then a mark per step of the class.
+        let cells = class.student_row(row);
+        assert_eq!(cells[..3], [row.name.clone(), row.file.clone(), format!("{right} of {questions}")]);
+        let mut q = 0;
+        for (i, step) in lesson.steps.iter().enumerate() {
+            let Some(at) = class.steps.iter().position(|t| t.step == i + 1) else { continue };
+            let expected = if step.question.is_some() {
+                q += 1;
+                if n.is_multiple_of(q + 1) {
+                    "✗"
+                } else {
+                    "✓"
+                }
+            } else if step.goal.is_some() && i + 1 < lesson.steps.len() {
+                "skipped"
+            } else {
+                "—"
+            };
+            assert_eq!(cells[3 + at], expected, "student {n}, step {}", i + 1);
+        }
     }
     let students_csv = class.students_csv();
-    assert_eq!(students_csv.lines().count(), 1 + 57);
-    assert!(students_csv.lines().nth(1).unwrap().starts_with("Student 00,student-00.csv,3,0,0,"), "{students_csv}");
+    assert_eq!(students_csv.lines().count(), 1 + 57 + 3, "a row per student, then the files not counted");
+    assert!(students_csv.lines().nth(1).unwrap().starts_with("Student 00,student-00.csv,3,0,0.00,"), "{students_csv}");
+    assert!(
+        students_csv.contains("student-06.csv,student-06.csv,,,,,,,not counted: its check does not match"),
+        "{students_csv}"
+    );
+    // Nobody left a step without a mark but the last task (the homework's end: no Next ▸ after it).
+    for t in &class.steps {
+        let last = t.step == lesson.steps.len();
+        assert_eq!(t.unanswered, if last { 57 } else { 0 }, "step {}", t.step);
+    }
 
     // The command line writes the same table.
     let dir = std::env::temp_dir().join(format!("flexarm-class-{}", std::process::id()));
@@ -142,8 +167,10 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
     assert_eq!(rows(&written), rows(&csv));
     // The per-student rows name the files as given (full paths here): the counts are the same.
     let per_student = std::fs::read_to_string(dir.join("students.csv")).unwrap();
-    let counts =
-        |t: &str| t.lines().map(|l| l.rsplitn(7, ',').take(6).collect::<Vec<_>>().join(",")).collect::<Vec<_>>();
+    let counts = |t: &str| {
+        let counted = t.lines().filter(|l| !l.contains("not counted"));
+        counted.map(|l| l.rsplitn(12, ',').take(11).collect::<Vec<_>>().join(",")).collect::<Vec<_>>()
+    };
     assert_eq!(counts(&per_student), counts(&students_csv));
     assert!(said.contains("wrote one row per student (57)"), "{said}");
     println!("{written}");
@@ -189,4 +216,41 @@ fn next_records_a_skip_or_waits_as_the_lesson_says() {
     // Anything else after `next:` is a mistake, on its line.
     let e = parse(&text("next: maybe")).unwrap_err().to_string();
     assert!(e.starts_with("lesson, line 2: 'next: maybe'"), "{e}");
+}
+
+/// A copy of a file under another name counts once; a second file under a student's name does
+/// not count twice; a student who stopped after the first step shows no mark on the rest, and
+/// each step says how many left it without one.
+#[test]
+fn copies_count_once_and_a_student_who_stopped_shows_where() {
+    let mut files: Vec<AnswerFile> =
+        (1..6).map(|n| AnswerFile { name: format!("student-{n:02}.csv"), text: student(n).to_csv() }).collect();
+    files.push(AnswerFile { name: "copy-of-01.csv".into(), text: files[0].text.clone() });
+    // Student 02 again, another walk under the same name.
+    let mut again = student(3);
+    again.student = "Student 02".into();
+    files.push(AnswerFile { name: "student-02-again.csv".into(), text: again.to_csv() });
+    // Student 05 stopped after the first step.
+    let mut stopped = student(5);
+    stopped.entries.retain(|e| e.step == 1);
+    files[4].text = stopped.to_csv();
+
+    let class = merge(&files);
+    let why = |name: &str| class.refused.iter().find(|(n, _)| n == name).map(|(_, w)| w.clone()).unwrap_or_default();
+    assert_eq!(why("copy-of-01.csv"), "the same file as student-01.csv");
+    assert!(
+        why("student-02-again.csv").starts_with("a second file from Student 02 (also student-02.csv)"),
+        "{}",
+        why("student-02-again.csv")
+    );
+    assert_eq!(class.students.len(), 5);
+    let five = class.students.iter().find(|s| s.name == "Student 05").unwrap();
+    let cells = class.student_row(five);
+    assert_eq!(cells[3], if 5 % 2 == 0 { "✗" } else { "✓" });
+    assert!(cells[4..].iter().all(|c| c == "—"), "{cells:?}");
+    for t in class.steps.iter().filter(|t| t.step > 1) {
+        assert_eq!(t.unanswered, 1, "step {}: only student 05 left it", t.step);
+        let [_, _, tasks] = flexarm::classroom::class::ClassTable::row_words(t);
+        assert!(tasks.contains("1 no answer"), "{tasks}");
+    }
 }

@@ -149,7 +149,8 @@ fn a_wide_figure_is_16_by_9_with_every_panel_inside() {
                 let r: Vec<f64> = tag.split('"').next().unwrap().split(' ').map(|v| v.parse().unwrap()).collect();
                 assert!(r[2] > 50.0 && r[3] > 50.0, "{panel} {text}: a panel of {r:?}");
                 assert!(r[0] >= 0.0 && r[1] >= 0.0 && r[0] + r[2] <= vw && r[1] + r[3] <= vh, "{panel}: {r:?}");
-                let clear = key_xy.iter().all(|&[x, _]| x > r[0] + r[2]) || key_xy.iter().all(|&[_, y]| y > r[1] + r[3]);
+                let clear =
+                    key_xy.iter().all(|&[x, _]| x > r[0] + r[2]) || key_xy.iter().all(|&[_, y]| y > r[1] + r[3]);
                 assert!(clear, "{panel} {text}: the key overlaps the panel {r:?}");
             }
         }

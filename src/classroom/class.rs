@@ -6,7 +6,6 @@
 //! ([`super::answers::check_csv`]).
 
 use super::answers::{check_csv, Check, Record};
-use crate::plot::format::significant;
 
 /// One answers file: its name and text.
 #[derive(Clone, Debug)]
@@ -30,6 +29,43 @@ pub struct StepTally {
     pub shown: usize,
     /// Students who left the step with *Next ▸* and never answered it.
     pub skipped: usize,
+    /// Students who counted and left no mark here: not reached, or left unanswered.
+    pub unanswered: usize,
+}
+
+/// How one student left one step: a question right or wrong at the first try, a task done or
+/// shown, or the step skipped with *Next ▸*.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mark {
+    Right,
+    Wrong,
+    Done,
+    Shown,
+    Skipped,
+}
+
+impl Mark {
+    /// The cell in the page's table: ✓, ✗, done, shown, skipped.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Mark::Right => "✓",
+            Mark::Wrong => "✗",
+            Mark::Done => "done",
+            Mark::Shown => "shown",
+            Mark::Skipped => "skipped",
+        }
+    }
+
+    /// The cell in the students' CSV: right, wrong, done, shown, skipped.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mark::Right => "right",
+            Mark::Wrong => "wrong",
+            Mark::Done => "done",
+            Mark::Shown => "shown",
+            Mark::Skipped => "skipped",
+        }
+    }
 }
 
 /// One student over the lesson, from their file.
@@ -45,6 +81,9 @@ pub struct StudentScore {
     pub done: usize,
     pub shown: usize,
     pub skipped: usize,
+    /// Each step they left a mark on, in the lesson's order (a step without one: not reached, or
+    /// left unanswered).
+    pub marks: Vec<(usize, Mark)>,
 }
 
 /// The merged class.
@@ -67,7 +106,12 @@ pub struct ClassTable {
 pub fn merge(files: &[AnswerFile]) -> ClassTable {
     let mut class = ClassTable::default();
     let mut records: Vec<(&AnswerFile, Record)> = Vec::new();
-    for f in files {
+    for (i, f) in files.iter().enumerate() {
+        // The same file given twice (a copy under another name) counts once.
+        if let Some(first) = files[..i].iter().find(|g| g.text == f.text) {
+            class.refused.push((f.name.clone(), format!("the same file as {}", first.name)));
+            continue;
+        }
         match Record::from_csv(&f.text, 0) {
             Err(e) => class.refused.push((f.name.clone(), format!("not an answers file: {e}"))),
             Ok(r) if r.entries.is_empty() => class.refused.push((f.name.clone(), "no answers in it".into())),
@@ -97,6 +141,15 @@ pub fn merge(files: &[AnswerFile]) -> ClassTable {
             class.refused.push((f.name.clone(), format!("answers another text of the lesson ({})", r.lesson_hash)));
             continue;
         }
+        // One file per student: a second one under the same name does not count twice.
+        let named = r.student.trim().to_lowercase();
+        if let Some(first) = class.students.iter().find(|s| !named.is_empty() && s.name.trim().to_lowercase() == named)
+        {
+            let why =
+                format!("a second file from {} (also {}): only the first given counts", r.student.trim(), first.file);
+            class.refused.push((f.name.clone(), why));
+            continue;
+        }
         class.lesson.clone_from(&r.lesson);
         class.counted.push((f.name.clone(), r.student.clone()));
         let name = if r.student.trim().is_empty() { f.name.clone() } else { r.student.clone() };
@@ -104,6 +157,10 @@ pub fn merge(files: &[AnswerFile]) -> ClassTable {
     }
     class.steps.sort_by_key(|s| s.step);
     class.students.sort_by_key(|s| s.name.to_lowercase());
+    for step in &mut class.steps {
+        let marked = class.students.iter().filter(|s| s.marks.iter().any(|(n, _)| *n == step.step)).count();
+        step.unanswered = class.students.len() - marked;
+    }
     for s in &mut class.steps {
         s.wrong.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
     }
@@ -131,7 +188,9 @@ fn tally(steps: &mut Vec<StepTally>, r: &Record) -> StudentScore {
                 predicted.push(e.step);
                 s.predicted += 1;
                 score.predicted += 1;
-                if e.result == "right" {
+                let right = e.result == "right";
+                score.marks.push((e.step, if right { Mark::Right } else { Mark::Wrong }));
+                if right {
                     s.right += 1;
                     score.right += 1;
                 } else {
@@ -155,18 +214,26 @@ fn tally(steps: &mut Vec<StepTally>, r: &Record) -> StudentScore {
             if let Some(s) = steps.iter_mut().find(|s| s.step == step) {
                 s.skipped += 1;
                 score.skipped += 1;
+                score.marks.push((step, Mark::Skipped));
             }
         }
     }
     for (step, result) in tasks {
         if let Some(s) = steps.iter_mut().find(|s| s.step == step) {
             match result {
-                "done" => (s.done, score.done) = (s.done + 1, score.done + 1),
-                "shown" => (s.shown, score.shown) = (s.shown + 1, score.shown + 1),
+                "done" => {
+                    (s.done, score.done) = (s.done + 1, score.done + 1);
+                    score.marks.push((step, Mark::Done));
+                }
+                "shown" => {
+                    (s.shown, score.shown) = (s.shown + 1, score.shown + 1);
+                    score.marks.push((step, Mark::Shown));
+                }
                 _ => {}
             }
         }
     }
+    score.marks.sort_by_key(|(step, _)| *step);
     score
 }
 
@@ -184,13 +251,12 @@ impl ClassTable {
         for (name, why) in &self.refused {
             out += &format!("# not counted: {name}: {why}\n");
         }
-        out += "step,step_title,predicted,right,share_right,wrong_choices,task_done,task_shown,skipped\n";
+        out += "step,step_title,predicted,right,share_right,wrong_choices,task_done,task_shown,skipped,unanswered\n";
         for s in &self.steps {
-            let share =
-                if s.predicted > 0 { significant(s.right as f64 / s.predicted as f64, 2) } else { String::new() };
+            let share = share(s.right, s.predicted);
             let wrong: Vec<String> = s.wrong.iter().map(|(t, n)| format!("“{t}” ×{n}")).collect();
             out += &format!(
-                "{},{},{},{},{},{},{},{},{}\n",
+                "{},{},{},{},{},{},{},{},{},{}\n",
                 s.step,
                 super::answers::quote(&s.title),
                 s.predicted,
@@ -199,7 +265,8 @@ impl ClassTable {
                 super::answers::quote(&wrong.join("; ")),
                 s.done,
                 s.shown,
-                s.skipped
+                s.skipped,
+                s.unanswered
             );
         }
         out
@@ -222,43 +289,63 @@ impl ClassTable {
         if s.skipped > 0 {
             tasks.push(format!("{} skipped", s.skipped));
         }
+        if s.unanswered > 0 {
+            tasks.push(format!("{} no answer", s.unanswered));
+        }
         [right, wrong.join("; "), tasks.join("; ")]
     }
 
     /// One row per student as CSV: the name and file, questions answered and right at the first
-    /// try, tasks done and shown, steps skipped.
+    /// try, tasks done and shown, steps skipped, then each step's mark (`step_3`: right, wrong,
+    /// done, shown, skipped, or empty: no answer); then each file that did not count, with why.
     pub fn students_csv(&self) -> String {
-        let mut out = String::from("student,file,predicted,right,share_right,task_done,task_shown,skipped\n");
+        let mut out = String::from("student,file,predicted,right,share_right,task_done,task_shown,skipped,note");
+        for s in &self.steps {
+            out += &format!(",step_{}", s.step);
+        }
+        out.push('\n');
         for s in &self.students {
-            let share =
-                if s.predicted > 0 { significant(s.right as f64 / s.predicted as f64, 2) } else { String::new() };
             out += &format!(
-                "{},{},{},{},{},{},{},{}\n",
+                "{},{},{},{},{},{},{},{},",
                 super::answers::quote(&s.name),
                 super::answers::quote(&s.file),
                 s.predicted,
                 s.right,
-                share,
+                share(s.right, s.predicted),
                 s.done,
                 s.shown,
                 s.skipped
+            );
+            for step in &self.steps {
+                out.push(',');
+                out += s.marks.iter().find(|(n, _)| *n == step.step).map_or("", |(_, m)| m.name());
+            }
+            out.push('\n');
+        }
+        for (file, why) in &self.refused {
+            let q = super::answers::quote(file);
+            out += &format!(
+                "{q},{q},,,,,,,{}{}\n",
+                super::answers::quote(&format!("not counted: {why}")),
+                ",".repeat(self.steps.len())
             );
         }
         out
     }
 
-    /// One student's row in words, as the page's table shows it: the name, the file, right at
-    /// the first try ("3 of 4"), and the tasks ("1 done; 1 skipped").
-    pub fn student_words(s: &StudentScore) -> [String; 4] {
+    /// A student's mark on each of the class's steps, as the page's table shows it (— where none).
+    pub fn student_cells(&self, s: &StudentScore) -> Vec<String> {
+        let mark = |step: usize| s.marks.iter().find(|(n, _)| *n == step).map_or("—", |(_, m)| m.symbol());
+        self.steps.iter().map(|t| mark(t.step).to_string()).collect()
+    }
+
+    /// One student's row as the page's table shows it: the name, the file, right at the first
+    /// try ("3 of 4", "—" for no question answered), then their mark on each step.
+    pub fn student_row(&self, s: &StudentScore) -> Vec<String> {
         let right = if s.predicted > 0 { format!("{} of {}", s.right, s.predicted) } else { "—".into() };
-        let mut tasks = Vec::new();
-        if s.done + s.shown > 0 {
-            tasks.push(format!("{} done, {} shown", s.done, s.shown));
-        }
-        if s.skipped > 0 {
-            tasks.push(format!("{} skipped", s.skipped));
-        }
-        [s.name.clone(), s.file.clone(), right, tasks.join("; ")]
+        let mut row = vec![s.name.clone(), s.file.clone(), right];
+        row.extend(self.student_cells(s));
+        row
     }
 
     /// In words, for the command line: the lesson, the counts, the files left out and why.
@@ -273,5 +360,14 @@ impl ClassTable {
             s += &format!("  not counted: {name}: {why}\n");
         }
         s
+    }
+}
+
+/// A share as a fraction with two decimals ("0.67", "1.00"), empty for none answered.
+fn share(right: usize, of: usize) -> String {
+    if of > 0 {
+        format!("{:.2}", right as f64 / of as f64)
+    } else {
+        String::new()
     }
 }

@@ -256,7 +256,7 @@ pub fn merge_answers(names: Vec<String>, texts: Vec<String>) -> Result<JsValue, 
         #[serde(flatten)]
         table: ClassTable,
         rows: Vec<[String; 3]>,
-        student_rows: Vec<[String; 4]>,
+        student_rows: Vec<Vec<String>>,
         summary: String,
         csv: String,
         students_csv: String,
@@ -264,7 +264,7 @@ pub fn merge_answers(names: Vec<String>, texts: Vec<String>) -> Result<JsValue, 
     let files: Vec<AnswerFile> = names.into_iter().zip(texts).map(|(name, text)| AnswerFile { name, text }).collect();
     let table = merge(&files);
     let rows = table.steps.iter().map(ClassTable::row_words).collect();
-    let student_rows = table.students.iter().map(ClassTable::student_words).collect();
+    let student_rows = table.students.iter().map(|s| table.student_row(s)).collect();
     let (summary, csv, students_csv) = (table.summary(), table.to_csv(), table.students_csv());
     to_js(&Merged { table, rows, student_rows, summary, csv, students_csv })
 }

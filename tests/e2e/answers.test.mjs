@@ -168,9 +168,11 @@ test('the teacher drops 60 answer files on the page: one table, each step\'s sha
   }
   // Each student's row: the 59 who counted, by name, right at the first try as their own rows say.
   assert.equal(await page.evaluate(() => /** @type {HTMLDialogElement} */ (document.querySelector('#class-dialog')).open), true, 'the table opens in its own window');
-  const students = await page.$$eval('#class-students tr', (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+  const rowsOfStudents = await page.$$eval('#class-students tr', (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+  const students = rowsOfStudents.filter((r) => !/^not counted/.test(r[1] ?? ''));
   assert.equal(students.length, 59);
-  assert.ok(!students.some((r) => r[0] === 'Student 03'), 'the edited file has no row');
+  assert.ok(!students.some((r) => r[0] === 'Student 03'), 'the edited file has no row of marks');
+  assert.deepEqual(rowsOfStudents.filter((r) => /^not counted/.test(r[1] ?? '')).map((r) => r[0]), ['student-03.csv'], 'it is named among the students');
   for (const n of [0, 1, 42]) {
     const name = `Student ${String(n).padStart(2, '0')}`;
     const mine = files[n].text.split('\n').map(csvCells).filter((c) => c[4] === 'prediction');
@@ -179,6 +181,11 @@ test('the teacher drops 60 answer files on the page: one table, each step\'s sha
     const right = [...firsts.values()].filter((r) => r === 'right').length;
     const row = students.find((r) => r[0] === name);
     assert.equal(row?.[1], `${right} of ${firsts.size}`, `${name}: ${JSON.stringify(row)}`);
+    // A mark per step: ✓ or ✗ where they answered, as their first try was.
+    const heads = await page.$$eval('#class-students-head th', (ths) => ths.map((th) => th.textContent));
+    for (const [step, result] of firsts) {
+      assert.equal(row?.[heads.indexOf(step)], result === 'right' ? '✓' : '✗', `${name}, step ${step}`);
+    }
   }
   // The table's window is as wide as the screen allows, not the side panel's width.
   const width = await page.$eval('#class-dialog', (d) => d.getBoundingClientRect().width);

@@ -178,8 +178,10 @@ test('performance figures (printed for the README)', { timeout: 150000 }, async 
   // names, the figure's background); 1.061 MB with slide figures (+3.5 kB: their options read as
   // a state string is — serde's reader cost twice that —, text sizes, captions, 16:9, key columns,
   // the screen's z-plane view); 1.065 MB with each student's row in the class table and the
-  // verdict's first clause (+4.1 kB): the 0.9-MB goal is not met.
-  assert.ok(gzip <= 1.070e6, `wasm gzip -9 ${gzip} bytes: over the 1.070-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
+  // verdict's first clause (+4.1 kB); 1.069 MB after the lecturer's cold trial (+4.2 kB: a mark
+  // per student and step, copies and second files refused, answers missing per step, the 16:9
+  // slide with its key beside the panels, the picture's caption from Rust): the 0.9-MB goal is not met.
+  assert.ok(gzip <= 1.075e6, `wasm gzip -9 ${gzip} bytes: over the 1.075-MB bound (0.9-MB goal); twiggy shows where the bytes went (README)`);
   assert.ok(perf.frames > 20 && perf.first_frame_ms > 0, JSON.stringify(perf));
   assert.ok(throughput > 100, `wasm simulates only ${throughput} s per s`);
   assert.ok(maps.length >= 1 && maps.every((m) => m.ms > 0 && m.compute_ms > 0), JSON.stringify(maps));

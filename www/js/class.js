@@ -8,7 +8,7 @@ import { byId, make, setText } from './dom.js';
 /**
  * @typedef {{ step: number, title: string }} StepTally
  * @typedef {{ lesson: string, counted: [string, string][], refused: [string, string][], steps: StepTally[],
- *   rows: [string, string, string][], student_rows: [string, string, string, string][], summary: string,
+ *   rows: [string, string, string][], student_rows: string[][], summary: string,
  *   csv: string, students_csv: string }} Merged
  * @param {{ merge: (names: string[], texts: string[]) => Merged,
  *   download: (name: string, text: string, type: string) => void, report: (what: string, e: unknown) => void }} on
@@ -52,12 +52,22 @@ export function createClassTable(on) {
         ...m.rows[i].map((cell) => make('td', { text: cell })),
       ])),
     );
-    // Who counted, by the name each file gives (its file name where it gives none), and how each did.
+    // Who counted, by the name each file gives (its file name where it gives none), and how each
+    // did: the score, then a column per step (its title on the number); the files that did not.
+    byId('class-students-head').replaceChildren(
+      make('th', { scope: 'col', text: 'Student' }),
+      make('th', { scope: 'col', text: 'Right at the first try' }),
+      ...m.steps.map((s) => make('th', { scope: 'col', class: 'class-step', text: String(s.step), title: s.title })),
+    );
     byId('class-students').replaceChildren(
-      ...m.student_rows.map(([name, file, right, tasks]) => make('tr', {}, [
+      ...m.student_rows.map(([name, file, right, ...marks]) => make('tr', {}, [
         make('th', { scope: 'row', text: name, title: file }),
         make('td', { text: right }),
-        make('td', { text: tasks }),
+        ...marks.map((mark) => make('td', { class: 'class-step', text: mark })),
+      ])),
+      ...m.refused.map(([name, why]) => make('tr', { class: 'class-not-counted' }, [
+        make('th', { scope: 'row', text: name }),
+        make('td', { colspan: String(m.steps.length + 1), text: `not counted: ${why}` }),
       ])),
     );
     byId('class-refused').replaceChildren(...m.refused.map(([name, why]) => make('li', { text: `Not counted: ${name} — ${why}` })));
