@@ -92,6 +92,8 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
     }
     let csv = class.to_csv();
     assert!(csv.contains("# not counted: student-06.csv: its check does not match"), "{csv}");
+    // Both tables open in a spreadsheet as UTF-8 (δ, ×, quotes, names): a byte-order mark first.
+    assert!(csv.starts_with('\u{feff}') && class.students_csv().starts_with("\u{feff}student,"));
 
     // One row per student, by name: their own questions right by the rule, their skipped tasks.
     let questions = lesson.steps.iter().filter(|s| s.question.is_some()).count();

@@ -242,7 +242,7 @@ impl ClassTable {
     /// then one row per step.
     pub fn to_csv(&self) -> String {
         let mut out = format!(
-            "# flexarm class answers: {} ({}), {} files counted, {} not\n",
+            "{UTF8_BOM}# flexarm class answers: {} ({}), {} files counted, {} not\n",
             self.lesson,
             self.lesson_hash,
             self.counted.len(),
@@ -299,7 +299,7 @@ impl ClassTable {
     /// try, tasks done and shown, steps skipped, then each step's mark (`step_3`: right, wrong,
     /// done, shown, skipped, or empty: no answer); then each file that did not count, with why.
     pub fn students_csv(&self) -> String {
-        let mut out = String::from("student,file,predicted,right,share_right,task_done,task_shown,skipped,note");
+        let mut out = format!("{UTF8_BOM}student,file,predicted,right,share_right,task_done,task_shown,skipped,note");
         for s in &self.steps {
             out += &format!(",step_{}", s.step);
         }
@@ -362,6 +362,11 @@ impl ClassTable {
         s
     }
 }
+
+/// The byte-order mark the teacher's tables begin with: a spreadsheet (Excel on Windows) then
+/// reads them as UTF-8 — δ, ×, “ ” and the students' names — rather than in its local code page.
+/// (Nothing reads these tables back; the students' answer files have none.)
+const UTF8_BOM: char = '\u{feff}';
 
 /// A share as a fraction with two decimals ("0.67", "1.00"), empty for none answered.
 fn share(right: usize, of: usize) -> String {
