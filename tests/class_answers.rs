@@ -5,6 +5,7 @@
 
 mod common;
 
+use flexarm::classroom::answers::text_hash;
 use flexarm::classroom::class::{merge, AnswerFile};
 use flexarm::lesson::parse;
 
@@ -57,8 +58,11 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
     let mut other = student(8);
     other.lesson_hash = "fnv1a64:0123456789abcdef".into();
     files[8].text = other.to_csv();
-    let class = merge(&files);
+    // The teacher's lesson given: its last task, which nobody reached, is a row too.
+    let hash = text_hash(HOMEWORK);
+    let class = merge(&files, Some((&lesson, &hash)));
     assert_eq!(class.lesson, lesson.title);
+    assert_eq!(class.steps.len(), lesson.steps.iter().filter(|s| s.question.is_some() || s.goal.is_some()).count());
     assert_eq!(class.counted.len(), 57, "{:?}", class.refused);
     let refused: Vec<&str> = class.refused.iter().map(|(n, _)| n.as_str()).collect();
     assert_eq!(refused, ["student-06.csv", "student-07.csv", "student-08.csv"]);
@@ -92,8 +96,12 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
     }
     let csv = class.to_csv();
     assert!(csv.contains("# not counted: student-06.csv: its check does not match"), "{csv}");
-    // Both tables open in a spreadsheet as UTF-8 (δ, ×, quotes, names): a byte-order mark first.
-    assert!(csv.starts_with('\u{feff}') && class.students_csv().starts_with("\u{feff}student,"));
+    // Both tables open in a spreadsheet as UTF-8 (δ, ×, quotes, names): a byte-order mark first,
+    // then the columns' names on the first row; what the table is comes after it, a cell a line.
+    assert!(csv.starts_with("\u{feff}step,step_title,") && class.students_csv().starts_with("\u{feff}student,"));
+    let about: Vec<&str> = csv.lines().filter(|l| l.trim_start_matches('"').starts_with('#')).collect();
+    assert_eq!(about.len(), 1 + 3, "{about:?}");
+    assert!(about.iter().all(|l| !l.contains(',') || (l.starts_with('"') && l.ends_with('"'))), "{about:?}");
 
     // One row per student, by name: their own questions right by the rule, their skipped tasks.
     let questions = lesson.steps.iter().filter(|s| s.question.is_some()).count();
@@ -131,10 +139,9 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
     let students_csv = class.students_csv();
     assert_eq!(students_csv.lines().count(), 1 + 57 + 3, "a row per student, then the files not counted");
     assert!(students_csv.lines().nth(1).unwrap().starts_with("Student 00,student-00.csv,3,0,0.00,"), "{students_csv}");
-    assert!(
-        students_csv.contains("student-06.csv,student-06.csv,,,,,,,not counted: its check does not match"),
-        "{students_csv}"
-    );
+    // The last task, which nobody reached, is said for each student.
+    assert!(students_csv.lines().nth(1).unwrap().contains(",no answer on step 5,"), "{students_csv}");
+    assert!(students_csv.contains("\n,student-06.csv,,,,,,,not counted: its check does not match"), "{students_csv}");
     // Nobody left a step without a mark but the last task (the homework's end: no Next ▸ after it).
     for t in &class.steps {
         let last = t.step == lesson.steps.len();
@@ -158,6 +165,7 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
         .args(&paths)
         .args(["--out", out.to_str().unwrap()])
         .args(["--students", dir.join("students.csv").to_str().unwrap()])
+        .args(["--lesson", concat!(env!("CARGO_MANIFEST_DIR"), "/www/lessons/windows.md")])
         .output()
         .unwrap();
     assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
@@ -165,7 +173,9 @@ fn sixty_files_merge_into_the_table_their_choices_make_and_an_edited_one_is_name
     assert!(said.contains("57 answer files counted, 3 not") && said.contains("student-06.csv"), "{said}");
     let written = std::fs::read_to_string(&out).unwrap();
     // The same rows (the file names in the `#` lines differ: full paths there).
-    let rows = |t: &str| t.lines().filter(|l| !l.starts_with('#')).map(str::to_string).collect::<Vec<_>>();
+    let rows = |t: &str| {
+        t.lines().filter(|l| !l.trim_start_matches('"').starts_with('#')).map(str::to_string).collect::<Vec<_>>()
+    };
     assert_eq!(rows(&written), rows(&csv));
     // The per-student rows name the files as given (full paths here): the counts are the same.
     let per_student = std::fs::read_to_string(dir.join("students.csv")).unwrap();
@@ -201,7 +211,7 @@ fn next_records_a_skip_or_waits_as_the_lesson_says() {
     assert!(s.status().lesson.unwrap().record.headline.contains("1 step left without an answer"));
     // It survives the CSV, and the class table counts it.
     let files = [AnswerFile { name: "a.csv".into(), text: record.to_csv() }];
-    assert_eq!(merge(&files).steps.iter().find(|t| t.step == 1).map(|t| t.skipped), Some(1));
+    assert_eq!(merge(&files, None).steps.iter().find(|t| t.step == 1).map(|t| t.skipped), Some(1));
 
     // `next: waits`: the button waits, and Next is refused with the reason until the answer.
     let mut s = common::Visit::open("").0;
@@ -237,17 +247,19 @@ fn copies_count_once_and_a_student_who_stopped_shows_where() {
     stopped.entries.retain(|e| e.step == 1);
     files[4].text = stopped.to_csv();
 
-    let class = merge(&files);
+    let class = merge(&files, None);
     let why = |name: &str| class.refused.iter().find(|(n, _)| n == name).map(|(_, w)| w.clone()).unwrap_or_default();
     assert_eq!(why("copy-of-01.csv"), "the same file as student-01.csv");
-    assert!(
-        why("student-02-again.csv").starts_with("a second file from Student 02 (also student-02.csv)"),
-        "{}",
-        why("student-02-again.csv")
-    );
+    // Student 02's redo (walked later) counts; the first file is named as the earlier.
+    let earlier = why("student-02.csv");
+    assert!(earlier.starts_with("an earlier file from Student 02 (also student-02-again.csv)"), "{earlier}");
+    assert_eq!(why("student-02-again.csv"), "");
     assert_eq!(class.students.len(), 5);
     let five = class.students.iter().find(|s| s.name == "Student 05").unwrap();
     let cells = class.student_row(five);
+    // Out of the class's three questions, not out of the one they answered.
+    assert_eq!(cells[2], "1 of 3");
+    assert_eq!(class.missing_note(five), "no answer on steps 2, 3, 4");
     assert_eq!(cells[3], if 5 % 2 == 0 { "✗" } else { "✓" });
     assert!(cells[4..].iter().all(|c| c == "—"), "{cells:?}");
     for t in class.steps.iter().filter(|t| t.step > 1) {

@@ -6,6 +6,7 @@
 //! ([`super::answers::check_csv`]).
 
 use super::answers::{check_csv, Check, Record};
+use crate::lesson::Lesson;
 
 /// One answers file: its name and text.
 #[derive(Clone, Debug)]
@@ -96,14 +97,24 @@ pub struct ClassTable {
     /// The files that did not, and why.
     pub refused: Vec<(String, String)>,
     pub steps: Vec<StepTally>,
-    /// One row per file that counted, by name (the page gets them in words: `student_words`).
+    /// One row per file that counted, by name (the page gets them in words: `student_row`).
     #[serde(skip)]
     pub students: Vec<StudentScore>,
+    /// The questions of the lesson (else those anyone answered): each student's score is out of them.
+    pub questions: usize,
+}
+
+/// The time of a record's last entry (ISO 8601: compared as text), "" for none.
+fn last_time(r: &Record) -> &str {
+    r.entries.iter().map(|e| e.time.as_str()).max().unwrap_or("")
 }
 
 /// Merges the files: the lesson text most of the readable files answer is the class's; files
-/// of another text, unreadable, or failing their check are named and left out.
-pub fn merge(files: &[AnswerFile]) -> ClassTable {
+/// of another text, unreadable, or failing their check are named and left out, and of two files
+/// under one student's name the later counts (a redo). `lesson`, the lesson and its text's hash
+/// (the teacher's open lesson, `--lesson`): where it is the class's, every step with a question
+/// or a task is a row, even one nobody reached.
+pub fn merge(files: &[AnswerFile], lesson: Option<(&Lesson, &str)>) -> ClassTable {
     let mut class = ClassTable::default();
     let mut records: Vec<(&AnswerFile, Record)> = Vec::new();
     for (i, f) in files.iter().enumerate() {
@@ -136,20 +147,36 @@ pub fn merge(files: &[AnswerFile]) -> ClassTable {
     }
     let Some(&(hash, _)) = hashes.iter().max_by_key(|(_, n)| *n) else { return class };
     class.lesson_hash = hash.to_string();
+    let mut kept: Vec<(&AnswerFile, &Record)> = Vec::new();
     for (f, r) in &records {
         if r.lesson_hash != class.lesson_hash {
             class.refused.push((f.name.clone(), format!("answers another text of the lesson ({})", r.lesson_hash)));
             continue;
         }
-        // One file per student: a second one under the same name does not count twice.
+        // One file per student: of two under one name, the later (its last answer's time) counts.
         let named = r.student.trim().to_lowercase();
-        if let Some(first) = class.students.iter().find(|s| !named.is_empty() && s.name.trim().to_lowercase() == named)
-        {
-            let why =
-                format!("a second file from {} (also {}): only the first given counts", r.student.trim(), first.file);
-            class.refused.push((f.name.clone(), why));
-            continue;
+        let same = kept.iter().position(|(_, k)| !named.is_empty() && k.student.trim().to_lowercase() == named);
+        match same {
+            Some(at) => {
+                let other = kept[at];
+                let (later, earlier) =
+                    if last_time(r) >= last_time(other.1) { ((*f, r), other) } else { (other, (*f, r)) };
+                let why =
+                    format!("an earlier file from {} (also {}): the later counts", r.student.trim(), later.0.name);
+                class.refused.push((earlier.0.name.clone(), why));
+                kept[at] = later;
+            }
+            None => kept.push((f, r)),
         }
+    }
+    // The lesson's steps with a question or a task, where the teacher's lesson is the class's.
+    let lesson = lesson.filter(|(_, h)| *h == class.lesson_hash).map(|(l, _)| l);
+    for (i, step) in lesson.iter().flat_map(|l| l.steps.iter().enumerate()) {
+        if step.question.is_some() || step.goal.is_some() {
+            class.steps.push(StepTally { step: i + 1, title: step.title.clone(), ..StepTally::default() });
+        }
+    }
+    for (f, r) in kept {
         class.lesson.clone_from(&r.lesson);
         class.counted.push((f.name.clone(), r.student.clone()));
         let name = if r.student.trim().is_empty() { f.name.clone() } else { r.student.clone() };
@@ -161,6 +188,11 @@ pub fn merge(files: &[AnswerFile]) -> ClassTable {
         let marked = class.students.iter().filter(|s| s.marks.iter().any(|(n, _)| *n == step.step)).count();
         step.unanswered = class.students.len() - marked;
     }
+    // The questions the class was asked: the lesson's, else those anyone answered.
+    class.questions = match lesson {
+        Some(l) => l.steps.iter().filter(|s| s.question.is_some()).count(),
+        None => class.steps.iter().filter(|s| s.predicted > 0).count(),
+    };
     for s in &mut class.steps {
         s.wrong.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
     }
@@ -238,20 +270,12 @@ fn tally(steps: &mut Vec<StepTally>, r: &Record) -> StudentScore {
 }
 
 impl ClassTable {
-    /// The table as CSV: a `#` line naming the lesson, how many files counted and which did not,
-    /// then one row per step.
+    /// The table as CSV: one row per step, then a `#` line naming the lesson and how many files
+    /// counted, and one per file that did not (each line one cell).
     pub fn to_csv(&self) -> String {
         let mut out = format!(
-            "{UTF8_BOM}# flexarm class answers: {} ({}), {} files counted, {} not\n",
-            self.lesson,
-            self.lesson_hash,
-            self.counted.len(),
-            self.refused.len()
+            "{UTF8_BOM}step,step_title,predicted,right,share_right,wrong_choices,task_done,task_shown,skipped,unanswered\n"
         );
-        for (name, why) in &self.refused {
-            out += &format!("# not counted: {name}: {why}\n");
-        }
-        out += "step,step_title,predicted,right,share_right,wrong_choices,task_done,task_shown,skipped,unanswered\n";
         for s in &self.steps {
             let share = share(s.right, s.predicted);
             let wrong: Vec<String> = s.wrong.iter().map(|(t, n)| format!("“{t}” ×{n}")).collect();
@@ -268,6 +292,19 @@ impl ClassTable {
                 s.skipped,
                 s.unanswered
             );
+        }
+        // What the table is and which files it left out, after it and one cell a line: a
+        // spreadsheet then finds the columns' names on its first row.
+        let about = format!(
+            "# flexarm class answers: {} ({}), {} files counted, {} not",
+            self.lesson,
+            self.lesson_hash,
+            self.counted.len(),
+            self.refused.len()
+        );
+        out += &format!("{}\n", super::answers::quote(&about));
+        for (name, why) in &self.refused {
+            out += &format!("{}\n", super::answers::quote(&format!("# not counted: {name}: {why}")));
         }
         out
     }
@@ -306,15 +343,16 @@ impl ClassTable {
         out.push('\n');
         for s in &self.students {
             out += &format!(
-                "{},{},{},{},{},{},{},{},",
+                "{},{},{},{},{},{},{},{},{}",
                 super::answers::quote(&s.name),
                 super::answers::quote(&s.file),
                 s.predicted,
                 s.right,
-                share(s.right, s.predicted),
+                share(s.right, self.questions),
                 s.done,
                 s.shown,
-                s.skipped
+                s.skipped,
+                super::answers::quote(&self.missing_note(s))
             );
             for step in &self.steps {
                 out.push(',');
@@ -322,15 +360,27 @@ impl ClassTable {
             }
             out.push('\n');
         }
+        // The files that did not count: no student's name (a count of names is the class's).
         for (file, why) in &self.refused {
-            let q = super::answers::quote(file);
-            out += &format!(
-                "{q},{q},,,,,,,{}{}\n",
-                super::answers::quote(&format!("not counted: {why}")),
-                ",".repeat(self.steps.len())
-            );
+            let note = super::answers::quote(&format!("not counted: {why}"));
+            out += &format!(",{},,,,,,,{note}{}\n", super::answers::quote(file), ",".repeat(self.steps.len()));
         }
         out
+    }
+
+    /// The steps a student left without a mark ("no answer on steps 3, 4"), "" for none.
+    pub fn missing_note(&self, s: &StudentScore) -> String {
+        let missing: Vec<String> = self
+            .steps
+            .iter()
+            .filter(|t| !s.marks.iter().any(|(n, _)| *n == t.step))
+            .map(|t| t.step.to_string())
+            .collect();
+        match missing.len() {
+            0 => String::new(),
+            1 => format!("no answer on step {}", missing[0]),
+            _ => format!("no answer on steps {}", missing.join(", ")),
+        }
     }
 
     /// A student's mark on each of the class's steps, as the page's table shows it (— where none).
@@ -342,7 +392,7 @@ impl ClassTable {
     /// One student's row as the page's table shows it: the name, the file, right at the first
     /// try ("3 of 4", "—" for no question answered), then their mark on each step.
     pub fn student_row(&self, s: &StudentScore) -> Vec<String> {
-        let right = if s.predicted > 0 { format!("{} of {}", s.right, s.predicted) } else { "—".into() };
+        let right = if self.questions > 0 { format!("{} of {}", s.right, self.questions) } else { "—".into() };
         let mut row = vec![s.name.clone(), s.file.clone(), right];
         row.extend(self.student_cells(s));
         row

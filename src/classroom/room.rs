@@ -5,6 +5,7 @@
 use serde::Serialize;
 
 use super::answers::{self, Entry};
+use super::class::{merge, AnswerFile, ClassTable};
 use super::progress::{checked, LessonOrigin, LessonProgress, LessonStatus};
 use crate::error::Error;
 use crate::session::query::split_query;
@@ -159,6 +160,12 @@ impl Classroom {
     pub(super) fn sync(&self, session: &mut Session) {
         let hidden = Hidden { answers: self.answers_hidden(session), windows: self.lesson_hides_windows() };
         session.set_hidden(hidden);
+    }
+
+    /// A class's answer files merged into one table ([`merge`]), with every step of the open
+    /// lesson that has a question or a task where the files answer this lesson's text.
+    pub fn merge_answers(&self, files: &[AnswerFile]) -> ClassTable {
+        merge(files, self.lesson.as_ref().map(|l| (&l.lesson, l.record.lesson_hash.as_str())))
     }
 
     /// The lesson's step and what student mode hides, for the page.

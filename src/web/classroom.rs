@@ -40,6 +40,33 @@ fn change<T>(
 
 #[wasm_bindgen(js_class = Classroom)]
 impl WebClassroom {
+    /// A class's answer files (`names[i]`, `texts[i]`: the page's CSV each) merged into one table,
+    /// with the open lesson's steps where they answer it: `{lesson, counted, refused: [[name, why]],
+    /// steps: [{step, title, …}], questions, rows: [[right, wrong, tasks]], student_rows: [[name,
+    /// file, score, mark per step…]], summary, csv, students_csv}` — the same as `flexarm answers
+    /// merge`.
+    #[wasm_bindgen(js_name = mergeAnswers)]
+    pub fn merge_answers(&self, names: Vec<String>, texts: Vec<String>) -> Result<JsValue, JsError> {
+        use crate::classroom::class::{AnswerFile, ClassTable};
+        #[derive(serde::Serialize)]
+        struct Merged {
+            #[serde(flatten)]
+            table: ClassTable,
+            rows: Vec<[String; 3]>,
+            student_rows: Vec<Vec<String>>,
+            summary: String,
+            csv: String,
+            students_csv: String,
+        }
+        let files: Vec<AnswerFile> =
+            names.into_iter().zip(texts).map(|(name, text)| AnswerFile { name, text }).collect();
+        let table = self.inner.merge_answers(&files);
+        let rows = table.steps.iter().map(ClassTable::row_words).collect();
+        let student_rows = table.students.iter().map(|s| table.student_row(s)).collect();
+        let (summary, csv, students_csv) = (table.summary(), table.to_csv(), table.students_csv());
+        to_js(&Merged { table, rows, student_rows, summary, csv, students_csv })
+    }
+
     /// The classroom of a URL query (the same the session was opened from): the lesson it names
     /// (`lesson=3`) over the session, and the link's moment (`t=3&paused=1`). `lesson_text`: the
     /// built-in lesson the page fetched (`lessons/paper.md`; without it the lesson cannot open).
@@ -243,28 +270,4 @@ pub fn read_lesson_fragment(fragment: &str) -> Result<JsValue, JsError> {
     }
     let carried = crate::classroom::link::read_lesson_fragment(fragment).map_err(js_error)?;
     to_js(&carried.map(|(name, bytes)| Carried { name, bytes }))
-}
-
-/// A class's answer files (`names[i]`, `texts[i]`: the page's CSV each) merged into one table:
-/// `{lesson, counted, refused: [[name, why]], steps: [{step, title, …}], rows: [[right, wrong,
-/// tasks]], summary, csv}` — the same table as `flexarm answers merge`.
-#[wasm_bindgen(js_name = mergeAnswers)]
-pub fn merge_answers(names: Vec<String>, texts: Vec<String>) -> Result<JsValue, JsError> {
-    use crate::classroom::class::{merge, AnswerFile, ClassTable};
-    #[derive(serde::Serialize)]
-    struct Merged {
-        #[serde(flatten)]
-        table: ClassTable,
-        rows: Vec<[String; 3]>,
-        student_rows: Vec<Vec<String>>,
-        summary: String,
-        csv: String,
-        students_csv: String,
-    }
-    let files: Vec<AnswerFile> = names.into_iter().zip(texts).map(|(name, text)| AnswerFile { name, text }).collect();
-    let table = merge(&files);
-    let rows = table.steps.iter().map(ClassTable::row_words).collect();
-    let student_rows = table.students.iter().map(|s| table.student_row(s)).collect();
-    let (summary, csv, students_csv) = (table.summary(), table.to_csv(), table.students_csv());
-    to_js(&Merged { table, rows, student_rows, summary, csv, students_csv })
 }

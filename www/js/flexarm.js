@@ -291,6 +291,15 @@ export class Page {
     return this.#session.figureSvg(String(panel), this.stateString(), String(options));
   }
 
+  /**
+   * A class's answer files merged into one table, with the open lesson's steps where they answer
+   * it (Rust's `classroom::class`, the same as `flexarm answers merge`).
+   * @param {string[]} names @param {string[]} texts @returns {import('./class.js').Merged}
+   */
+  mergeAnswers(names, texts) {
+    return this.#classroom.mergeAnswers(names.map(String), texts.map(String));
+  }
+
   /** The caption under the page's picture: what it shows at which time, and the state string. @returns {string} */
   pictureCaption() {
     return this.#session.pictureCaption(this.stateString());

@@ -103,7 +103,7 @@ async function main() {
   const homework = createHomework({ wasm, session, report });
   const { lesson, answers } = createClassroom({
     session, store, presets: wasm.presets(), guard, report, change, refresh: () => refresh(), touch, openSheet: sheet.open, showFigure, download,
-    mergeAnswers: (names, texts) => wasm.mergeAnswers(names, texts),
+    mergeAnswers: (names, texts) => session.mergeAnswers(names, texts),
     loaded: () => {
       homework.refresh();
       // A reload keeps the lesson: it moves into the address, as a homework link carries it.

@@ -3,7 +3,9 @@
 //! ([`flexarm::classroom::class`]).
 
 use clap::{ArgMatches, Command};
+use flexarm::classroom::answers::text_hash;
 use flexarm::classroom::class::{merge, AnswerFile};
+use flexarm::lesson::parse;
 
 use crate::cli::{self, option, usage_error, Res};
 
@@ -22,6 +24,12 @@ pub fn command() -> Command {
             )
             .arg(option("out", "FILE.csv", "Where to write the class's table (default: print it)"))
             .arg(option(
+                "lesson",
+                "FILE.md",
+                "The lesson the files answer: every step with a question or a task is a row, even one nobody reached \
+                 (used where its text is the one the files answer)",
+            ))
+            .arg(option(
                 "students",
                 "FILE.csv",
                 "Also write one row per student: questions right at the first try, tasks done or shown, steps skipped",
@@ -31,14 +39,33 @@ pub fn command() -> Command {
 
 pub fn run(m: &ArgMatches) -> Res<String> {
     let Some(("merge", m)) = m.subcommand() else {
-        return Err(usage_error("use: flexarm answers merge FILES… [--out class.csv] [--students students.csv]"));
+        return Err(usage_error(
+            "use: flexarm answers merge FILES… [--lesson LESSON.md] [--out class.csv] [--students students.csv]",
+        ));
     };
     let mut files = Vec::new();
     for path in m.get_many::<String>("files").into_iter().flatten() {
         let text = std::fs::read_to_string(path).map_err(|e| usage_error(format!("could not read '{path}': {e}")))?;
         files.push(AnswerFile { name: path.clone(), text });
     }
-    let class = merge(&files);
+    let lesson = match m.get_one::<String>("lesson") {
+        Some(path) => {
+            let text =
+                std::fs::read_to_string(path).map_err(|e| usage_error(format!("could not read '{path}': {e}")))?;
+            let parsed = parse(&text).map_err(|e| usage_error(format!("--lesson {path}: {e}")))?;
+            Some((parsed, text_hash(&text)))
+        }
+        None => None,
+    };
+    let class = merge(&files, lesson.as_ref().map(|(l, h)| (l, h.as_str())));
+    if let Some((_, hash)) = &lesson {
+        if !class.lesson_hash.is_empty() && *hash != class.lesson_hash {
+            return Err(usage_error(format!(
+                "--lesson: the files answer another text of the lesson ({}, the file's is {hash})",
+                class.lesson_hash
+            )));
+        }
+    }
     let table = class.to_csv();
     let mut said = String::new();
     if let Some(path) = m.get_one::<String>("students") {

@@ -39,8 +39,9 @@ pub struct Sheet {
     panels_bottom: f64,
     scale: f64,
     min_height: f64,
-    /// Where the key goes when not below the panels: [x, top, width].
-    key_box: Option<[f64; 3]>,
+    /// Where the key goes when not below the panels: [x, top, width], and whether as its
+    /// entries' names alone.
+    key_box: Option<([f64; 3], bool)>,
 }
 
 /// What a figure's sheet says besides its panels: the caption (what it shows, the state line
@@ -89,18 +90,22 @@ impl Sheet {
             let top = MARGIN + title_lines.len() as f64 * TITLE_PITCH + 6.0;
             let caption_height = caption.map_or(0.0, |(h, st)| CAPTION_GAP + Caption::new(h, st, inner).height());
             let bottom = width / WIDE_RATIO - MARGIN - caption_height;
+            // The key beside the panels; at a large text size, as its entries' names alone
+            // (the compact key's), where the whole entries would not fit beside them.
             let key_width = (0.3 * inner).clamp(200.0, 340.0);
-            let beside = key(None, groups, 0.0, 0.0, key_width) <= bottom - top;
-            let (panels_width, panels_height, key_box) = if beside {
-                (inner - key_width - GAP, bottom - top, Some([MARGIN + inner - key_width, top, key_width]))
-            } else {
-                (inner, bottom - top - KEY_GAP - key(None, groups, 0.0, 0.0, inner), None)
+            let fits = |short: bool| key(None, &keyed(groups, short), 0.0, 0.0, key_width) <= bottom - top;
+            let beside = if fits(false) { Some(false) } else { fits(true).then_some(true) };
+            let (panels_width, panels_height, key_box) = match beside {
+                Some(short) => {
+                    (inner - key_width - GAP, bottom - top, Some(([MARGIN + inner - key_width, top, key_width], short)))
+                }
+                None => (inner, bottom - top - KEY_GAP - key(None, groups, 0.0, 0.0, inner), None),
             };
             tries += 1;
             if panels_height >= 0.5 * natural || tries >= 12 {
                 break (top, title_lines, panels_width, panels_height.max(40.0), key_box);
             }
-            width = (width * 1.1).ceil();
+            width *= 1.1;
         };
         let n = kinds.len().max(1) as f64;
         let stacked = kinds.iter().all(|k| k.is_time_plot());
@@ -113,9 +118,9 @@ impl Sheet {
                 ((panels_width - GAP * (n - 1.0)) / n - l - r, panels_height - t - b)
             }
         });
-        let width = width.ceil();
+        // Exactly 16:9 (1280 × 720 px at normal text): a slide shows no sliver at its edges.
         layout.css_width = width;
-        let min_height = (width / WIDE_RATIO).round();
+        let min_height = width / WIDE_RATIO;
         let sheet = Sheet {
             title: self.title.clone(),
             title_lines,
@@ -138,12 +143,18 @@ impl Sheet {
     pub fn write(&self, scene: &Scene, groups: &[LegendGroup], words: Words<'_>) -> Figure {
         let (width, inner) = (self.width, self.width - 2.0 * MARGIN);
         // The key below the panels, or beside them (a wide sheet).
-        let [key_x, key_top, key_width] = self.key_box.unwrap_or([MARGIN, self.panels_bottom + KEY_GAP, inner]);
+        let ([key_x, key_top, key_width], short) =
+            self.key_box.unwrap_or(([MARGIN, self.panels_bottom + KEY_GAP, inner], false));
+        let groups = &keyed(groups, short);
         let key_height = key(None, groups, key_x, key_top, key_width);
         let caption = words.caption.map(|(head, state)| Caption::new(head, state, inner));
         let caption_top = (key_top + key_height).max(self.panels_bottom) + CAPTION_GAP;
         let content = caption_top + caption.as_ref().map_or(0.0, Caption::height) + MARGIN;
-        let height = content.max(self.min_height).ceil();
+        let height = if self.min_height > 0.0 && content <= self.min_height + 0.5 {
+            self.min_height
+        } else {
+            content.max(self.min_height).ceil()
+        };
 
         let size = [width, height, self.scale];
         let paper = (palette::BACKGROUND, words.background);
@@ -202,4 +213,17 @@ const CAPTION_GAP: f64 = 4.0;
 /// A caption's head for a run at simulated time `t` (s): "flexarm at t = 4.138 s — what".
 pub fn at_time(t: f64, what: &str) -> String {
     format!("flexarm at t = {} s — {what}", crate::plot::format::significant_trimmed(t, 4))
+}
+
+/// The key's groups, with each entry's name alone (`short`) or whole.
+fn keyed(groups: &[LegendGroup], short: bool) -> Vec<LegendGroup> {
+    let mut out = groups.to_vec();
+    if short {
+        for item in out.iter_mut().flat_map(|g| g.items.iter_mut()) {
+            if !item.short.is_empty() {
+                item.text.clone_from(&item.short);
+            }
+        }
+    }
+    out
 }
