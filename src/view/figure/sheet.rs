@@ -149,7 +149,11 @@ impl Sheet {
         let key_height = key(None, groups, key_x, key_top, key_width);
         let caption = words.caption.map(|(head, state)| Caption::new(head, state, inner));
         let caption_top = (key_top + key_height).max(self.panels_bottom) + CAPTION_GAP;
-        let content = caption_top + caption.as_ref().map_or(0.0, Caption::height) + MARGIN;
+        // Without a caption, no gap for it either (the wide sheet leaves none).
+        let content = match &caption {
+            Some(c) => caption_top + c.height() + MARGIN,
+            None => caption_top - CAPTION_GAP + MARGIN,
+        };
         let height = if self.min_height > 0.0 && content <= self.min_height + 0.5 {
             self.min_height
         } else {
