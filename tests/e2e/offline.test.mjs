@@ -84,7 +84,7 @@ test('offline, a picture exports, the help travels, a lesson by path is refused 
   await page.waitForSelector('#url-notice:not([hidden])', { timeout: 10000 });
   assert.match(await page.textContent('#url-notice-list'), /an offline file cannot load a lesson from a path.*drop the file on the page/);
   const { name, bytes } = await clickForDownload(page, '#export-png');
-  assert.match(name, /^flexarm-[a-z0-9.-]+-figure\.png$/);
+  assert.match(name, /^flexarm-[a-z0-9.-]+-figure@\d+x\.png$/);
   assert.deepEqual(bytes.subarray(0, 8), PNG_SIGNATURE);
   // The help page is carried (a blob URL, not a path that would fail from disk).
   assert.match(await page.getAttribute('footer a[href*="#paper"], a[href$="#paper"]', 'href'), /^blob:/);
