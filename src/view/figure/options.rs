@@ -103,7 +103,8 @@ impl FigureOptions {
                         .ok_or_else(|| bad("natural or wide (16:9)"))?;
                 }
                 "zview" => {
-                    let v: Vec<f64> = value.split(',').filter_map(|n| n.trim().parse().ok()).collect();
+                    // Every piece a number: "1,x,2,3" is not three numbers.
+                    let v: Vec<f64> = value.split(',').map(|n| n.trim().parse().unwrap_or(f64::NAN)).collect();
                     match v[..] {
                         [re, im, half] if v.iter().all(|n| n.is_finite()) && half > 0.0 => {
                             o.z_view = Some([re, im, half])
@@ -163,6 +164,7 @@ mod tests {
             ("colour=red", "zview"),
             ("background=beige", "transparent"),
             ("zview=1,2", "RE,IM,HALF"),
+            ("zview=1,x,0.05,0.1", "RE,IM,HALF"),
             ("zview=1,2,0", "HALF > 0"),
             ("shape=wide&shape=natural", "once"),
         ] {
